@@ -1,0 +1,35 @@
+# Build, run, test and benchmark SANCTA for ROS 2.
+#   make run    build everything and run the main job on its embedded default
+#   make test   build everything and run every test suite
+#   make bench  build in release mode and run the benchmarks
+# Every target installs what it lacks first (Debian packages, Python venv).
+
+BUILD_MODE ?= debug
+GPRBUILD    = gprbuild -P build_all.gpr -p -j0 -XBUILD_MODE=$(BUILD_MODE)
+
+.PHONY: all deps bench-deps build run test bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+bench-deps:
+	@scripts/install-deps.sh --bench
+
+build: deps
+	@$(GPRBUILD)
+
+run: build
+	@scripts/demo.sh
+
+test: build
+	@scripts/run-tests.sh
+
+bench: bench-deps
+	@$(MAKE) --no-print-directory build BUILD_MODE=release
+	@bench/run-all.sh
+
+clean:
+	@gprclean -P build_all.gpr -q -r 2>/dev/null || true
+	@rm -rf obj lib bin
