@@ -5,7 +5,9 @@
 --  DDS.
 --
 --  This root package holds the exceptions shared by the whole hierarchy.
-package Sancta is
+package Sancta
+  with Pure
+is
 
    Configuration_Error : exception;
    --  A configuration or mission file is wrong; the message starts with

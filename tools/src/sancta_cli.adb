@@ -1,0 +1,33 @@
+--  The "sancta" command: one program, a subcommand per job.
+--     sancta plan FILE ...     task allocation (see sancta plan --help)
+--     sancta check FILE        validate a configuration and show its wiring
+--     sancta run FILE ...      run agents of a configuration
+--  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
+with Ada.Command_Line;
+with Ada.Text_IO;
+
+procedure Sancta_CLI is
+   use Ada.Command_Line;
+   use Ada.Text_IO;
+
+   procedure Usage is
+   begin
+      Put_Line ("usage: sancta COMMAND [ARGS...]");
+      Put_Line ("commands:");
+      --  One line per subcommand, in the order below.
+      Put_Line ("  help             this text");
+   end Usage;
+
+   Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
+begin
+   if Command = "" or else Command = "help" or else Command = "--help"
+     or else Command = "-h"
+   then
+      Usage;
+   --  elsif Command = "plan" then Sancta.Commands.Plan.Run;
+   else
+      Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
+      Usage;
+      Set_Exit_Status (Failure);
+   end if;
+end Sancta_CLI;
