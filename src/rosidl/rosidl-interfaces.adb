@@ -3,6 +3,7 @@ with Ada.Containers.Indefinite_Hashed_Maps;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Directories;
 with Ada.Environment_Variables;
+with Ada.Exceptions;
 with Ada.Finalization;
 with Ada.IO_Exceptions;
 with Ada.Streams.Stream_IO;
@@ -312,6 +313,21 @@ package body ROSIDL.Interfaces is
    function Load_Message
      (Package_Name, Name : String; Where : Source_Position) return Message_Access;
 
+   function Short (Key : String) return String is
+      --  "pkg/msg/Name" as "pkg/Name".
+      At_Kind : constant Natural := Ada.Strings.Fixed.Index (Key, "/msg/");
+   begin
+      return (if At_Kind = 0 then Key
+              else Key (Key'First .. At_Kind) & Key (At_Kind + 5 .. Key'Last));
+   end Short;
+
+   function Type_Part (Key : String) return String is
+     (Key (Ada.Strings.Fixed.Index (Key, "/", Ada.Strings.Backward) + 1 .. Key'Last));
+   --  "pkg/msg/Name" as "Name".
+
+   function Image (N : Natural) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
    function Locked_Resolver
      (Package_Name, Name : String; Where : Source_Position) return Message_Access is
      (Load_Message (Package_Name, Name, Where));
@@ -330,12 +346,11 @@ package body ROSIDL.Interfaces is
             Chain : Unbounded_String;
          begin
             for I in In_Progress.Find_Index (Key) .. In_Progress.Last_Index loop
-               Append (Chain, In_Progress (I) & " -> ");
+               Append (Chain, Type_Part (In_Progress (I)) & " -> ");
             end loop;
             raise Definition_Error with
-              Image (Where) & ": expected a type that does not nest the message being"
-              & " defined, found '" & Key & "' (a recursive definition: "
-              & To_String (Chain) & Key & ")";
+              Image (Where) & ": expected a type that does not nest itself, found '"
+              & Short (Key) & "' (" & To_String (Chain) & Type_Part (Key) & ")";
          end;
       end if;
       declare
@@ -350,6 +365,16 @@ package body ROSIDL.Interfaces is
             Result := ROSIDL.Parser.Parse_Message
               (Package_Name, Name, Read_File (Path), Path, Locked_Resolver'Access);
          exception
+            when E : Definition_Error =>
+               In_Progress.Delete_Last;
+               if Where.Line = 0 then
+                  raise;
+               end if;
+               --  Say where the broken definition was needed.
+               raise Definition_Error with
+                 Ada.Exceptions.Exception_Message (E) & " (needed by "
+                 & Ada.Directories.Simple_Name (To_String (Where.File)) & ":"
+                 & Image (Where.Line) & ":" & Image (Where.Column) & ")";
             when others =>
                In_Progress.Delete_Last;
                raise;

@@ -203,7 +203,7 @@ package body ROSIDL.Parser is
                   Result.Size := Read_Bound (Inside);
                   if Result.Size = 0 then
                      Fail (To_String (C.File), Line, Col (Open + 1),
-                           "an array size N > 0 (T[N]), '<=N' (T[<=N]) or nothing (T[])",
+                           "an array size N > 0 (T[N], T[<=N] or T[])",
                            Quote (Inside));
                   end if;
                end if;
@@ -255,31 +255,28 @@ package body ROSIDL.Parser is
             Name := To_Unbounded_String (Base (Slash + 1 .. Base'Last));
             if not Is_Valid_Package_Name (To_String (Pkg)) then
                Fail (To_String (C.File), Line, Column,
-                     "a package name of the form [a-z][a-z0-9_]* (no '__', no trailing '_')",
+                     "a package name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
                      Quote (To_String (Pkg)));
             end if;
          end if;
          if not Is_Valid_Type_Name (To_String (Name)) then
             Fail (To_String (C.File), Line,
                   (if Slash = 0 then Column else Col (Slash + 1)),
-                  "a primitive type or a message type name of the form [A-Z][A-Za-z0-9]*",
+                  "a primitive type or a type name ([A-Z][A-Za-z0-9]*)",
                   Quote (To_String (Name)));
          end if;
          if C.Namespace = Msg and then Pkg = C.Package_Name and then Name = C.Name then
             Fail (To_String (C.File), Line, Column,
-                  "a type other than the message being defined",
-                  Quote (To_String (Pkg) & "/" & To_String (Name))
-                  & " (a recursive definition: a message cannot nest itself)");
+                  "a type that does not nest the message itself",
+                  Quote (To_String (Pkg) & "/" & To_String (Name)));
          end if;
          Result.Kind := Message_Kind;
          Result.Nested := C.Resolve
            (To_String (Pkg), To_String (Name),
             (File => C.File, Line => Line, Column => Column));
          if Result.Nested = null then
-            Fail (To_String (C.File), Line, Column, "a known message type",
-                  Quote (To_String (Pkg) & "/" & To_String (Name))
-                  & " (no " & To_String (Pkg) & "/msg/" & To_String (Name)
-                  & ".msg on the interface search path)");
+            Fail (To_String (C.File), Line, Column, "a message type on the search path",
+                  Quote (To_String (Pkg) & "/" & To_String (Name)));
          end if;
          return Result;
       end;
@@ -415,8 +412,8 @@ package body ROSIDL.Parser is
          begin
             if Type_Token = "---" then
                Fail (File, N, Col (Type_First),
-                     "a field or a constant (a '---' separator belongs in a .srv or"
-                     & " .action file)", "'---'");
+                     "a field or a constant ('---' only separates .srv and .action parts)",
+                     "'---'");
             end if;
             Skip_Blanks;
             if I > Last then
@@ -453,13 +450,13 @@ package body ROSIDL.Parser is
                                  "'='");
                         elsif not Is_Valid_Constant_Name (Name) then
                            Fail (File, N, Col (Name_First),
-                                 "a constant name of the form [A-Z][A-Z0-9_]* (no '__',"
-                                 & " no trailing '_')", Quote (Name));
+                                 "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')",
+                                 Quote (Name));
                         end if;
                         for K of Def.Constants loop
                            if K.Name = Name then
                               Fail (File, N, Col (Name_First),
-                                    "a constant name not used before in this message",
+                                    "a new constant name",
                                     Quote (Name) & " (already defined at line"
                                     & K.Position.Line'Image & ")");
                            end if;
@@ -494,8 +491,8 @@ package body ROSIDL.Parser is
                      begin
                         if not Is_Valid_Field_Name (Name) then
                            Fail (File, N, Col (Name_First),
-                                 "a field name of the form [a-z][a-z0-9_]* (no '__', no"
-                                 & " trailing '_')", Quote (Name));
+                                 "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
+                                 Quote (Name));
                         elsif Is_Reserved_Name (Name) then
                            Fail (File, N, Col (Name_First),
                                  "a field name that is not a reserved word",
@@ -504,7 +501,7 @@ package body ROSIDL.Parser is
                         for G of Def.Fields loop
                            if G.Name = Name then
                               Fail (File, N, Col (Name_First),
-                                    "a field name not used before in this message",
+                                    "a new field name",
                                     Quote (Name) & " (already defined at line"
                                     & G.Position.Line'Image & ")");
                            end if;
@@ -558,7 +555,7 @@ package body ROSIDL.Parser is
    procedure Check_Names (Package_Name, Name, File : String) is
    begin
       if not Is_Valid_Package_Name (Package_Name) then
-         Fail (File, 1, 1, "a package name of the form [a-z][a-z0-9_]* (no '__', no trailing '_')",
+         Fail (File, 1, 1, "a package name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
                Quote (Package_Name));
       elsif not Is_Valid_Type_Name (Name) then
          Fail (File, 1, 1, "an interface name of the form [A-Z][A-Za-z0-9]*", Quote (Name));
@@ -623,7 +620,7 @@ package body ROSIDL.Parser is
          if Is_Separator (Lines (I)) then
             if Separator /= 0 then
                Fail (File_Name, Lines (I).Number, 1,
-                     "one line '---' between the request and the response of a service",
+                     "one line '---' in a service",
                      "a second '---' (the first is at line"
                      & Lines (Separator).Number'Image & ")");
             end if;
@@ -632,7 +629,7 @@ package body ROSIDL.Parser is
       end loop;
       if Separator = 0 then
          Fail (File_Name, Lines.Last_Index + 1, 1,
-               "a line '---' between the request and the response of a service",
+               "a line '---' between request and response",
                "end of file");
       end if;
       declare
