@@ -8,7 +8,9 @@ with Ada.Text_IO;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
+with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
+with ROSIDL.Parser.Values;
 with ROSIDL.Typesupport;
 
 package body ROSIDL.Parser.Tests is
@@ -584,6 +586,236 @@ package body ROSIDL.Parser.Tests is
 
    ---------------------------------------------------------------------------
 
+   procedure Value_Rules (Unused : in out Fixture) is
+      use ROSIDL.Parser.Values;
+
+      procedure Good (Kind : Element_Kind; Text, Normal : String; Bound : Natural := 0) is
+         R : constant Check_Result := Check_Scalar (Kind, Bound, Text);
+      begin
+         Assert (R.OK, Kind'Image & " " & Text & ": " & To_String (R.Expected));
+         Assert (R.Value = Normal, Kind'Image & " " & Text & " gave " & To_String (R.Value)
+                 & ", expected " & Normal);
+      end Good;
+
+      procedure Bad (Kind : Element_Kind; Text : String; Bound : Natural := 0) is
+         R : constant Check_Result := Check_Scalar (Kind, Bound, Text);
+      begin
+         Assert (not R.OK, Kind'Image & " " & Text & " must be refused, gave "
+                 & To_String (R.Value));
+      end Bad;
+
+   begin
+      Good (Bool_Kind, "TRUE", "true");
+      Good (Bool_Kind, "0", "false");
+      Bad (Bool_Kind, "2");
+      Good (Int8_Kind, "-0", "0");
+      Good (Int8_Kind, "+7", "7");
+      Good (Int16_Kind, "0x7FFF", "32767");
+      Bad (Int16_Kind, "0x8000");
+      Good (Int32_Kind, "-0b1000", "-8");
+      Good (Int32_Kind, "1_000", "1000");
+      Bad (Int32_Kind, "1__000");
+      Bad (Int32_Kind, "_1");
+      Bad (Int32_Kind, "1.0");
+      Bad (Int32_Kind, "");
+      Good (UInt32_Kind, "0o777", "511");
+      Bad (UInt32_Kind, "4294967296");
+      Good (Int64_Kind, "9223372036854775807", "9223372036854775807");
+      Bad (Int64_Kind, "9223372036854775808");
+      Bad (UInt64_Kind, "99999999999999999999999");
+      Good (Byte_Kind, "0xff", "255");
+      Bad (Byte_Kind, "-1");
+      Good (Float64_Kind, "5", "5.0");
+      Good (Float64_Kind, "5.", "5.0");
+      Good (Float64_Kind, "-.25E+2", "-0.25e2");
+      Good (Float64_Kind, "Infinity", "inf");
+      Good (Float64_Kind, "-inf", "-inf");
+      Good (Float64_Kind, "NaN", "nan");
+      Good (Float64_Kind, "1e308", "1.0e308");
+      Bad (Float64_Kind, "1e309");
+      Good (Float32_Kind, "3.4e38", "3.4e38");
+      Bad (Float32_Kind, "3.5e38");
+      Bad (Float64_Kind, ".");
+      Bad (Float64_Kind, "1e");
+      Bad (Float64_Kind, "0x10");
+      Bad (Float64_Kind, "1,5");
+      Good (String_Kind, "plain words", "plain words");
+      Good (String_Kind, """a\""b""", "a""b");
+      Good (String_Kind, "'tab\there'", "tab" & ASCII.HT & "here");
+      Good (String_Kind, "''", "");
+      Good (WString_Kind, """h" & Character'Val (16#C3#) & Character'Val (16#A9#) & """",
+            "h" & Character'Val (16#C3#) & Character'Val (16#A9#), Bound => 2);
+      Bad (String_Kind, """abc""", Bound => 2);
+      Bad (String_Kind, """abc");
+      Bad (String_Kind, "'a'b'");
+   end Value_Rules;
+
+   ---------------------------------------------------------------------------
+
+   function Only_Point
+     (Package_Name, Name : String; Where : Source_Position) return Message_Access;
+   --  A resolver that knows a single type, my_msgs/Point.
+
+   Point : constant Message_Access := Parse_Message
+     ("my_msgs", "Point", "float64 x" & ASCII.LF & "float64 y" & ASCII.LF,
+      Resolve => Only_Point'Access);
+
+   function Only_Point
+     (Package_Name, Name : String; Where : Source_Position) return Message_Access
+   is
+      pragma Unreferenced (Where);
+   begin
+      return (if Package_Name = "my_msgs" and then Name = "Point" then Point else null);
+   end Only_Point;
+
+   procedure Custom_Resolver (Unused : in out Fixture) is
+      Path : constant Message_Access := Parse_Message
+        ("my_msgs", "Path", "Point[] points" & ASCII.CR & ASCII.LF & "Point start",
+         File => "mem:Path", Resolve => Only_Point'Access);
+
+      procedure Unknown is
+         M : constant Message_Access := Parse_Message
+           ("my_msgs", "Other", "int32 a" & ASCII.LF & "  geometry_msgs/Point p",
+            File => "mem:Other", Resolve => Only_Point'Access);
+      begin
+         Assert (M = null, "not reached");
+      end Unknown;
+
+   begin
+      Assert (Path.Fields (1).Of_Type.Nested = Point, "resolved by the given function");
+      Assert (Path.Fields (2).Position.Line = 2, "CR LF line ends");
+      Assert (Image (Path.Position) = "mem:Path:1:1", Image (Path.Position));
+      Assert (Error_Of (Unknown'Access) = "mem:Other:2:3: expected a message type on the"
+              & " search path, found 'geometry_msgs/Point'", Error_Of (Unknown'Access));
+   end Custom_Resolver;
+
+   ---------------------------------------------------------------------------
+
+   procedure Rendering (Unused : in out Fixture) is
+      use ROSIDL.Definitions.Rendering;
+      HT : constant Character := ASCII.HT;
+      LF : constant Character := ASCII.LF;
+      Pose : constant String :=
+        Show (Interfaces.Message ("geometry_msgs", "PoseStamped").all);
+      Expected_Pose : constant String :=
+        "std_msgs/Header header" & LF
+        & HT & "builtin_interfaces/Time stamp" & LF
+        & HT & HT & "int32 sec" & LF
+        & HT & HT & "uint32 nanosec" & LF
+        & HT & "string frame_id" & LF
+        & "Pose pose" & LF
+        & HT & "Point position" & LF
+        & HT & HT & "float64 x" & LF
+        & HT & HT & "float64 y" & LF
+        & HT & HT & "float64 z" & LF
+        & HT & "Quaternion orientation" & LF
+        & HT & HT & "float64 x 0.0" & LF
+        & HT & HT & "float64 y 0.0" & LF
+        & HT & HT & "float64 z 0.0" & LF
+        & HT & HT & "float64 w 1.0" & LF;
+      Service : constant String :=
+        Show (Interfaces.Service ("example_interfaces", "AddTwoInts").all);
+      Action : constant String :=
+        Show (Interfaces.Action ("example_interfaces", "Fibonacci").all);
+   begin
+      Assert (Pose = Expected_Pose, "PoseStamped:" & LF & Pose);
+      Assert (Service = "int64 a" & LF & "int64 b" & LF & "---" & LF & "int64 sum" & LF,
+              Service);
+      Assert (Action = "int32 order" & LF & "---" & LF & "int32[] sequence" & LF & "---" & LF
+              & "int32[] sequence" & LF, Action);
+      Assert (Show (Interfaces.Message ("std_msgs", "Empty").all) = "", "Empty shows nothing");
+      Add_User_Folder;
+      declare
+         Text : constant String :=
+           Show (Interfaces.Message ("sancta_test_msgs", "Everything").all, Expand => False);
+
+         procedure Has (Line : String) is
+         begin
+            Assert (Contains (LF & Text, LF & Line & LF), "no line '" & Line & "' in" & LF
+                    & Text);
+         end Has;
+
+      begin
+         Has ("int32 ANSWER=42");
+         Has ("string GREETING=""hello # not a comment""");
+         Has ("bool flag true");
+         Has ("string<=5 short_text ""abc""");
+         Has ("float64[3] fixed [1.0, 2.5, -3.0]");
+         Has ("string[] names [""a,b"", ""c"", ""d\""e""]");
+         Has ("Point2[2] local_points");
+         Has ("geometry_msgs/Point[<=2] some_points");
+         Assert (Index (To_Unbounded_String (Text), "ANSWER")
+                 < Index (To_Unbounded_String (Text), "header"), "file order");
+         Assert (not Contains (Text, HT & ""), "not expanded");
+      end;
+   end Rendering;
+
+   ---------------------------------------------------------------------------
+
+   procedure Concurrent_Look_Ups (Unused : in out Fixture) is
+      --  Tasks load the same (not yet cached) types at once: each type is
+      --  parsed once and every task gets the same definition.
+      subtype Name_Index is Positive range 1 .. 4;
+
+      function Name (I : Name_Index) return String is
+        (case I is
+            when 1 => "MultiDOFJointState",
+            when 2 => "JointState",
+            when 3 => "Imu",
+            when 4 => "PointCloud2");
+
+      type Result_Array is array (Name_Index) of Message_Access;
+
+      task type Loader is
+         entry Start (Offset : Natural);
+         entry Done (Result : out Result_Array);
+      end Loader;
+
+      task body Loader is
+         Mine  : Result_Array := [others => null];
+         First : Natural;
+      begin
+         accept Start (Offset : Natural) do
+            First := Offset;
+         end Start;
+         for K in Name_Index loop
+            declare
+               I : constant Positive := (K + First - 1) mod Name_Index'Last + 1;
+            begin
+               Mine (I) := Interfaces.Message ("sensor_msgs", Name (I));
+            end;
+         end loop;
+         accept Done (Result : out Result_Array) do
+            Result := Mine;
+         end Done;
+      exception
+         when others =>
+            accept Done (Result : out Result_Array) do
+               Result := [others => null];
+            end Done;
+      end Loader;
+
+      Loaders : array (1 .. 4) of Loader;
+      Results : array (Loaders'Range) of Result_Array;
+   begin
+      for L in Loaders'Range loop
+         Loaders (L).Start (L);
+      end loop;
+      for L in Loaders'Range loop
+         Loaders (L).Done (Results (L));
+      end loop;
+      for I in Name_Index loop
+         for L in Loaders'Range loop
+            Assert (Results (L) (I) /= null, Name (I) & " loaded by task" & L'Image);
+            Assert (Results (L) (I) = Results (1) (I), Name (I) & " parsed once");
+         end loop;
+         Assert (Results (1) (I) = Interfaces.Message ("sensor_msgs", Name (I)),
+                 "cached");
+      end loop;
+   end Concurrent_Look_Ups;
+
+   ---------------------------------------------------------------------------
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
@@ -604,6 +836,10 @@ package body ROSIDL.Parser.Tests is
       Add ("service and action parts, DDS names", Service_And_Action_Parts'Access);
       Add ("malformed corpus: error text and line:column", Malformed_Corpus'Access);
       Add ("errors in inline text", Inline_Errors'Access);
+      Add ("value rules: integers, floats, booleans, strings", Value_Rules'Access);
+      Add ("a resolver given by the caller", Custom_Resolver'Access);
+      Add ("text rendering as ros2 interface show", Rendering'Access);
+      Add ("concurrent look-ups parse each type once", Concurrent_Look_Ups'Access);
       return Result;
    end Suite;
 
