@@ -558,6 +558,24 @@ package body ROSIDL.Interfaces is
       end;
    end Message;
 
+   function Message_By_DDS_Name (DDS_Name : String) return Message_Access is
+      Marker : constant String := "::dds_::";
+      At_Marker : constant Natural := Ada.Strings.Fixed.Index (DDS_Name, Marker);
+      First_Sep : constant Natural := Ada.Strings.Fixed.Index (DDS_Name, "::");
+   begin
+      if At_Marker = 0 or else First_Sep >= At_Marker
+        or else DDS_Name (DDS_Name'Last) /= '_'
+        or else At_Marker + Marker'Length > DDS_Name'Last - 1
+      then
+         raise Unknown_Type with
+           "unknown DDS type name " & DDS_Name & ": expected 'package::msg::dds_::Name_'";
+      end if;
+      return Message
+        (DDS_Name (DDS_Name'First .. First_Sep - 1) & "/"
+         & DDS_Name (First_Sep + 2 .. At_Marker - 1) & "/"
+         & DDS_Name (At_Marker + Marker'Length .. DDS_Name'Last - 1));
+   end Message_By_DDS_Name;
+
    ---------------------------------------------------------------------------
    --  Listings
 

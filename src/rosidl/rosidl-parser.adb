@@ -87,9 +87,17 @@ package body ROSIDL.Parser is
 
    package Line_Vectors is new Ada.Containers.Vectors (Positive, Line_Record);
 
+   BOM : constant String :=
+     Character'Val (16#EF#) & Character'Val (16#BB#) & Character'Val (16#BF#);
+   --  The UTF-8 byte order mark some editors put at the start of a file.
+
    function Split_Lines (Text : String) return Line_Vectors.Vector is
+      --  The lines of Text (LF or CR LF ends), numbered from 1, without a
+      --  leading byte order mark.
       Result : Line_Vectors.Vector;
-      First  : Positive := Text'First;
+      First  : Positive :=
+        (if Text'Length >= 3 and then Text (Text'First .. Text'First + 2) = BOM
+         then Text'First + 3 else Text'First);
       Number : Positive := 1;
 
       procedure Add (Last : Natural) is
@@ -102,7 +110,7 @@ package body ROSIDL.Parser is
       end Add;
 
    begin
-      for I in Text'Range loop
+      for I in First .. Text'Last loop
          if Text (I) = ASCII.LF then
             Add (I - 1);
             First := I + 1;

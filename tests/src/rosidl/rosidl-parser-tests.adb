@@ -167,6 +167,39 @@ package body ROSIDL.Parser.Tests is
       Assert (Field_Names (Definition (Response_Support (Srv)).all) = "sum",
               Field_Names (Definition (Response_Support (Srv)).all));
       Assert (Full_Name (Srv) = "example_interfaces/srv/AddTwoInts", Full_Name (Srv));
+      declare
+         Fib       : constant Action_Access :=
+           Interfaces.Action ("example_interfaces", "Fibonacci");
+         Send_Goal : constant Service_Support := To_Support (Fib.Send_Goal);
+      begin
+         Assert (Full_Name (Send_Goal) = "example_interfaces/action/Fibonacci_SendGoal",
+                 Full_Name (Send_Goal));
+         Assert (DDS_Type_Name (Request_Support (Send_Goal))
+                 = "example_interfaces::action::dds_::Fibonacci_SendGoal_Request_",
+                 DDS_Type_Name (Request_Support (Send_Goal)));
+      end;
+      --  From DDS type names back to definitions.
+      Assert (Interfaces.Message_By_DDS_Name ("std_msgs::msg::dds_::String_")
+              = Definition (S), "String by DDS name");
+      Assert (Interfaces.Message_By_DDS_Name
+                ("example_interfaces::srv::dds_::AddTwoInts_Response_")
+              = Definition (Response_Support (Srv)), "AddTwoInts_Response by DDS name");
+      Assert (Interfaces.Message_By_DDS_Name
+                ("example_interfaces::action::dds_::Fibonacci_GetResult_Response_")
+              = Interfaces.Action ("example_interfaces", "Fibonacci").Get_Result.Response,
+              "Fibonacci_GetResult_Response by DDS name");
+      for Bad of String_Vectors.Vector'
+        ["std_msgs::msg::dds_::String", "std_msgs::msg::String_", "::dds_::X_",
+         "std_msgs::msg::dds_::_", "std_msgs::msg::dds_::Nope_"]
+      loop
+         begin
+            Assert (Interfaces.Message_By_DDS_Name (Bad) = null,
+                    Bad & " must raise Unknown_Type");
+         exception
+            when Unknown_Type =>
+               null;
+         end;
+      end loop;
    end Type_Support_Names;
 
    ---------------------------------------------------------------------------
@@ -521,6 +554,38 @@ package body ROSIDL.Parser.Tests is
       end;
       Ada.Environment_Variables.Clear (Interfaces.Path_Variable);
 
+      --  Without SANCTA_ROOT the bundled folder is found from the program's
+      --  own folder (bin/../share/ros2_interfaces).
+      declare
+         Root_Variable : constant String := "SANCTA_ROOT";
+         Saved : constant String :=
+           (if Ada.Environment_Variables.Exists (Root_Variable)
+            then Ada.Environment_Variables.Value (Root_Variable) else "");
+         Via_Root : constant String := Bundled;
+      begin
+         Ada.Environment_Variables.Clear (Root_Variable);
+         declare
+            Via_Program : constant String := Bundled;
+         begin
+            if Saved /= "" then
+               Ada.Environment_Variables.Set (Root_Variable, Saved);
+            end if;
+            Assert (Via_Program = Via_Root, Via_Program & " /= " & Via_Root);
+         end;
+         Ada.Environment_Variables.Set (Root_Variable, "/nonexistent/root");
+         declare
+            Path : constant String_Vectors.Vector := Interfaces.Search_Path;
+         begin
+            if Saved /= "" then
+               Ada.Environment_Variables.Set (Root_Variable, Saved);
+            else
+               Ada.Environment_Variables.Clear (Root_Variable);
+            end if;
+            Assert (Path.Is_Empty or else Path.First_Element /= Via_Root,
+                    "SANCTA_ROOT names the bundled folder");
+         end;
+      end;
+
       --  Add_Folder.
       Add_User_Folder;
       Assert (Interfaces.Search_Path.Contains (User_Folder), "Add_Folder");
@@ -669,8 +734,11 @@ package body ROSIDL.Parser.Tests is
    end Only_Point;
 
    procedure Custom_Resolver (Unused : in out Fixture) is
+      BOM  : constant String :=
+        Character'Val (16#EF#) & Character'Val (16#BB#) & Character'Val (16#BF#);
       Path : constant Message_Access := Parse_Message
-        ("my_msgs", "Path", "Point[] points" & ASCII.CR & ASCII.LF & "Point start",
+        ("my_msgs", "Path",
+         BOM & "Point[] points" & ASCII.CR & ASCII.LF & "Point start",
          File => "mem:Path", Resolve => Only_Point'Access);
 
       procedure Unknown is
@@ -684,6 +752,7 @@ package body ROSIDL.Parser.Tests is
    begin
       Assert (Path.Fields (1).Of_Type.Nested = Point, "resolved by the given function");
       Assert (Path.Fields (2).Position.Line = 2, "CR LF line ends");
+      Assert (Path.Fields (1).Position.Column = 9, "columns after the byte order mark");
       Assert (Image (Path.Position) = "mem:Path:1:1", Image (Path.Position));
       Assert (Error_Of (Unknown'Access) = "mem:Other:2:3: expected a message type on the"
               & " search path, found 'geometry_msgs/Point'", Error_Of (Unknown'Access));
