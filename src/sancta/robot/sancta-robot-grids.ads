@@ -69,6 +69,8 @@ is
    end record;
    --  A straight wall from A to B.
 
+   type Segment_Array is array (Positive range <>) of Segment;
+
    procedure Draw (G : in out Grid; Wall : Segment);
    --  Marks occupied every cell whose centre lies closer to the wall than
    --  half its thickness plus half a cell (so a thin wall is at least one
