@@ -1,4 +1,5 @@
 with Harness_Tests;
+with Sancta.Robot.Tests;
 with Sancta.Simulation.Tests;
 with Sancta.Simulation.Map_Files.Tests;
 
@@ -13,6 +14,7 @@ package body All_Suites is
       Result.Add_Test (Harness_Tests.Suite);
       Result.Add_Test (Sancta.Simulation.Tests.Suite);
       Result.Add_Test (Sancta.Simulation.Map_Files.Tests.Suite);
+      Result.Add_Test (Sancta.Robot.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;
