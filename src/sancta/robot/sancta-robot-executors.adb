@@ -10,6 +10,7 @@ package body Sancta.Robot.Executors is
          This.Goals.Append (G);
       end loop;
       This.Done := 0;
+      This.Skips := 0;
       This.Tolerance := Tolerance;
    end Assign;
 
@@ -27,6 +28,14 @@ package body Sancta.Robot.Executors is
          This.Done := This.Done + 1;
       end loop;
    end Update;
+
+   procedure Skip (This : in out Executor) is
+   begin
+      This.Done := This.Done + 1;
+      This.Skips := This.Skips + 1;
+   end Skip;
+
+   function Skipped (This : Executor) return Natural is (This.Skips);
 
    function Total (This : Executor) return Natural is (Natural (This.Goals.Length));
 

@@ -29,8 +29,15 @@ package Sancta.Robot.Executors is
    procedure Update (This : in out Executor; Current : Pose);
    --  Marks the current goal (and any next one already within reach) done.
 
+   procedure Skip (This : in out Executor)
+     with Pre => This.Has_Goal;
+   --  Gives up the current goal (it counts as finished, and as skipped).
+
+   function Skipped (This : Executor) return Natural;
+
    function Total (This : Executor) return Natural;
    function Completed (This : Executor) return Natural;
+   --  Goals finished (reached or skipped).
    function Is_Done (This : Executor) return Boolean is
      (This.Completed = This.Total);
    function Has_Goal (This : Executor) return Boolean is (not This.Is_Done);
@@ -53,6 +60,7 @@ private
    type Executor is tagged record
       Goals     : Point_Vectors.Vector;
       Done      : Natural := 0;
+      Skips     : Natural := 0;
       Tolerance : Real := 0.2;
    end record;
 

@@ -83,6 +83,13 @@ package body Sancta.Simulation.Worlds is
      (This      : World;
       From      : Point;
       Angle     : Real;
+      Max_Range : Real) return Real is
+     (Cast_Along (This, From, Math.Cos (Angle), Math.Sin (Angle), Max_Range));
+
+   function Cast_Along
+     (This      : World;
+      From      : Point;
+      DX, DY    : Real;
       Max_Range : Real) return Real
    is
       Infinity : constant Real := Real'Last;
@@ -94,8 +101,6 @@ package body Sancta.Simulation.Worlds is
          G      : Grid renames This.Cells.all;
          C      : Clearance_Matrix renames This.Clearance.all;
          Res    : constant Real := G.Resolution;
-         DX     : constant Real := Math.Cos (Angle);
-         DY     : constant Real := Math.Sin (Angle);
          Step_I : constant Integer := (if DX >= 0.0 then 1 else -1);
          Step_J : constant Integer := (if DY >= 0.0 then 1 else -1);
          Delta_X : constant Real := (if DX = 0.0 then Infinity else Res / abs DX);
@@ -151,7 +156,7 @@ package body Sancta.Simulation.Worlds is
             end if;
          end loop;
       end;
-   end Cast;
+   end Cast_Along;
 
    -------------------
    -- Disk_Collides --

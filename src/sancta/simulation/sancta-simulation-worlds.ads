@@ -37,6 +37,16 @@ package Sancta.Simulation.Worlds is
    --  Distance from From along Angle (world frame) to the first occupied
    --  cell, or Max_Range when there is none closer.
 
+   function Cast_Along
+     (This      : World;
+      From      : Point;
+      DX, DY    : Real;
+      Max_Range : Real) return Real
+     with Pre  => abs (DX * DX + DY * DY - 1.0) < 1.0E-6,
+          Post => Cast_Along'Result in 0.0 .. Real'Max (0.0, Max_Range);
+   --  The same along the unit direction (DX, DY): no trigonometry, for
+   --  lasers that rotate their beam direction incrementally.
+
    function Disk_Collides
      (This : World; Center : Point; Radius : Real) return Boolean;
    --  The disk overlaps an occupied cell (or leaves the grid).
