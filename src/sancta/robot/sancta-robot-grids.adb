@@ -1,15 +1,24 @@
 package body Sancta.Robot.Grids is
 
-   function Clamp (V : Real) return Integer is
-     (if V < Real (-Far) then -Far
-      elsif V > Real (Far) then Far
-      else Integer (Real'Floor (V)));
+   function Floor (V : Real) return Integer is
+      I : Integer;
+   begin
+      if V < Real (-Far) then
+         return -Far;
+      elsif V > Real (Far) then
+         return Far;
+      end if;
+      --  Floor without the run-time library's attribute routine: the
+      --  conversion rounds, then step down when it rounded up.
+      I := Integer (V);
+      return (if Real (I) > V then I - 1 else I);
+   end Floor;
 
    function Column (F : Frame; X : Real) return Integer is
-     (Clamp ((X - F.Origin.X) / F.Resolution));
+     (Floor ((X - F.Origin.X) / F.Resolution));
 
    function Row (F : Frame; Y : Real) return Integer is
-     (Clamp ((Y - F.Origin.Y) / F.Resolution));
+     (Floor ((Y - F.Origin.Y) / F.Resolution));
 
    function Distance_To_Segment (P : Point; Wall : Segment) return Real is
       D   : constant Point := Wall.B - Wall.A;

@@ -27,12 +27,16 @@ is
    Far : constant := 1_000_000;
    --  Column/row numbers are clamped to -Far .. Far.
 
+   function Floor (V : Real) return Integer
+     with Inline;
+   --  The integer at or below V, clamped to -Far .. Far (fast).
+
    function Column (F : Frame; X : Real) return Integer
-     with Pre => F.Resolution > 0.0;
+     with Pre => F.Resolution > 0.0, Inline;
    --  The column holding abscissa X (may be outside 0 .. Width - 1).
 
    function Row (F : Frame; Y : Real) return Integer
-     with Pre => F.Resolution > 0.0;
+     with Pre => F.Resolution > 0.0, Inline;
 
    function Contains (F : Frame; I, J : Integer) return Boolean is
      (I in 0 .. F.Width - 1 and then J in 0 .. F.Height - 1);

@@ -8,6 +8,7 @@ package body Sancta.Simulation.Simulators is
    package Math is new Ada.Numerics.Generic_Elementary_Functions (Real);
 
    procedure Free is new Ada.Unchecked_Deallocation (Range_Array, Range_Access);
+   procedure Free is new Ada.Unchecked_Deallocation (Robot_Array, Robot_Array_Access);
 
    Epsilon : constant := 1.0E-9;
 
@@ -57,7 +58,7 @@ package body Sancta.Simulation.Simulators is
    is
       State : Robot_State;
    begin
-      Id := Robot_Id (Natural (This.Robots.Length) + 1);
+      Id := Robot_Id (This.Count + 1);
       State.Name := To_Unbounded_String
         (if Name = "" then "robot_" & Robot_Id'Image (Id)(2 .. Robot_Id'Image (Id)'Last)
          else Name);
@@ -71,13 +72,26 @@ package body Sancta.Simulation.Simulators is
       State.Next_GPS := This.Clock;
       State.Ranges := new Range_Array (1 .. Config.Laser.Beams);
       State.Ranges.all := [others => Config.Laser.Max_Range];
-      This.Robots.Append (State);
+      if This.Robots = null or else This.Robots'Last < Id then
+         declare
+            Grown : constant Robot_Array_Access :=
+              new Robot_Array (1 .. Robot_Id (Natural'Max (8, 2 * This.Count)));
+         begin
+            if This.Robots /= null then
+               Grown (1 .. Robot_Id'Base (This.Count)) :=
+                 This.Robots (1 .. Robot_Id'Base (This.Count));
+               Free (This.Robots);
+            end if;
+            This.Robots := Grown;
+         end;
+      end if;
+      This.Robots (Id) := State;
+      This.Count := This.Count + 1;
       This.Events.Append
         (Event'(Robot_Added, This.Clock, Id, Id, Position (Start)));
    end Add_Robot;
 
-   function Robot_Count (This : Simulator) return Natural is
-     (Natural (This.Robots.Length));
+   function Robot_Count (This : Simulator) return Natural is (This.Count);
 
    function Name (This : Simulator; Id : Robot_Id) return String is
      (To_String (This.Robots (Id).Name));
@@ -153,7 +167,7 @@ package body Sancta.Simulation.Simulators is
       DX     : constant Real := Math.Cos (Angle);
       DY     : constant Real := Math.Sin (Angle);
    begin
-      for Id in 1 .. This.Robots.Last_Index loop
+      for Id in 1 .. Robot_Id'Base (This.Count) loop
          if Id /= Ignore and then This.Robots (Id).Alive then
             Result := Real'Min
               (Result,
@@ -195,7 +209,7 @@ package body Sancta.Simulation.Simulators is
          DX := Next_X;
       end loop;
       --  Other robots: only the beams inside each one's angular extent.
-      for Other in 1 .. This.Robots.Last_Index loop
+      for Other in 1 .. Robot_Id'Base (This.Count) loop
          if Other /= Id and then This.Robots (Other).Alive then
             declare
                O      : Robot_State renames This.Robots (Other);
@@ -328,7 +342,7 @@ package body Sancta.Simulation.Simulators is
       if Worlds.Disk_Collides (This.The_World, Position (Next), C.Radius) then
          Blocked := True;
       else
-         for K in 1 .. This.Robots.Last_Index loop
+         for K in 1 .. Robot_Id'Base (This.Count) loop
             if K /= Id and then This.Robots (K).Alive then
                declare
                   Q     : constant Point := Position (This.Robots (K).Truth);
@@ -390,12 +404,12 @@ package body Sancta.Simulation.Simulators is
    begin
       for Tick in 1 .. N loop
          This.Ticks := This.Ticks + 1;
-         for Id in 1 .. This.Robots.Last_Index loop
+         for Id in 1 .. Robot_Id'Base (This.Count) loop
             if This.Robots (Id).Alive then
                Move (This, Id, This.Period);
             end if;
          end loop;
-         for Id in 1 .. This.Robots.Last_Index loop
+         for Id in 1 .. Robot_Id'Base (This.Count) loop
             if This.Robots (Id).Alive then
                Sense (This, Id);
             end if;
@@ -456,10 +470,13 @@ package body Sancta.Simulation.Simulators is
 
    overriding procedure Finalize (This : in out Simulator) is
    begin
-      for R of This.Robots loop
-         Free (R.Ranges);
-      end loop;
-      This.Robots.Clear;
+      if This.Robots /= null then
+         for Id in 1 .. Robot_Id'Base (This.Count) loop
+            Free (This.Robots (Id).Ranges);
+         end loop;
+         Free (This.Robots);
+      end if;
+      This.Count := 0;
    end Finalize;
 
 end Sancta.Simulation.Simulators;

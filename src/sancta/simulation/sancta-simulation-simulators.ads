@@ -209,14 +209,17 @@ private
       Last_GPS     : GPS_Fix;
    end record;
 
-   package Robot_Vectors is new Ada.Containers.Vectors (Robot_Id, Robot_State);
+   type Robot_Array is array (Robot_Id range <>) of Robot_State;
+   type Robot_Array_Access is access Robot_Array;
+   --  A plain array (grown by doubling): the hot loops index it directly.
 
    type Simulator is new Ada.Finalization.Limited_Controlled with record
       The_World : Worlds.World;
       Seed      : Interfaces.Unsigned_64 := 0;
       Period    : Real := 0.01;
       Ticks     : Long_Long_Integer := 0;
-      Robots    : Robot_Vectors.Vector;
+      Robots    : Robot_Array_Access;
+      Count     : Natural := 0;
       Events    : Event_Vectors.Vector;
    end record;
 

@@ -11,7 +11,7 @@ package body Sancta.Simulation.Worlds is
    procedure Free is new Ada.Unchecked_Deallocation
      (Clearance_Matrix, Clearance_Access);
 
-   Cap : constant := 10_000;
+   Cap : constant := 255;
    --  Clearances are counted up to this many cells.
 
    ------------
@@ -24,12 +24,12 @@ package body Sancta.Simulation.Worlds is
    begin
       return Result : World do
          Result.Cells := new Grid'(Occupancy);
-         Result.Clearance := new Clearance_Matrix (0 .. W - 1, 0 .. H - 1);
+         Result.Clear := new Clearance_Matrix (0 .. W - 1, 0 .. H - 1);
          declare
-            C : Clearance_Matrix renames Result.Clearance.all;
+            C : Clearance_Matrix renames Result.Clear.all;
 
             function At_Or_Zero (I, J : Integer) return Natural is
-              (if I in 0 .. W - 1 and then J in 0 .. H - 1 then C (I, J) else 0);
+              (if I in 0 .. W - 1 and then J in 0 .. H - 1 then Natural (C (I, J)) else 0);
             --  Outside the grid counts as occupied.
          begin
             --  Two-pass chessboard distance transform.
@@ -38,26 +38,26 @@ package body Sancta.Simulation.Worlds is
                   if Occupancy.Occupied (I, J) then
                      C (I, J) := 0;
                   else
-                     C (I, J) := Natural'Min
+                     C (I, J) := Clearance (Natural'Min
                        (Cap,
                         1 + Natural'Min
                           (Natural'Min (At_Or_Zero (I - 1, J - 1),
                                         At_Or_Zero (I, J - 1)),
                            Natural'Min (At_Or_Zero (I + 1, J - 1),
-                                        At_Or_Zero (I - 1, J))));
+                                        At_Or_Zero (I - 1, J)))));
                   end if;
                end loop;
             end loop;
             for J in reverse 0 .. H - 1 loop
                for I in reverse 0 .. W - 1 loop
                   if C (I, J) > 0 then
-                     C (I, J) := Natural'Min
-                       (C (I, J),
+                     C (I, J) := Clearance (Natural'Min
+                       (Natural (C (I, J)),
                         1 + Natural'Min
                           (Natural'Min (At_Or_Zero (I + 1, J + 1),
                                         At_Or_Zero (I, J + 1)),
                            Natural'Min (At_Or_Zero (I - 1, J + 1),
-                                        At_Or_Zero (I + 1, J))));
+                                        At_Or_Zero (I + 1, J)))));
                   end if;
                end loop;
             end loop;
@@ -99,7 +99,7 @@ package body Sancta.Simulation.Worlds is
       end if;
       declare
          G      : Grid renames This.Cells.all;
-         C      : Clearance_Matrix renames This.Clearance.all;
+         C      : Clearance_Matrix renames This.Clear.all;
          Res    : constant Real := G.Resolution;
          Step_I : constant Integer := (if DX >= 0.0 then 1 else -1);
          Step_J : constant Integer := (if DY >= 0.0 then 1 else -1);
@@ -110,39 +110,47 @@ package body Sancta.Simulation.Worlds is
          Next_X, Next_Y : Real;
          --  Ray parameters (distances) of the next column and row crossings.
 
-         procedure Locate is
+         Inv_Res : constant Real := 1.0 / Res;
+         Inv_DX  : constant Real := (if DX = 0.0 then 0.0 else Res / DX);
+         Inv_DY  : constant Real := (if DY = 0.0 then 0.0 else Res / DY);
+
+         procedure Locate with Inline is
             --  Cell and next crossings of the ray point at distance T.
-            GX : constant Real := (From.X + T * DX - G.Origin.X) / Res;
-            GY : constant Real := (From.Y + T * DY - G.Origin.Y) / Res;
+            GX : constant Real := (From.X + T * DX - G.Origin.X) * Inv_Res;
+            GY : constant Real := (From.Y + T * DY - G.Origin.Y) * Inv_Res;
          begin
-            I := Column (Frame_Of (G), From.X + T * DX);
-            J := Row (Frame_Of (G), From.Y + T * DY);
+            I := Floor (GX);
+            J := Floor (GY);
             Next_X :=
-              (if DX > 0.0 then T + (Real (I + 1) - GX) * Res / DX
-               elsif DX < 0.0 then T + (GX - Real (I)) * Res / (-DX)
+              (if DX > 0.0 then T + (Real (I + 1) - GX) * Inv_DX
+               elsif DX < 0.0 then T + (Real (I) - GX) * Inv_DX
                else Infinity);
             Next_Y :=
-              (if DY > 0.0 then T + (Real (J + 1) - GY) * Res / DY
-               elsif DY < 0.0 then T + (GY - Real (J)) * Res / (-DY)
+              (if DY > 0.0 then T + (Real (J + 1) - GY) * Inv_DY
+               elsif DY < 0.0 then T + (Real (J) - GY) * Inv_DY
                else Infinity);
          end Locate;
 
-         Clear : Natural;
+         Clear  : Clearance;
+         Last_I : constant Integer := G.Last_Column;
+         Last_J : constant Integer := G.Last_Row;
       begin
          Locate;
          loop
-            if I not in 0 .. G.Last_Column or else J not in 0 .. G.Last_Row
-              or else G.Occupied (I, J)
-            then
+            if I not in 0 .. Last_I or else J not in 0 .. Last_J then
+               return Real'Min (T, Max_Range);
+            end if;
+            Clear := C (I, J);
+            if Clear = 0 then
                return Real'Min (T, Max_Range);
             end if;
             if T >= Max_Range then
                return Max_Range;
             end if;
-            Clear := C (I, J);
-            if Clear >= 3 then
+            if Clear >= 6 then
                --  Every occupied cell is at least Clear - 1 cells away from
-               --  any point of this cell: jump.
+               --  any point of this cell: jump (when that saves more DDA
+               --  steps than locating again costs).
                T := T + Real (Clear - 1) * Res;
                Locate;
             elsif Next_X < Next_Y then
@@ -177,7 +185,7 @@ package body Sancta.Simulation.Worlds is
          CJ  : constant Integer := Row (F, Center.Y);
       begin
          if Contains (F, CI, CJ)
-           and then Real (This.Clearance (CI, CJ)) - 1.0 > Radius / Res
+           and then Real (This.Clear (CI, CJ)) - 1.0 > Radius / Res
          then
             return False;
          end if;
@@ -207,14 +215,14 @@ package body Sancta.Simulation.Worlds is
    begin
       if This.Cells /= null then
          This.Cells := new Grid'(This.Cells.all);
-         This.Clearance := new Clearance_Matrix'(This.Clearance.all);
+         This.Clear := new Clearance_Matrix'(This.Clear.all);
       end if;
    end Adjust;
 
    overriding procedure Finalize (This : in out World) is
    begin
       Free (This.Cells);
-      Free (This.Clearance);
+      Free (This.Clear);
    end Finalize;
 
 end Sancta.Simulation.Worlds;

@@ -55,12 +55,18 @@ private
 
    type Grid_Access is access Robot.Grids.Grid;
 
-   type Clearance_Matrix is array (Integer range <>, Integer range <>) of Natural;
+   type Clearance is range 0 .. 255 with Size => 8;
+   --  0: occupied; else the Chebyshev distance in cells to the nearest
+   --  occupied cell (or the grid's edge), capped at 255.
+
+   type Clearance_Matrix is array (Integer range <>, Integer range <>) of Clearance
+     with Component_Size => 8;
+   --  One byte per cell: the ray caster reads only this (cache friendly).
    type Clearance_Access is access Clearance_Matrix;
 
    type World is new Ada.Finalization.Controlled with record
       Cells     : Grid_Access;
-      Clearance : Clearance_Access;
+      Clear     : Clearance_Access;
    end record;
 
    overriding procedure Adjust (This : in out World);
