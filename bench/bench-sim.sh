@@ -8,5 +8,6 @@ set -euo pipefail
 source "$(dirname "$0")/../scripts/env.sh"
 cd "$repo_root"
 mkdir -p out/bench
+rm -f bin/bench_sim  # may be a debug build from build_all.gpr: relink
 gprbuild -P bench/bench.gpr -XBUILD_MODE=release -p -j2 -q 2>&1 | grep -v "no sources of language" || true
 taskset -c 0 ./bin/bench_sim share/worlds/office.yaml "${SIM_BENCH_SCALE:-1.0}"

@@ -51,9 +51,16 @@ package body Sancta.Robot.Scan_Matchers is
       type Pair_Array is array (Positive range <>) of Pair;
       Pairs : Pair_Array (1 .. N);
 
+      --  Plain copies of the containers: the loops below index them a lot.
+      Ref_Count : constant Natural := Natural (Reference.Points.Length);
+      Ref_Point : array (1 .. Ref_Count) of Point;
+      Ref_Beam  : array (1 .. Ref_Count) of Positive;
+      Beam_Ref  : array (1 .. Reference.Beams) of Natural;
+      Cur_Point : array (1 .. N) of Point;
+
       function Ref (Beam : Integer) return Natural is
         (if Reference.Beams = 0 then 0
-         else Reference.By_Beam (((Beam - 1) mod Reference.Beams) + 1));
+         else Beam_Ref (((Beam - 1) mod Reference.Beams) + 1));
       --  Wraps around: scans are usually full circles.
 
       Full : constant Boolean :=
@@ -63,6 +70,16 @@ package body Sancta.Robot.Scan_Matchers is
          Result.Relative := Guess;
          return Result;
       end if;
+      for K in 1 .. Ref_Count loop
+         Ref_Point (K) := Reference.Points (K).P;
+         Ref_Beam (K) := Reference.Points (K).Beam;
+      end loop;
+      for B in 1 .. Reference.Beams loop
+         Beam_Ref (B) := Reference.By_Beam (B);
+      end loop;
+      for K in 1 .. N loop
+         Cur_Point (K) := Current.Points (K).P;
+      end loop;
       for Iteration in 1 .. Config.Max_Iterations loop
          Result.Iterations := Iteration;
          declare
@@ -74,7 +91,7 @@ package body Sancta.Robot.Scan_Matchers is
                Pairs (K).Used := False;
                if (K - 1) mod Config.Subsample = 0 then
                   declare
-                     P       : constant Point := Current.Points (K).P;
+                     P       : constant Point := Cur_Point (K);
                      Q       : constant Point :=
                        (T.X + C * P.X - S * P.Y, T.Y + S * P.X + C * P.Y);
                      Bearing : constant Real := Math.Arctan (Q.Y, Q.X);
@@ -90,10 +107,10 @@ package body Sancta.Robot.Scan_Matchers is
                               R : constant Natural := Ref (B);
                            begin
                               if R /= 0
-                                and then Distance (Reference.Points (R).P, Q) < Best_D
+                                and then Distance (Ref_Point (R), Q) < Best_D
                               then
                                  Best := R;
-                                 Best_D := Distance (Reference.Points (R).P, Q);
+                                 Best_D := Distance (Ref_Point (R), Q);
                               end if;
                            end;
                         end if;
@@ -101,8 +118,8 @@ package body Sancta.Robot.Scan_Matchers is
                      if Best /= 0 then
                         --  The line through Best and its closer neighbour.
                         declare
-                           A     : constant Point := Reference.Points (Best).P;
-                           Beam  : constant Integer := Reference.Points (Best).Beam;
+                           A     : constant Point := Ref_Point (Best);
+                           Beam  : constant Integer := Ref_Beam (Best);
                            Other : Natural := 0;
                            Dist  : Real := 0.3;
                         begin
@@ -113,17 +130,17 @@ package body Sancta.Robot.Scan_Matchers is
                                     R : constant Natural := Ref (Beam + D);
                                  begin
                                     if R /= 0 and then R /= Best
-                                      and then Distance (Reference.Points (R).P, A) < Dist
+                                      and then Distance (Ref_Point (R), A) < Dist
                                     then
                                        Other := R;
-                                       Dist := Distance (Reference.Points (R).P, A);
+                                       Dist := Distance (Ref_Point (R), A);
                                     end if;
                                  end;
                               end if;
                            end loop;
                            if Other /= 0 and then Dist > 1.0E-6 then
                               declare
-                                 B2 : constant Point := Reference.Points (Other).P;
+                                 B2 : constant Point := Ref_Point (Other);
                                  Nx : constant Real := -(B2.Y - A.Y) / Dist;
                                  Ny : constant Real := (B2.X - A.X) / Dist;
                               begin
