@@ -221,6 +221,33 @@ package body Sancta.Robot.Tests is
       end loop;
    end Closed_Loop_Corridor;
 
+   procedure Robots_Pass_Each_Other (Unused : in out Fixture) is
+      --  Two robots swap ends of a 12 x 2.5 m hall, head on.
+      G      : constant Grids.Grid := Make_Grid (12.0, 2.5, Wall_List'(1 .. 0 => <>));
+      S      : Simulator;
+      A, B   : Robot_Id;
+      Map    : Path_Costs.Planner;
+      NA, NB : Navigators.Navigator;
+   begin
+      Map.Initialize (G, Robot_Radius => 0.3);
+      S.Initialize (Worlds.Create (G), Seed => 8);
+      S.Add_Robot (Default_Robot, (1.0, 1.25, 0.0), A);
+      S.Add_Robot (Default_Robot, (11.0, 1.25, Pi), B);
+      S.Step (0.1);
+      NA.Set_Goal (Map, S.Ground_Truth (A).Pose, (11.0, 1.25));
+      NB.Set_Goal (Map, S.Ground_Truth (B).Pose, (1.0, 1.25));
+      while S.Clock < 60.0 and then not (NA.Arrived and then NB.Arrived) loop
+         S.Set_Command
+           (A, NA.Command (Map, S.Ground_Truth (A).Pose, S.Latest_Scan (A), S.Clock));
+         S.Set_Command
+           (B, NB.Command (Map, S.Ground_Truth (B).Pose, S.Latest_Scan (B), S.Clock));
+         S.Step (0.1);
+      end loop;
+      Assert (NA.Arrived and then NB.Arrived, "both arrived; A at"
+              & Img (S.Ground_Truth (A).Pose.X) & ", B at" & Img (S.Ground_Truth (B).Pose.X));
+      Assert (S.Collision_Count (A) + S.Collision_Count (B) = 0, "no collision");
+   end Robots_Pass_Each_Other;
+
    procedure Mapper_Agrees_With_World (Unused : in out Fixture) is
       G       : constant Grids.Grid := Office_Grid;
       S       : Simulator;
@@ -451,6 +478,8 @@ package body Sancta.Robot.Tests is
       Add ("executor goals and progress", Executor_Progress'Access);
       Add ("controller free distance and commands", Controller_Free_Distance'Access);
       Add ("closed loop: through a corridor, no collision", Closed_Loop_Corridor'Access);
+      Add ("closed loop: two robots pass each other head on",
+           Robots_Pass_Each_Other'Access);
       Add ("mapper agrees with the world", Mapper_Agrees_With_World'Access);
       Add ("scan matching recovers a known offset", Scan_Match_Single'Access);
       Add ("scan matching beats drifting odometry", Scan_Matching_Beats_Odometry'Access);
