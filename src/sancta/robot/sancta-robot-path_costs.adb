@@ -8,12 +8,17 @@ package body Sancta.Robot.Path_Costs is
    procedure Free is new Ada.Unchecked_Deallocation (Real_Array, Real_Access);
    procedure Free is new Ada.Unchecked_Deallocation (Index_Array, Index_Access);
    procedure Free is new Ada.Unchecked_Deallocation (Scratch, Scratch_Access);
+   procedure Free is new Ada.Unchecked_Deallocation (Cost_Maps.Map, Cost_Map_Access);
+
+   Cache_Limit : constant := 1_000_000;
+   --  Remembered pairs at most (then the cache starts over).
 
    Sqrt_2 : constant := 1.41421_35623_73095;
 
    overriding procedure Finalize (This : in out Planner) is
    begin
       Free (This.Blocked);
+      Free (This.Cache);
       if This.Work /= null then
          Free (This.Work.G);
          Free (This.Work.Parent);
@@ -73,6 +78,7 @@ package body Sancta.Robot.Path_Costs is
          Heap       => new Index_Array (0 .. N * 8),
          Heap_F     => new Real_Array (0 .. N * 8),
          Generation => 0);
+      This.Cache := new Cost_Maps.Map;
    end Initialize;
 
    function Cell_Free (This : Planner; I, J : Integer) return Boolean is
@@ -208,9 +214,39 @@ package body Sancta.Robot.Path_Costs is
       if This.Blocked = null then
          return Unreachable;
       end if;
-      Search (This, From, To, Goal);
-      return (if Goal < 0 then Unreachable else This.Work.G (Goal));
+      declare
+         F   : Frame renames This.Frame;
+         FI  : constant Integer := Column (F, From.X);
+         FJ  : constant Integer := Row (F, From.Y);
+         TI  : constant Integer := Column (F, To.X);
+         TJ  : constant Integer := Row (F, To.Y);
+         Key : Cell_Pair;
+         Pos : Cost_Maps.Cursor;
+         Result : Real;
+      begin
+         if Contains (F, FI, FJ) and then Contains (F, TI, TJ) then
+            Key := (FJ * F.Width + FI, TJ * F.Width + TI);
+            Pos := This.Cache.Find (Key);
+            if Cost_Maps.Has_Element (Pos) then
+               return Cost_Maps.Element (Pos);
+            end if;
+         end if;
+         Search (This, From, To, Goal);
+         Result := (if Goal < 0 then Unreachable else This.Work.G (Goal));
+         if Contains (F, FI, FJ) and then Contains (F, TI, TJ) then
+            if Natural (This.Cache.Length) >= Cache_Limit then
+               This.Cache.Clear;
+            end if;
+            This.Cache.Insert (Key, Result);
+         end if;
+         return Result;
+      end;
    end Cost;
+
+   function Generic_Cost (From, To : Point) return Real is (Cost (Map, From, To));
+
+   function Cached_Costs (This : Planner) return Natural is
+     (if This.Cache = null then 0 else Natural (This.Cache.Length));
 
    function Line_Of_Sight (This : Planner; A, B : Point) return Boolean is
       L     : constant Real := Distance (A, B);

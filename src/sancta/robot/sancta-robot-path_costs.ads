@@ -7,6 +7,7 @@
 --     P : constant Planner := Create (World_Grid, Robot_Radius => 0.25);
 --     C : constant Real := Cost (P, (1.0, 1.0), (8.0, 3.0));
 --     if C = Unreachable then ...
+with Ada.Containers.Hashed_Maps;
 with Ada.Containers.Vectors;
 with Ada.Finalization;
 with Sancta.Geometry;     use Sancta.Geometry;
@@ -39,6 +40,17 @@ package Sancta.Robot.Path_Costs is
    --  leave it (the robot is there already); a goal inside one is
    --  unreachable.
 
+   generic
+      Map : in out Planner;
+   function Generic_Cost (From, To : Point) return Real;
+   --  Cost on Map as a plain function of two points, the shape a task
+   --  planner's cost callback takes:
+   --     function Office_Cost is new Generic_Cost (Office_Planner);
+
+   function Cached_Costs (This : Planner) return Natural;
+   --  Pairs of cells whose cost is remembered: Cost answers a pair it saw
+   --  before without searching (the grid never changes after Initialize).
+
    package Point_Vectors is new Ada.Containers.Vectors (Positive, Point);
 
    function Path (This : Planner; From, To : Point) return Point_Vectors.Vector;
@@ -69,11 +81,27 @@ private
 
    type Scratch_Access is access Scratch;
 
+   type Cell_Pair is record
+      From, To : Natural := 0;
+   end record;
+
+   use type Ada.Containers.Hash_Type;
+
+   function Hash (P : Cell_Pair) return Ada.Containers.Hash_Type is
+     (Ada.Containers.Hash_Type'Mod (P.From) * 16#9E37_79B1#
+      xor Ada.Containers.Hash_Type'Mod (P.To));
+
+   package Cost_Maps is new Ada.Containers.Hashed_Maps
+     (Cell_Pair, Real, Hash, "=");
+
+   type Cost_Map_Access is access Cost_Maps.Map;
+
    type Planner is new Ada.Finalization.Limited_Controlled with record
       Frame   : Grids.Frame;
       Blocked : Boolean_Access;
       Connect : Connectivity := Eight;
       Work    : Scratch_Access;
+      Cache   : Cost_Map_Access;
    end record;
 
    overriding procedure Finalize (This : in out Planner);

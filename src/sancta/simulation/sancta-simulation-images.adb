@@ -139,6 +139,9 @@ package body Sancta.Simulation.Images is
          if W = 0 or else H = 0 then
             Fail ("empty image");
          end if;
+         if W * H > Max_Pixels then
+            Fail ("image too large (over" & Max_Pixels'Image & " pixels)");
+         end if;
          if Max = 0 then
             Fail ("maximum gray value must be positive");
          end if;
@@ -252,6 +255,9 @@ package body Sancta.Simulation.Images is
                   end if;
                   W := Natural (U32 (First));
                   H := Natural (U32 (First + 4));
+                  if W * H > Max_Pixels then
+                     Fail ("image too large (over" & Max_Pixels'Image & " pixels)");
+                  end if;
                   Depth := Natural (C (C'First + 8));
                   CType := Natural (C (C'First + 9));
                   if not (case CType is

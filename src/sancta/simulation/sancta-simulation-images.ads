@@ -28,10 +28,12 @@ package Sancta.Simulation.Images is
    --  Copies are deep. The default image is 0 x 0.
 
    Max_Side : constant := 30_000;
+   Max_Pixels : constant := 40_000_000;
    --  Larger images are refused (as malformed) rather than allocated.
 
    function Create (Width, Height : Natural; Fill : Color := White) return Image
-     with Pre => Width <= Max_Side and then Height <= Max_Side;
+     with Pre => Width <= Max_Side and then Height <= Max_Side
+                 and then Width * Height <= Max_Pixels;
 
    function Width (This : Image) return Natural;
    function Height (This : Image) return Natural;

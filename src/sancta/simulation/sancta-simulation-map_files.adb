@@ -375,9 +375,10 @@ package body Sancta.Simulation.Map_Files is
       end if;
       if (High.X - Low.X) / Resolution > 20_000.0
         or else (High.Y - Low.Y) / Resolution > 20_000.0
+        or else (High.X - Low.X) * (High.Y - Low.Y) / Resolution ** 2 > 40.0E6
       then
          Fail (File_Name, Line_No, "world too large for its resolution (over 20000 cells"
-               & " a side)");
+               & " a side or 40 million cells)");
       end if;
       return Result : Segment_Array (1 .. Natural (Walls.Length)) do
          for K in Result'Range loop

@@ -47,7 +47,10 @@ package body Sancta.Simulation.Rendering is
       H_M    : constant Real := Real (F.Height) * F.Resolution;
       Width  : constant Natural := Natural'Max (1, Natural (W_M * Scale));
       Height : constant Natural := Natural'Max (1, Natural (H_M * Scale));
-      Img    : Image := Create (Natural'Min (Width, Max_Side), Natural'Min (Height, Max_Side));
+      Img    : Image :=
+        (if Width > Max_Side or else Height > Max_Side or else Width * Height > Max_Pixels
+         then raise Format_Error with "picture too large: lower the scale"
+         else Create (Width, Height));
 
       function PX (P : Point) return Integer is
         (Integer (Real'Floor ((P.X - F.Origin.X) * Scale)) + 1);

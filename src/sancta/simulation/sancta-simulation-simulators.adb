@@ -127,6 +127,14 @@ package body Sancta.Simulation.Simulators is
       end if;
    end Revive;
 
+   procedure Teleport (This : in out Simulator; Id : Robot_Id; Where : Pose) is
+      R : Robot_State renames This.Robots (Id);
+   begin
+      R.Truth := Where;
+      R.Velocity := (others => 0.0);
+      R.Colliding := False;
+   end Teleport;
+
    procedure Set_Command (This : in out Simulator; Id : Robot_Id; Command : Twist) is
       R : Robot_State renames This.Robots (Id);
    begin

@@ -133,6 +133,11 @@ package Sancta.Simulation.Simulators is
      with Pre => Natural (Id) <= This.Robot_Count;
    --  The robot comes back where it died, at rest.
 
+   procedure Teleport (This : in out Simulator; Id : Robot_Id; Where : Pose)
+     with Pre => Natural (Id) <= This.Robot_Count;
+   --  Puts the robot at Where, at rest (its odometry does not notice: a
+   --  kidnapped robot, for fault-injection tests).
+
    procedure Set_Command (This : in out Simulator; Id : Robot_Id; Command : Twist)
      with Pre => Natural (Id) <= This.Robot_Count;
    --  The velocity the robot tries to reach (clamped to its limits).

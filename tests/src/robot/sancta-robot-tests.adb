@@ -91,6 +91,16 @@ package body Sancta.Robot.Tests is
       Assert (P8.Is_Free ((4.6, 1.0)), "just out of the inflation");
       Assert (P8.Cost (From, (4.9, 1.0)) = Path_Costs.Unreachable, "goal in a wall");
       declare
+         Before : constant Natural := P8.Cached_Costs;
+         function Callback is new Path_Costs.Generic_Cost (P8);
+         C : constant Real := Callback ((2.0, 1.0), (12.0, 5.0));
+      begin
+         Assert (P8.Cached_Costs = Before, "a pair asked before is answered from the cache");
+         Assert (C = P8.Cost ((2.0, 1.0), (12.0, 5.0)), "the callback gives the same cost");
+         Assert (Callback ((2.0, 1.0), (12.0, 4.0)) > 0.0 and then P8.Cached_Costs = Before + 1,
+                 "a new pair is searched and remembered");
+      end;
+      declare
          Path : constant Path_Costs.Point_Vectors.Vector :=
            P8.Path ((2.0, 1.0), (12.0, 5.0));
          Last : Point := (2.0, 1.0);

@@ -84,6 +84,20 @@ package body Sancta.Simulation.Map_Files.Tests is
             when Format_Error => Raised := True;
          end;
          Assert (Raised, "no over-run of a too small output");
+         --  Every byte flipped, with three patterns: Format_Error or a
+         --  result, never another exception.
+         for K in Packed'Range loop
+            for Pattern of Byte_Array'[16#01#, 16#5A#, 16#FF#] loop
+               declare
+                  Fuzzed : Byte_Array := Packed;
+               begin
+                  Fuzzed (K) := Fuzzed (K) xor Pattern;
+                  Zlib_Decompress (Fuzzed, Output, Last);
+               exception
+                  when Format_Error => null;
+               end;
+            end loop;
+         end loop;
       end;
    end Inflate_Known_Streams;
 
@@ -212,6 +226,47 @@ package body Sancta.Simulation.Map_Files.Tests is
       Check_Image ("no_such.png", "no such file");
    end Bad_Files;
 
+   procedure Corrupted_Files (Unused : in out Fixture) is
+      --  Every byte of the fixtures flipped in turn (and truncations):
+      --  decoding either succeeds or raises Format_Error, nothing else.
+      type Name_List is array (1 .. 4) of String (1 .. 16);
+      Names : constant Name_List :=
+        ["room.png        ", "room_rgb.png    ", "room_palette.png", "room.pgm        "];
+      Tried, Refused : Natural := 0;
+   begin
+      for Name of Names loop
+         declare
+            Good : constant Byte_Array :=
+              Read_File (Dir & Ada.Strings.Fixed.Trim (Name, Ada.Strings.Right));
+         begin
+            for K in Good'Range loop
+               for Cut in Boolean loop
+                  declare
+                     Bad : Byte_Array := (if Cut then Good (Good'First .. K) else Good);
+                  begin
+                     if not Cut then
+                        Bad (K) := Bad (K) xor 16#A5#;
+                     end if;
+                     Tried := Tried + 1;
+                     declare
+                        I : constant Image :=
+                          (if Bad'Length >= 8 and then Bad (Bad'First) = 137
+                           then Decode_PNG (Bad, "fuzz") else Decode_PGM (Bad, "fuzz"));
+                     begin
+                        Assert (Width (I) > 0 and then Height (I) > 0, "a decoded image");
+                     end;
+                  exception
+                     when Format_Error =>
+                        Refused := Refused + 1;
+                  end;
+               end loop;
+            end loop;
+         end;
+      end loop;
+      Assert (Refused > Tried / 2, "most corruptions are detected:" & Refused'Image
+              & " of" & Tried'Image);
+   end Corrupted_Files;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
@@ -228,6 +283,8 @@ package body Sancta.Simulation.Map_Files.Tests is
       Add ("map-server YAML worlds", Map_Server_Worlds'Access);
       Add ("wall worlds", Wall_Worlds'Access);
       Add ("bad files give file:line or byte errors", Bad_Files'Access);
+      Add ("corrupted images: Format_Error or success, never a crash",
+           Corrupted_Files'Access);
       return Result;
    end Suite;
 
