@@ -10,6 +10,16 @@
 --  Faster than real time is just calling Step faster; the simulator never
 --  reads the wall clock.
 --
+--  ROS 2 exposure (done by the driver program, robot namespace = Name):
+--     <name>/cmd_vel       geometry_msgs/Twist     -> Set_Command
+--     <name>/odom          nav_msgs/Odometry       <- Latest_Odometry (Odometry_Count)
+--     <name>/scan          sensor_msgs/LaserScan   <- Latest_Scan (Scan_Count)
+--     <name>/ground_truth  geometry_msgs/PoseStamped <- Ground_Truth
+--     <name>/gps           (fix + std dev)         <- Latest_GPS (GPS_Count)
+--     /clock               rosgraph_msgs/Clock     <- Clock
+--     add/kill/revive service                      -> Add_Robot, Kill, Revive, Teleport
+--     collisions                                   <- Take_Events
+--
 --     S.Initialize (World, Seed => 7);
 --     R := S.Add_Robot (Default_Robot, (1.0, 1.0, 0.0));
 --     loop
