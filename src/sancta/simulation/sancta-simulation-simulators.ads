@@ -82,6 +82,20 @@ package Sancta.Simulation.Simulators is
 
    Default_Robot : constant Robot_Config := (others => <>);
 
+   function Is_Valid (Config : Robot_Config) return Boolean is
+     (Config.Radius > 0.0 and then Config.Max_Linear >= 0.0
+      and then Config.Max_Angular >= 0.0 and then Config.Max_Linear_Accel > 0.0
+      and then Config.Max_Angular_Accel > 0.0
+      and then Config.Laser.Beams <= 10_000
+      and then Config.Laser.Field_Of_View in 0.0 .. 2.0 * Pi
+      and then Config.Laser.Max_Range > Config.Laser.Min_Range
+      and then Config.Laser.Min_Range >= 0.0 and then Config.Laser.Noise_Std_Dev >= 0.0
+      and then Config.Laser.Rate >= 0.0 and then Config.Odometry.Rate >= 0.0
+      and then Config.Odometry.Linear_Noise >= 0.0
+      and then Config.Odometry.Angular_Noise >= 0.0
+      and then Config.GPS.Rate >= 0.0 and then Config.GPS.Std_Dev >= 0.0);
+   --  Positive sizes and limits, sane sensor settings.
+
    type Robot_Id is new Positive;
    --  Robots are numbered from 1 in order of addition; a killed robot keeps
    --  its number.
@@ -121,7 +135,8 @@ package Sancta.Simulation.Simulators is
       Config : Robot_Config;
       Start  : Pose;
       Id     : out Robot_Id;
-      Name   : String := "");
+      Name   : String := "")
+     with Pre => Is_Valid (Config);
    --  A new robot (named "robot_<Id>" by default), alive, at rest at Start.
    --  A start inside a wall or another robot is reported as a collision at
    --  the first step.
