@@ -85,9 +85,18 @@ package body Sancta.Simulation.Demos is
             G     : Point;
          begin
             for K in Goals'Range loop
-               loop
+               for Attempt in 1 .. 10_001 loop
+                  if Attempt > 10_000 then
+                     raise Constraint_Error with "no room for" & Goals'Length'Image
+                       & " goals per robot in this world";
+                  end if;
                   G := Random_Free (0);
+                  --  Away from the other goals and starts too: a robot
+                  --  that ended its tour parks on its last goal.
                   exit when Distance (G, Last) > 3.0
+                    and then (for all M of Result.Picture.Markers =>
+                                Distance (M.Where, G) > 1.0)
+                    and then (for all K in 1 .. N => Distance (Starts (K), G) > 1.0)
                     and then Map.Cost (Last, G) /= Path_Costs.Unreachable;
                end loop;
                Goals (K) := G;

@@ -13,6 +13,7 @@ with Sancta.Robot.Navigators;
 with Sancta.Robot.Path_Costs;
 with Sancta.Robot.Scan_Matchers;
 with Sancta.Robot.Sensors;
+with Sancta.Simulation.Demos;
 with Sancta.Simulation.Simulators;
 with Sancta.Simulation.Worlds;
 
@@ -258,6 +259,24 @@ package body Sancta.Robot.Tests is
       Assert (S.Collision_Count (A) + S.Collision_Count (B) = 0, "no collision");
    end Robots_Pass_Each_Other;
 
+   procedure Team_Demo (Unused : in out Fixture) is
+      --  Three robots on random tours in a room with a partition.
+      G      : constant Grids.Grid :=
+        Make_Grid (8.0, 6.0, [Seg (4.0, 0.0, 4.0, 3.5, 0.1)]);
+      Result : Demos.Demo_Result;
+   begin
+      Demos.Run_Team
+        (Worlds.Create (G),
+         (Robots => 3, Seconds => 120.0, Seed => 21, Goals_Per_Robot => 2, others => <>),
+         Result);
+      Assert (Result.Collisions = 0, "no collision");
+      Assert (Result.Goals_Total = 6 and then Result.Goals_Reached = 6,
+              "every goal reached:" & Result.Goals_Reached'Image);
+      Assert (Natural (Result.Picture.Trajectories.Length) = 3
+              and then (for all T of Result.Picture.Trajectories => Natural (T.Length) >= 2),
+              "a trajectory per robot");
+   end Team_Demo;
+
    procedure Mapper_Agrees_With_World (Unused : in out Fixture) is
       G       : constant Grids.Grid := Office_Grid;
       S       : Simulator;
@@ -490,6 +509,7 @@ package body Sancta.Robot.Tests is
       Add ("closed loop: through a corridor, no collision", Closed_Loop_Corridor'Access);
       Add ("closed loop: two robots pass each other head on",
            Robots_Pass_Each_Other'Access);
+      Add ("closed loop: team demo, no collision", Team_Demo'Access);
       Add ("mapper agrees with the world", Mapper_Agrees_With_World'Access);
       Add ("scan matching recovers a known offset", Scan_Match_Single'Access);
       Add ("scan matching beats drifting odometry", Scan_Matching_Beats_Odometry'Access);
