@@ -240,10 +240,14 @@ package body Sancta.Simulation.Simulators is
                   begin
                      for K in Lo .. Hi loop
                         declare
+                           Off   : constant Real := Real (K) * Inc
+                             - 2.0 * Pi * Real'Floor (Real (K) * Inc / (2.0 * Pi));
+                           --  The candidate's offset from beam 1 in [0, 2 pi).
                            Index : constant Integer :=
                              (if Full then K mod N
-                              elsif K >= N then K - Integer (2.0 * Pi / Inc)
-                              else K);
+                              else Integer (Real'Rounding (Off / Inc)));
+                           --  A wrong neighbour is harmless: the ray test
+                           --  below uses the beam's own angle.
                            A : Real;
                         begin
                            if Index in 0 .. N - 1 then

@@ -100,6 +100,31 @@ package body Sancta.Simulation.Tests is
       Assert (Near (S.Latest_Scan (A).Ranges (Front), 1.8), "a revived robot is seen");
    end Laser_Scan_Sees_Walls_And_Robots;
 
+   procedure Partial_Field_Of_View (Unused : in out Fixture) is
+      S       : Simulator;
+      A, B, C : Robot_Id;
+      Config  : Robot_Config := Exact;
+   begin
+      Config.Laser.Beams := 181;
+      Config.Laser.Field_Of_View := Pi;
+      S.Initialize (Box_World);
+      S.Add_Robot (Config, (2.0, 5.0, 0.0), A);
+      S.Add_Robot (Exact, (4.0, 5.0, 0.0), B);
+      S.Add_Robot (Exact, (2.0, 3.0, 0.0), C);
+      S.Step (0.01);
+      declare
+         Scan : constant Sensors.Laser_Scan := S.Latest_Scan (A);
+      begin
+         Assert (Near (Scan.Angle_Min, -Pi / 2.0) and then Near (Scan.Angle_Max, Pi / 2.0),
+                 "180 degrees centred ahead");
+         Assert (Near (Sensors.Beam_Angle (Scan, 91), 0.0), "beam 91 ahead");
+         Assert (Near (Scan.Ranges (91), 1.8), "robot ahead:" & Image (Scan.Ranges (91)));
+         Assert (Near (Scan.Ranges (1), 1.8), "robot on the right, first beam:"
+                 & Image (Scan.Ranges (1)));
+         Assert (Near (Scan.Ranges (181), 4.95), "wall on the left, last beam");
+      end;
+   end Partial_Field_Of_View;
+
    procedure Kinematics (Unused : in out Fixture) is
       S : Simulator;
       R : Robot_Id;
@@ -268,6 +293,7 @@ package body Sancta.Simulation.Tests is
       Add ("ray casting against analytic distances", Ray_Casting'Access);
       Add ("laser sees walls, robots; kill and revive",
            Laser_Scan_Sees_Walls_And_Robots'Access);
+      Add ("laser with a partial field of view", Partial_Field_Of_View'Access);
       Add ("kinematics: straight line and known arcs", Kinematics'Access);
       Add ("acceleration and speed limits", Acceleration_And_Speed_Limits'Access);
       Add ("wall collision stops and is reported once", Wall_Collision'Access);
