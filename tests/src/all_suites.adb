@@ -1,5 +1,5 @@
-with Harness_Tests;
 with Simulation_Suites;
+with Harness_Tests;
 
 package body All_Suites is
 
@@ -10,9 +10,9 @@ package body All_Suites is
    function Suite return Access_Test_Suite is
    begin
       Result.Add_Test (Harness_Tests.Suite);
-      Result.Add_Test (Simulation_Suites.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
+      Result.Add_Test (Simulation_Suites.Suite);
       return Result'Access;
    end Suite;
 
