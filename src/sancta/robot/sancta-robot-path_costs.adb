@@ -75,8 +75,8 @@ package body Sancta.Robot.Path_Costs is
          Parent     => new Index_Array (0 .. N - 1),
          Stamp      => new Index_Array'(0 .. N - 1 => 0),
          Closed     => new Index_Array'(0 .. N - 1 => 0),
-         Heap       => new Index_Array (0 .. N * 8),
-         Heap_F     => new Real_Array (0 .. N * 8),
+         Heap       => new Index_Array (0 .. Natural'Max (1024, N / 8)),
+         Heap_F     => new Real_Array (0 .. Natural'Max (1024, N / 8)),
          Generation => 0);
       This.Cache := new Cost_Maps.Map;
    end Initialize;
@@ -116,6 +116,20 @@ package body Sancta.Robot.Path_Costs is
       procedure Push (Cell : Natural; Priority : Real) is
          K : Natural := Size;
       begin
+         if Size = W.Heap'Length then
+            --  Grow (a cell enters at most 8 times: the heap stays under 8N).
+            declare
+               New_Heap   : constant Index_Access := new Index_Array (0 .. 2 * Size - 1);
+               New_Heap_F : constant Real_Access := new Real_Array (0 .. 2 * Size - 1);
+            begin
+               New_Heap (0 .. Size - 1) := W.Heap.all;
+               New_Heap_F (0 .. Size - 1) := W.Heap_F.all;
+               Free (W.Heap);
+               Free (W.Heap_F);
+               W.Heap := New_Heap;
+               W.Heap_F := New_Heap_F;
+            end;
+         end if;
          Size := Size + 1;
          while K > 0 and then W.Heap_F ((K - 1) / 2) > Priority loop
             W.Heap (K) := W.Heap ((K - 1) / 2);
@@ -192,7 +206,6 @@ package body Sancta.Robot.Path_Costs is
                         begin
                            if W.Closed (N) /= W.Generation
                              and then (W.Stamp (N) /= W.Generation or else G < W.G (N))
-                             and then Size < W.Heap'Length
                            then
                               W.Stamp (N) := W.Generation;
                               W.G (N) := G;
