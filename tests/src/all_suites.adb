@@ -1,3 +1,4 @@
+with Simulation_Suites;
 with Harness_Tests;
 with ROSIDL.Parser.Tests;
 
@@ -13,6 +14,7 @@ package body All_Suites is
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
+      Result.Add_Test (Simulation_Suites.Suite);
       return Result'Access;
    end Suite;
 

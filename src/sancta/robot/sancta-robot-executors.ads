@@ -1,0 +1,67 @@
+--  Task execution: a robot's task list (goals to visit in order) turned
+--  into successive goals, with completion detection and progress. Feed it
+--  the robot's pose; it advances when the current goal is within the
+--  tolerance.
+--
+--     E.Assign ([(2.0, 1.0), (5.0, 4.0)]);
+--     loop
+--        E.Update (Pose);
+--        exit when E.Is_Done;
+--        Drive_To (E.Current_Goal);
+--     end loop;
+with Ada.Containers.Vectors;
+with Sancta.Geometry;  use Sancta.Geometry;
+
+package Sancta.Robot.Executors is
+
+   type Point_Array is array (Positive range <>) of Point;
+
+   type Executor is tagged private;
+
+   procedure Assign
+     (This      : in out Executor;
+      Goals     : Point_Array;
+      Tolerance : Real := 0.2);
+   --  Replaces the task list; progress restarts.
+
+   procedure Append (This : in out Executor; Goal : Point);
+
+   procedure Update (This : in out Executor; Current : Pose);
+   --  Marks the current goal (and any next one already within reach) done.
+
+   procedure Skip (This : in out Executor)
+     with Pre => This.Has_Goal;
+   --  Gives up the current goal (it counts as finished, and as skipped).
+
+   function Skipped (This : Executor) return Natural;
+
+   function Total (This : Executor) return Natural;
+   function Completed (This : Executor) return Natural;
+   --  Goals finished (reached or skipped).
+   function Is_Done (This : Executor) return Boolean is
+     (This.Completed = This.Total);
+   function Has_Goal (This : Executor) return Boolean is (not This.Is_Done);
+
+   function Current_Goal (This : Executor) return Point
+     with Pre => This.Has_Goal;
+
+   function Goal_Index (This : Executor) return Positive
+     with Pre => This.Has_Goal;
+   --  Position of the current goal in the task list.
+
+   function Progress (This : Executor) return Real
+     with Post => Progress'Result in 0.0 .. 1.0;
+   --  Completed / Total (1 for an empty list).
+
+private
+
+   package Point_Vectors is new Ada.Containers.Vectors (Positive, Point);
+
+   type Executor is tagged record
+      Goals     : Point_Vectors.Vector;
+      Done      : Natural := 0;
+      Skips     : Natural := 0;
+      Tolerance : Real := 0.2;
+   end record;
+
+end Sancta.Robot.Executors;

@@ -1,0 +1,199 @@
+with Ada.Command_Line;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with Interfaces;
+with Sancta.Geometry;              use Sancta.Geometry;
+with Sancta.Simulation.Demos;
+with Sancta.Simulation.Images;
+with Sancta.Simulation.Map_Files;
+with Sancta.Simulation.Rendering;
+with Sancta.Simulation.Worlds;
+
+package body Sancta.Simulation.Render_Tool is
+
+   use Ada.Command_Line;
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+
+   Usage_Error : exception;
+
+   procedure Usage is
+   begin
+      Put_Line ("usage: sancta-render WORLD [options]");
+      Put_Line ("  WORLD                 a map-server YAML file or a wall world (.walls)");
+      Put_Line ("  --svg FILE            write an SVG picture");
+      Put_Line ("  --png FILE            write a PNG picture");
+      Put_Line ("  --scale PIXELS        pixels per metre (default 20)");
+      Put_Line ("  --trajectories CSV    draw trajectories (lines robot,x,y)");
+      Put_Line ("  --poi X,Y[,LABEL]     mark a point of interest (repeatable)");
+      Put_Line ("  --demo N              simulate N robots touring random goals first");
+      Put_Line ("  --seconds S           demo length in simulated seconds (default 120)");
+      Put_Line ("  --goals G             goals per robot in the demo (default 4)");
+      Put_Line ("  --seed K              demo seed (default 1)");
+      Put_Line ("  --csv FILE            write the demo trajectories as CSV");
+      Put_Line ("  --rasterize BASE      write the world as BASE.pgm + BASE.yaml");
+   end Usage;
+
+   function To_Real (Option, Text : String) return Real is
+   begin
+      if Ada.Strings.Fixed.Index (Text, ".") = 0 then
+         return Real'Value (Text & ".0");
+      else
+         return Real'Value (Text);
+      end if;
+   exception
+      when Constraint_Error =>
+         raise Usage_Error with Option & ": expected a number, found """ & Text & """";
+   end To_Real;
+
+   function To_Natural (Option, Text : String) return Natural is
+   begin
+      return Natural'Value (Text);
+   exception
+      when Constraint_Error =>
+         raise Usage_Error with Option & ": expected a whole number, found """ & Text & """";
+   end To_Natural;
+
+   procedure Run is
+      World_Name  : Unbounded_String;
+      SVG, PNG, CSV, Trajectories, Raster : Unbounded_String;
+      Scale       : Real := 20.0;
+      Demo        : Demos.Demo_Config;
+      Demo_Robots : Natural := 0;
+      Scene       : Rendering.Scene;
+      K           : Positive := 1;
+
+      function Value return String is
+      begin
+         if K + 1 > Argument_Count then
+            raise Usage_Error with Argument (K) & ": missing value";
+         end if;
+         return Argument (K + 1);
+      end Value;
+   begin
+      if Argument_Count = 0 then
+         Usage;
+         Set_Exit_Status (Failure);
+         return;
+      end if;
+      while K <= Argument_Count loop
+         declare
+            A    : constant String := Argument (K);
+            Step : Positive := 2;
+            --  Options take a value; the world name does not.
+         begin
+            if A = "--help" or else A = "-h" then
+               Usage;
+               return;
+            elsif A = "--svg" then
+               SVG := To_Unbounded_String (Value);
+            elsif A = "--png" then
+               PNG := To_Unbounded_String (Value);
+            elsif A = "--csv" then
+               CSV := To_Unbounded_String (Value);
+            elsif A = "--rasterize" then
+               Raster := To_Unbounded_String (Value);
+            elsif A = "--trajectories" then
+               Trajectories := To_Unbounded_String (Value);
+            elsif A = "--scale" then
+               Scale := To_Real (A, Value);
+               if Scale <= 0.0 or else Scale > 1000.0 then
+                  raise Usage_Error with "--scale: expected 0 < PIXELS <= 1000";
+               end if;
+            elsif A = "--demo" then
+               Demo_Robots := To_Natural (A, Value);
+               if Demo_Robots not in 1 .. 200 then
+                  raise Usage_Error with "--demo: expected 1 .. 200 robots";
+               end if;
+            elsif A = "--seconds" then
+               Demo.Seconds := To_Real (A, Value);
+               if Demo.Seconds not in 0.0 .. 36_000.0 then
+                  raise Usage_Error with "--seconds: expected 0 .. 36000";
+               end if;
+            elsif A = "--goals" then
+               Demo.Goals_Per_Robot := Positive'Max (1, To_Natural (A, Value));
+            elsif A = "--seed" then
+               Demo.Seed := Interfaces.Unsigned_64 (To_Natural (A, Value));
+            elsif A = "--poi" then
+               declare
+                  V  : constant String := Value;
+                  C1 : constant Natural := Ada.Strings.Fixed.Index (V, ",");
+                  C2 : constant Natural :=
+                    (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (V (C1 + 1 .. V'Last), ","));
+                  Last_Y : constant Natural := (if C2 = 0 then V'Last else C2 - 1);
+               begin
+                  if C1 = 0 then
+                     raise Usage_Error with "--poi: expected X,Y[,LABEL], found """ & V & """";
+                  end if;
+                  Scene.Markers.Append
+                    (Rendering.Marker'
+                       (Where => (To_Real (A, V (V'First .. C1 - 1)),
+                                  To_Real (A, V (C1 + 1 .. Last_Y))),
+                        Label => To_Unbounded_String
+                          (if C2 = 0 then "" else V (C2 + 1 .. V'Last))));
+               end;
+            elsif A'Length > 0 and then A (A'First) = '-' then
+               raise Usage_Error with "unknown option " & A;
+            elsif Length (World_Name) = 0 then
+               World_Name := To_Unbounded_String (A);
+               Step := 1;
+            else
+               raise Usage_Error with "more than one world: " & A;
+            end if;
+            K := K + Step;
+         end;
+      end loop;
+      if Length (World_Name) = 0 then
+         raise Usage_Error with "no world given";
+      end if;
+      declare
+         World : constant Worlds.World := Map_Files.Load_World (To_String (World_Name));
+      begin
+         if Length (Raster) > 0 then
+            Rendering.Write_Map (World, To_String (Raster));
+            Put_Line ("wrote " & To_String (Raster) & ".pgm and .yaml");
+         end if;
+         if Length (Trajectories) > 0 then
+            Scene.Trajectories := Rendering.Read_Trajectories (To_String (Trajectories));
+         end if;
+         if Demo_Robots > 0 then
+            Demo.Robots := Demo_Robots;
+            declare
+               Result  : Demos.Demo_Result;
+               Markers : constant Rendering.Marker_Vectors.Vector := Scene.Markers;
+            begin
+               Demos.Run_Team (World, Demo, Result);
+               Scene := Result.Picture;
+               Scene.Markers.Append (Markers);
+               Put_Line ("demo:" & Demo_Robots'Image & " robots," & Result.Goals_Reached'Image
+                         & " of" & Result.Goals_Total'Image & " goals reached,"
+                         & Result.Goals_Skipped'Image & " skipped,"
+                         & Result.Collisions'Image & " collisions, in"
+                         & Natural (Result.Duration)'Image & " simulated seconds");
+               Put (To_String (Result.Collision_Log));
+               if Length (CSV) > 0 then
+                  Rendering.Write_Trajectories (Scene.Trajectories, To_String (CSV));
+               end if;
+            end;
+         end if;
+         if Length (SVG) > 0 then
+            Rendering.Write_SVG (World, Scene, To_String (SVG), Scale);
+            Put_Line ("wrote " & To_String (SVG));
+         end if;
+         if Length (PNG) > 0 then
+            Images.Save_PNG (Rendering.Render (World, Scene, Scale), To_String (PNG));
+            Put_Line ("wrote " & To_String (PNG));
+         end if;
+      end;
+   exception
+      when E : Usage_Error =>
+         Put_Line (Standard_Error, "sancta-render: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+      when E : Format_Error | Constraint_Error =>
+         Put_Line (Standard_Error, "sancta-render: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+   end Run;
+
+end Sancta.Simulation.Render_Tool;

@@ -1,0 +1,139 @@
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with AUnit.Assertions;   use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with Sancta.Robot.Grids;
+with Sancta.Simulation.Map_Files;
+
+package body Sancta.Simulation.Rendering.Tests is
+
+   use Images;
+   use type Robot.Grids.Frame;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   Dir : constant String := "obj/test-output/";
+
+   function Room return Worlds.World is
+      --  4 x 2 m at 0.1 m, walls on the border only.
+      G : Robot.Grids.Grid (39, 19);
+   begin
+      G.Origin := (0.0, 0.0);
+      G.Resolution := 0.1;
+      for I in 0 .. 39 loop
+         G.Occupied (I, 0) := True;
+         G.Occupied (I, 19) := True;
+      end loop;
+      for J in 0 .. 19 loop
+         G.Occupied (0, J) := True;
+         G.Occupied (39, J) := True;
+      end loop;
+      return Worlds.Create (G);
+   end Room;
+
+   function Sample_Scene return Scene is
+      S    : Scene;
+      Path : Point_Vectors.Vector;
+   begin
+      Path.Append (Point'(1.0, 0.5));
+      Path.Append (Point'(3.0, 0.5));
+      S.Trajectories.Append (Path);
+      S.Robots.Append (Pose'(3.0, 0.5, 0.0));
+      S.Markers.Append (Marker'((2.0, 1.5), Ada.Strings.Unbounded.To_Unbounded_String ("dock")));
+      return S;
+   end Sample_Scene;
+
+   procedure Picture (Unused : in out Fixture) is
+      I : constant Image := Render (Room, Sample_Scene, Scale => 10.0);
+   begin
+      Assert (Width (I) = 40 and then Height (I) = 20, "10 pixels per metre");
+      Assert (Get (I, 1, 1) = (50, 50, 50) and then Get (I, 40, 20) = (50, 50, 50),
+              "walls drawn at the corners");
+      Assert (Get (I, 6, 6) = White, "free space white");
+      --  The trajectory runs at y = 0.5 m: pixel row 20 - 5 = 15.
+      Assert (Get (I, 20, 15) = Color_Of (1), "trajectory in robot 1's colour");
+      Assert (Get (I, 20, 10) = White, "nothing above it");
+      declare
+         Back : constant Image := Decode_PNG (Encode_PNG (I), "memory");
+      begin
+         Assert (Get (Back, 20, 15) = Color_Of (1), "PNG keeps the picture");
+      end;
+   end Picture;
+
+   procedure SVG_And_CSV (Unused : in out Fixture) is
+      use Ada.Text_IO;
+      F     : File_Type;
+      Text  : Ada.Strings.Unbounded.Unbounded_String;
+      Paths : Path_Vectors.Vector;
+   begin
+      Ada.Directories.Create_Path (Dir);
+      Write_SVG (Room, Sample_Scene, Dir & "room.svg");
+      Open (F, In_File, Dir & "room.svg");
+      while not End_Of_File (F) loop
+         Ada.Strings.Unbounded.Append (Text, Get_Line (F));
+      end loop;
+      Close (F);
+      declare
+         T : constant String := Ada.Strings.Unbounded.To_String (Text);
+      begin
+         Assert (Ada.Strings.Fixed.Index (T, "<svg") > 0, "an SVG document");
+         Assert (Ada.Strings.Fixed.Index (T, "points=""20.00,30.00 60.00,30.00 """) > 0,
+                 "the trajectory in pixels (y flipped)");
+         Assert (Ada.Strings.Fixed.Index (T, ">dock</text>") > 0, "the label");
+      end;
+      Write_Trajectories (Sample_Scene.Trajectories, Dir & "paths.csv");
+      Paths := Read_Trajectories (Dir & "paths.csv");
+      Assert (Natural (Paths.Length) = 1 and then Natural (Paths (1).Length) = 2
+              and then Paths (1)(2) = (3.0, 0.5), "CSV round trip");
+      Create (F, Out_File, Dir & "bad.csv");
+      Put_Line (F, "robot,x,y");
+      Put_Line (F, "1,2.0,3.0");
+      Put_Line (F, "1,two,3.0");
+      Close (F);
+      begin
+         Paths := Read_Trajectories (Dir & "bad.csv");
+         Assert (False, "bad CSV accepted");
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Strings.Fixed.Index
+                      (Ada.Exceptions.Exception_Message (E), "bad.csv:3:") > 0,
+                    "error names the line: " & Ada.Exceptions.Exception_Message (E));
+      end;
+   end SVG_And_CSV;
+
+   procedure Map_Pair_Round_Trip (Unused : in out Fixture) is
+      W : constant Worlds.World := Room;
+   begin
+      Ada.Directories.Create_Path (Dir);
+      Write_Map (W, Dir & "room");
+      declare
+         Back : constant Worlds.World := Map_Files.Load_World (Dir & "room.yaml");
+      begin
+         Assert (Worlds.Frame_Of (Back) = Worlds.Frame_Of (W), "same frame");
+         for I in 0 .. 39 loop
+            for J in 0 .. 19 loop
+               Assert (Worlds.Is_Occupied (Back, I, J) = Worlds.Is_Occupied (W, I, J),
+                       "same cells");
+            end loop;
+         end loop;
+      end;
+   end Map_Pair_Round_Trip;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite :=
+        new AUnit.Test_Suites.Test_Suite;
+   begin
+      Result.Add_Test (Caller.Create ("rendering: PNG picture", Picture'Access));
+      Result.Add_Test (Caller.Create ("rendering: SVG and trajectories CSV",
+                                      SVG_And_CSV'Access));
+      Result.Add_Test (Caller.Create ("rendering: map-server pair round trip",
+                                      Map_Pair_Round_Trip'Access));
+      return Result;
+   end Suite;
+
+end Sancta.Simulation.Rendering.Tests;
