@@ -451,11 +451,20 @@ package body ROSIDL.Dynamic.Codec is
          end if;
          S.Pos := Aligned (S.Pos, Size);
          if Remaining < Bytes then
-            if T.Collection /= Single then
-               Set_Index (S, Natural (Long_Long_Integer'Max (Remaining, 0)
-                                      / Long_Long_Integer (Size)) + 1);
-            end if;
-            Need (Bytes, Image (T));
+            declare
+               Whole : constant Natural := Natural
+                 (Long_Long_Integer'Max (Remaining, 0) / Long_Long_Integer (Size));
+               Text  : constant String :=
+                 "truncated: " & Image (T) & " of" & Count'Image & " elements needs"
+                 & Bytes'Image & " bytes," & Long_Long_Integer'Max (Remaining, 0)'Image
+                 & " remain";
+            begin
+               if T.Collection /= Single then
+                  Set_Index (S, Whole + 1);
+                  S.Pos := S.Pos + Stream_Element_Offset (Whole * Size);
+               end if;
+               Decode_Failure (S, Text);
+            end;
          end if;
          Allocate (Cell, Count);
          declare

@@ -401,8 +401,10 @@ package body ROSIDL.Dynamic is
    end Find;
 
    function Reference (This : Message'Class; Name : String) return Field_Ref is
-     (Cell  => This.Root.Cells (Find (This.Root, Name, ""))'Access,
-      Index => 0);
+      I : constant Positive := Find (This.Root, Name, "");
+   begin
+      return (Cell => This.Root.Cells (I)'Access, Index => 0);
+   end Reference;
 
    --  The element a reference to a single value designates.
    function Single_Index (This : Field_Ref'Class; Requested : String) return Positive is
