@@ -650,6 +650,7 @@ package body ROSIDL.Dynamic.Codec is
       if Msg.Root = null then
          raise Decode_Error with "decoding into an uninitialised message";
       end if;
+      Make_Unique (Msg, Referenced => False);
       S.Root := Msg.Root.Def;
       S.Little := Little_Endian_Header (Data);
       S.Swap := S.Little /= Native_Little;

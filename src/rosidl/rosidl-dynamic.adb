@@ -3,6 +3,7 @@ with Ada.Unchecked_Conversion;
 with Ada.Unchecked_Deallocation;
 with ROSIDL.Dynamic.Images;
 with Interfaces;
+with System.Address_To_Access_Conversions;
 with System.Storage_Elements;
 
 package body ROSIDL.Dynamic is
@@ -372,13 +373,49 @@ package body ROSIDL.Dynamic is
 
    overriding procedure Adjust (This : in out Message) is
    begin
-      This.Root := Copy (This.Root);
+      if This.Root /= null then
+         if This.Root.Referenced then
+            This.Root := Copy (This.Root);
+         else
+            System.Atomic_Counters.Increment (This.Root.Shares);
+         end if;
+      end if;
    end Adjust;
 
    overriding procedure Finalize (This : in out Message) is
    begin
-      Free (This.Root);
+      if This.Root /= null then
+         if System.Atomic_Counters.Decrement (This.Root.Shares) then
+            Free (This.Root);
+         end if;
+         This.Root := null;
+      end if;
    end Finalize;
+
+   package Message_Pointers is new System.Address_To_Access_Conversions (Message);
+
+   procedure Make_Unique (This : Message'Class; Referenced : Boolean) is
+      Old : Node_Access := This.Root;
+   begin
+      if Old = null then
+         return;
+      end if;
+      if not System.Atomic_Counters.Is_One (Old.Shares) then
+         declare
+            Mine : constant Node_Access := Copy (Old);
+         begin
+            --  This is a variable even when seen as a constant (a Message
+            --  is a by-reference type): only its root pointer changes.
+            Message_Pointers.To_Pointer (This'Address).Root := Mine;
+            if System.Atomic_Counters.Decrement (Old.Shares) then
+               Free (Old);
+            end if;
+         end;
+      end if;
+      if Referenced then
+         This.Root.Referenced := True;
+      end if;
+   end Make_Unique;
 
    function Find
      (N : Node_Access; Name : String; Context : String) return Positive
@@ -403,6 +440,7 @@ package body ROSIDL.Dynamic is
    function Reference (This : Message'Class; Name : String) return Field_Ref is
       I : constant Positive := Find (This.Root, Name, "");
    begin
+      Make_Unique (This, Referenced => True);
       return (Cell => This.Root.Cells (I)'Access, Index => 0);
    end Reference;
 
@@ -682,6 +720,7 @@ package body ROSIDL.Dynamic is
       if This.Root = null then
          raise Field_Error with "As_Matrix on an uninitialised message";
       end if;
+      Make_Unique (This, Referenced => True);
       return Matrix_Element (This.Root, Indices);
    end As_Matrix;
 

@@ -32,6 +32,7 @@ with Ada.Containers.Vectors;
 with ROSIDL.Definitions;
 with ROSIDL.Typesupport;
 with System;
+with System.Atomic_Counters;
 
 package ROSIDL.Dynamic is
 
@@ -282,13 +283,26 @@ private
    type Cell_Array is array (Positive range <>) of aliased Field_Cell;
 
    type Node (Field_Count : Positive) is limited record
-      Def   : Message_Access;
-      Cells : Cell_Array (1 .. Field_Count);
+      Def        : Message_Access;
+      Shares     : System.Atomic_Counters.Atomic_Counter;
+      --  Messages sharing this root (1 when unshared); unused elsewhere.
+      Referenced : Boolean := False;
+      --  A reference into this root was handed out: copies must be deep.
+      Cells      : Cell_Array (1 .. Field_Count);
    end record;
 
    type Message is new Ada.Finalization.Controlled with record
       Root : Node_Access;
    end record;
+   --  Copies share their root until one of them hands out a reference
+   --  (Reference, As_Matrix) or is decoded into: then it takes a private
+   --  deep copy first. A root that has handed out references is always
+   --  deep-copied. So function results (Decode, Init) are not copied, and
+   --  writes through references never show in another message.
+
+   procedure Make_Unique (This : Message'Class; Referenced : Boolean);
+   --  Gives This a root of its own (deep copy when shared); Referenced
+   --  marks it as having handed out references.
 
    overriding procedure Adjust (This : in out Message);
    overriding procedure Finalize (This : in out Message);
