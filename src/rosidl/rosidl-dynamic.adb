@@ -224,12 +224,13 @@ package body ROSIDL.Dynamic is
       N.Def := Def;
       for I in N.Cells'Range loop
          declare
-            F    : constant Field := Def.Fields (I);
+            F    : Field renames Def.Fields (I);
             Cell : Field_Cell renames N.Cells (I);
             D    : constant Natural := Natural (F.Default.Length);
          begin
             Cell.Owner := N;
             Cell.Field := I;
+            Cell.Of_Type := F.Of_Type;
             Set_Count
               (Cell,
                (case F.Of_Type.Collection is
@@ -288,6 +289,7 @@ package body ROSIDL.Dynamic is
             begin
                D.Owner := R;
                D.Field := I;
+               D.Of_Type := S.Of_Type;
                D.Count := S.Count;
                if S.Prims /= null then
                   D.Prims := new Word_Array'(S.Prims.all);

@@ -271,6 +271,8 @@ private
       --  The message holding this field.
       Field  : Positive := 1;
       --  Its index in Owner.Def.Fields.
+      Of_Type : Field_Type;
+      --  Owner.Def.Fields (Field).Of_Type, cached.
       Count  : Natural := 0;
       --  Number of elements (1 for a single value).
       Prims  : Word_Access;
@@ -333,7 +335,6 @@ private
    --  Resizes the storage of Cell (any element kind), new elements get
    --  their default values (zero for primitives).
 
-   function Cell_Type (Cell : Field_Cell) return Field_Type is
-     (Cell.Owner.Def.Fields (Cell.Field).Of_Type);
+   function Cell_Type (Cell : Field_Cell) return Field_Type is (Cell.Of_Type);
 
 end ROSIDL.Dynamic;

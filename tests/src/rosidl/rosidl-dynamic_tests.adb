@@ -3,6 +3,7 @@ with Ada.Strings.Fixed;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
+with ROSIDL.CDR;
 with ROSIDL.CDR.Samples;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
@@ -107,6 +108,21 @@ package body ROSIDL.Dynamic_Tests is
       Assert (A /= B, "now different");
       B := A;
       Assert (A = B, "assignment copies back");
+      --  Decoded messages share storage with their copies until written.
+      declare
+         D1 : constant Message := ROSIDL.CDR.Decode (Support (A), ROSIDL.CDR.Encode (A));
+         D2 : constant Message := D1;
+         D3 : Message := D1;
+      begin
+         D2 ("angle_min").As_Float32 := 7.0;
+         Assert (D1 ("angle_min").As_Float32 = -1.5, "write to a sharing copy");
+         Assert (D2 ("angle_min").As_Float32 = 7.0, "the copy changed");
+         ROSIDL.CDR.Decode (ROSIDL.CDR.Encode (D2), D3);
+         Assert (D3 = D2 and then D1 = A, "decoding into a sharing copy");
+         D3 := D1;
+         D1 ("ranges").As_Array (2).As_Float32 := -5.0;
+         Assert (D3 ("ranges").As_Array (2).As_Float32 = 1.0, "referenced root copied");
+      end;
    end Value_Semantics;
 
    procedure Arrays_And_Limits (Unused : in out Fixture) is
