@@ -1,4 +1,4 @@
-with Ada.Characters.Conversions;
+with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
 with Ada.Characters.Handling;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
@@ -151,8 +151,10 @@ package body ROSIDL.Dynamic.Images is
    end Is_Number;
 
    function Yaml_String (S : String) return String is
+      --  Bytes from 16#80# on are taken as UTF-8 text, written as they are
+      --  (PyYAML's allow_unicode, as ros2 topic echo uses).
       Printable : constant Boolean :=
-        (for all C of S => C in ' ' .. '~');
+        (for all C of S => C in ' ' .. '~' | Character'Val (16#80#) .. Character'Last);
    begin
       if not Printable then
          declare
@@ -166,7 +168,8 @@ package body ROSIDL.Dynamic.Images is
                   when ASCII.HT => Append (R, "\t");
                   when ASCII.LF => Append (R, "\n");
                   when ASCII.CR => Append (R, "\r");
-                  when ' ' .. '!' | '#' .. '[' | ']' .. '~' => Append (R, C);
+                  when ' ' .. '!' | '#' .. '[' | ']' .. '~'
+                     | Character'Val (16#80#) .. Character'Last => Append (R, C);
                   when others =>
                      Append (R, "\x" & Hex (Character'Pos (C) / 16 + 1)
                              & Hex (Character'Pos (C) mod 16 + 1));
@@ -213,7 +216,11 @@ package body ROSIDL.Dynamic.Images is
             declare
                B : UInt8 with Import, Address => A;
             begin
-               return Yaml_String ([Character'Val (B)]);
+               --  rclpy gives a byte as a 1-byte bytes object, which ros2
+               --  topic echo turns into the character of that code.
+               return Yaml_String
+                 (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
+                    ([Wide_Wide_Character'Val (B)]));
             end;
          when Char_Kind | UInt8_Kind =>
             declare
@@ -286,8 +293,8 @@ package body ROSIDL.Dynamic.Images is
                return Yaml_String (Cut (To_String (Cell.Texts (Index))));
             when WString_Kind =>
                return Yaml_String
-                 (Cut (Ada.Characters.Conversions.To_String
-                    (To_Wide_Wide_String (Cell.WTexts (Index)), '?')));
+                 (Cut (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
+                    (To_Wide_Wide_String (Cell.WTexts (Index)))));
             when Message_Kind =>
                raise Program_Error;
          end case;

@@ -276,8 +276,9 @@ def test_ada_decodes_cyclonedds_bytes(name, big):
     assert decoded == expected
 
 
+@pytest.mark.parametrize("big", [False, True], ids=["le", "be"])
 @pytest.mark.parametrize("name", list(SAMPLES))
-def test_cyclonedds_decodes_ada_bytes(name):
+def test_cyclonedds_decodes_ada_bytes(name, big):
     cls = type(SAMPLES[name])
-    ada = ada_bytes(name)
+    ada = ada_bytes(name, big)
     assert cls.deserialize(ada).serialize() == SAMPLES[name].serialize()
