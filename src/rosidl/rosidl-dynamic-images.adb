@@ -1,5 +1,4 @@
 with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
-with Ada.Characters.Handling;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Interfaces;
@@ -128,35 +127,178 @@ package body ROSIDL.Dynamic.Images is
       return Bits_Image (Bits);
    end Float64_Image;
 
-   Hex : constant String := "0123456789abcdef";
+   Hex : constant String := "0123456789ABCDEF";
 
-   function Looks_Special (S : String) return Boolean is
-      L : constant String := Ada.Characters.Handling.To_Lower (S);
-   begin
-      return L in "true" | "false" | "yes" | "no" | "on" | "off" | "y" | "n"
-        | "null" | "~" | ".nan" | ".inf" | "-.inf" | "+.inf";
-   end Looks_Special;
+   --  PyYAML's implicit resolvers (YAML 1.1): a plain scalar that would
+   --  read back as a bool, null, int, float, timestamp, merge or value key
+   --  must be quoted.
 
-   function Is_Number (S : String) return Boolean is
-      Seen_Digit : Boolean := False;
+   function Is_Digit (C : Character) return Boolean is (C in '0' .. '9');
+
+   function Resolves_To_Bool (S : String) return Boolean is
+     (S in "yes" | "Yes" | "YES" | "no" | "No" | "NO" | "true" | "True" | "TRUE"
+         | "false" | "False" | "FALSE" | "on" | "On" | "ON" | "off" | "Off" | "OFF");
+
+   function Resolves_To_Null (S : String) return Boolean is
+     (S in "" | "~" | "null" | "Null" | "NULL");
+
+   type Character_Test is access function (C : Character) return Boolean;
+
+   --  Position after the run of characters of S from P on that satisfy OK.
+   function Skip (S : String; P : Positive; OK : Character_Test) return Positive is
+      Q : Positive := P;
    begin
-      for C of S loop
-         case C is
-            when '0' .. '9' => Seen_Digit := True;
-            when '.' | '-' | '+' | 'e' | 'E' | '_' | 'x' | 'o' | 'b' => null;
-            when others => return False;
-         end case;
+      while Q <= S'Last and then OK (S (Q)) loop
+         Q := Q + 1;
       end loop;
-      return Seen_Digit;
-   end Is_Number;
+      return Q;
+   end Skip;
+
+   function Digit_Or_Underscore (C : Character) return Boolean is
+     (C in '0' .. '9' | '_');
+   function Binary (C : Character) return Boolean is (C in '0' | '1' | '_');
+   function Octal (C : Character) return Boolean is (C in '0' .. '7' | '_');
+   function Hexadecimal (C : Character) return Boolean is
+     (C in '0' .. '9' | 'a' .. 'f' | 'A' .. 'F' | '_');
+
+   --  (:[0-5]?[0-9])+ from P; returns the position after it, or P.
+   function Sexagesimal (S : String; P : Positive) return Positive is
+      Q : Positive := P;
+   begin
+      while Q < S'Last and then S (Q) = ':' and then Is_Digit (S (Q + 1)) loop
+         if Q + 2 <= S'Last and then S (Q + 1) in '0' .. '5'
+           and then Is_Digit (S (Q + 2))
+         then
+            Q := Q + 3;
+         else
+            Q := Q + 2;
+         end if;
+      end loop;
+      return Q;
+   end Sexagesimal;
+
+   function Resolves_To_Int (S : String) return Boolean is
+      P : Positive := S'First;
+   begin
+      if S'Length > 0 and then S (P) in '-' | '+' then
+         P := P + 1;
+      end if;
+      if P > S'Last or else not Is_Digit (S (P)) then
+         return False;
+      end if;
+      if S (P) = '0' then
+         if P = S'Last then
+            return True;
+         elsif S (P + 1) = 'b' then
+            return P + 2 <= S'Last and then Skip (S, P + 2, Binary'Access) > S'Last;
+         elsif S (P + 1) = 'x' then
+            return P + 2 <= S'Last
+              and then Skip (S, P + 2, Hexadecimal'Access) > S'Last;
+         else
+            return Skip (S, P + 1, Octal'Access) > S'Last;
+         end if;
+      end if;
+      P := Skip (S, P + 1, Digit_Or_Underscore'Access);
+      return P > S'Last or else (S (P) = ':' and then Sexagesimal (S, P) > S'Last);
+   end Resolves_To_Int;
+
+   --  ([eE][-+][0-9]+)? then the end of S, from P.
+   function Exponent_Then_End (S : String; P : Positive) return Boolean is
+   begin
+      if P > S'Last then
+         return True;
+      end if;
+      return P + 2 <= S'Last and then S (P) in 'e' | 'E' and then S (P + 1) in '-' | '+'
+        and then (for all C of S (P + 2 .. S'Last) => Is_Digit (C));
+   end Exponent_Then_End;
+
+   function Resolves_To_Float (S : String) return Boolean is
+      P : Positive := S'First;
+   begin
+      if S in ".nan" | ".NaN" | ".NAN" then
+         return True;
+      end if;
+      if S'Length > 1 and then S (P) = '.' and then Is_Digit (S (P + 1)) then
+         return Exponent_Then_End (S, Skip (S, P + 1, Digit_Or_Underscore'Access));
+      end if;
+      if S'Length > 0 and then S (P) in '-' | '+' then
+         P := P + 1;
+      end if;
+      if S (P .. S'Last) in ".inf" | ".Inf" | ".INF" then
+         return True;
+      end if;
+      if P > S'Last or else not Is_Digit (S (P)) then
+         return False;
+      end if;
+      P := Skip (S, P, Digit_Or_Underscore'Access);
+      if P <= S'Last and then S (P) = ':' then
+         P := Sexagesimal (S, P);
+         return P <= S'Last and then S (P) = '.'
+           and then Skip (S, P + 1, Digit_Or_Underscore'Access) > S'Last;
+      end if;
+      return P <= S'Last and then S (P) = '.'
+        and then Exponent_Then_End (S, Skip (S, P + 1, Digit_Or_Underscore'Access));
+   end Resolves_To_Float;
+
+   function Resolves_To_Timestamp (S : String) return Boolean is
+      --  yyyy-mm-dd exactly, or yyyy-m?m-d?d followed by a time (approximated
+      --  as: then T, t, space or tab and some digit).
+      P : Positive;
+   begin
+      if S'Length < 8 or else not (for all C of S (S'First .. S'First + 3) => Is_Digit (C))
+        or else S (S'First + 4) /= '-'
+      then
+         return False;
+      end if;
+      if S'Length = 10 and then Is_Digit (S (S'First + 5))
+        and then Is_Digit (S (S'First + 6)) and then S (S'First + 7) = '-'
+        and then Is_Digit (S (S'First + 8)) and then Is_Digit (S (S'First + 9))
+      then
+         return True;
+      end if;
+      P := S'First + 5;
+      for Part in 1 .. 2 loop
+         if P > S'Last or else not Is_Digit (S (P)) then
+            return False;
+         end if;
+         P := P + 1;
+         if P <= S'Last and then Is_Digit (S (P)) then
+            P := P + 1;
+         end if;
+         if Part = 1 then
+            if P > S'Last or else S (P) /= '-' then
+               return False;
+            end if;
+            P := P + 1;
+         end if;
+      end loop;
+      return P < S'Last and then S (P) in 'T' | 't' | ' ' | ASCII.HT
+        and then (for some C of S (P + 1 .. S'Last) => Is_Digit (C));
+   end Resolves_To_Timestamp;
+
+   function Resolves_Otherwise (S : String) return Boolean is
+     (Resolves_To_Null (S) or else Resolves_To_Bool (S) or else Resolves_To_Int (S)
+      or else Resolves_To_Float (S) or else Resolves_To_Timestamp (S)
+      or else S = "<<" or else S = "=");
 
    function Yaml_String (S : String) return String is
-      --  Bytes from 16#80# on are taken as UTF-8 text, written as they are
-      --  (PyYAML's allow_unicode, as ros2 topic echo uses).
-      Printable : constant Boolean :=
-        (for all C of S => C in ' ' .. '~' | Character'Val (16#80#) .. Character'Last);
+      --  As PyYAML (allow_unicode, as ros2 topic echo uses) writes a string:
+      --  plain when it can, single-quoted when a plain scalar would read
+      --  back as something else or starts or ends with a space, double-
+      --  quoted with escapes when it holds control characters. Bytes from
+      --  16#80# on are taken as UTF-8 text and written as they are.
+      --  Approximation: a string with line breaks is written double-quoted
+      --  (PyYAML folds it into a multi-line single-quoted scalar).
+
+      function Followed_By_Space (I : Positive) return Boolean is
+        (I = S'Last or else S (I + 1) in ' ' | ASCII.HT | ASCII.LF | ASCII.CR);
+
+      Special   : constant Boolean :=
+        (for some C of S =>
+           C not in ' ' .. '~' | Character'Val (16#80#) .. Character'Last);
+      Indicator : Boolean := False;
    begin
-      if not Printable then
+      if Special then
          declare
             R : Unbounded_String := To_Unbounded_String ("""");
          begin
@@ -165,9 +307,14 @@ package body ROSIDL.Dynamic.Images is
                   when '"'  => Append (R, "\""");
                   when '\'  => Append (R, "\\");
                   when ASCII.NUL => Append (R, "\0");
+                  when ASCII.BEL => Append (R, "\a");
+                  when ASCII.BS => Append (R, "\b");
                   when ASCII.HT => Append (R, "\t");
                   when ASCII.LF => Append (R, "\n");
+                  when ASCII.VT => Append (R, "\v");
+                  when ASCII.FF => Append (R, "\f");
                   when ASCII.CR => Append (R, "\r");
+                  when ASCII.ESC => Append (R, "\e");
                   when ' ' .. '!' | '#' .. '[' | ']' .. '~'
                      | Character'Val (16#80#) .. Character'Last => Append (R, C);
                   when others =>
@@ -178,12 +325,21 @@ package body ROSIDL.Dynamic.Images is
             return To_String (R) & """";
          end;
       end if;
-      if S = ""
-        or else S (S'First) in ' ' | '-' | '?' | ':' | ',' | '[' | ']' | '{' | '}'
-          | '#' | '&' | '*' | '!' | '|' | '>' | ''' | '"' | '%' | '@' | '`'
-        or else S (S'Last) = ' ' or else S (S'Last) = ':'
-        or else Index (S, ": ") > 0 or else Index (S, " #") > 0
-        or else Looks_Special (S) or else Is_Number (S)
+      for I in S'Range loop
+         if I = S'First then
+            Indicator := S (I) in '#' | ',' | '[' | ']' | '{' | '}' | '&' | '*' | '!'
+              | '|' | '>' | ''' | '"' | '%' | '@' | '`'
+              or else (S (I) in '?' | ':' | '-' and then Followed_By_Space (I));
+         else
+            Indicator := Indicator
+              or else (S (I) = ':' and then Followed_By_Space (I))
+              or else (S (I) = '#' and then S (I - 1) = ' ');
+         end if;
+      end loop;
+      if Indicator or else Resolves_Otherwise (S)
+        or else S (S'First) = ' ' or else S (S'Last) = ' '
+        or else (S'Length >= 3 and then S (S'First .. S'First + 2) in "---" | "..."
+                 and then Followed_By_Space (S'First + 2))
       then
          declare
             R : Unbounded_String := To_Unbounded_String ("'");

@@ -188,6 +188,22 @@ class Arrays(IdlStruct, typename=ros("cdr_test_msgs", "Arrays")):
     tail: t.uint8
 
 
+@final
+@dataclass
+class Texts(IdlStruct, typename=ros("cdr_test_msgs", "Texts")):
+    texts: t.sequence[str]
+
+
+# Strings YAML must quote or escape (the same list as the Ada sample "texts").
+TEXTS = ["", "true", "123", "1.5", "-x", "a: b", "#c", " lead", "trail ", "it's",
+         "caf\u00e9", "null", "~", "yes", "y", "0x1F", "tab\there", 'quote"d', "[x]",
+         "{y}", "@at", "`b", "%p", "!bang", "&amp", "*star", "|pipe", ">gt", "?q",
+         ",comma", "a #b", "a#b", "x:", "1e5", ".5", "+1", "Yes", "NO", "tRue",
+         "2023-01-01", "2023-1-1 10:00:00", "0o17", "1_000", ":colon", "-", "- x", "=",
+         "<<", "1:30", "1.0e+5", "1.0e5", "---", "--- x", "...", "back\\slash",
+         "bell\x07", "del\x7f", ".nan", "-.inf", ".", "0b101", "0777", "09", "plain text"]
+
+
 def header(sec, nanosec, frame):
     return Header(stamp=Time(sec=sec, nanosec=nanosec), frame_id=frame)
 
@@ -231,6 +247,7 @@ SAMPLES = {
         points=[Point(x=1.0, y=2.0, z=3.0), Point(x=-1.0, y=-2.0, z=-3.0)],
         bounded_points=[Point(x=0.5, y=0.25, z=0.125)],
         flags=[True, False, True], tail=255),
+    "texts": Texts(texts=TEXTS),
 }
 
 
@@ -282,3 +299,26 @@ def test_cyclonedds_decodes_ada_bytes(name, big):
     cls = type(SAMPLES[name])
     ada = ada_bytes(name, big)
     assert cls.deserialize(ada).serialize() == SAMPLES[name].serialize()
+
+
+def echo_dict(value):
+    """The ordered dictionary ros2 topic echo dumps (rosidl_runtime_py's
+    message_to_ordereddict) for a decoded cyclonedds object."""
+    if hasattr(value, "__dataclass_fields__"):
+        return {name: echo_dict(getattr(value, name)) for name in value.__dataclass_fields__}
+    if isinstance(value, (list, tuple)):
+        return [echo_dict(v) for v in value]
+    return value
+
+
+@pytest.mark.parametrize(
+    "name", ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid", "arrays",
+             "texts"])
+def test_image_is_what_ros2_topic_echo_prints(name):
+    # Independent rendering: PyYAML with the options ros2 topic echo uses,
+    # on the values Python decodes from the Ada bytes (float32 widened).
+    import yaml
+    obj = type(SAMPLES[name]).deserialize(ada_bytes(name))
+    expected = yaml.dump(echo_dict(obj), allow_unicode=True, width=2**31 - 1,
+                         sort_keys=False)
+    assert tool("image", name).stdout == expected

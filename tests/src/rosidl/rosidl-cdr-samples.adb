@@ -178,6 +178,82 @@ package body ROSIDL.CDR.Samples is
             M ("tail").As_UInt8 := 255;
          end return;
 
+      elsif Name = "texts" then
+         Use_Test_Interfaces;
+         return M : constant Message :=
+           Init (Get_Message_Support ("cdr_test_msgs", "Texts"))
+         do
+            declare
+               T : constant Field_Ref := M ("texts");
+            begin
+               T.As_Array.Resize (64);
+               T.As_Array (1).Set_String ("");
+               T.As_Array (2).Set_String ("true");
+               T.As_Array (3).Set_String ("123");
+               T.As_Array (4).Set_String ("1.5");
+               T.As_Array (5).Set_String ("-x");
+               T.As_Array (6).Set_String ("a: b");
+               T.As_Array (7).Set_String ("#c");
+               T.As_Array (8).Set_String (" lead");
+               T.As_Array (9).Set_String ("trail ");
+               T.As_Array (10).Set_String ("it's");
+               T.As_Array (11).Set_String ("caf" & Character'Val (195) & Character'Val (169));
+               T.As_Array (12).Set_String ("null");
+               T.As_Array (13).Set_String ("~");
+               T.As_Array (14).Set_String ("yes");
+               T.As_Array (15).Set_String ("y");
+               T.As_Array (16).Set_String ("0x1F");
+               T.As_Array (17).Set_String ("tab" & Character'Val (9) & "here");
+               T.As_Array (18).Set_String ("quote" & Character'Val (34) & "d");
+               T.As_Array (19).Set_String ("[x]");
+               T.As_Array (20).Set_String ("{y}");
+               T.As_Array (21).Set_String ("@at");
+               T.As_Array (22).Set_String ("`b");
+               T.As_Array (23).Set_String ("%p");
+               T.As_Array (24).Set_String ("!bang");
+               T.As_Array (25).Set_String ("&amp");
+               T.As_Array (26).Set_String ("*star");
+               T.As_Array (27).Set_String ("|pipe");
+               T.As_Array (28).Set_String (">gt");
+               T.As_Array (29).Set_String ("?q");
+               T.As_Array (30).Set_String (",comma");
+               T.As_Array (31).Set_String ("a #b");
+               T.As_Array (32).Set_String ("a#b");
+               T.As_Array (33).Set_String ("x:");
+               T.As_Array (34).Set_String ("1e5");
+               T.As_Array (35).Set_String (".5");
+               T.As_Array (36).Set_String ("+1");
+               T.As_Array (37).Set_String ("Yes");
+               T.As_Array (38).Set_String ("NO");
+               T.As_Array (39).Set_String ("tRue");
+               T.As_Array (40).Set_String ("2023-01-01");
+               T.As_Array (41).Set_String ("2023-1-1 10:00:00");
+               T.As_Array (42).Set_String ("0o17");
+               T.As_Array (43).Set_String ("1_000");
+               T.As_Array (44).Set_String (":colon");
+               T.As_Array (45).Set_String ("-");
+               T.As_Array (46).Set_String ("- x");
+               T.As_Array (47).Set_String ("=");
+               T.As_Array (48).Set_String ("<<");
+               T.As_Array (49).Set_String ("1:30");
+               T.As_Array (50).Set_String ("1.0e+5");
+               T.As_Array (51).Set_String ("1.0e5");
+               T.As_Array (52).Set_String ("---");
+               T.As_Array (53).Set_String ("--- x");
+               T.As_Array (54).Set_String ("...");
+               T.As_Array (55).Set_String ("back\slash");
+               T.As_Array (56).Set_String ("bell" & Character'Val (7));
+               T.As_Array (57).Set_String ("del" & Character'Val (127));
+               T.As_Array (58).Set_String (".nan");
+               T.As_Array (59).Set_String ("-.inf");
+               T.As_Array (60).Set_String (".");
+               T.As_Array (61).Set_String ("0b101");
+               T.As_Array (62).Set_String ("0777");
+               T.As_Array (63).Set_String ("09");
+               T.As_Array (64).Set_String ("plain text");
+            end;
+         end return;
+
       elsif Name = "wstrings" then
          Use_Test_Interfaces;
          return M : constant Message :=

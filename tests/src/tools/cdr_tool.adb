@@ -17,6 +17,13 @@ procedure CDR_Tool is
    use Ada.Text_IO;
    use ROSIDL.CDR;
 
+   procedure Put_Image (Text : String) is
+   begin
+      --  Text ends with LF: written so that Text_IO adds no terminator.
+      Put (Text (Text'First .. Text'Last - 1));
+      New_Line;
+   end Put_Image;
+
    procedure Usage is
    begin
       Put_Line (Standard_Error,
@@ -37,7 +44,7 @@ begin
             (if Argument_Count = 3 and then Argument (3) = "be" then Big_Endian
              else Little_Endian))));
    elsif Argument_Count = 2 and then Argument (1) = "image" then
-      Put (ROSIDL.Dynamic.Image (Samples.Make (Argument (2))));
+      Put_Image (ROSIDL.Dynamic.Image (Samples.Make (Argument (2))));
    elsif Argument_Count = 3 and then Argument (1) = "decode" then
       declare
          Msg  : ROSIDL.Dynamic.Message := Samples.Make (Argument (2));
@@ -51,7 +58,7 @@ begin
          else
             Decode (Data, Msg);
          end if;
-         Put (ROSIDL.Dynamic.Image (Msg));
+         Put_Image (ROSIDL.Dynamic.Image (Msg));
       exception
          when E : ROSIDL.Decode_Error =>
             Put_Line (Standard_Error, "Decode_Error: "
