@@ -1,6 +1,8 @@
 with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
 with Ada.Strings.Fixed;
-with Ada.Text_IO;
+with Ada.Numerics.Big_Numbers.Big_Integers;
+with Ada.Numerics.Long_Elementary_Functions;
+with Ada.Unchecked_Conversion;
 with Interfaces;
 
 package body ROSIDL.Dynamic.Images is
@@ -11,72 +13,157 @@ package body ROSIDL.Dynamic.Images is
    use type Interfaces.Unsigned_8;
    use type Interfaces.IEEE_Float_64;
 
-   package F64_IO is new Ada.Text_IO.Float_IO (Float64);
+   function To_Float is new Ada.Unchecked_Conversion (Interfaces.Unsigned_64, Float64);
+   function To_Bits is new Ada.Unchecked_Conversion (Float64, Interfaces.Unsigned_64);
 
    function Trimmed (S : String) return String is (Trim (S, Ada.Strings.Both));
 
    function Spaces (N : Natural) return String is (Ada.Strings.Fixed."*" (N, ' '));
 
-   function Finite_Image (X : Float64) return String is
-      Buf  : String (1 .. 40);
-      Text : Unbounded_String;
-   begin
-      if X = 0.0 then
-         return "0.0";
-      end if;
-      for D in 1 .. 17 loop
-         F64_IO.Put (Buf, X, Aft => D - 1, Exp => 3);
-         exit when Float64'Value (Buf) = X;
-      end loop;
-      declare
-         S        : constant String := Trimmed (Buf);
-         E_Pos    : constant Natural := Index (S, "E");
-         Exponent : constant Integer := Integer'Value (S (E_Pos + 1 .. S'Last));
-         Negative : constant Boolean := S (S'First) = '-';
-         Digits_S : Unbounded_String;
+   --  The shortest decimal digits that read back as the float64 of Bits
+   --  (finite, non-zero), and the decimal exponent of the first digit: what
+   --  Python's repr prints. Exact arithmetic: X = M * 2**E, and a candidate
+   --  Q * 10**J reads back as X when it lies inside X's rounding interval
+   --  (boundaries included when M is even: round half to even).
+   procedure Shortest_Digits
+     (Bits : Interfaces.Unsigned_64; Digits_Out : out Unbounded_String;
+      Exponent : out Integer)
+   is
+      use Ada.Numerics.Big_Numbers.Big_Integers;
+
+      Biased   : constant Integer :=
+        Integer (Interfaces.Shift_Right (Bits, 52) and 16#7FF#);
+      package Conversions is new Unsigned_Conversions (Interfaces.Unsigned_64);
+      Fraction : constant Big_Integer := Conversions.To_Big_Integer (Bits and (2**52 - 1));
+      Two      : constant Big_Integer := 2;
+      M        : constant Big_Integer :=
+        (if Biased = 0 then Fraction else Fraction + Two ** 52);
+      E        : constant Integer := (if Biased = 0 then Integer'(-1074) else Biased - 1075);
+      Even     : constant Boolean := M mod 2 = 0;
+      --  X, and the interval boundaries, times 4, in units of 2**(E - 2).
+      P        : constant Integer := E - 2;
+      X4       : constant Big_Integer := 4 * M;
+      Hi4      : constant Big_Integer := 4 * M + 2;
+      Lo4      : constant Big_Integer :=
+        (if Fraction = 0 and then Biased > 1 then 4 * M - 1 else 4 * M - 2);
+      Two_P    : constant Big_Integer := 2 ** Natural (abs P);
+
+      --  Compares Q * 10**J with V4 * 2**P: -1, 0 or 1.
+      function Compare (Q : Big_Integer; J : Integer; V4 : Big_Integer) return Integer
+      is
+         Left  : Big_Integer := Q;
+         Right : Big_Integer := V4;
       begin
-         for C of S (S'First .. E_Pos - 1) loop
-            if C in '0' .. '9' then
-               Append (Digits_S, C);
-            end if;
-         end loop;
-         --  Strip trailing zeros (keep one digit).
-         while Length (Digits_S) > 1
-           and then Element (Digits_S, Length (Digits_S)) = '0'
-         loop
-            Delete (Digits_S, Length (Digits_S), Length (Digits_S));
-         end loop;
+         if J >= 0 then
+            Left := Left * 10 ** Natural (J);
+         else
+            Right := Right * 10 ** Natural (-J);
+         end if;
+         if P >= 0 then
+            Right := Right * Two_P;
+         else
+            Left := Left * Two_P;
+         end if;
+         return (if Left < Right then -1 elsif Left > Right then 1 else 0);
+      end Compare;
+
+      Approx : constant Long_Float := Long_Float (To_Float (Bits));
+      K      : Integer := Integer (Long_Float'Floor
+        (Ada.Numerics.Long_Elementary_Functions.Log (abs Approx, 10.0)));
+   begin
+      --  10**K <= X < 10**(K + 1), exactly.
+      while Compare (1, K, X4) > 0 loop
+         K := K - 1;
+      end loop;
+      while Compare (1, K + 1, X4) <= 0 loop
+         K := K + 1;
+      end loop;
+      for D in 1 .. 17 loop
          declare
-            Dg : constant String := To_String (Digits_S);
+            J : constant Integer := K - D + 1;
+            A : Big_Integer := X4;
+            B : Big_Integer := 1;
+            Q : Big_Integer;
+            Low, High : Integer;
          begin
-            if Exponent >= -4 and then Exponent < 16 then
-               if Exponent >= 0 then
-                  if Dg'Length <= Exponent + 1 then
-                     Text := To_Unbounded_String
-                       (Dg & (Exponent + 1 - Dg'Length) * '0' & ".0");
-                  else
-                     Text := To_Unbounded_String
-                       (Dg (Dg'First .. Dg'First + Exponent) & "."
-                        & Dg (Dg'First + Exponent + 1 .. Dg'Last));
-                  end if;
-               else
-                  Text := To_Unbounded_String
-                    ("0." & (-Exponent - 1) * '0' & Dg);
-               end if;
+            --  Q = round (X / 10**J) = round (A / B), half to even.
+            if P >= 0 then
+               A := A * Two_P;
             else
+               B := B * Two_P;
+            end if;
+            if J >= 0 then
+               B := B * 10 ** Natural (J);
+            else
+               A := A * 10 ** Natural (-J);
+            end if;
+            --  Half to even, as a correctly rounded conversion does.
+            Q := A / B;
+            if 2 * (A mod B) > B or else (2 * (A mod B) = B and then Q mod 2 = 1) then
+               Q := Q + 1;
+            end if;
+            Low := Compare (Q, J, Lo4);
+            High := Compare (Q, J, Hi4);
+            if (Low > 0 or else (Even and then Low = 0))
+              and then (High < 0 or else (Even and then High = 0))
+            then
                declare
-                  Exp_Img : constant String := Trimmed (Integer'Image (abs Exponent));
+                  Image : constant String := To_String (Q);
+                  Text  : constant String := Trimmed (Image);
                begin
-                  Text := To_Unbounded_String
-                    (Dg (Dg'First .. Dg'First)
-                     & "." & (if Dg'Length > 1 then Dg (Dg'First + 1 .. Dg'Last)
-                              else "0")
-                     & "e" & (if Exponent < 0 then "-" else "+")
-                     & (if Exp_Img'Length < 2 then "0" else "") & Exp_Img);
+                  --  Rounding may carry to D + 1 digits (9.99 -> 10.0).
+                  Exponent := K + (Text'Length - D);
+                  Digits_Out := To_Unbounded_String (Text);
+                  while Length (Digits_Out) > 1
+                    and then Element (Digits_Out, Length (Digits_Out)) = '0'
+                  loop
+                     Delete (Digits_Out, Length (Digits_Out), Length (Digits_Out));
+                  end loop;
+                  return;
                end;
             end if;
-            return (if Negative then "-" else "") & To_String (Text);
          end;
+      end loop;
+      raise Program_Error with "no 17-digit decimal reads back";
+   end Shortest_Digits;
+
+   function Finite_Image (Bits : Interfaces.Unsigned_64) return String is
+      Text     : Unbounded_String;
+      Digits_S : Unbounded_String;
+      Exponent : Integer;
+      Negative : constant Boolean := Interfaces.Shift_Right (Bits, 63) = 1;
+   begin
+      Shortest_Digits (Bits, Digits_S, Exponent);
+      declare
+         Dg : constant String := To_String (Digits_S);
+      begin
+         if Exponent >= -4 and then Exponent < 16 then
+            if Exponent >= 0 then
+               if Dg'Length <= Exponent + 1 then
+                  Text := To_Unbounded_String
+                    (Dg & (Exponent + 1 - Dg'Length) * '0' & ".0");
+               else
+                  Text := To_Unbounded_String
+                    (Dg (Dg'First .. Dg'First + Exponent) & "."
+                     & Dg (Dg'First + Exponent + 1 .. Dg'Last));
+               end if;
+            else
+               Text := To_Unbounded_String
+                 ("0." & (-Exponent - 1) * '0' & Dg);
+            end if;
+         else
+            declare
+               Exp_Img : constant String := Trimmed (Integer'Image (abs Exponent));
+            begin
+               Text := To_Unbounded_String
+                 (Dg (Dg'First .. Dg'First)
+                  & "." & (if Dg'Length > 1 then Dg (Dg'First + 1 .. Dg'Last)
+                           else "0")
+                  & "e" & (if Exponent < 0 then "-" else "+")
+                  & (if Exp_Img'Length < 2 then "0" else "") & Exp_Img);
+            end;
+         end if;
+         return (if Negative then "-" else "") & To_String (Text);
       end;
    end Finite_Image;
 
@@ -91,11 +178,7 @@ package body ROSIDL.Dynamic.Images is
       elsif Exp = 0 and then Frac = 0 then
          return (if Neg then "-0.0" else "0.0");
       end if;
-      declare
-         V : Float64 with Import, Address => Bits'Address;
-      begin
-         return Finite_Image (V);
-      end;
+      return Finite_Image (Bits);
    end Bits_Image;
 
    function Float_Image (X : Float64) return String is
@@ -117,7 +200,7 @@ package body ROSIDL.Dynamic.Images is
       declare
          V : Float32 with Import, Address => A;
       begin
-         return Finite_Image (Float64 (V));
+         return Bits_Image (To_Bits (Float64 (V)));
       end;
    end Float32_Image;
 

@@ -194,6 +194,35 @@ class Texts(IdlStruct, typename=ros("cdr_test_msgs", "Texts")):
     texts: t.sequence[str]
 
 
+@final
+@dataclass
+class MultiArrayDimension(IdlStruct, typename=ros("std_msgs", "MultiArrayDimension")):
+    label: str = ""
+    size: t.uint32 = 0
+    stride: t.uint32 = 0
+
+
+@final
+@dataclass
+class MultiArrayLayout(IdlStruct, typename=ros("std_msgs", "MultiArrayLayout")):
+    dim: t.sequence[MultiArrayDimension] = field(default_factory=list)
+    data_offset: t.uint32 = 0
+
+
+@final
+@dataclass
+class Float64MultiArray(IdlStruct, typename=ros("std_msgs", "Float64MultiArray")):
+    layout: MultiArrayLayout = field(default_factory=MultiArrayLayout)
+    data: t.sequence[t.float64] = field(default_factory=list)
+
+
+@final
+@dataclass
+class Float32MultiArray(IdlStruct, typename=ros("std_msgs", "Float32MultiArray")):
+    layout: MultiArrayLayout = field(default_factory=MultiArrayLayout)
+    data: t.sequence[t.float32] = field(default_factory=list)
+
+
 # Strings YAML must quote or escape (the same list as the Ada sample "texts").
 TEXTS = ["", "true", "123", "1.5", "-x", "a: b", "#c", " lead", "trail ", "it's",
          "caf\u00e9", "null", "~", "yes", "y", "0x1F", "tab\there", 'quote"d', "[x]",
@@ -248,6 +277,11 @@ SAMPLES = {
         bounded_points=[Point(x=0.5, y=0.25, z=0.125)],
         flags=[True, False, True], tail=255),
     "texts": Texts(texts=TEXTS),
+    "doubles": Float64MultiArray(
+        layout=MultiArrayLayout(dim=[MultiArrayDimension(label="x", size=9, stride=9)]),
+        data=[0.1, 1e-5, 1e22, 1e16, 123456.789, -2.5, 0.0, -0.0, 1.7976931348623157e308]),
+    "floats": Float32MultiArray(
+        data=[0.1, 1e-5, 3e38, 16777216.0, -1.401298464324817e-45, 0.05, 3.4028234663852886e38]),
 }
 
 
@@ -313,7 +347,7 @@ def echo_dict(value):
 
 @pytest.mark.parametrize(
     "name", ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid", "arrays",
-             "texts"])
+             "texts", "doubles", "floats"])
 def test_image_is_what_ros2_topic_echo_prints(name):
     # Independent rendering: PyYAML with the options ros2 topic echo uses,
     # on the values Python decodes from the Ada bytes (float32 widened).
@@ -322,3 +356,23 @@ def test_image_is_what_ros2_topic_echo_prints(name):
     expected = yaml.dump(echo_dict(obj), allow_unicode=True, width=2**31 - 1,
                          sort_keys=False)
     assert tool("image", name).stdout == expected
+
+
+@pytest.mark.parametrize("name,fmt", [("doubles", "<d"), ("floats", "<f")])
+def test_float_images_match_python_repr(name, fmt):
+    # Random bit patterns (fixed seed), NaN and infinities included: the Ada
+    # image of each value must be PyYAML's (Python's repr, as ros2 topic echo).
+    import random
+    import struct
+    import yaml
+    rng = random.Random(20261121)
+    size = struct.calcsize(fmt)
+    values = [struct.unpack(fmt, rng.getrandbits(8 * size).to_bytes(size, "little"))[0]
+              for _ in range(2000)]
+    values += [struct.unpack(fmt, struct.pack(fmt, v))[0]
+               for v in (float("nan"), float("inf"), -float("inf"), 5e-324, 1e-310, 0.5)]
+    msg = type(SAMPLES[name])(data=values)
+    decoded = tool("decode", name, msg.serialize().hex()).stdout
+    expected = yaml.dump(echo_dict(msg), allow_unicode=True, width=2**31 - 1,
+                         sort_keys=False)
+    assert decoded == expected

@@ -254,6 +254,27 @@ package body ROSIDL.CDR.Samples is
             end;
          end return;
 
+      elsif Name = "doubles" then
+         return M : constant Message :=
+           Init (Get_Message_Support ("std_msgs", "Float64MultiArray"))
+         do
+            M ("layout")("dim").As_Array.Resize (1);
+            M ("layout")("dim").As_Array (1)("label").Set_String ("x");
+            M ("layout")("dim").As_Array (1)("size").As_UInt32 := 9;
+            M ("layout")("dim").As_Array (1)("stride").As_UInt32 := 9;
+            M ("data").Set_Float64_Array
+              ([0.1, 1.0E-5, 1.0E22, 1.0E16, 123_456.789, -2.5, 0.0, -0.0,
+                Float64'Last]);
+         end return;
+
+      elsif Name = "floats" then
+         return M : constant Message :=
+           Init (Get_Message_Support ("std_msgs", "Float32MultiArray"))
+         do
+            M ("data").Set_Float32_Array
+              ([0.1, 1.0E-5, 3.0E38, 16_777_216.0, -Float32'Succ (0.0), 0.05, Float32'Last]);
+         end return;
+
       elsif Name = "wstrings" then
          Use_Test_Interfaces;
          return M : constant Message :=

@@ -8,7 +8,8 @@ package ROSIDL.CDR.Samples is
 
    Names : constant ROSIDL.Definitions.String_Vectors.Vector :=
      ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid",
-      "add_two_ints_request", "everything", "arrays", "texts", "wstrings"];
+      "add_two_ints_request", "everything", "arrays", "texts", "doubles", "floats",
+      "wstrings"];
 
    Test_Header : constant Request_Header :=
      (GUID => 16#0102_0304_0506_0708#, Sequence => 42);

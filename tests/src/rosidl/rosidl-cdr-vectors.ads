@@ -110,6 +110,18 @@ package ROSIDL.CDR.Vectors is
      & "306231303100000005000000303737370000000003000000303900000b000000"
      & "706c61696e20746578740000";
 
+   Doubles_Name : aliased constant String := "doubles";
+   Doubles : aliased constant String :=
+     "0001000001000000020000007800000009000000090000000000000009000000"
+     & "000000009a9999999999b93ff168e388b5f8e43e92d54d06cff080440080e037"
+     & "79c34143c976be9f0c24fe4000000000000004c0000000000000000000000000"
+     & "00000080ffffffffffffef7f";
+
+   Floats_Name : aliased constant String := "floats";
+   Floats : aliased constant String :=
+     "00010000000000000000000007000000cdcccc3dacc52737e6b1617f0000804b"
+     & "01000080cdcc4c3dffff7f7f";
+
    Wstrings_Name : aliased constant String := "wstrings";
    Wstrings : aliased constant String :=
      "00010000010000000300000068000000e900000000f601000300000061000000"
@@ -125,6 +137,8 @@ package ROSIDL.CDR.Vectors is
       7 => (Everything_Name'Access, Everything'Access),
       8 => (Arrays_Name'Access, Arrays'Access),
       9 => (Texts_Name'Access, Texts'Access),
-      10 => (Wstrings_Name'Access, Wstrings'Access)];
+      10 => (Doubles_Name'Access, Doubles'Access),
+      11 => (Floats_Name'Access, Floats'Access),
+      12 => (Wstrings_Name'Access, Wstrings'Access)];
 
 end ROSIDL.CDR.Vectors;
