@@ -3,6 +3,7 @@ with Ada.Containers.Indefinite_Hashed_Maps;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Directories;
 with Ada.Environment_Variables;
+with Ada.Exceptions;
 with Ada.Finalization;
 with Ada.IO_Exceptions;
 with Ada.Streams.Stream_IO;
@@ -40,6 +41,7 @@ package body ROSIDL.Interfaces is
       procedure Insert_Service (Key : String; Value : Service_Access);
       procedure Insert_Action (Key : String; Value : Action_Access);
       procedure Append_Folder (Folder : String);
+      procedure Delete_Folder (Folder : String);
       function Added_Folders return String_Vectors.Vector;
    private
       Message_Cache : Message_Maps.Map;
@@ -80,6 +82,14 @@ package body ROSIDL.Interfaces is
             Folders.Append (Folder);
          end if;
       end Append_Folder;
+
+      procedure Delete_Folder (Folder : String) is
+         I : constant Natural := Folders.Find_Index (Folder);
+      begin
+         if I /= String_Vectors.No_Index then
+            Folders.Delete (I);
+         end if;
+      end Delete_Folder;
 
       function Added_Folders return String_Vectors.Vector is (Folders);
 
@@ -202,6 +212,12 @@ package body ROSIDL.Interfaces is
       Registry.Append_Folder (Ada.Directories.Full_Name (Folder));
    end Add_Folder;
 
+   procedure Remove_Folder (Folder : String) is
+   begin
+      Registry.Delete_Folder
+        (if Is_Folder (Folder) then Ada.Directories.Full_Name (Folder) else Folder);
+   end Remove_Folder;
+
    function Search_Path return String_Vectors.Vector is
       Result : String_Vectors.Vector;
 
@@ -312,6 +328,21 @@ package body ROSIDL.Interfaces is
    function Load_Message
      (Package_Name, Name : String; Where : Source_Position) return Message_Access;
 
+   function Short (Key : String) return String is
+      --  "pkg/msg/Name" as "pkg/Name".
+      At_Kind : constant Natural := Ada.Strings.Fixed.Index (Key, "/msg/");
+   begin
+      return (if At_Kind = 0 then Key
+              else Key (Key'First .. At_Kind) & Key (At_Kind + 5 .. Key'Last));
+   end Short;
+
+   function Type_Part (Key : String) return String is
+     (Key (Ada.Strings.Fixed.Index (Key, "/", Ada.Strings.Backward) + 1 .. Key'Last));
+   --  "pkg/msg/Name" as "Name".
+
+   function Image (N : Natural) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
    function Locked_Resolver
      (Package_Name, Name : String; Where : Source_Position) return Message_Access is
      (Load_Message (Package_Name, Name, Where));
@@ -330,12 +361,11 @@ package body ROSIDL.Interfaces is
             Chain : Unbounded_String;
          begin
             for I in In_Progress.Find_Index (Key) .. In_Progress.Last_Index loop
-               Append (Chain, In_Progress (I) & " -> ");
+               Append (Chain, Type_Part (In_Progress (I)) & " -> ");
             end loop;
             raise Definition_Error with
-              Image (Where) & ": expected a type that does not nest the message being"
-              & " defined, found '" & Key & "' (a recursive definition: "
-              & To_String (Chain) & Key & ")";
+              Image (Where) & ": expected a type that does not nest itself, found '"
+              & Short (Key) & "' (" & To_String (Chain) & Type_Part (Key) & ")";
          end;
       end if;
       declare
@@ -350,6 +380,16 @@ package body ROSIDL.Interfaces is
             Result := ROSIDL.Parser.Parse_Message
               (Package_Name, Name, Read_File (Path), Path, Locked_Resolver'Access);
          exception
+            when E : Definition_Error =>
+               In_Progress.Delete_Last;
+               if Where.Line = 0 then
+                  raise;
+               end if;
+               --  Say where the broken definition was needed.
+               raise Definition_Error with
+                 Ada.Exceptions.Exception_Message (E) & " (needed by "
+                 & Ada.Directories.Simple_Name (To_String (Where.File)) & ":"
+                 & Image (Where.Line) & ":" & Image (Where.Column) & ")";
             when others =>
                In_Progress.Delete_Last;
                raise;
@@ -532,6 +572,24 @@ package body ROSIDL.Interfaces is
            & " 'package/action/Name_<part>'";
       end;
    end Message;
+
+   function Message_By_DDS_Name (DDS_Name : String) return Message_Access is
+      Marker : constant String := "::dds_::";
+      At_Marker : constant Natural := Ada.Strings.Fixed.Index (DDS_Name, Marker);
+      First_Sep : constant Natural := Ada.Strings.Fixed.Index (DDS_Name, "::");
+   begin
+      if At_Marker = 0 or else First_Sep >= At_Marker
+        or else DDS_Name (DDS_Name'Last) /= '_'
+        or else At_Marker + Marker'Length > DDS_Name'Last - 1
+      then
+         raise Unknown_Type with
+           "unknown DDS type name " & DDS_Name & ": expected 'package::msg::dds_::Name_'";
+      end if;
+      return Message
+        (DDS_Name (DDS_Name'First .. First_Sep - 1) & "/"
+         & DDS_Name (First_Sep + 2 .. At_Marker - 1) & "/"
+         & DDS_Name (At_Marker + Marker'Length .. DDS_Name'Last - 1));
+   end Message_By_DDS_Name;
 
    ---------------------------------------------------------------------------
    --  Listings

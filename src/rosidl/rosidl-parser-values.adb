@@ -140,7 +140,7 @@ package body ROSIDL.Parser.Values is
          else 2 ** Bits - 1);
       Max_Neg  : constant U64 := (if Signed then 2 ** (Bits - 1) else 0);
       Expected : constant String :=
-        "an " & Type_Name (Kind) & " value in "
+        (if Signed then "an " else "a ") & Type_Name (Kind) & " value in "
         & (if Signed then "-" & Image (Max_Neg) else "0") & " .. " & Image (Max_Pos);
       Negative  : Boolean;
       Magnitude : U64;
@@ -166,7 +166,7 @@ package body ROSIDL.Parser.Values is
    function Check_Float (Kind : Float_Kind; Text : String) return Check_Result is
       Expected : constant String :=
         "a " & Type_Name (Kind)
-        & " value (digits with '.' as the separator, an exponent, inf or nan)";
+        & " value (digits, '.', exponent, inf or nan)";
       First    : Positive := Text'First;
       Sign     : Unbounded_String;
       Mantissa : Unbounded_String;

@@ -87,9 +87,17 @@ package body ROSIDL.Parser is
 
    package Line_Vectors is new Ada.Containers.Vectors (Positive, Line_Record);
 
+   BOM : constant String :=
+     Character'Val (16#EF#) & Character'Val (16#BB#) & Character'Val (16#BF#);
+   --  The UTF-8 byte order mark some editors put at the start of a file.
+
    function Split_Lines (Text : String) return Line_Vectors.Vector is
+      --  The lines of Text (LF or CR LF ends), numbered from 1, without a
+      --  leading byte order mark.
       Result : Line_Vectors.Vector;
-      First  : Positive := Text'First;
+      First  : Positive :=
+        (if Text'Length >= 3 and then Text (Text'First .. Text'First + 2) = BOM
+         then Text'First + 3 else Text'First);
       Number : Positive := 1;
 
       procedure Add (Last : Natural) is
@@ -102,7 +110,7 @@ package body ROSIDL.Parser is
       end Add;
 
    begin
-      for I in Text'Range loop
+      for I in First .. Text'Last loop
          if Text (I) = ASCII.LF then
             Add (I - 1);
             First := I + 1;
@@ -203,7 +211,7 @@ package body ROSIDL.Parser is
                   Result.Size := Read_Bound (Inside);
                   if Result.Size = 0 then
                      Fail (To_String (C.File), Line, Col (Open + 1),
-                           "an array size N > 0 (T[N]), '<=N' (T[<=N]) or nothing (T[])",
+                           "an array size N > 0 (T[N], T[<=N] or T[])",
                            Quote (Inside));
                   end if;
                end if;
@@ -255,31 +263,28 @@ package body ROSIDL.Parser is
             Name := To_Unbounded_String (Base (Slash + 1 .. Base'Last));
             if not Is_Valid_Package_Name (To_String (Pkg)) then
                Fail (To_String (C.File), Line, Column,
-                     "a package name of the form [a-z][a-z0-9_]* (no '__', no trailing '_')",
+                     "a package name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
                      Quote (To_String (Pkg)));
             end if;
          end if;
          if not Is_Valid_Type_Name (To_String (Name)) then
             Fail (To_String (C.File), Line,
                   (if Slash = 0 then Column else Col (Slash + 1)),
-                  "a primitive type or a message type name of the form [A-Z][A-Za-z0-9]*",
+                  "a primitive type or a type name ([A-Z][A-Za-z0-9]*)",
                   Quote (To_String (Name)));
          end if;
          if C.Namespace = Msg and then Pkg = C.Package_Name and then Name = C.Name then
             Fail (To_String (C.File), Line, Column,
-                  "a type other than the message being defined",
-                  Quote (To_String (Pkg) & "/" & To_String (Name))
-                  & " (a recursive definition: a message cannot nest itself)");
+                  "a type that does not nest the message itself",
+                  Quote (To_String (Pkg) & "/" & To_String (Name)));
          end if;
          Result.Kind := Message_Kind;
          Result.Nested := C.Resolve
            (To_String (Pkg), To_String (Name),
             (File => C.File, Line => Line, Column => Column));
          if Result.Nested = null then
-            Fail (To_String (C.File), Line, Column, "a known message type",
-                  Quote (To_String (Pkg) & "/" & To_String (Name))
-                  & " (no " & To_String (Pkg) & "/msg/" & To_String (Name)
-                  & ".msg on the interface search path)");
+            Fail (To_String (C.File), Line, Column, "a message type on the search path",
+                  Quote (To_String (Pkg) & "/" & To_String (Name)));
          end if;
          return Result;
       end;
@@ -374,17 +379,102 @@ package body ROSIDL.Parser is
       return L'Last;
    end Content_End;
 
+   procedure Add_Constant
+     (C          : Context;
+      Def        : in out Message_Definition;
+      Line       : Positive;
+      Type_Token : String;
+      Type_Col   : Positive;
+      Name       : String;
+      Name_Col   : Positive;
+      Value      : String;
+      Value_Col  : Positive)
+   --  "<type> <NAME>=<value>"; Value is trimmed ("" when missing).
+   is
+      File : constant String := To_String (C.File);
+      T    : constant Field_Type := Parse_Type (C, Type_Token, Line, Type_Col);
+   begin
+      if T.Kind = Message_Kind or else T.Collection /= Single or else T.String_Bound /= 0 then
+         Fail (File, Line, Type_Col, "a primitive, string or wstring type for a constant",
+               Quote (Type_Token));
+      elsif Name'Length = 0 then
+         Fail (File, Line, Name_Col, "a constant name before '='", "'='");
+      elsif not Is_Valid_Constant_Name (Name) then
+         Fail (File, Line, Name_Col,
+               "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')", Quote (Name));
+      end if;
+      for K of Def.Constants loop
+         if K.Name = Name then
+            Fail (File, Line, Name_Col, "a new constant name",
+                  Quote (Name) & " (already defined at line" & K.Position.Line'Image & ")");
+         end if;
+      end loop;
+      if Value'Length = 0 then
+         Fail (File, Line, Value_Col, "a constant value after '='", "end of line");
+      end if;
+      declare
+         R : constant Check_Result := Check_Scalar (T.Kind, 0, Value);
+      begin
+         if not R.OK then
+            Fail (File, Line, Value_Col, To_String (R.Expected), Quote (Value));
+         end if;
+         Def.Constants.Append
+           (Constant_Definition'(Name     => To_Unbounded_String (Name),
+                                 Kind     => T.Kind,
+                                 Value    => R.Value,
+                                 Position => (C.File, Line, Name_Col)));
+      end;
+   end Add_Constant;
+
+   procedure Add_Field
+     (C          : Context;
+      Def        : in out Message_Definition;
+      Line       : Positive;
+      Type_Token : String;
+      Type_Col   : Positive;
+      Name       : String;
+      Name_Col   : Positive;
+      Value      : String;
+      Value_Col  : Positive)
+   --  "<type> <name> [<default>]"; Value is trimmed ("" when there is none).
+   is
+      File : constant String := To_String (C.File);
+      F    : Field;
+   begin
+      F.Of_Type := Parse_Type (C, Type_Token, Line, Type_Col);
+      if not Is_Valid_Field_Name (Name) then
+         Fail (File, Line, Name_Col,
+               "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')", Quote (Name));
+      elsif Is_Reserved_Name (Name) then
+         Fail (File, Line, Name_Col, "a field name that is not a reserved word", Quote (Name));
+      end if;
+      for G of Def.Fields loop
+         if G.Name = Name then
+            Fail (File, Line, Name_Col, "a new field name",
+                  Quote (Name) & " (already defined at line" & G.Position.Line'Image & ")");
+         end if;
+      end loop;
+      F.Name := To_Unbounded_String (Name);
+      F.Position := (C.File, Line, Name_Col);
+      if Value'Length > 0 then
+         Check_Default (C, F.Of_Type, Value, Line, Value_Col, F.Default);
+      end if;
+      Def.Fields.Append (F);
+   end Add_Field;
+
    procedure Parse_Line
      (C    : Context;
       Line : Line_Record;
       Def  : in out Message_Definition)
+   --  One line: blank, a comment, a constant or a field. The line is cut in
+   --  tokens (type, name, then '=' and a value, or a default value) and
+   --  each token's column is kept for the messages.
    is
       Full : constant String := To_String (Line.Text);
       L    : constant String := Full (Full'First .. Content_End (Full));
       Last : Natural := L'Last;
       I    : Positive := L'First;
       N    : constant Positive := Line.Number;
-      File : constant String := To_String (C.File);
 
       function Col (J : Positive) return Positive is (J - Full'First + 1);
 
@@ -395,6 +485,7 @@ package body ROSIDL.Parser is
          end loop;
       end Skip_Blanks;
 
+      Type_First, Type_Last, Name_First, Name_Last : Positive;
    begin
       while Last >= L'First and then Is_Blank (L (Last)) loop
          Last := Last - 1;
@@ -404,124 +495,41 @@ package body ROSIDL.Parser is
          return;  --  blank or comment line
       end if;
 
-      declare
-         Type_First : constant Positive := I;
-      begin
-         while I <= Last and then not Is_Blank (L (I)) loop
-            I := I + 1;
-         end loop;
-         declare
-            Type_Token : constant String := L (Type_First .. I - 1);
-         begin
-            if Type_Token = "---" then
-               Fail (File, N, Col (Type_First),
-                     "a field or a constant (a '---' separator belongs in a .srv or"
-                     & " .action file)", "'---'");
-            end if;
-            Skip_Blanks;
-            if I > Last then
-               Fail (File, N, Col (I),
-                     "a field or constant name after the type " & Quote (Type_Token),
-                     "end of line");
-            end if;
-            declare
-               Name_First : constant Positive := I;
-            begin
-               while I <= Last and then not Is_Blank (L (I)) and then L (I) /= '=' loop
-                  I := I + 1;
-               end loop;
-               declare
-                  Name : constant String := L (Name_First .. I - 1);
-               begin
-                  Skip_Blanks;
-                  if I <= Last and then L (I) = '=' then
-                     --  A constant.
-                     declare
-                        T     : constant Field_Type :=
-                          Parse_Type (C, Type_Token, N, Col (Type_First));
-                        Value : constant String := Trim_Blanks (L (I + 1 .. Last));
-                        Value_First : Positive := I + 1;
-                     begin
-                        if T.Kind = Message_Kind or else T.Collection /= Single
-                          or else T.String_Bound /= 0
-                        then
-                           Fail (File, N, Col (Type_First),
-                                 "a primitive, string or wstring type for a constant",
-                                 Quote (Type_Token));
-                        elsif Name'Length = 0 then
-                           Fail (File, N, Col (Name_First), "a constant name before '='",
-                                 "'='");
-                        elsif not Is_Valid_Constant_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a constant name of the form [A-Z][A-Z0-9_]* (no '__',"
-                                 & " no trailing '_')", Quote (Name));
-                        end if;
-                        for K of Def.Constants loop
-                           if K.Name = Name then
-                              Fail (File, N, Col (Name_First),
-                                    "a constant name not used before in this message",
-                                    Quote (Name) & " (already defined at line"
-                                    & K.Position.Line'Image & ")");
-                           end if;
-                        end loop;
-                        while Value_First <= Last and then Is_Blank (L (Value_First)) loop
-                           Value_First := Value_First + 1;
-                        end loop;
-                        if Value'Length = 0 then
-                           Fail (File, N, Col (Value_First), "a constant value after '='",
-                                 "end of line");
-                        end if;
-                        declare
-                           R : constant Check_Result := Check_Scalar (T.Kind, 0, Value);
-                        begin
-                           if not R.OK then
-                              Fail (File, N, Col (Value_First), To_String (R.Expected),
-                                    Quote (Value));
-                           end if;
-                           Def.Constants.Append
-                             (Constant_Definition'(Name     => To_Unbounded_String (Name),
-                               Kind     => T.Kind,
-                               Value    => R.Value,
-                               Position => (C.File, N, Col (Name_First))));
-                        end;
-                     end;
-                  else
-                     --  A field, with an optional default value.
-                     declare
-                        T : constant Field_Type :=
-                          Parse_Type (C, Type_Token, N, Col (Type_First));
-                        F : Field;
-                     begin
-                        if not Is_Valid_Field_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a field name of the form [a-z][a-z0-9_]* (no '__', no"
-                                 & " trailing '_')", Quote (Name));
-                        elsif Is_Reserved_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a field name that is not a reserved word",
-                                 Quote (Name));
-                        end if;
-                        for G of Def.Fields loop
-                           if G.Name = Name then
-                              Fail (File, N, Col (Name_First),
-                                    "a field name not used before in this message",
-                                    Quote (Name) & " (already defined at line"
-                                    & G.Position.Line'Image & ")");
-                           end if;
-                        end loop;
-                        F.Name := To_Unbounded_String (Name);
-                        F.Of_Type := T;
-                        F.Position := (C.File, N, Col (Name_First));
-                        if I <= Last then
-                           Check_Default (C, T, L (I .. Last), N, Col (I), F.Default);
-                        end if;
-                        Def.Fields.Append (F);
-                     end;
-                  end if;
-               end;
-            end;
-         end;
-      end;
+      Type_First := I;
+      while I <= Last and then not Is_Blank (L (I)) loop
+         I := I + 1;
+      end loop;
+      Type_Last := I - 1;
+      if L (Type_First .. Type_Last) = "---" then
+         Fail (To_String (C.File), N, Col (Type_First),
+               "a field or a constant ('---' only separates .srv and .action parts)",
+               "'---'");
+      end if;
+
+      Skip_Blanks;
+      if I > Last then
+         Fail (To_String (C.File), N, Col (I),
+               "a field or constant name after the type "
+               & Quote (L (Type_First .. Type_Last)), "end of line");
+      end if;
+      Name_First := I;
+      while I <= Last and then not Is_Blank (L (I)) and then L (I) /= '=' loop
+         I := I + 1;
+      end loop;
+      Name_Last := I - 1;
+      Skip_Blanks;
+
+      if I <= Last and then L (I) = '=' then
+         I := I + 1;
+         Skip_Blanks;
+         Add_Constant
+           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
+            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+      else
+         Add_Field
+           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
+            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+      end if;
    end Parse_Line;
 
    function Parse_Section
@@ -558,7 +566,7 @@ package body ROSIDL.Parser is
    procedure Check_Names (Package_Name, Name, File : String) is
    begin
       if not Is_Valid_Package_Name (Package_Name) then
-         Fail (File, 1, 1, "a package name of the form [a-z][a-z0-9_]* (no '__', no trailing '_')",
+         Fail (File, 1, 1, "a package name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
                Quote (Package_Name));
       elsif not Is_Valid_Type_Name (Name) then
          Fail (File, 1, 1, "an interface name of the form [A-Z][A-Za-z0-9]*", Quote (Name));
@@ -623,7 +631,7 @@ package body ROSIDL.Parser is
          if Is_Separator (Lines (I)) then
             if Separator /= 0 then
                Fail (File_Name, Lines (I).Number, 1,
-                     "one line '---' between the request and the response of a service",
+                     "one line '---' in a service",
                      "a second '---' (the first is at line"
                      & Lines (Separator).Number'Image & ")");
             end if;
@@ -632,7 +640,7 @@ package body ROSIDL.Parser is
       end loop;
       if Separator = 0 then
          Fail (File_Name, Lines.Last_Index + 1, 1,
-               "a line '---' between the request and the response of a service",
+               "a line '---' between request and response",
                "end of file");
       end if;
       declare
