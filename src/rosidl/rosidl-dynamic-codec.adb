@@ -604,9 +604,12 @@ package body ROSIDL.Dynamic.Codec is
                            & " characters exceeds its bound" & T.String_Bound'Image);
                      end if;
                      declare
-                        Text : Wide_Wide_String (1 .. Natural (L));
+                        --  Built by chunks: L may be large (no stack copy).
+                        Chunk : Wide_Wide_String (1 .. 256) := [others => ' '];
+                        Used  : Natural := 0;
+                        Text  : Unbounded_Wide_Wide_String;
                      begin
-                        for C of Text loop
+                        for Unused in 1 .. L loop
                            declare
                               Code : constant Unsigned_64 :=
                                 Get_Unsigned (4, "wstring character");
@@ -617,10 +620,16 @@ package body ROSIDL.Dynamic.Codec is
                                    (S, "wstring character" & Code'Image
                                     & " out of range");
                               end if;
-                              C := Wide_Wide_Character'Val (Code);
+                              if Used = Chunk'Last then
+                                 Append (Text, Chunk);
+                                 Used := 0;
+                              end if;
+                              Used := Used + 1;
+                              Chunk (Used) := Wide_Wide_Character'Val (Code);
                            end;
                         end loop;
-                        Cell.WTexts (I) := To_Unbounded_Wide_Wide_String (Text);
+                        Append (Text, Chunk (1 .. Used));
+                        Cell.WTexts (I) := Text;
                      end;
                   end;
                end loop;
@@ -650,7 +659,7 @@ package body ROSIDL.Dynamic.Codec is
       if Msg.Root = null then
          raise Decode_Error with "decoding into an uninitialised message";
       end if;
-      Make_Unique (Msg, Referenced => False);
+      Make_Unique (Msg, Referenced => False, Keep_Contents => False);
       S.Root := Msg.Root.Def;
       S.Little := Little_Endian_Header (Data);
       S.Swap := S.Little /= Native_Little;

@@ -396,7 +396,9 @@ package body ROSIDL.Dynamic is
 
    package Message_Pointers is new System.Address_To_Access_Conversions (Message);
 
-   procedure Make_Unique (This : Message'Class; Referenced : Boolean) is
+   procedure Make_Unique
+     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True)
+   is
       Old : Node_Access := This.Root;
    begin
       if Old = null then
@@ -404,7 +406,8 @@ package body ROSIDL.Dynamic is
       end if;
       if not System.Atomic_Counters.Is_One (Old.Shares) then
          declare
-            Mine : constant Node_Access := Copy (Old);
+            Mine : constant Node_Access :=
+              (if Keep_Contents then Copy (Old) else New_Node (Old.Def));
          begin
             --  This is a variable even when seen as a constant (a Message
             --  is a by-reference type): only its root pointer changes.

@@ -44,7 +44,8 @@ package ROSIDL.Dynamic is
    --  A message of one type. The default value is not initialised (every
    --  access raises Field_Error); obtain messages through Init.
 
-   function Init (Support : Message_Support) return Message;
+   function Init (Support : Message_Support) return Message
+     with Post => Is_Initialised (Init'Result);
    --  A message whose fields have their default values: the definition's
    --  defaults when given, else zero, False, empty strings; sequences empty
    --  (or the default list), fixed arrays sized.
@@ -170,7 +171,8 @@ package ROSIDL.Dynamic is
    function Capacity (This : Array_Ref) return Natural;
    --  N for T[N] and T[<=N]; Natural'Last for T[].
 
-   procedure Resize (This : Array_Ref; Length : Natural);
+   procedure Resize (This : Array_Ref; Length : Natural)
+     with Post => ROSIDL.Dynamic.Length (This) = Length;
    --  New elements take their type's zero/default value. Field_Error for
    --  a fixed array (unless Length is its size) or beyond a bound.
 
@@ -302,9 +304,11 @@ private
    --  deep-copied. So function results (Decode, Init) are not copied, and
    --  writes through references never show in another message.
 
-   procedure Make_Unique (This : Message'Class; Referenced : Boolean);
-   --  Gives This a root of its own (deep copy when shared); Referenced
-   --  marks it as having handed out references.
+   procedure Make_Unique
+     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True);
+   --  Gives This a root of its own (a deep copy when shared, or a message
+   --  of default values unless Keep_Contents); Referenced marks it as
+   --  having handed out references.
 
    overriding procedure Adjust (This : in out Message);
    overriding procedure Finalize (This : in out Message);

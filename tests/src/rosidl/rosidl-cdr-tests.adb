@@ -152,6 +152,34 @@ package body ROSIDL.CDR.Tests is
       end;
    end Caller_Buffers;
 
+   procedure Lenient_And_Long_Values (Unused : in out Fixture) is
+      E : Stream_Element_Array := Samples.Encode_Sample ("everything");
+      M : Message := Samples.Make ("everything");
+      W : constant Message := Samples.Make ("wstrings");
+      Long : Wide_Wide_String (1 .. 1_000);
+   begin
+      --  bool is read as "non-zero" (offset 4 is everything.b).
+      for Value of Stream_Element_Array'[2, 16#FF#, 0] loop
+         E (E'First + 4) := Value;
+         Decode (E, M);
+         Assert (M ("b").As_Bool = (Value /= 0), "bool from" & Value'Image);
+         Assert (Encode (M) (E'First + 4) = (if Value /= 0 then 1 else 0),
+                 "bool re-encoded as 0 or 1");
+      end loop;
+      --  wstrings longer than the decoder's chunk, all planes.
+      for I in Long'Range loop
+         Long (I) := Wide_Wide_Character'Val ((I * 7_919) mod 16#11_0000#);
+      end loop;
+      W ("ws").As_Array.Resize (3);
+      W ("ws").As_Array (3).Set_WString (Long);
+      declare
+         Back : constant Message := Decode (Support (W), Encode (W, Big_Endian));
+      begin
+         Assert (Back ("ws").As_Array (3).Get_WString = Long, "long wstring");
+         Assert (Back = W, "wstrings round trip");
+      end;
+   end Lenient_And_Long_Values;
+
    ---------------------------------------------------------------------------
    --  Error reports
    ---------------------------------------------------------------------------
@@ -508,6 +536,8 @@ package body ROSIDL.CDR.Tests is
                                       Both_Byte_Orders_Round_Trip'Access));
       Result.Add_Test (Caller.Create ("cdr: encode into / decode from caller buffers",
                                       Caller_Buffers'Access));
+      Result.Add_Test (Caller.Create ("cdr: bool non-zero, long wstrings",
+                                      Lenient_And_Long_Values'Access));
       Result.Add_Test (Caller.Create ("cdr: encode errors name the field path",
                                       Encode_Errors_Name_The_Field'Access));
       Result.Add_Test (Caller.Create ("cdr: decode errors name path and offset",
