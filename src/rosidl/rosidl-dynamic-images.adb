@@ -451,17 +451,18 @@ package body ROSIDL.Dynamic.Images is
             begin
                return (if B /= 0 then "true" else "false");
             end;
-         when Byte_Kind =>
+         when Byte_Kind | Char_Kind =>
             declare
                B : UInt8 with Import, Address => A;
             begin
-               --  rclpy gives a byte as a 1-byte bytes object, which ros2
-               --  topic echo turns into the character of that code.
+               --  rclpy gives a byte as a 1-byte bytes object (turned into
+               --  the character of that code by ros2 topic echo) and a char
+               --  as a 1-character str: both show as that character.
                return Yaml_String
                  (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
                     ([Wide_Wide_Character'Val (B)]));
             end;
-         when Char_Kind | UInt8_Kind =>
+         when UInt8_Kind =>
             declare
                B : UInt8 with Import, Address => A;
             begin

@@ -347,14 +347,18 @@ def echo_dict(value):
 
 @pytest.mark.parametrize(
     "name", ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid", "arrays",
-             "texts", "doubles", "floats"])
+             "texts", "doubles", "floats", "everything"])
 def test_image_is_what_ros2_topic_echo_prints(name):
     # Independent rendering: PyYAML with the options ros2 topic echo uses,
     # on the values Python decodes from the Ada bytes (float32 widened).
     import yaml
     obj = type(SAMPLES[name]).deserialize(ada_bytes(name))
-    expected = yaml.dump(echo_dict(obj), allow_unicode=True, width=2**31 - 1,
-                         sort_keys=False)
+    fields = echo_dict(obj)
+    if name == "everything":
+        # rclpy holds a byte as bytes, which echo turns into its character
+        # (cyclonedds gives an int); a char is a 1-character str in both.
+        fields["by"] = chr(fields["by"])
+    expected = yaml.dump(fields, allow_unicode=True, width=2**31 - 1, sort_keys=False)
     assert tool("image", name).stdout == expected
 
 
