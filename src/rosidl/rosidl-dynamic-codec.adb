@@ -455,9 +455,11 @@ package body ROSIDL.Dynamic.Codec is
                Whole : constant Natural := Natural
                  (Long_Long_Integer'Max (Remaining, 0) / Long_Long_Integer (Size));
                Text  : constant String :=
-                 "truncated: " & Image (T) & " of" & Count'Image & " elements needs"
-                 & Bytes'Image & " bytes," & Long_Long_Integer'Max (Remaining, 0)'Image
-                 & " remain";
+                 "truncated: " & Image (T)
+                 & (if T.Collection = Single then ""
+                    else " of" & Count'Image & " elements")
+                 & " needs" & Bytes'Image & " bytes,"
+                 & Long_Long_Integer'Max (Remaining, 0)'Image & " remain";
             begin
                if T.Collection /= Single then
                   Set_Index (S, Whole + 1);

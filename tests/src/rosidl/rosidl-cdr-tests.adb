@@ -258,6 +258,14 @@ package body ROSIDL.CDR.Tests is
          A (A'First + 52) := 6;
          Expect_Decode_Error ("arrays", A, ["bounded_u8:", "bound", "byte offset 52"]);
       end;
+      --  Arrays cut inside the z of its second point.
+      declare
+         A : constant Stream_Element_Array := Vector ("arrays");
+      begin
+         Expect_Decode_Error ("arrays", A (1 .. 150),
+                              ["cdr_test_msgs/msg/Arrays: points[1].z: truncated: "
+                               & "float64 needs 8 bytes, 2 remain at byte offset 148"]);
+      end;
       --  OccupancyGrid: data count (offset 100) 16#7FFF_FFFF#.
       declare
          G : Stream_Element_Array := Vector ("occupancy_grid");
