@@ -396,15 +396,21 @@ package body ROSIDL.Dynamic is
 
    package Message_Pointers is new System.Address_To_Access_Conversions (Message);
 
-   procedure Make_Unique
-     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True)
-   is
-      Old : Node_Access := This.Root;
-   begin
-      if Old = null then
-         return;
-      end if;
-      if not System.Atomic_Counters.Is_One (Old.Shares) then
+   --  Taking a private copy of a shared root is serialised, so that tasks
+   --  reading one message object at the same time (each handing out
+   --  references) do not both replace its root. The common case (an
+   --  unshared root) takes no lock.
+   protected Unsharing is
+      procedure Unshare (This : Message'Class; Keep_Contents : Boolean);
+   end Unsharing;
+
+   protected body Unsharing is
+      procedure Unshare (This : Message'Class; Keep_Contents : Boolean) is
+         Old : Node_Access := This.Root;
+      begin
+         if System.Atomic_Counters.Is_One (Old.Shares) then
+            return;  --  another task got there first
+         end if;
          declare
             Mine : constant Node_Access :=
               (if Keep_Contents then Copy (Old) else New_Node (Old.Def));
@@ -416,6 +422,17 @@ package body ROSIDL.Dynamic is
                Free (Old);
             end if;
          end;
+      end Unshare;
+   end Unsharing;
+
+   procedure Make_Unique
+     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True) is
+   begin
+      if This.Root = null then
+         return;
+      end if;
+      if not System.Atomic_Counters.Is_One (This.Root.Shares) then
+         Unsharing.Unshare (This, Keep_Contents);
       end if;
       if Referenced then
          This.Root.Referenced := True;

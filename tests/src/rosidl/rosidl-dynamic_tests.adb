@@ -125,6 +125,60 @@ package body ROSIDL.Dynamic_Tests is
       end;
    end Value_Semantics;
 
+   procedure Concurrent_Readers (Unused : in out Fixture) is
+      --  Two tasks index the same message object while it shares its
+      --  storage: each takes a private copy under a lock, once.
+      Original : constant Message := ROSIDL.CDR.Samples.Make ("laser_scan");
+      Source   : constant Message :=
+        ROSIDL.CDR.Decode (Support (Original), ROSIDL.CDR.Encode (Original));
+      --  Never indexed: its storage stays shareable.
+      Expected : Float32 := 0.0;
+   begin
+      for K in 1 .. 13 loop
+         Expected := Expected + Original ("ranges").As_Array (K).As_Float32;
+      end loop;
+      for Round in 1 .. 300 loop
+         declare
+            Shared : constant Message := Source;
+            Sums   : array (1 .. 2) of Float32 := [others => 0.0];
+
+            protected Start is
+               entry Go;
+               --  Released when both readers have arrived.
+            private
+               Arrived : Natural := 0;
+            end Start;
+
+            protected body Start is
+               entry Go when Go'Count + Arrived >= 2 is
+               begin
+                  Arrived := Arrived + 1;
+               end Go;
+            end Start;
+
+            task type Reader (Id : Positive);
+            task body Reader is
+            begin
+               Start.Go;
+               for K in 1 .. 13 loop
+                  Sums (Id) := Sums (Id) + Shared ("ranges").As_Array (K).As_Float32;
+               end loop;
+            end Reader;
+         begin
+            declare
+               R1 : Reader (1);
+               R2 : Reader (2);
+               pragma Unreferenced (R1, R2);
+            begin
+               null;
+            end;
+            Assert (Sums (1) = Expected and then Sums (2) = Expected,
+                    "round" & Round'Image & ": a reader saw other values");
+         end;
+      end loop;
+      Assert (Source = Original, "the shared source is unchanged");
+   end Concurrent_Readers;
+
    procedure Arrays_And_Limits (Unused : in out Fixture) is
       M : constant Message := ROSIDL.CDR.Samples.Make ("arrays");
       R : constant Array_Ref := M ("seq_i16").As_Array;
@@ -380,6 +434,8 @@ package body ROSIDL.Dynamic_Tests is
                                       Nested_References'Access));
       Result.Add_Test (Caller.Create ("dynamic: messages are values",
                                       Value_Semantics'Access));
+      Result.Add_Test (Caller.Create ("dynamic: concurrent readers of a shared message",
+                                      Concurrent_Readers'Access));
       Result.Add_Test (Caller.Create ("dynamic: arrays, resize limits",
                                       Arrays_And_Limits'Access));
       Result.Add_Test (Caller.Create ("dynamic: bulk access", Bulk_Access'Access));
