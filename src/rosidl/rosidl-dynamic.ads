@@ -22,9 +22,13 @@
 --
 --  Primitive arrays and sequences are stored compactly (one contiguous
 --  buffer in native layout) so that bulk access and the CDR codec are block
---  copies. References (Field_Ref, Array_Ref, the As_* results) stay valid
---  as long as the message is neither finalised nor the enclosing sequence
---  resized, as with the standard containers.
+--  copies. Copies of a message share its storage until one of them hands
+--  out a reference, so returning or passing messages costs no copy.
+--  References (Field_Ref, Array_Ref, the As_* results) stay valid as long
+--  as the message is neither finalised nor the enclosing sequence resized,
+--  as with the standard containers. Several tasks may read one message
+--  object at once (indexing included); writing it, or copying it while
+--  another task writes it, needs the caller's synchronisation.
 with Ada.Finalization;
 with Ada.Strings.Unbounded;
 with Ada.Strings.Wide_Wide_Unbounded;
