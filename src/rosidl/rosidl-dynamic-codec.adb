@@ -160,7 +160,7 @@ package body ROSIDL.Dynamic.Codec is
          when String_Kind =>
             for I in 1 .. Cell.Count loop
                declare
-                  L : constant Natural := Length (Cell.Texts (I));
+                  L : constant Natural := Length (Cell.Extra.Texts (I));
                begin
                   if T.String_Bound > 0 and then L > T.String_Bound then
                      Set_Index (S, I);
@@ -174,7 +174,7 @@ package body ROSIDL.Dynamic.Codec is
          when WString_Kind =>
             for I in 1 .. Cell.Count loop
                declare
-                  L : constant Natural := Length (Cell.WTexts (I));
+                  L : constant Natural := Length (Cell.Extra.WTexts (I));
                begin
                   if T.String_Bound > 0 and then L > T.String_Bound then
                      Set_Index (S, I);
@@ -188,7 +188,7 @@ package body ROSIDL.Dynamic.Codec is
          when Message_Kind =>
             for I in 1 .. Cell.Count loop
                Set_Index (S, I);
-               Size_Node (Cell.Nodes (I), S);
+               Size_Node (Cell.Extra.Nodes (I), S);
             end loop;
       end case;
    end Size_Cell;
@@ -304,7 +304,7 @@ package body ROSIDL.Dynamic.Codec is
             when String_Kind =>
                for I in 1 .. Cell.Count loop
                   declare
-                     Text : constant String := To_String (Cell.Texts (I));
+                     Text : constant String := To_String (Cell.Extra.Texts (I));
                   begin
                      Put_Unsigned (Unsigned_64 (Text'Length + 1), 4);
                      for C of Text loop
@@ -319,7 +319,7 @@ package body ROSIDL.Dynamic.Codec is
                for I in 1 .. Cell.Count loop
                   declare
                      Text : constant Wide_Wide_String :=
-                       To_Wide_Wide_String (Cell.WTexts (I));
+                       To_Wide_Wide_String (Cell.Extra.WTexts (I));
                   begin
                      Put_Unsigned (Unsigned_64 (Text'Length), 4);
                      for C of Text loop
@@ -329,7 +329,7 @@ package body ROSIDL.Dynamic.Codec is
                end loop;
             when Message_Kind =>
                for I in 1 .. Cell.Count loop
-                  Put_Node (Cell.Nodes (I));
+                  Put_Node (Cell.Extra.Nodes (I));
                end loop;
          end case;
       end Put_Cell;
@@ -569,13 +569,13 @@ package body ROSIDL.Dynamic.Codec is
                            Decode_Failure (S, "string not terminated by a NUL");
                         end if;
                         if Len = 0 then
-                           Cell.Texts (I) := Null_Unbounded_String;
+                           Cell.Extra.Texts (I) := Null_Unbounded_String;
                         else
                            declare
                               Text : String (1 .. Len)
                                 with Import, Address => Data (First)'Address;
                            begin
-                              Cell.Texts (I) := To_Unbounded_String (Text);
+                              Cell.Extra.Texts (I) := To_Unbounded_String (Text);
                            end;
                         end if;
                         S.Pos := S.Pos + Stream_Element_Offset (L);
@@ -631,7 +631,7 @@ package body ROSIDL.Dynamic.Codec is
                            end;
                         end loop;
                         Append (Text, Chunk (1 .. Used));
-                        Cell.WTexts (I) := Text;
+                        Cell.Extra.WTexts (I) := Text;
                      end;
                   end;
                end loop;
@@ -641,7 +641,7 @@ package body ROSIDL.Dynamic.Codec is
                end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
-                  Get_Node (Cell.Nodes (I));
+                  Get_Node (Cell.Extra.Nodes (I));
                end loop;
          end case;
       end Get_Cell;

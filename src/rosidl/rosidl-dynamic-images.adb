@@ -530,11 +530,11 @@ package body ROSIDL.Dynamic.Images is
             when Primitive_Kind =>
                return Primitive_Image (Cell, Index);
             when String_Kind =>
-               return Yaml_String (Cut (To_String (Cell.Texts (Index))));
+               return Yaml_String (Cut (To_String (Cell.Extra.Texts (Index))));
             when WString_Kind =>
                return Yaml_String
                  (Cut (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
-                    (To_Wide_Wide_String (Cell.WTexts (Index)))));
+                    (To_Wide_Wide_String (Cell.Extra.WTexts (Index)))));
             when Message_Kind =>
                raise Program_Error;
          end case;
@@ -564,7 +564,7 @@ package body ROSIDL.Dynamic.Images is
                if T.Collection = Single then
                   if T.Kind = Message_Kind then
                      Append (Out_Text, P & Name & ":" & ASCII.LF);
-                     Put_Fields (Cell.Nodes (1), Indent + 2, Spaces (Indent + 2));
+                     Put_Fields (Cell.Extra.Nodes (1), Indent + 2, Spaces (Indent + 2));
                   else
                      Append (Out_Text, P & Name & ": " & Scalar_Image (Cell, 1)
                              & ASCII.LF);
@@ -580,7 +580,7 @@ package body ROSIDL.Dynamic.Images is
                   begin
                      for I in 1 .. Shown loop
                         if T.Kind = Message_Kind then
-                           Put_Fields (Cell.Nodes (I), Indent + 2,
+                           Put_Fields (Cell.Extra.Nodes (I), Indent + 2,
                                        Spaces (Indent) & "- ");
                         else
                            Append (Out_Text, Spaces (Indent) & "- "

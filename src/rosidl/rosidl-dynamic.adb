@@ -17,6 +17,7 @@ package body ROSIDL.Dynamic is
    procedure Free_Words is new Ada.Unchecked_Deallocation
      (Word_Array, Word_Access);
    procedure Free_Node is new Ada.Unchecked_Deallocation (Node, Node_Access);
+   procedure Free_Extra is new Ada.Unchecked_Deallocation (Cell_Extra, Extra_Access);
 
    --  Access types used to designate elements inside Word_Array storage;
    --  they alias the words, so strict aliasing is off for them.
@@ -135,20 +136,20 @@ package body ROSIDL.Dynamic is
                Fresh := null;
             end;
          when String_Kind =>
-            Cell.Texts.Set_Length (Ada.Containers.Count_Type (Count));
+            Cell.Extra.Texts.Set_Length (Ada.Containers.Count_Type (Count));
          when WString_Kind =>
-            Cell.WTexts.Set_Length (Ada.Containers.Count_Type (Count));
+            Cell.Extra.WTexts.Set_Length (Ada.Containers.Count_Type (Count));
          when Message_Kind =>
-            while Natural (Cell.Nodes.Length) > Count loop
+            while Natural (Cell.Extra.Nodes.Length) > Count loop
                declare
-                  Last : Node_Access := Cell.Nodes.Last_Element;
+                  Last : Node_Access := Cell.Extra.Nodes.Last_Element;
                begin
                   Free (Last);
-                  Cell.Nodes.Delete_Last;
+                  Cell.Extra.Nodes.Delete_Last;
                end;
             end loop;
-            while Natural (Cell.Nodes.Length) < Count loop
-               Cell.Nodes.Append (New_Node (T.Nested));
+            while Natural (Cell.Extra.Nodes.Length) < Count loop
+               Cell.Extra.Nodes.Append (New_Node (T.Nested));
             end loop;
       end case;
       Cell.Count := Count;
@@ -231,6 +232,9 @@ package body ROSIDL.Dynamic is
             Cell.Owner := N;
             Cell.Field := I;
             Cell.Of_Type := F.Of_Type;
+            if F.Of_Type.Kind not in Primitive_Kind then
+               Cell.Extra := new Cell_Extra;
+            end if;
             Set_Count
               (Cell,
                (case F.Of_Type.Collection is
@@ -245,9 +249,9 @@ package body ROSIDL.Dynamic is
                      when Primitive_Kind =>
                         Set_Primitive_Text (Cell, E, Text);
                      when String_Kind =>
-                        Cell.Texts (E) := To_Unbounded_String (Text);
+                        Cell.Extra.Texts (E) := To_Unbounded_String (Text);
                      when WString_Kind =>
-                        Cell.WTexts (E) := To_Unbounded_Wide_Wide_String
+                        Cell.Extra.WTexts (E) := To_Unbounded_Wide_Wide_String
                           (Ada.Characters.Conversions.To_Wide_Wide_String (Text));
                      when Message_Kind =>
                         null;
@@ -266,9 +270,12 @@ package body ROSIDL.Dynamic is
       end if;
       for Cell of N.Cells loop
          Free_Words (Cell.Prims);
-         for Child of Cell.Nodes loop
-            Free (Child);
-         end loop;
+         if Cell.Extra /= null then
+            for Child of Cell.Extra.Nodes loop
+               Free (Child);
+            end loop;
+            Free_Extra (Cell.Extra);
+         end if;
       end loop;
       Free_Node (N);
    end Free;
@@ -294,11 +301,14 @@ package body ROSIDL.Dynamic is
                if S.Prims /= null then
                   D.Prims := new Word_Array'(S.Prims.all);
                end if;
-               D.Texts := S.Texts;
-               D.WTexts := S.WTexts;
-               for Child of S.Nodes loop
-                  D.Nodes.Append (Copy (Child));
-               end loop;
+               if S.Extra /= null then
+                  D.Extra := new Cell_Extra'(Texts  => S.Extra.Texts,
+                                             WTexts => S.Extra.WTexts,
+                                             Nodes  => <>);
+                  for Child of S.Extra.Nodes loop
+                     D.Extra.Nodes.Append (Copy (Child));
+                  end loop;
+               end if;
             end;
          end loop;
          return R;
@@ -334,14 +344,17 @@ package body ROSIDL.Dynamic is
                   end if;
                end;
             end if;
-            if A.Texts /= B.Texts or else A.WTexts /= B.WTexts then
-               return False;
-            end if;
-            for J in 1 .. Natural (A.Nodes.Length) loop
-               if not Equal (A.Nodes (J), B.Nodes (J)) then
+            if A.Extra /= null then
+               if A.Extra.Texts /= B.Extra.Texts or else A.Extra.WTexts /= B.Extra.WTexts
+               then
                   return False;
                end if;
-            end loop;
+               for J in 1 .. Natural (A.Extra.Nodes.Length) loop
+                  if not Equal (A.Extra.Nodes (J), B.Extra.Nodes (J)) then
+                     return False;
+                  end if;
+               end loop;
+            end if;
          end;
       end loop;
       return True;
@@ -490,7 +503,7 @@ package body ROSIDL.Dynamic is
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Requested);
       end if;
-      return This.Cell.Nodes (Single_Index (This, Requested));
+      return This.Cell.Extra.Nodes (Single_Index (This, Requested));
    end Nested_Node;
 
    function Field_Reference (This : Field_Ref; Name : String) return Field_Ref is
@@ -567,22 +580,22 @@ package body ROSIDL.Dynamic is
 
    procedure Set_String (This : Field_Ref; Value : String) is
    begin
-      This.Cell.Texts (Text_Index (This, String_Kind, "string")) :=
+      This.Cell.Extra.Texts (Text_Index (This, String_Kind, "string")) :=
         To_Unbounded_String (Value);
    end Set_String;
 
    function Get_String (This : Field_Ref) return String is
-     (To_String (This.Cell.Texts (Text_Index (This, String_Kind, "string"))));
+     (To_String (This.Cell.Extra.Texts (Text_Index (This, String_Kind, "string"))));
 
    procedure Set_WString (This : Field_Ref; Value : Wide_Wide_String) is
    begin
-      This.Cell.WTexts (Text_Index (This, WString_Kind, "wstring")) :=
+      This.Cell.Extra.WTexts (Text_Index (This, WString_Kind, "wstring")) :=
         To_Unbounded_Wide_Wide_String (Value);
    end Set_WString;
 
    function Get_WString (This : Field_Ref) return Wide_Wide_String is
      (To_Wide_Wide_String
-        (This.Cell.WTexts (Text_Index (This, WString_Kind, "wstring"))));
+        (This.Cell.Extra.WTexts (Text_Index (This, WString_Kind, "wstring"))));
 
    function To_Message (This : Field_Ref'Class) return Message is
      (Ada.Finalization.Controlled with
@@ -600,7 +613,7 @@ package body ROSIDL.Dynamic is
             & Type_Name (Value));
       end if;
       Free (Old);
-      This.Cell.Nodes (Target) := Copy (Value.Root);
+      This.Cell.Extra.Nodes (Target) := Copy (Value.Root);
    end Set_Message;
 
    ---------------------------------------------------------------------
@@ -686,7 +699,7 @@ package body ROSIDL.Dynamic is
            & Field_Names (N.Def.all);
       end if;
       declare
-         Layout : constant Node_Access := N.Cells (Layout_I).Nodes (1);
+         Layout : constant Node_Access := N.Cells (Layout_I).Extra.Nodes (1);
          Dims   : Field_Cell renames
            Layout.Cells (Field_Index (Layout.Def.all, "dim"));
          Offset : constant UInt32 := To_UInt32
@@ -696,7 +709,7 @@ package body ROSIDL.Dynamic is
          Pos    : Long_Long_Integer := Long_Long_Integer (Offset);
 
          function Dim_Value (D : Positive; Name : String) return Long_Long_Integer is
-            Dim : constant Node_Access := Dims.Nodes (D);
+            Dim : constant Node_Access := Dims.Extra.Nodes (D);
          begin
             return Long_Long_Integer
               (To_UInt32 (Element_Address

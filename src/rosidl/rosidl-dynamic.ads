@@ -272,6 +272,15 @@ private
      (Positive, Unbounded_Wide_Wide_String);
    package Node_Vectors is new Ada.Containers.Vectors (Positive, Node_Access);
 
+   type Cell_Extra is record
+      Texts  : Text_Vectors.Vector;
+      WTexts : Wide_Text_Vectors.Vector;
+      Nodes  : Node_Vectors.Vector;
+   end record;
+   --  The storage of string, wstring and message fields (only theirs).
+
+   type Extra_Access is access Cell_Extra;
+
    type Field_Cell is limited record
       Owner  : Node_Access;
       --  The message holding this field.
@@ -283,9 +292,8 @@ private
       --  Number of elements (1 for a single value).
       Prims  : Word_Access;
       --  Primitive elements (Count * size bytes used).
-      Texts  : Text_Vectors.Vector;
-      WTexts : Wide_Text_Vectors.Vector;
-      Nodes  : Node_Vectors.Vector;
+      Extra  : Extra_Access;
+      --  Elements of the other kinds (null for a primitive field).
    end record;
 
    type Cell_Array is array (Positive range <>) of aliased Field_Cell;
