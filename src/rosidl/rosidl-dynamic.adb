@@ -565,6 +565,30 @@ package body ROSIDL.Dynamic is
    function As_Float64 (This : Field_Ref) return Float64_Ref is
      ((Element => To_Float64 (Scalar_Address (This, Float64_Kind))));
 
+   function Is_NaN (This : Field_Ref) return Boolean is
+      use type Interfaces.Unsigned_32;
+      use type Interfaces.Unsigned_64;
+      T : constant Field_Type := Cell_Type (This.Cell.all);
+   begin
+      if T.Kind = Float32_Kind then
+         declare
+            Bits : constant Interfaces.Unsigned_32 :=
+              To_UInt32 (Scalar_Address (This, Float32_Kind, "float")).all;
+         begin
+            return (Bits and 16#7F80_0000#) = 16#7F80_0000#
+              and then (Bits and 16#007F_FFFF#) /= 0;
+         end;
+      else
+         declare
+            Bits : constant Interfaces.Unsigned_64 :=
+              To_UInt64 (Scalar_Address (This, Float64_Kind, "float")).all;
+         begin
+            return (Bits and 16#7FF0_0000_0000_0000#) = 16#7FF0_0000_0000_0000#
+              and then (Bits and 16#000F_FFFF_FFFF_FFFF#) /= 0;
+         end;
+      end if;
+   end Is_NaN;
+
    function Text_Index
      (This : Field_Ref'Class; Kind : Text_Kind; Requested : String) return Positive
    is

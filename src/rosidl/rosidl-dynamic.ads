@@ -139,6 +139,12 @@ package ROSIDL.Dynamic is
    function As_Float64 (This : Field_Ref) return Float64_Ref;
    --  The single value This designates; Field_Error when the field's
    --  element type is not the one requested or This is a whole array.
+   --  Builds with validity checks (-gnatVa, the debug build) raise
+   --  Constraint_Error on reading a NaN float: test Is_NaN first.
+
+   function Is_NaN (This : Field_Ref) return Boolean;
+   --  The float32 / float64 value This designates is a NaN (read without
+   --  reading it as a float). Field_Error for other types.
 
    procedure Set_String (This : Field_Ref; Value : String);
    function Get_String (This : Field_Ref) return String;

@@ -1,4 +1,5 @@
 with Ada.Exceptions;
+with Ada.Streams;
 with Ada.Strings.Fixed;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
@@ -14,6 +15,7 @@ package body ROSIDL.Dynamic_Tests is
    use ROSIDL.Dynamic;
    use ROSIDL.Typesupport;
    use type Int8, Int16, Int32, Int64, UInt32, Float32, Float64;
+   use type Ada.Streams.Stream_Element_Offset;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
 
@@ -253,6 +255,34 @@ package body ROSIDL.Dynamic_Tests is
       end;
    end Bulk_Access;
 
+   procedure Non_Finite_Floats (Unused : in out Fixture) is
+      --  A LaserScan whose ranges hold NaN and +inf (as lasers report), from
+      --  bytes: bulk access copies them; Is_NaN tells them apart.
+      Scan : constant Message := Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
+   begin
+      Scan ("ranges").Set_Float32_Array ([1.0, 2.0, 3.0]);
+      declare
+         Data : Ada.Streams.Stream_Element_Array := ROSIDL.CDR.Encode (Scan);
+         Last : constant Ada.Streams.Stream_Element_Offset := Data'Last;
+      begin
+         --  ranges[1] := NaN, ranges[2] := +inf (little-endian), then the
+         --  empty intensities count (last 4 bytes).
+         Data (Last - 11 .. Last - 8) := [16#00#, 16#00#, 16#C0#, 16#7F#];
+         Data (Last - 7 .. Last - 4) := [16#00#, 16#00#, 16#80#, 16#7F#];
+         declare
+            Back   : constant Message := ROSIDL.CDR.Decode (Support (Scan), Data);
+            Ranges : constant Float32_Array := Back ("ranges").Get_Float32_Array;
+         begin
+            Assert (Ranges'Length = 3, "three ranges");
+            Assert (not Back ("ranges").As_Array (1).Is_NaN, "1.0 is a number");
+            Assert (Back ("ranges").As_Array (2).Is_NaN, "NaN");
+            Assert (not Back ("ranges").As_Array (3).Is_NaN, "+inf is not NaN");
+            Assert (Contains (Image (Back), "- 1.0" & LF & "- .nan" & LF & "- .inf" & LF),
+                    Image (Back));
+         end;
+      end;
+   end Non_Finite_Floats;
+
    procedure Matrix_Views (Unused : in out Fixture) is
       M      : constant Message :=
         Init (Get_Message_Support ("std_msgs", "Float32MultiArray"));
@@ -439,6 +469,8 @@ package body ROSIDL.Dynamic_Tests is
       Result.Add_Test (Caller.Create ("dynamic: arrays, resize limits",
                                       Arrays_And_Limits'Access));
       Result.Add_Test (Caller.Create ("dynamic: bulk access", Bulk_Access'Access));
+      Result.Add_Test (Caller.Create ("dynamic: NaN and infinities",
+                                      Non_Finite_Floats'Access));
       Result.Add_Test (Caller.Create ("dynamic: matrix views of MultiArrays",
                                       Matrix_Views'Access));
       Result.Add_Test (Caller.Create ("dynamic: Field_Error texts", Error_Texts'Access));
