@@ -1,11 +1,14 @@
 with Ada.Directories;
 with Ada.Environment_Variables;
+with Ada.Strings.Unbounded;
 with ROSIDL.Interfaces;
-with ROSIDL.Typesupport;
 
 package body ROSIDL.CDR.Samples is
 
+   use Ada.Strings.Unbounded;
+   use ROSIDL.Definitions;
    use ROSIDL.Dynamic;
+   use type UInt64;
    use ROSIDL.Typesupport;
    use type Int8, Int16, Int32, Int64, Float32, Float64;
 
@@ -301,6 +304,149 @@ package body ROSIDL.CDR.Samples is
          return Encode (Make (Name), Order);
       end if;
    end Encode_Sample;
+
+   ---------------------------------------------------------------------------
+   --  Random messages
+   ---------------------------------------------------------------------------
+
+   function Next (Seed : in out UInt64) return UInt64 is
+      use Standard.Interfaces;
+   begin
+      Seed := Seed xor Shift_Right (Seed, 12);
+      Seed := Seed xor Shift_Left (Seed, 25);
+      Seed := Seed xor Shift_Right (Seed, 27);
+      return Seed * 16#2545_F491_4F6C_DD1D#;
+   end Next;
+
+   function Below (Seed : in out UInt64; N : Positive) return Natural is
+     (Natural (Next (Seed) mod UInt64 (N)));
+
+   function Random_Text
+     (Bound : Natural; Seed : in out UInt64; ASCII_Text : Boolean) return String is
+      Length : constant Natural :=
+        Below (Seed, (if Bound > 0 then Natural'Min (Bound, 12) else 12) + 1);
+      Result : String (1 .. Length);
+   begin
+      for C of Result loop
+         C := (if ASCII_Text then Character'Val (32 + Below (Seed, 95))
+               else Character'Val (1 + Below (Seed, 255)));
+      end loop;
+      return Result;
+   end Random_Text;
+
+   function Random_Wide_Text
+     (Bound : Natural; Seed : in out UInt64) return Wide_Wide_String is
+      Length : constant Natural :=
+        Below (Seed, (if Bound > 0 then Natural'Min (Bound, 6) else 6) + 1);
+      Result : Wide_Wide_String (1 .. Length);
+   begin
+      for C of Result loop
+         C := Wide_Wide_Character'Val (Below (Seed, 16#11_0000#));
+      end loop;
+      return Result;
+   end Random_Wide_Text;
+
+   procedure Fill_Field
+     (F : Field_Ref; T : Field_Type; Seed : in out UInt64; ASCII_Text : Boolean);
+
+   procedure Fill_Element
+     (E : Field_Ref; T : Field_Type; Seed : in out UInt64; ASCII_Text : Boolean)
+   is
+      use Standard.Interfaces;
+      R : constant Unsigned_64 := Next (Seed);
+   begin
+      case T.Kind is
+         when Bool_Kind    => E.As_Bool := R mod 2 = 0;
+         when Byte_Kind    => E.As_Byte := Unsigned_8 (R mod 256);
+         when Char_Kind    => E.As_Char := Unsigned_8 (R mod 256);
+         when UInt8_Kind   => E.As_UInt8 := Unsigned_8 (R mod 256);
+         when Int8_Kind    => E.As_Int8 := Integer_8 (Integer (R mod 256) - 128);
+         when Int16_Kind   => E.As_Int16 := Integer_16 (Integer (R mod 65_536) - 32_768);
+         when UInt16_Kind  => E.As_UInt16 := Unsigned_16 (R mod 65_536);
+         when Int32_Kind   =>
+            E.As_Int32 := Integer_32 (Long_Long_Integer (R mod 2**32) - 2**31);
+         when UInt32_Kind  => E.As_UInt32 := Unsigned_32 (R mod 2**32);
+         when Int64_Kind   =>
+            E.As_Int64 := Integer_64 (Long_Long_Integer (R mod 2**62) - 2**61);
+         when UInt64_Kind  => E.As_UInt64 := R;
+         when Float32_Kind =>
+            E.As_Float32 := IEEE_Float_32 (Long_Long_Integer (R mod 2**24) - 2**23)
+              / 2.0 ** Natural (R / 2**60);
+         when Float64_Kind =>
+            E.As_Float64 := IEEE_Float_64 (Long_Long_Integer (R mod 2**50) - 2**49)
+              / 2.0 ** Natural (R / 2**59);
+         when String_Kind  => E.Set_String (Random_Text (T.String_Bound, Seed, ASCII_Text));
+         when WString_Kind => E.Set_WString (Random_Wide_Text (T.String_Bound, Seed));
+         when Message_Kind =>
+            for F of T.Nested.Fields loop
+               Fill_Field (E (To_String (F.Name)), F.Of_Type, Seed, ASCII_Text);
+            end loop;
+      end case;
+   end Fill_Element;
+
+   procedure Fill_Field
+     (F : Field_Ref; T : Field_Type; Seed : in out UInt64; ASCII_Text : Boolean) is
+   begin
+      if T.Collection = Single then
+         Fill_Element (F, T, Seed, ASCII_Text);
+         return;
+      end if;
+      if T.Collection /= Fixed_Array then
+         F.As_Array.Resize
+           (Below (Seed, (if T.Collection = Bounded_Sequence then Natural'Min (T.Size, 4)
+                    else 4) + 1));
+      end if;
+      for I in 1 .. F.As_Array.Length loop
+         Fill_Element (F.As_Array (I), T, Seed, ASCII_Text);
+      end loop;
+   end Fill_Field;
+
+   function Random_Message
+     (Support : Message_Support; Seed : in out UInt64; ASCII_Text : Boolean := False)
+      return Message is
+   begin
+      return M : constant Message := Init (Support) do
+         for F of Definition (Support).Fields loop
+            Fill_Field (M (To_String (F.Name)), F.Of_Type, Seed, ASCII_Text);
+         end loop;
+      end return;
+   end Random_Message;
+
+
+   function All_Types return Support_Vectors.Vector is
+      type Part_Array is array (Positive range <>) of ROSIDL.Definitions.Message_Access;
+      Result : Support_Vectors.Vector;
+   begin
+      Use_Test_Interfaces;
+      for Pkg of ROSIDL.Interfaces.Packages loop
+         for Name of ROSIDL.Interfaces.Messages (Pkg) loop
+            Result.Append (Get_Message_Support (Pkg, Name));
+         end loop;
+         for Name of ROSIDL.Interfaces.Services (Pkg) loop
+            declare
+               S : constant Service_Support := Get_Service_Support (Pkg, Name);
+            begin
+               Result.Append (Request_Support (S));
+               Result.Append (Response_Support (S));
+            end;
+         end loop;
+         for Name of ROSIDL.Interfaces.Actions (Pkg) loop
+            declare
+               A : constant ROSIDL.Definitions.Action_Access :=
+                 ROSIDL.Interfaces.Action (Pkg, Name);
+            begin
+               for Part of Part_Array'
+                 [A.Goal, A.Result, A.Feedback, A.Feedback_Message,
+                  A.Send_Goal.Request, A.Send_Goal.Response,
+                  A.Get_Result.Request, A.Get_Result.Response]
+               loop
+                  Result.Append (To_Support (Part));
+               end loop;
+            end;
+         end loop;
+      end loop;
+      return Result;
+   end All_Types;
 
    Digit : constant String := "0123456789abcdef";
 

@@ -1,6 +1,5 @@
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
-with Ada.Strings.Unbounded;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
@@ -9,13 +8,11 @@ with ROSIDL.CDR.Vectors;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic_Tests;
 with ROSIDL.Dynamic;
-with ROSIDL.Interfaces;
 with ROSIDL.Typesupport;
 
 package body ROSIDL.CDR.Tests is
 
    use AUnit.Assertions;
-   use Ada.Strings.Unbounded;
    use ROSIDL.Definitions;
    use ROSIDL.Dynamic;
    use ROSIDL.Typesupport;
@@ -387,88 +384,6 @@ package body ROSIDL.CDR.Tests is
    --  Random round trips of every bundled message type
    ---------------------------------------------------------------------------
 
-   function Random_Text (Bound : Natural) return String is
-      Length : constant Natural :=
-        Below ((if Bound > 0 then Natural'Min (Bound, 12) else 12) + 1);
-      Result : String (1 .. Length);
-   begin
-      for C of Result loop
-         C := Character'Val (1 + Below (255));
-      end loop;
-      return Result;
-   end Random_Text;
-
-   function Random_Wide_Text (Bound : Natural) return Wide_Wide_String is
-      Length : constant Natural :=
-        Below ((if Bound > 0 then Natural'Min (Bound, 6) else 6) + 1);
-      Result : Wide_Wide_String (1 .. Length);
-   begin
-      for C of Result loop
-         C := Wide_Wide_Character'Val (Below (16#11_0000#));
-      end loop;
-      return Result;
-   end Random_Wide_Text;
-
-   procedure Fill_Field (F : Field_Ref; T : Field_Type);
-
-   procedure Fill_Element (E : Field_Ref; T : Field_Type) is
-      use Standard.Interfaces;
-      R : constant Unsigned_64 := Next;
-   begin
-      case T.Kind is
-         when Bool_Kind    => E.As_Bool := R mod 2 = 0;
-         when Byte_Kind    => E.As_Byte := Unsigned_8 (R mod 256);
-         when Char_Kind    => E.As_Char := Unsigned_8 (R mod 256);
-         when UInt8_Kind   => E.As_UInt8 := Unsigned_8 (R mod 256);
-         when Int8_Kind    => E.As_Int8 := Integer_8 (Integer (R mod 256) - 128);
-         when Int16_Kind   => E.As_Int16 := Integer_16 (Integer (R mod 65_536) - 32_768);
-         when UInt16_Kind  => E.As_UInt16 := Unsigned_16 (R mod 65_536);
-         when Int32_Kind   =>
-            E.As_Int32 := Integer_32 (Long_Long_Integer (R mod 2**32) - 2**31);
-         when UInt32_Kind  => E.As_UInt32 := Unsigned_32 (R mod 2**32);
-         when Int64_Kind   =>
-            E.As_Int64 := Integer_64 (Long_Long_Integer (R mod 2**62) - 2**61);
-         when UInt64_Kind  => E.As_UInt64 := R;
-         when Float32_Kind =>
-            E.As_Float32 := IEEE_Float_32 (Long_Long_Integer (R mod 2**24) - 2**23)
-              / 2.0 ** Natural (R / 2**60);
-         when Float64_Kind =>
-            E.As_Float64 := IEEE_Float_64 (Long_Long_Integer (R mod 2**50) - 2**49)
-              / 2.0 ** Natural (R / 2**59);
-         when String_Kind  => E.Set_String (Random_Text (T.String_Bound));
-         when WString_Kind => E.Set_WString (Random_Wide_Text (T.String_Bound));
-         when Message_Kind =>
-            for F of T.Nested.Fields loop
-               Fill_Field (E (To_String (F.Name)), F.Of_Type);
-            end loop;
-      end case;
-   end Fill_Element;
-
-   procedure Fill_Field (F : Field_Ref; T : Field_Type) is
-   begin
-      if T.Collection = Single then
-         Fill_Element (F, T);
-         return;
-      end if;
-      if T.Collection /= Fixed_Array then
-         F.As_Array.Resize
-           (Below ((if T.Collection = Bounded_Sequence then Natural'Min (T.Size, 4)
-                    else 4) + 1));
-      end if;
-      for I in 1 .. F.As_Array.Length loop
-         Fill_Element (F.As_Array (I), T);
-      end loop;
-   end Fill_Field;
-
-   function Random_Message (Support : Message_Support) return Message is
-   begin
-      return M : constant Message := Init (Support) do
-         for F of Definition (Support).Fields loop
-            Fill_Field (M (To_String (F.Name)), F.Of_Type);
-         end loop;
-      end return;
-   end Random_Message;
-
    Cases_Per_Type : constant := 12;
 
    procedure Round_Trip (Support : Message_Support; Types, Cases : in out Natural) is
@@ -476,7 +391,7 @@ package body ROSIDL.CDR.Tests is
       Types := Types + 1;
       for K in 1 .. Cases_Per_Type loop
          declare
-            M     : constant Message := Random_Message (Support);
+            M     : constant Message := Samples.Random_Message (Support, State);
             Order : constant Byte_Order := (if K mod 2 = 0 then Big_Endian
                                             else Little_Endian);
             Data  : constant Stream_Element_Array := Encode (M, Order);
@@ -500,31 +415,8 @@ package body ROSIDL.CDR.Tests is
    procedure Every_Bundled_Type_Round_Trips (Unused : in out Fixture) is
       Types, Cases : Natural := 0;
    begin
-      Samples.Use_Test_Interfaces;
-      for Pkg of ROSIDL.Interfaces.Packages loop
-         for Name of ROSIDL.Interfaces.Messages (Pkg) loop
-            Round_Trip (Get_Message_Support (Pkg, Name), Types, Cases);
-         end loop;
-         for Name of ROSIDL.Interfaces.Services (Pkg) loop
-            declare
-               S : constant Service_Support := Get_Service_Support (Pkg, Name);
-            begin
-               Round_Trip (Request_Support (S), Types, Cases);
-               Round_Trip (Response_Support (S), Types, Cases);
-            end;
-         end loop;
-         for Name of ROSIDL.Interfaces.Actions (Pkg) loop
-            declare
-               A : constant Action_Access := ROSIDL.Interfaces.Action (Pkg, Name);
-            begin
-               Round_Trip (To_Support (A.Goal), Types, Cases);
-               Round_Trip (To_Support (A.Result), Types, Cases);
-               Round_Trip (To_Support (A.Feedback), Types, Cases);
-               Round_Trip (To_Support (A.Feedback_Message), Types, Cases);
-               Round_Trip (To_Support (A.Send_Goal.Request), Types, Cases);
-               Round_Trip (To_Support (A.Get_Result.Response), Types, Cases);
-            end;
-         end loop;
+      for Support of Samples.All_Types loop
+         Round_Trip (Support, Types, Cases);
       end loop;
       Assert (Types > 150, "only" & Types'Image & " types found");
       Assert (Cases = Types * Cases_Per_Type, "cases");
