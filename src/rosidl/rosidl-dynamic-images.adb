@@ -520,9 +520,25 @@ package body ROSIDL.Dynamic.Images is
    function Render (Root : not null Node_Access; Truncate : Natural) return String is
       Out_Text : Unbounded_String;
 
+      --  S (UTF-8) cut after Truncate characters, with "...", as ros2
+      --  topic echo cuts the decoded text.
       function Cut (S : String) return String is
-        (if Truncate > 0 and then S'Length > Truncate
-         then S (S'First .. S'First + Truncate - 1) & "..." else S);
+         Count : Natural := 0;
+      begin
+         if Truncate = 0 then
+            return S;
+         end if;
+         for I in S'Range loop
+            if S (I) not in Character'Val (16#80#) .. Character'Val (16#BF#) then
+               --  The first byte of a character.
+               if Count = Truncate then
+                  return S (S'First .. I - 1) & "...";
+               end if;
+               Count := Count + 1;
+            end if;
+         end loop;
+         return S;
+      end Cut;
 
       function Scalar_Image (Cell : Field_Cell; Index : Positive) return String is
       begin

@@ -446,6 +446,11 @@ package body ROSIDL.Dynamic_Tests is
          Assert (Contains (Image (E), "s: 'true'" & LF), "quoted: " & Image (E));
       end;
       Assert (Image (L, Truncate_Length => 1) /= Image (L), "truncation");
+      S ("data").Set_String ("h" & Character'Val (16#C3#) & Character'Val (16#A9#) & "llo");
+      Assert (Image (S, Truncate_Length => 2)
+              = "data: h" & Character'Val (16#C3#) & Character'Val (16#A9#) & "..." & LF,
+              "strings cut after 2 characters: " & Image (S, Truncate_Length => 2));
+      Assert (Image (S, Truncate_Length => 5) = Image (S), "not cut at its length");
       Assert (Contains (Image (L, Truncate_Length => 1), "- 1.0" & LF & "- '...'" & LF),
               Image (L, Truncate_Length => 1));
    end Echo_Image;
