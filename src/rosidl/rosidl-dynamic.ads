@@ -3,7 +3,8 @@
 --  knows its type support; fields are reached by indexing with their name
 --  and yield references into the message (no copy):
 --
---     Msg : Message := Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
+--     Msg : constant Message :=
+--       Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
 --     Msg ("angle_min").As_Float32 := -1.57;
 --     Msg ("header")("frame_id").Set_String ("laser");
 --     Msg ("header").Get_Message ("stamp")("sec").As_Int32 := 12;
@@ -47,6 +48,8 @@ package ROSIDL.Dynamic is
      with Constant_Indexing => Reference;
    --  A message of one type. The default value is not initialised (every
    --  access raises Field_Error); obtain messages through Init.
+   --  (GNAT 12 ignores the indexing aspects where the full view is visible,
+   --  i.e. in children of this package: call Reference there.)
 
    function Init (Support : Message_Support) return Message
      with Post => Is_Initialised (Init'Result);

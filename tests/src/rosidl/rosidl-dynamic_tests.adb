@@ -48,6 +48,24 @@ package body ROSIDL.Dynamic_Tests is
       Assert (Name (M ("z")) = "z", "name");
    end Scalars_By_Name;
 
+   procedure Spec_Example (Unused : in out Fixture) is
+      --  The usage example of the ROSIDL.Dynamic spec, as written there.
+      Scan : constant Float32_Array (1 .. 720) := [others => 2.0];
+      Msg  : constant Message :=
+        Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
+   begin
+      Msg ("angle_min").As_Float32 := -1.57;
+      Msg ("header")("frame_id").Set_String ("laser");
+      Msg ("header").Get_Message ("stamp")("sec").As_Int32 := 12;
+      Msg ("ranges").As_Array.Resize (720);
+      Msg ("ranges").As_Array (42).As_Float32 := 1.5;
+      Assert (Msg ("ranges").As_Array (42).As_Float32 = 1.5, "element 42");
+      Msg ("ranges").Set_Float32_Array (Scan);
+      Assert (Msg ("ranges").As_Array (42).As_Float32 = 2.0, "bulk");
+      Assert (Msg ("header")("stamp")("sec").As_Int32 = 12, "nested");
+      Assert (Contains (Image (Msg), "  frame_id: laser" & LF), Image (Msg));
+   end Spec_Example;
+
    procedure Defaults_And_Constants (Unused : in out Fixture) is
       M : constant Message := Defaults;
    begin
@@ -463,6 +481,8 @@ package body ROSIDL.Dynamic_Tests is
    begin
       Result.Add_Test (Caller.Create ("dynamic: scalar fields by name",
                                       Scalars_By_Name'Access));
+      Result.Add_Test (Caller.Create ("dynamic: the spec's usage example",
+                                      Spec_Example'Access));
       Result.Add_Test (Caller.Create ("dynamic: defaults and constants",
                                       Defaults_And_Constants'Access));
       Result.Add_Test (Caller.Create ("dynamic: nested references, no copy",
