@@ -17,8 +17,13 @@ deps:
 bench-deps:
 	@scripts/install-deps.sh --bench
 
+# Debug and release share bin/: executables of the other mode are removed
+# first so that a mode switch always relinks (gprbuild would keep them).
 build: deps
+	@if [ -f bin/.build-mode ] && [ "$$(cat bin/.build-mode)" != "$(BUILD_MODE)" ]; then \
+	   find bin -maxdepth 1 -type f -delete; fi
 	@$(GPRBUILD)
+	@echo "$(BUILD_MODE)" > bin/.build-mode
 
 run: build
 	@scripts/demo.sh

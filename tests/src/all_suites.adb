@@ -1,6 +1,7 @@
 with Simulation_Suites;
 with Harness_Tests;
 with ROSIDL.Parser.Tests;
+with ROSIDL.CDR.Tests;
 
 package body All_Suites is
 
@@ -12,6 +13,7 @@ package body All_Suites is
    begin
       Result.Add_Test (Harness_Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
+      Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (Simulation_Suites.Suite);
