@@ -1,0 +1,167 @@
+with Ada.Directories;
+with Ada.Exceptions;
+with Input_Sources.File;
+with Sax.Exceptions;
+with Sax.Locators;
+with Sax.Readers;
+with Sax.Symbols;
+with Sax.Utils;
+
+package body Sancta.Runtime.XML_Trees is
+
+   function Trim (N : Natural) return String is
+      S : constant String := N'Image;
+   begin
+      return S (S'First + 1 .. S'Last);
+   end Trim;
+
+   function Image (Where : Position) return String is
+     (To_String (Where.File) & ":" & Trim (Where.Line) & ":" & Trim (Where.Column));
+
+   type Builder is new Sax.Readers.Sax_Reader with record
+      File   : Unbounded_String;
+      Result : Tree;
+      Stack  : Element_Vectors.Vector;
+      Error_Where : Position;
+      Error_Text  : Unbounded_String;
+   end record;
+
+   overriding procedure Start_Element
+     (Handler    : in out Builder;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol;
+      Atts       : Sax.Readers.Sax_Attribute_List);
+
+   overriding procedure End_Element
+     (Handler    : in out Builder;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol);
+
+   overriding procedure Fatal_Error
+     (Handler : in out Builder;
+      Except  : Sax.Exceptions.Sax_Parse_Exception'Class);
+
+   function To_Position (File : Unbounded_String; L : Sax.Locators.Location) return Position is
+     ((File => File, Line => L.Line, Column => L.Column));
+
+   overriding procedure Start_Element
+     (Handler    : in out Builder;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol;
+      Atts       : Sax.Readers.Sax_Attribute_List)
+   is
+      pragma Unreferenced (NS);
+      New_Element : Element;
+      Id : Element_Id;
+   begin
+      New_Element.Name := To_Unbounded_String (Sax.Symbols.Get (Local_Name).all);
+      New_Element.Where := To_Position (Handler.File, Handler.Current_Location);
+      for I in 1 .. Sax.Readers.Get_Length (Atts) loop
+         New_Element.Attributes.Append
+           (Attribute'
+              (Name  => To_Unbounded_String
+                          (Sax.Symbols.Get (Sax.Readers.Get_Name (Atts, I).Local).all),
+               Value => To_Unbounded_String (Sax.Symbols.Get (Sax.Readers.Get_Value (Atts, I)).all),
+               Where => To_Position (Handler.File, Sax.Readers.Get_Location (Atts, I))));
+      end loop;
+      Handler.Result.Elements.Append (New_Element);
+      Id := Handler.Result.Elements.Last_Index;
+      if not Handler.Stack.Is_Empty then
+         Handler.Result.Elements (Handler.Stack.Last_Element).Children.Append (Id);
+      end if;
+      Handler.Stack.Append (Id);
+   end Start_Element;
+
+   overriding procedure End_Element
+     (Handler    : in out Builder;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol)
+   is
+      pragma Unreferenced (NS, Local_Name);
+   begin
+      Handler.Stack.Delete_Last;
+   end End_Element;
+
+   Parse_Failed : exception;
+
+   overriding procedure Fatal_Error
+     (Handler : in out Builder;
+      Except  : Sax.Exceptions.Sax_Parse_Exception'Class) is
+   begin
+      Handler.Error_Where := To_Position (Handler.File, Sax.Exceptions.Get_Location (Except));
+      Handler.Error_Text := To_Unbounded_String (Sax.Exceptions.Get_Message (Except));
+      raise Parse_Failed;
+   end Fatal_Error;
+
+   procedure Load (File : String; Result : out Tree) is
+      Input   : Input_Sources.File.File_Input;
+      Handler : Builder;
+   begin
+      if not Ada.Directories.Exists (File) then
+         raise Configuration_Error with File & ":1:1: cannot open: no such file";
+      end if;
+      Handler.File := To_Unbounded_String (File);
+      begin
+         Input_Sources.File.Open (File, Input);
+      exception
+         when E : others =>
+            raise Configuration_Error with File & ":1:1: cannot open: "
+              & Ada.Exceptions.Exception_Message (E);
+      end;
+      Handler.Set_Feature (Sax.Readers.Namespace_Feature, False);
+      begin
+         Handler.Parse (Input);
+      exception
+         when Parse_Failed =>
+            Input_Sources.File.Close (Input);
+            raise Configuration_Error with Image (Handler.Error_Where) & ": malformed XML: "
+              & To_String (Handler.Error_Text);
+         when E : Sax.Readers.XML_Fatal_Error =>
+            Input_Sources.File.Close (Input);
+            raise Configuration_Error with File & ": malformed XML: "
+              & Ada.Exceptions.Exception_Message (E);
+      end;
+      Input_Sources.File.Close (Input);
+      if Handler.Result.Elements.Is_Empty then
+         raise Configuration_Error with File & ":1:1: malformed XML: no root element";
+      end if;
+      Result := Handler.Result;
+   end Load;
+
+   function Root (This : Tree) return Element_Id is (This.Elements.First_Index);
+
+   function Name (This : Tree; E : Element_Id) return String is
+     (To_String (This.Elements (E).Name));
+
+   function Where (This : Tree; E : Element_Id) return Position is (This.Elements (E).Where);
+
+   function Children (This : Tree; E : Element_Id) return Element_Vectors.Vector is
+     (This.Elements (E).Children);
+
+   function Attributes (This : Tree; E : Element_Id) return Attribute_Vectors.Vector is
+     (This.Elements (E).Attributes);
+
+   function Has_Attribute (This : Tree; E : Element_Id; Name : String) return Boolean is
+     (for some A of This.Elements (E).Attributes => A.Name = Name);
+
+   function Attribute_Value (This : Tree; E : Element_Id; Name : String) return String is
+   begin
+      for A of This.Elements (E).Attributes loop
+         if A.Name = Name then
+            return To_String (A.Value);
+         end if;
+      end loop;
+      return "";
+   end Attribute_Value;
+
+   function Attribute_Where (This : Tree; E : Element_Id; Name : String) return Position is
+   begin
+      for A of This.Elements (E).Attributes loop
+         if A.Name = Name then
+            return A.Where;
+         end if;
+      end loop;
+      return This.Elements (E).Where;
+   end Attribute_Where;
+
+end Sancta.Runtime.XML_Trees;
