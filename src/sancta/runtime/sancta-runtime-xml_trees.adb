@@ -1,4 +1,6 @@
+with Ada.Containers.Indefinite_Vectors;
 with Ada.Directories;
+with Ada.Text_IO;
 with Ada.Exceptions;
 with Input_Sources.File;
 with Sax.Exceptions;
@@ -18,8 +20,12 @@ package body Sancta.Runtime.XML_Trees is
    function Image (Where : Position) return String is
      (To_String (Where.File) & ":" & Trim (Where.Line) & ":" & Trim (Where.Column));
 
+   package Line_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
+
    type Builder is new Sax.Readers.Sax_Reader with record
       File   : Unbounded_String;
+      Lines  : Line_Vectors.Vector;
+      --  The file's text, to find where start tags begin.
       Result : Tree;
       Stack  : Element_Vectors.Vector;
       Error_Where : Position;
@@ -44,6 +50,31 @@ package body Sancta.Runtime.XML_Trees is
    function To_Position (File : Unbounded_String; L : Sax.Locators.Location) return Position is
      ((File => File, Line => L.Line, Column => L.Column));
 
+   function Tag_Start (Handler : Builder; Tag_End : Sax.Locators.Location) return Position is
+      --  The parser reports the position just after a start tag's ">"; the
+      --  element is reported where its "<" is (no "<" can occur inside a
+      --  start tag of a well-formed document).
+      Line   : Natural := Tag_End.Line;
+      Column : Integer := Tag_End.Column - 1;
+   begin
+      while Line in 1 .. Natural (Handler.Lines.Length) loop
+         declare
+            Text : constant String := Handler.Lines (Line);
+         begin
+            Column := Integer'Min (Column, Text'Length);
+            while Column >= 1 loop
+               if Text (Text'First + Column - 1) = '<' then
+                  return (Handler.File, Line, Column);
+               end if;
+               Column := Column - 1;
+            end loop;
+         end;
+         Line := Line - 1;
+         Column := Integer'Last;
+      end loop;
+      return To_Position (Handler.File, Tag_End);
+   end Tag_Start;
+
    overriding procedure Start_Element
      (Handler    : in out Builder;
       NS         : Sax.Utils.XML_NS;
@@ -55,7 +86,7 @@ package body Sancta.Runtime.XML_Trees is
       Id : Element_Id;
    begin
       New_Element.Name := To_Unbounded_String (Sax.Symbols.Get (Local_Name).all);
-      New_Element.Where := To_Position (Handler.File, Handler.Current_Location);
+      New_Element.Where := Tag_Start (Handler, Handler.Current_Location);
       for I in 1 .. Sax.Readers.Get_Length (Atts) loop
          New_Element.Attributes.Append
            (Attribute'
@@ -89,7 +120,20 @@ package body Sancta.Runtime.XML_Trees is
       Except  : Sax.Exceptions.Sax_Parse_Exception'Class) is
    begin
       Handler.Error_Where := To_Position (Handler.File, Sax.Exceptions.Get_Location (Except));
-      Handler.Error_Text := To_Unbounded_String (Sax.Exceptions.Get_Message (Except));
+      declare
+         Text   : constant String := Sax.Exceptions.Get_Message (Except);
+         Prefix : constant String := Image (Handler.Error_Where) & ": ";
+      begin
+         --  XML/Ada puts the location in front of its message: drop it.
+         if Text'Length > Prefix'Length
+           and then Text (Text'First .. Text'First + Prefix'Length - 1) = Prefix
+         then
+            Handler.Error_Text :=
+              To_Unbounded_String (Text (Text'First + Prefix'Length .. Text'Last));
+         else
+            Handler.Error_Text := To_Unbounded_String (Text);
+         end if;
+      end;
       raise Parse_Failed;
    end Fatal_Error;
 
@@ -101,6 +145,22 @@ package body Sancta.Runtime.XML_Trees is
          raise Configuration_Error with File & ":1:1: cannot open: no such file";
       end if;
       Handler.File := To_Unbounded_String (File);
+      declare
+         F : Ada.Text_IO.File_Type;
+      begin
+         Ada.Text_IO.Open (F, Ada.Text_IO.In_File, File);
+         while not Ada.Text_IO.End_Of_File (F) loop
+            Handler.Lines.Append (Ada.Text_IO.Get_Line (F));
+         end loop;
+         Ada.Text_IO.Close (F);
+      exception
+         when E : others =>
+            if Ada.Text_IO.Is_Open (F) then
+               Ada.Text_IO.Close (F);
+            end if;
+            raise Configuration_Error with File & ":1:1: cannot read: "
+              & Ada.Exceptions.Exception_Message (E);
+      end;
       begin
          Input_Sources.File.Open (File, Input);
       exception
