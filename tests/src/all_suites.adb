@@ -1,5 +1,6 @@
 with Harness_Tests;
 with Sancta.Runtime.Configurations.Tests;
+with Sancta.Runtime.Databases.Tests;
 
 package body All_Suites is
 
@@ -11,6 +12,7 @@ package body All_Suites is
    begin
       Result.Add_Test (Harness_Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Configurations.Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;
