@@ -1,6 +1,7 @@
 with Harness_Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
+with Sancta.Runtime.Schedulers.Tests;
 
 package body All_Suites is
 
@@ -13,6 +14,7 @@ package body All_Suites is
       Result.Add_Test (Harness_Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Configurations.Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;

@@ -159,11 +159,12 @@ package body Sancta.Runtime.Schedulers is
    end Run_One;
 
    procedure Run_Due (This : in out Scheduler) is
+      Limit : constant Clocks.Time := This.Clock.Now;
       Found : Boolean;
       Call  : Queue_Entry;
    begin
       loop
-         This.Calls.Pop_Due (This.Clock.Now, Found, Call);
+         This.Calls.Pop_Due (Limit, Found, Call);
          exit when not Found;
          Run_One (This, Call);
       end loop;

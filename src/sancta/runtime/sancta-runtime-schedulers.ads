@@ -60,8 +60,11 @@ package Sancta.Runtime.Schedulers is
    function Queued (This : Scheduler) return Natural;
 
    procedure Run_Due (This : in out Scheduler);
-   --  Run every queued call due at the clock's current time (including
-   --  calls that the runs themselves queue for a time already reached).
+   --  Run, in order, every queued call due at or before the clock's time at
+   --  entry (re-queued calls included when still due by then: missed
+   --  activations are caught up, periods keep their phase). Calls due after
+   --  the entry time wait for the next Run_Due, so a component that always
+   --  overruns cannot keep the scheduler in one round forever.
 
    procedure Step (This : in out Scheduler);
    --  Wait (on the clock) until the next due time, then Run_Due.
