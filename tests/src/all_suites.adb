@@ -1,4 +1,5 @@
 with Harness_Tests;
+with Sancta.Components.Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
@@ -15,6 +16,7 @@ package body All_Suites is
       Result.Add_Test (Sancta.Runtime.Configurations.Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
+      Result.Add_Test (Sancta.Components.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;

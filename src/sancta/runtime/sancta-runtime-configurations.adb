@@ -124,16 +124,6 @@ package body Sancta.Runtime.Configurations is
       end loop;
    end Substitute;
 
-   function Attribute_Names (T : Tree; E : Element_Id) return String is
-      Result : Unbounded_String;
-   begin
-      for A of T.Attributes (E) loop
-         Append (Result, " " & To_String (A.Name));
-      end loop;
-      return To_String (Result);
-   end Attribute_Names;
-   pragma Unreferenced (Attribute_Names);
-
    --  Checks that E has only the attributes in Allowed (space-separated).
    procedure Check_Attributes
      (Result : in out Configuration; T : Tree; E : Element_Id; Allowed : String)
@@ -905,7 +895,7 @@ package body Sancta.Runtime.Configurations is
                  & (if Length (A.Kind) > 0 then " (" & To_String (A.Kind) & ")" else "") & LF);
          Append (Result, "  components (start order):" & LF);
          for I of A.Instances loop
-            Append (Result, "    " & Pad (To_String (I.Name), 24) & " order" & I.Order'Image
+            Append (Result, "    " & Pad (To_String (I.Name), 24) & " order " & Trim (I.Order)
                     & (if I.Enabled then "" else "  (disabled)") & LF);
          end loop;
          Append (Result, "  " & Pad ("key", 26) & Pad ("type", 16) & Pad ("provider", 32)
