@@ -3,6 +3,8 @@
 --     sancta check FILE        validate a configuration and show its wiring
 --     sancta run FILE ...      run agents of a configuration
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
+pragma Unreserve_All_Interrupts;
+--  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
 with Ada.Text_IO;
 with Sancta.Commands.Check;

@@ -30,6 +30,11 @@ package body Sancta.Components.Watchdog is
    overriding procedure On_Input
      (This : in out Watchdog_Component; Data : String; Item : Values.Value'Class);
 
+   function Seconds (Span : Ada.Real_Time.Time_Span) return String is
+     (Values.Real_Image
+        (Long_Float'Rounding (Long_Float (Ada.Real_Time.To_Duration (Span)) * 1000.0) / 1000.0));
+   --  With millisecond precision.
+
    overriding procedure Start (This : in out Watchdog_Component) is
       Check : constant Long_Float := This.Option_Real ("check");
    begin
@@ -64,9 +69,8 @@ package body Sancta.Components.Watchdog is
          This.Alarmed := True;
          declare
             Message : constant String :=
-              "'" & This.Input_Key ("watched") & "' not refreshed for"
-              & Duration'Image (Ada.Real_Time.To_Duration (Age)) & " s (timeout"
-              & Duration'Image (Ada.Real_Time.To_Duration (This.Timeout)) & " s)";
+              "'" & This.Input_Key ("watched") & "' not refreshed for " & Seconds (Age)
+              & " s (timeout " & Seconds (This.Timeout) & " s)";
          begin
             if This.Abort_All then
                This.Log (Logging.Error, Message & ": aborting");
