@@ -42,9 +42,9 @@ package body RCL.Executors is
    exception
       when E : others =>
          RCL.Logging.Error
-           ("exception in the callback of subscription " & Sub.Topic.all & " (node "
-            & Node.Fully_Qualified_Name & "): "
-            & Ada.Exceptions.Exception_Information (E));
+           ("exception in the callback of subscription " & Sub.Topic.all & ": "
+            & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E),
+            Logger => Node.Logger_Name);
    end Run_Subscription;
 
    procedure Run_Timer
@@ -58,9 +58,9 @@ package body RCL.Executors is
    exception
       when E : others =>
          RCL.Logging.Error
-           ("exception in a timer callback (node " & Node.Fully_Qualified_Name & ", period"
-            & RCL.Timers.Period (T)'Image & " s): "
-            & Ada.Exceptions.Exception_Information (E));
+           ("exception in a timer callback (period" & RCL.Timers.Period (T)'Image & " s): "
+            & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E),
+            Logger => Node.Logger_Name);
    end Run_Timer;
 
    --  Re-attaches the readers of all nodes when any node changed.

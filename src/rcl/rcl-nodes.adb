@@ -67,13 +67,12 @@ package body RCL.Nodes is
          NS : constant String := RCL.Names.Normalize_Namespace (Namespace);
       begin
          RCL.Contexts.Init;
-         if RCL.Logging.Default_Logger = "" then
-            RCL.Logging.Set_Default_Logger
-              ((if NS = "/" then "" else NS (NS'First + 1 .. NS'Last) & ".") & Name);
-         end if;
          return N : Node do
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
+            if RCL.Logging.Default_Logger = "" then
+               RCL.Logging.Set_Default_Logger (N.Logger_Name);
+            end if;
          end return;
       end;
    end Init;
@@ -82,6 +81,17 @@ package body RCL.Nodes is
    function Namespace (This : Node) return String is (To_String (This.Namespace));
    function Fully_Qualified_Name (This : Node) return String is
      (RCL.Names.Fully_Qualified_Node_Name (Name (This), Namespace (This)));
+
+   function Logger_Name (This : Node) return String is
+      FQN : String := Fully_Qualified_Name (This);
+   begin
+      for C of FQN loop
+         if C = '/' then
+            C := '.';
+         end if;
+      end loop;
+      return FQN (FQN'First + 1 .. FQN'Last);
+   end Logger_Name;
 
    function Expand (This : Node; Topic : String) return String is
      (RCL.Names.Expand_Topic_Name (Topic, Name (This), Namespace (This)));

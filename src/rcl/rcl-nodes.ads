@@ -32,6 +32,10 @@ package RCL.Nodes is
    function Namespace (This : Node) return String;
    function Fully_Qualified_Name (This : Node) return String;
 
+   function Logger_Name (This : Node) return String;
+   --  As in ROS 2: the namespace without its leading '/', dots for '/',
+   --  then the name ("robot1.listener").
+
    function Expand (This : Node; Topic : String) return String;
    --  The fully qualified topic name (relative, "~", substitutions).
 
