@@ -93,7 +93,9 @@ package ROSIDL.Definitions is
       Default  : String_Vectors.Vector;
       --  The default value, already validated against Of_Type, one element
       --  per array element (one for a single value, none when there is no
-      --  default). Normalised: integers in decimal, floats as written,
+      --  default). Normalised: integers in decimal ("-5", "255"), floats as
+      --  written but in a form Float'Value reads ("[-]D.D[eX]": "1" is
+      --  "1.0", ".5" is "0.5", "1e3" is "1.0e3"; or "inf", "-inf", "nan"),
       --  booleans "true"/"false", strings unquoted with escapes resolved.
       Position : Source_Position;
    end record;

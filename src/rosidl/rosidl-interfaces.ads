@@ -5,7 +5,11 @@
 --  bundled folder (share/ros2_interfaces of the installation) comes first;
 --  folders named in the environment variable SANCTA_INTERFACE_PATH
 --  (colon-separated) and through Add_Folder follow. The first folder holding
---  a package wins.
+--  a package wins. The bundled folder is $SANCTA_ROOT/share/ros2_interfaces
+--  when SANCTA_ROOT is set, else <folder of the running program>/../share/
+--  ros2_interfaces. SANCTA_INTERFACE_PATH is read at every look-up of the
+--  path; folders that do not exist are skipped. Definitions are cached (and
+--  never freed) on first use; every operation is task-safe.
 --
 --     Def : constant Message_Access := Message ("geometry_msgs", "Twist");
 with ROSIDL.Definitions;
@@ -43,6 +47,13 @@ package ROSIDL.Interfaces is
    function Messages (Package_Name : String) return String_Vectors.Vector;
    function Services (Package_Name : String) return String_Vectors.Vector;
    function Actions (Package_Name : String) return String_Vectors.Vector;
-   --  The type names a package defines, sorted.
+   --  The type names a package defines, sorted. Raise Unknown_Type when the
+   --  package is not on the path.
+
+   function Message_By_DDS_Name (DDS_Name : String) return Message_Access;
+   --  The definition whose DDS_Type_Name is DDS_Name:
+   --  "std_msgs::msg::dds_::String_", "example_interfaces::srv::dds_::
+   --  AddTwoInts_Request_", "example_interfaces::action::dds_::
+   --  Fibonacci_SendGoal_Request_". Raises Unknown_Type otherwise.
 
 end ROSIDL.Interfaces;

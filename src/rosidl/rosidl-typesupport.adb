@@ -33,6 +33,10 @@ package body ROSIDL.Typesupport is
      (Package_Name, Service_Name : String) return Service_Support is
      ((Definition => ROSIDL.Interfaces.Service (Package_Name, Service_Name)));
 
+   function To_Support
+     (Definition : not null ROSIDL.Definitions.Service_Access)
+      return Service_Support is ((Definition => Definition));
+
    function Service (Support : Service_Support) return Service_Access is
    begin
       if Support.Definition = null then
@@ -48,7 +52,8 @@ package body ROSIDL.Typesupport is
      ((Definition => Service (Support).Response));
 
    function Full_Name (Support : Service_Support) return String is
-     (To_String (Service (Support).Package_Name) & "/srv/"
+     (To_String (Service (Support).Package_Name)
+      & (if Service (Support).Request.Namespace = Action then "/action/" else "/srv/")
       & To_String (Service (Support).Name));
 
 end ROSIDL.Typesupport;

@@ -38,11 +38,18 @@ package ROSIDL.Typesupport is
    function Get_Service_Support
      (Package_Name, Service_Name : String) return Service_Support;
 
+   function To_Support
+     (Definition : not null ROSIDL.Definitions.Service_Access)
+      return Service_Support;
+   --  Support for a service obtained otherwise (e.g. the SendGoal and
+   --  GetResult services of an action).
+
    function Request_Support (Support : Service_Support) return Message_Support;
    function Response_Support (Support : Service_Support) return Message_Support;
 
    function Full_Name (Support : Service_Support) return String;
-   --  "example_interfaces/srv/AddTwoInts"
+   --  "example_interfaces/srv/AddTwoInts" ("pkg/action/Name_SendGoal" for
+   --  the services of an action).
 
 private
 

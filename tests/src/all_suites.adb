@@ -3,6 +3,11 @@ with Sancta.Components.Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
+with RCL.Logging.Tests;
+with RCL.Names.Tests;
+with RCL.Nodes.Tests;
+with RCL.Timers.Tests;
+with ROSIDL.Parser.Tests;
 
 package body All_Suites is
 
@@ -17,6 +22,11 @@ package body All_Suites is
       Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
       Result.Add_Test (Sancta.Components.Tests.Suite);
+      Result.Add_Test (RCL.Names.Tests.Suite);
+      Result.Add_Test (RCL.Logging.Tests.Suite);
+      Result.Add_Test (RCL.Timers.Tests.Suite);
+      Result.Add_Test (RCL.Nodes.Tests.Suite);
+      Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;
