@@ -7,6 +7,7 @@ pragma Warnings (Off, "unit * is not referenced");
 with Sancta.Components.Logger;
 with Sancta.Components.Plumbing;
 with Sancta.Components.Pose_Chain;
+with Sancta.Components.ROS2;
 with Sancta.Components.Sources;
 with Sancta.Components.Watchdog;
 pragma Warnings (On, "unit * is not referenced");

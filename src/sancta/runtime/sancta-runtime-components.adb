@@ -21,10 +21,12 @@ package body Sancta.Runtime.Components is
       Default  : String := "";
       Required : Boolean := False;
       Choices  : String := "";
-      Doc      : String := "") return Option_Spec is
+      Doc      : String := "";
+      Check    : Option_Check := null) return Option_Spec is
      ((Name => To_Unbounded_String (Name), Kind => Kind,
        Default => To_Unbounded_String (Default), Required => Required,
-       Choices => To_Unbounded_String (Choices), Doc => To_Unbounded_String (Doc)));
+       Choices => To_Unbounded_String (Choices), Doc => To_Unbounded_String (Doc),
+       Check => Check));
 
    function Is_Word_Of (Word, Words : String) return Boolean is
       Padded : constant String := " " & Words & " ";
@@ -32,7 +34,18 @@ package body Sancta.Runtime.Components is
       return Word'Length > 0 and then Ada.Strings.Fixed.Index (Padded, " " & Word & " ") > 0;
    end Is_Word_Of;
 
+   function Check_Kind (Item : Option_Spec; Text : String) return String;
+
    function Check_Value (Item : Option_Spec; Text : String) return String is
+      Problem : constant String := Check_Kind (Item, Text);
+   begin
+      if Problem = "" and then Item.Check /= null then
+         return Item.Check (Text);
+      end if;
+      return Problem;
+   end Check_Value;
+
+   function Check_Kind (Item : Option_Spec; Text : String) return String is
       Found : constant String := ", found '" & Text & "'";
    begin
       case Item.Kind is
@@ -69,7 +82,7 @@ package body Sancta.Runtime.Components is
                     when Integer_Option => "expected an integer",
                     when Duration_Option => "expected a duration in seconds",
                     when others => "expected a real number") & Found;
-   end Check_Value;
+   end Check_Kind;
 
    protected body Reentrant_Lock is
       entry Seize when True is

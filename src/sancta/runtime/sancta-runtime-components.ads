@@ -65,6 +65,9 @@ package Sancta.Runtime.Components is
    --  Duration_Option: seconds, a non-negative real. Choice_Option: one of
    --  the words of Choices.
 
+   type Option_Check is access function (Text : String) return String;
+   --  "" when Text is acceptable, else what is wrong with it.
+
    type Option_Spec is record
       Name     : Unbounded_String;
       Kind     : Option_Kind := Text_Option;
@@ -73,6 +76,8 @@ package Sancta.Runtime.Components is
       Choices  : Unbounded_String;
       --  Space-separated words, for Choice_Option.
       Doc      : Unbounded_String;
+      Check    : Option_Check;
+      --  A further check of the value (after the kind's), or null.
    end record;
 
    function Make_Option
@@ -81,7 +86,8 @@ package Sancta.Runtime.Components is
       Default  : String := "";
       Required : Boolean := False;
       Choices  : String := "";
-      Doc      : String := "") return Option_Spec;
+      Doc      : String := "";
+      Check    : Option_Check := null) return Option_Spec;
 
    function Check_Value (Item : Option_Spec; Text : String) return String;
    --  "" when Text is a valid value of the option, else what is wrong

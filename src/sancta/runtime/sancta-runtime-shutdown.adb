@@ -1,3 +1,4 @@
+with Ada.Calendar;
 with Ada.Interrupts.Names;
 with Ada.Strings.Unbounded;
 
@@ -61,15 +62,67 @@ package body Sancta.Runtime.Shutdown is
    function Failed return Boolean is (State.Is_Failure);
    function Reason return String is (State.Text);
 
-   procedure Wait (Timeout : Duration; Done : out Boolean) is
+   type Condition_Entry is record
+      Check  : Condition;
+      Reason : Unbounded_String;
+   end record;
+
+   type Condition_Array is array (1 .. 8) of Condition_Entry;
+
+   protected Conditions is
+      procedure Add (Check : Condition; Reason : String);
+      function Get return Condition_Array;
+   private
+      List : Condition_Array;
+      Count : Natural := 0;
+   end Conditions;
+
+   protected body Conditions is
+      procedure Add (Check : Condition; Reason : String) is
+      begin
+         if Count = List'Last then
+            raise Program_Error with "too many shutdown conditions";
+         end if;
+         Count := Count + 1;
+         List (Count) := (Check, To_Unbounded_String (Reason));
+      end Add;
+
+      function Get return Condition_Array is (List);
+   end Conditions;
+
+   procedure Add_Condition (Check : not null Condition; Reason : String) is
    begin
-      select
-         State.Wait_For;
-         Done := True;
-      or
-         delay Timeout;
-         Done := False;
-      end select;
+      Conditions.Add (Check, Reason);
+   end Add_Condition;
+
+   procedure Poll_Conditions is
+   begin
+      for C of Conditions.Get loop
+         if C.Check /= null and then C.Check.all then
+            Request (To_String (C.Reason));
+         end if;
+      end loop;
+   end Poll_Conditions;
+
+   procedure Wait (Timeout : Duration; Done : out Boolean) is
+      use Ada.Calendar;
+      Deadline : constant Time := Clock + Timeout;
+   begin
+      loop
+         Poll_Conditions;
+         select
+            State.Wait_For;
+            Done := True;
+            return;
+         or
+            delay until (if Deadline - Clock > 0.1 then Clock + 0.1 else Deadline);
+         end select;
+         if Clock >= Deadline then
+            Poll_Conditions;
+            Done := State.Is_Set;
+            return;
+         end if;
+      end loop;
    end Wait;
 
    procedure Catch_Interrupt (Attached : out Boolean) is

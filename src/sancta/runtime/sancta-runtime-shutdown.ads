@@ -10,6 +10,13 @@ package Sancta.Runtime.Shutdown is
    function Failed return Boolean;
    function Reason return String;
 
+   type Condition is access function return Boolean;
+
+   procedure Add_Condition (Check : not null Condition; Reason : String);
+   --  Another source of shutdown requests, polled by Wait (every 0.1 s):
+   --  when Check returns True, Request (Reason) is done. The ROS 2 bridges
+   --  add the ROS 2 context's shutdown (its own Ctrl-C handler).
+
    procedure Wait (Timeout : Duration; Done : out Boolean);
    --  Return when shutdown is requested (Done) or after Timeout.
 

@@ -9,12 +9,23 @@ package body Sancta.Runtime.Values is
    package Type_Maps is new Ada.Containers.Indefinite_Ordered_Maps
      (Key_Type => String, Element_Type => String);
 
+   type Family is record
+      Prefix : Unbounded_String;
+      Check  : Family_Check;
+   end record;
+
+   type Family_Array is array (1 .. 8) of Family;
+
    protected Registry is
       procedure Add (Name, Description : String);
+      procedure Add_Family (Prefix : String; Check : Family_Check);
       function Contains (Name : String) return Boolean;
+      function Family_Of (Name : String) return Family_Check;
       function All_Names return String;
    private
-      Types : Type_Maps.Map;
+      Types    : Type_Maps.Map;
+      Families : Family_Array;
+      Count    : Natural := 0;
    end Registry;
 
    protected body Registry is
@@ -25,6 +36,31 @@ package body Sancta.Runtime.Values is
 
       function Contains (Name : String) return Boolean is (Types.Contains (Name));
 
+      procedure Add_Family (Prefix : String; Check : Family_Check) is
+      begin
+         if Count = Families'Last then
+            raise Program_Error with "too many value type families";
+         end if;
+         Count := Count + 1;
+         Families (Count) := (To_Unbounded_String (Prefix), Check);
+      end Add_Family;
+
+      function Family_Of (Name : String) return Family_Check is
+      begin
+         for F of Families (1 .. Count) loop
+            declare
+               P : constant String := To_String (F.Prefix);
+            begin
+               if Name'Length > P'Length
+                 and then Name (Name'First .. Name'First + P'Length - 1) = P
+               then
+                  return F.Check;
+               end if;
+            end;
+         end loop;
+         return null;
+      end Family_Of;
+
       function All_Names return String is
          Result : Unbounded_String;
       begin
@@ -33,6 +69,9 @@ package body Sancta.Runtime.Values is
                Append (Result, ", ");
             end if;
             Append (Result, Type_Maps.Key (Position));
+         end loop;
+         for F of Families (1 .. Count) loop
+            Append (Result, ", " & To_String (F.Prefix) & "...");
          end loop;
          return To_String (Result);
       end All_Names;
@@ -46,8 +85,21 @@ package body Sancta.Runtime.Values is
       Registry.Add (Name, Description);
    end Register_Type;
 
+   procedure Register_Family (Prefix : String; Check : not null Family_Check) is
+   begin
+      Registry.Add_Family (Prefix, Check);
+   end Register_Family;
+
    function Is_Known_Type (Name : String) return Boolean is
-     (Name = Any_Type or else Registry.Contains (Name));
+      Check : Family_Check;
+   begin
+      if Name = Any_Type or else Registry.Contains (Name) then
+         return True;
+      end if;
+      Check := Registry.Family_Of (Name);
+      --  The family's check runs outside the registry's protected action.
+      return Check /= null and then Check (Name);
+   end Is_Known_Type;
 
    function Known_Types return String is (Registry.All_Names & ", " & Any_Type);
 

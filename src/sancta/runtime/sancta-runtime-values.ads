@@ -29,8 +29,14 @@ package Sancta.Runtime.Values is
    procedure Register_Type (Name : String; Description : String);
    --  Make Name usable in configuration "type" attributes.
 
+   type Family_Check is access function (Name : String) return Boolean;
+
+   procedure Register_Family (Prefix : String; Check : not null Family_Check);
+   --  Make every name starting with Prefix for which Check is True usable
+   --  (e.g. "ros2:" followed by a ROS 2 message type).
+
    function Is_Known_Type (Name : String) return Boolean;
-   --  Name was registered (or is Any_Type).
+   --  Name was registered, belongs to a registered family, or is Any_Type.
 
    function Known_Types return String;
    --  Every registered type name, comma-separated (for diagnostics).
