@@ -154,6 +154,7 @@ begin
                        & Make_Option ("format", Choice_Option, "csv", Choices => "csv jsonl")
                        & Make_Option ("period", Duration_Option, "0",
                                       Doc => "seconds between lines; 0: a line per update"),
-       Any_Inputs => True),
+       Any_Inputs => True,
+       Refine     => null),
       Create'Access);
 end Sancta.Components.Logger;

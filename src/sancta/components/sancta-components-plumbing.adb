@@ -93,14 +93,16 @@ begin
                        & In_Port ("input", Values.Any_Type)
                        & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector,
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => null),
       Create_Forwarder'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("merge"),
        Doc        => To_Unbounded_String ("forwards the last stored of its inputs"),
        Ports      => Port_Vectors.Empty_Vector & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector,
-       Any_Inputs => True),
+       Any_Inputs => True,
+       Refine     => null),
       Create_Forwarder'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("switch"),
@@ -109,6 +111,7 @@ begin
                        & In_Port ("select", "types.string", Optional => True)
                        & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector & Make_Option ("initial", Text_Option, ""),
-       Any_Inputs => True),
+       Any_Inputs => True,
+       Refine     => null),
       Create_Switch'Access);
 end Sancta.Components.Plumbing;

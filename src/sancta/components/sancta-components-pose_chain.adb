@@ -114,7 +114,8 @@ begin
                        & Make_Option ("yaw", Real_Option, "0.0")
                        & Make_Option ("v", Real_Option, "0.0")
                        & Make_Option ("w", Real_Option, "0.0"),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => null),
       Create_Odometry'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("scan_matching"),
@@ -126,6 +127,7 @@ begin
                        & Make_Option ("dx", Real_Option, "0.0")
                        & Make_Option ("dy", Real_Option, "0.0")
                        & Make_Option ("dyaw", Real_Option, "0.0"),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => null),
       Create_Scan_Matching'Access);
 end Sancta.Components.Pose_Chain;

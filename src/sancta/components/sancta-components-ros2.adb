@@ -267,6 +267,35 @@ package body Sancta.Components.ROS2 is
      (Check_Message_Type (Name (Name'First + 5 .. Name'Last)) = "");
    --  "ros2:pkg/msg/Type".
 
+   function Port_Type
+     (Options : String_Maps.Map; Data : String; Direction : Port_Direction) return String
+   is
+      Name : constant String := ROSIDL.Definitions.Full_Name
+        (ROSIDL.Interfaces.Message (Options ("msg_type")).all);
+   begin
+      if Data /= "message" then
+         return "";
+      elsif Direction = Output and then Options ("convert") = "message" then
+         return "ros2:" & Name;
+      elsif Name in "geometry_msgs/msg/Pose2D" | "geometry_msgs/msg/Pose"
+                  | "geometry_msgs/msg/PoseStamped" | "nav_msgs/msg/Odometry"
+      then
+         return "types.pose";
+      elsif Name in "std_msgs/msg/Float64" | "std_msgs/msg/Float32" then
+         return (if Direction = Output then "types.real" else "");
+         --  A publisher of floats also takes integers.
+      elsif Is_Integer_Type (Name) then
+         return "types.integer";
+      elsif Name = "std_msgs/msg/Bool" then
+         return "types.boolean";
+      elsif Name = "std_msgs/msg/String" then
+         return (if Direction = Output then "types.string" else "");
+         --  A publisher of strings takes any value (its Image).
+      else
+         return "ros2:" & Name;
+      end if;
+   end Port_Type;
+
    function ROS_Shut_Down return Boolean is (RCL.Contexts.Is_Shutdown);
 
    function Common_Options return Option_Vectors.Vector is
@@ -466,13 +495,15 @@ begin
        Options    => Common_Options
                        & Make_Option ("convert", Choice_Option, "auto",
                                       Choices => "auto message"),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => Port_Type'Access),
       Create_Subscriber'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("ros2_publisher"),
        Doc        => To_Unbounded_String ("publishes its input on a ROS 2 topic"),
        Ports      => Port_Vectors.Empty_Vector & In_Port ("message", Values.Any_Type),
        Options    => Common_Options & Make_Option ("frame_id", Text_Option, ""),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => Port_Type'Access),
       Create_Publisher'Access);
 end Sancta.Components.ROS2;

@@ -49,6 +49,10 @@ package body Sancta.Components.Sources is
       end if;
    end Parse;
 
+   function Output_Type
+     (Options : String_Maps.Map; Data : String; Direction : Port_Direction) return String is
+     (if Data = "output" and then Direction = Output then Options ("type") else "");
+
    type Source is new Component with record
       Item_Type : Unbounded_String;
       Text      : Unbounded_String;
@@ -96,6 +100,7 @@ begin
                                                  & "types.string types.pose")
                        & Make_Option ("value", Text_Option, Required => True)
                        & Make_Option ("period", Duration_Option, "0"),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => Output_Type'Access),
       Create'Access);
 end Sancta.Components.Sources;

@@ -103,6 +103,7 @@ begin
                        & Make_Option ("timeout", Duration_Option, "5.0")
                        & Make_Option ("action", Choice_Option, "abort", Choices => "abort alarm")
                        & Make_Option ("check", Duration_Option, "0"),
-       Any_Inputs => False),
+       Any_Inputs => False,
+       Refine     => null),
       Create'Access);
 end Sancta.Components.Watchdog;

@@ -96,6 +96,14 @@ package Sancta.Runtime.Components is
    package Port_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, Port);
    package Option_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, Option_Spec);
 
+   package String_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, String);
+
+   type Type_Refiner is access function
+     (Options : String_Maps.Map; Data : String; Direction : Port_Direction) return String;
+   --  The value type of a port declared of Values.Any_Type for an instance
+   --  with these (valid) options, or "" to keep Any_Type. E.g. the output
+   --  of a "value" component has the type its "type" option names.
+
    type Descriptor is record
       Name       : Unbounded_String;
       Doc        : Unbounded_String;
@@ -104,6 +112,8 @@ package Sancta.Runtime.Components is
       Any_Inputs : Boolean := False;
       --  Inputs of any data name and any type may be required as well
       --  (logger, merge, switch).
+      Refine     : Type_Refiner;
+      --  Null, or how the instance's options fix its ports' types.
    end record;
 
    function Is_Common_Option (Name : String) return Boolean is
@@ -113,8 +123,6 @@ package Sancta.Runtime.Components is
    --  retry), retry_after (seconds, default 1.0).
 
    --  Instances --
-
-   package String_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, String);
 
    type Error_Policy is (Retry, Stop);
 

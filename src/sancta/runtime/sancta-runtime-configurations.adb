@@ -10,6 +10,7 @@ with Sancta.Runtime.Values;
 package body Sancta.Runtime.Configurations is
 
    use type Components.Port_Direction;
+   use type Components.Type_Refiner;
    use type XML_Trees.Element_Id;
    use XML_Trees;
 
@@ -594,6 +595,25 @@ package body Sancta.Runtime.Configurations is
                   declare
                      Effective : Unbounded_String := Declared.Type_Name;
                   begin
+                     if Info.Refine /= null
+                       and then To_String (Declared.Type_Name) = Values.Any_Type
+                     then
+                        begin
+                           declare
+                              Refined : constant String :=
+                                Info.Refine (Item.Options, Data, Direction);
+                           begin
+                              if Refined /= "" then
+                                 Declared.Type_Name := To_Unbounded_String (Refined);
+                                 Effective := Declared.Type_Name;
+                              end if;
+                           end;
+                        exception
+                           when others =>
+                              null;
+                              --  Options already reported as wrong: keep "any".
+                        end;
+                     end if;
                      if Given /= "" then
                         if not Values.Is_Known_Type (Given) then
                            Report (Result, Error, T.Attribute_Where (Child, "type"),
