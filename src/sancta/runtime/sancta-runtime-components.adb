@@ -232,6 +232,10 @@ package body Sancta.Runtime.Components is
          return;
       end if;
       This.Lock;
+      if This.Stopped then
+         This.Unlock;
+         return;
+      end if;
       begin
          for Position in This.Info.Inputs.Iterate loop
             if String_Maps.Element (Position) = Key then
@@ -253,6 +257,7 @@ package body Sancta.Runtime.Components is
 
    overriding procedure Stop (This : in out Base_Component) is
    begin
+      This.Stopped := True;
       This.Info.Database.Unlisten_All (Databases.Listener_Access'(This'Unchecked_Access));
    end Stop;
 

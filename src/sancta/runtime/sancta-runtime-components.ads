@@ -256,6 +256,10 @@ private
       Is_Failed     : Boolean := False;
    end record;
 
-   type Base_Component is abstract limited new Component and Databases.Listener with null record;
+   type Base_Component is abstract limited new Component and Databases.Listener with record
+      Stopped : Boolean := False;
+      --  Set by Stop (under the component's lock): a notification already
+      --  under way when the component unsubscribed is then ignored.
+   end record;
 
 end Sancta.Runtime.Components;
