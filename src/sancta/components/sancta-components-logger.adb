@@ -155,6 +155,7 @@ begin
                        & Make_Option ("period", Duration_Option, "0",
                                       Doc => "seconds between lines; 0: a line per update"),
        Any_Inputs => True,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create'Access);
 end Sancta.Components.Logger;

@@ -94,7 +94,8 @@ begin
                        & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector,
        Any_Inputs => False,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create_Forwarder'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("merge"),
@@ -102,7 +103,8 @@ begin
        Ports      => Port_Vectors.Empty_Vector & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector,
        Any_Inputs => True,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create_Forwarder'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("switch"),
@@ -112,6 +114,7 @@ begin
                        & Out_Port ("output", Values.Any_Type),
        Options    => Option_Vectors.Empty_Vector & Make_Option ("initial", Text_Option, ""),
        Any_Inputs => True,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create_Switch'Access);
 end Sancta.Components.Plumbing;

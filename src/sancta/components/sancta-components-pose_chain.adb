@@ -115,7 +115,8 @@ begin
                        & Make_Option ("v", Real_Option, "0.0")
                        & Make_Option ("w", Real_Option, "0.0"),
        Any_Inputs => False,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create_Odometry'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("scan_matching"),
@@ -128,6 +129,7 @@ begin
                        & Make_Option ("dy", Real_Option, "0.0")
                        & Make_Option ("dyaw", Real_Option, "0.0"),
        Any_Inputs => False,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create_Scan_Matching'Access);
 end Sancta.Components.Pose_Chain;

@@ -496,7 +496,8 @@ begin
                        & Make_Option ("convert", Choice_Option, "auto",
                                       Choices => "auto message"),
        Any_Inputs => False,
-       Refine     => Port_Type'Access),
+       Refine     => Port_Type'Access,
+       others     => <>),
       Create_Subscriber'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("ros2_publisher"),
@@ -504,6 +505,7 @@ begin
        Ports      => Port_Vectors.Empty_Vector & In_Port ("message", Values.Any_Type),
        Options    => Common_Options & Make_Option ("frame_id", Text_Option, ""),
        Any_Inputs => False,
-       Refine     => Port_Type'Access),
+       Refine     => Port_Type'Access,
+       others     => <>),
       Create_Publisher'Access);
 end Sancta.Components.ROS2;

@@ -53,6 +53,23 @@ package body Sancta.Components.Sources is
      (Options : String_Maps.Map; Data : String; Direction : Port_Direction) return String is
      (if Data = "output" and then Direction = Output then Options ("type") else "");
 
+   procedure Check_Value
+     (Options : String_Maps.Map; Option : out Unbounded_String; Problem : out Unbounded_String) is
+   begin
+      Option := To_Unbounded_String ("value");
+      Problem := Null_Unbounded_String;
+      declare
+         Unused : constant Values.Value'Class := Parse (Options ("type"), Options ("value"));
+      begin
+         null;
+      end;
+   exception
+      when Constraint_Error =>
+         Problem := To_Unbounded_String
+           ("'" & Options ("value") & "' is no " & Options ("type")
+            & (if Options ("type") = "types.pose" then " (expected ""x y yaw"")" else ""));
+   end Check_Value;
+
    type Source is new Component with record
       Item_Type : Unbounded_String;
       Text      : Unbounded_String;
@@ -101,6 +118,7 @@ begin
                        & Make_Option ("value", Text_Option, Required => True)
                        & Make_Option ("period", Duration_Option, "0"),
        Any_Inputs => False,
-       Refine     => Output_Type'Access),
+       Refine     => Output_Type'Access,
+       Check      => Check_Value'Access),
       Create'Access);
 end Sancta.Components.Sources;

@@ -104,6 +104,7 @@ begin
                        & Make_Option ("action", Choice_Option, "abort", Choices => "abort alarm")
                        & Make_Option ("check", Duration_Option, "0"),
        Any_Inputs => False,
-       Refine     => null),
+       Refine     => null,
+       others     => <>),
       Create'Access);
 end Sancta.Components.Watchdog;

@@ -104,6 +104,11 @@ package Sancta.Runtime.Components is
    --  with these (valid) options, or "" to keep Any_Type. E.g. the output
    --  of a "value" component has the type its "type" option names.
 
+   type Options_Check is access procedure
+     (Options : String_Maps.Map; Option : out Unbounded_String; Problem : out Unbounded_String);
+   --  Problem: "" when the options (every declared one, valid on its own)
+   --  agree, else what is wrong, blaming Option.
+
    type Descriptor is record
       Name       : Unbounded_String;
       Doc        : Unbounded_String;
@@ -114,6 +119,8 @@ package Sancta.Runtime.Components is
       --  (logger, merge, switch).
       Refine     : Type_Refiner;
       --  Null, or how the instance's options fix its ports' types.
+      Check      : Options_Check;
+      --  Null, or a check of the options together (after each one's own).
    end record;
 
    function Is_Common_Option (Name : String) return Boolean is

@@ -11,6 +11,7 @@ package body Sancta.Runtime.Configurations is
 
    use type Components.Port_Direction;
    use type Components.Type_Refiner;
+   use type Components.Options_Check;
    use type XML_Trees.Element_Id;
    use XML_Trees;
 
@@ -526,6 +527,22 @@ package body Sancta.Runtime.Configurations is
             Failed := True;
          end if;
       end loop;
+
+      if not Failed and then Info.Check /= null then
+         declare
+            Option, Problem : Unbounded_String;
+         begin
+            Info.Check (Item.Options, Option, Problem);
+            if Length (Problem) > 0 then
+               Report (Result, Error,
+                       (if T.Has_Attribute (E, To_String (Option))
+                        then T.Attribute_Where (E, To_String (Option)) else T.Where (E)),
+                       "option '" & To_String (Option) & "' of component '"
+                       & To_String (Item.Component) & "': " & To_String (Problem));
+               Failed := True;
+            end if;
+         end;
+      end if;
 
       --  Inputs and outputs.
       for Child of T.Children (E) loop

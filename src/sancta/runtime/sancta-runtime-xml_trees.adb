@@ -115,25 +115,33 @@ package body Sancta.Runtime.XML_Trees is
 
    Parse_Failed : exception;
 
+   function Strip_Location (Text : String) return String is
+      --  XML/Ada starts its messages with "[file]:line:column: ": drop it,
+      --  the diagnostic carries the position already.
+      I : Natural := Text'First;
+      Colons : Natural := 0;
+   begin
+      while I <= Text'Last and then Text (I) /= ' ' loop
+         if Text (I) = ':' then
+            Colons := Colons + 1;
+         end if;
+         I := I + 1;
+      end loop;
+      if Colons >= 3 and then I > Text'First and then Text (I - 1) = ':' then
+         return Text (I + 1 .. Text'Last);
+      end if;
+      return Text;
+   end Strip_Location;
+
    overriding procedure Fatal_Error
      (Handler : in out Builder;
       Except  : Sax.Exceptions.Sax_Parse_Exception'Class) is
    begin
       Handler.Error_Where := To_Position (Handler.File, Sax.Exceptions.Get_Location (Except));
-      declare
-         Text   : constant String := Sax.Exceptions.Get_Message (Except);
-         Prefix : constant String := Image (Handler.Error_Where) & ": ";
-      begin
-         --  XML/Ada puts the location in front of its message: drop it.
-         if Text'Length > Prefix'Length
-           and then Text (Text'First .. Text'First + Prefix'Length - 1) = Prefix
-         then
-            Handler.Error_Text :=
-              To_Unbounded_String (Text (Text'First + Prefix'Length .. Text'Last));
-         else
-            Handler.Error_Text := To_Unbounded_String (Text);
-         end if;
-      end;
+      Handler.Error_Where.Column := Natural'Max (1, Handler.Error_Where.Column);
+      Handler.Error_Where.Line := Natural'Max (1, Handler.Error_Where.Line);
+      Handler.Error_Text :=
+        To_Unbounded_String (Strip_Location (Sax.Exceptions.Get_Message (Except)));
       raise Parse_Failed;
    end Fatal_Error;
 

@@ -187,6 +187,29 @@ package body Sancta.Runtime.Configurations.Tests is
       end loop;
    end Extensions;
 
+   --  Every example under share/config loads without error.
+   procedure Examples (Unused : in out Fixture) is
+      Search : Ada.Directories.Search_Type;
+      Item   : Ada.Directories.Directory_Entry_Type;
+      Count  : Natural := 0;
+   begin
+      Ada.Directories.Start_Search (Search, "share/config", "*.xml",
+                                    [Ada.Directories.Ordinary_File => True, others => False]);
+      while Ada.Directories.More_Entries (Search) loop
+         Ada.Directories.Get_Next_Entry (Search, Item);
+         declare
+            Name   : constant String := Ada.Directories.Full_Name (Item);
+            Config : Configuration;
+         begin
+            Load (Name, Config);
+            Assert (Error_Count (Config) = 0, Name & ":" & ASCII.LF & Diagnostics_Text (Config));
+            Count := Count + 1;
+         end;
+      end loop;
+      Ada.Directories.End_Search (Search);
+      Assert (Count >= 3, "examples:" & Count'Image);
+   end Examples;
+
    procedure Distances (Unused : in out Fixture) is
    begin
       Assert (Factory.Edit_Distance ("odometri", "odometry") = 1, "one substitution");
@@ -204,6 +227,8 @@ package body Sancta.Runtime.Configurations.Tests is
                                       Listing_1_1'Access));
       Result.Add_Test (Caller.Create ("configuration: constants, groups, includes, --set",
                                       Extensions'Access));
+      Result.Add_Test (Caller.Create ("configuration: the examples of share/config check clean",
+                                      Examples'Access));
       Result.Add_Test (Caller.Create ("configuration: edit distance of suggestions",
                                       Distances'Access));
       return Result;
