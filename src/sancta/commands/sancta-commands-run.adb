@@ -25,7 +25,7 @@ package body Sancta.Commands.Run is
 
    Usage_Text : constant String :=
      "usage: sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]"
-     & " [--debug] [--log FILE]";
+     & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]";
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
 
@@ -39,7 +39,30 @@ package body Sancta.Commands.Run is
       Limit     : Duration := 0.0;
       Overrides : Sancta.Runtime.Components.String_Maps.Map;
       Config    : Configurations.Configuration;
+      Stats     : Boolean := False;
       I         : Positive := 2;
+
+      procedure Set_Level (Text : String) is
+         --  SECTION=LEVEL
+         Equal : Natural := 0;
+      begin
+         for J in Text'Range loop
+            if Text (J) = '=' then
+               Equal := J;
+            end if;
+         end loop;
+         if Equal <= Text'First then
+            raise Options.Usage_Error with "--level expects SECTION=LEVEL, found '" & Text & "'";
+         end if;
+         Sancta.Logging.Set_Level
+           (Text (Text'First .. Equal - 1),
+            Sancta.Logging.Level'Value (Text (Equal + 1 .. Text'Last)));
+      exception
+         when Constraint_Error =>
+            raise Options.Usage_Error with "--level: unknown level '"
+              & Text (Equal + 1 .. Text'Last) & "' (debug, info, warning, error)";
+      end Set_Level;
+
    begin
       while I <= Argument_Count loop
          declare
@@ -65,6 +88,11 @@ package body Sancta.Commands.Run is
                I := I + 1;
             elsif A = "--debug" then
                Sancta.Logging.Set_Default_Level (Sancta.Logging.Debug);
+            elsif A = "--stats" then
+               Stats := True;
+            elsif A = "--level" and then Has then
+               Set_Level (Argument (I + 1));
+               I := I + 1;
             elsif A = "--log" and then Has then
                Sancta.Logging.Open_File (Argument (I + 1));
                I := I + 1;
@@ -143,6 +171,10 @@ package body Sancta.Commands.Run is
                                              else "time limit reached"));
          for Index in reverse 1 .. Created loop
             Nodes (Index).Stop;
+            if Stats then
+               Put_Line ("statistics of agent " & Nodes (Index).Id & ":");
+               Put (Nodes (Index).Statistics);
+            end if;
          end loop;
          if Shutdown.Failed then
             Set_Exit_Status (Failure);

@@ -352,7 +352,9 @@ package body Sancta.Components.ROS2 is
       This.Output ("message", To_Value (ROSIDL.CDR.Decode (This.Support, Data), This.Convert));
    exception
       when E : others =>
+         This.Lock;
          This.Report_Failure ("message of " & This.Option_Text ("topic"), E);
+         This.Unlock;
    end Deliver;
 
    task body Spinner is

@@ -212,7 +212,7 @@ package Sancta.Runtime.Components is
    procedure Report_Failure
      (This : in out Component'Class; Where : String; E : Ada.Exceptions.Exception_Occurrence);
    --  Log an exception of the component (with its name) and apply the
-   --  policy (Stop marks it Failed).
+   --  policy (Stop marks it Failed). Call it with the component locked.
 
    function Failures (This : Component'Class) return Natural;
 
@@ -260,7 +260,8 @@ private
       Info          : Context;
       Guard         : Reentrant_Lock;
       Failure_Count : Natural := 0;
-      Is_Failed     : Boolean := False;
+      Is_Failed     : Boolean := False with Atomic;
+      --  Written under Guard, read without it.
    end record;
 
    type Base_Component is abstract limited new Component and Databases.Listener with record

@@ -68,8 +68,8 @@ package body Sancta.Runtime.Nodes is
             This.Sched.Add (C, This.Clock.Now);
          exception
             when E : others =>
-               C.Unlock;
                C.Report_Failure ("Start", E);
+               C.Unlock;
                if not C.Failed then
                   --  Retry policy: Run will be tried (Start is not repeated).
                   This.Sched.Add (C, This.Clock.Now);
@@ -109,9 +109,11 @@ package body Sancta.Runtime.Nodes is
       Tasks.Report_Ended;
       Logging.Log (This.Id, Logging.Info, "agent " & This.Id & " stopped");
       if Logging.Enabled (This.Id, Logging.Debug) then
-         Logging.Log (This.Id, Logging.Debug, "statistics:" & ASCII.LF & This.Sched.Report);
+         Logging.Log (This.Id, Logging.Debug, "statistics:" & ASCII.LF & This.Statistics);
       end if;
    end Stop;
+
+   function Statistics (This : Node) return String is (This.Sched.Report);
 
    function Id (This : Node) return String is (To_String (This.Name));
 

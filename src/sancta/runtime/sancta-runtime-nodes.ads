@@ -41,6 +41,10 @@ package Sancta.Runtime.Nodes is
 
    function Id (This : Node) return String;
 
+   function Statistics (This : Node) return String;
+   --  The scheduler's per-component statistics (calls, failures, overruns,
+   --  run time and lateness), one line per periodic component.
+
    function Database (This : in out Node) return Databases.Database_Access;
 
    function Scheduler (This : in out Node) return access Schedulers.Scheduler;

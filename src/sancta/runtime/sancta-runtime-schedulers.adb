@@ -127,8 +127,8 @@ package body Sancta.Runtime.Schedulers is
          Item.Unlock;
       exception
          when E : others =>
-            Item.Unlock;
             Item.Report_Failure ("Run", E);
+            Item.Unlock;
             M.Stats.Failures := M.Stats.Failures + 1;
             Next := (if Item.Failed then Components.Never
                      else This.Clock.Now + Item.Ctx.Retry_After);
