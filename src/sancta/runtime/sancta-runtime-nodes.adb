@@ -65,6 +65,7 @@ package body Sancta.Runtime.Nodes is
             C.Lock;
             C.Start;
             C.Unlock;
+            Logging.Log (This.Id, Logging.Debug, "started " & C.Name);
             This.Sched.Add (C, This.Clock.Now);
          exception
             when E : others =>
@@ -98,6 +99,7 @@ package body Sancta.Runtime.Nodes is
             C.Lock;
             C.Stop;
             C.Unlock;
+            Logging.Log (This.Id, Logging.Debug, "stopped " & C.Name);
          exception
             when E : others =>
                C.Unlock;
