@@ -2,7 +2,6 @@ with Ada.Characters.Handling;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Vectors;
 with Ada.Directories;
-with Ada.Exceptions;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Values;
@@ -166,80 +165,29 @@ package body Sancta.Runtime.Configurations is
    is
       Full : constant String :=
         (if Ada.Directories.Exists (File) then Ada.Directories.Full_Name (File) else File);
-      T   : Tree;
-      Doc : Positive;
+      T       : Tree;
+      Doc     : Positive;
+      Problem : XML_Trees.Load_Error;
    begin
       if L.Open_Files.Contains (Full) then
          Report (Result, Error, From, "include cycle: '" & File & "' is already being read");
          return;
       end if;
-      begin
-         XML_Trees.Load (File, T);
-      exception
-         when E : Configuration_Error =>
-            declare
-               Text : constant String := Ada.Exceptions.Exception_Message (E);
-               Colon : Natural := 0;
-               Count : Natural := 0;
-            begin
-               --  The message is "file:line:column: ..."; split it so the
-               --  diagnostic keeps its own position.
-               for I in Text'Range loop
-                  if Text (I) = ':' then
-                     Count := Count + 1;
-                     if Count = 3 then
-                        Colon := I;
-                        exit;
-                     end if;
-                  end if;
-               end loop;
-               if not Is_Root then
-                  Report (Result, Error, From, "cannot include '" & File & "'");
-               end if;
-               Result.Diagnostics.Append
-                 (Diagnostic'(Level => Error,
-                              Where => (File   => To_Unbounded_String
-                                                      (Text (Text'First .. Colon - 1)),
-                                        Line   => 0,
-                                        Column => 0),
-                              Message => To_Unbounded_String
-                                (Text (Natural'Min (Colon + 2, Text'Last + 1) .. Text'Last))));
-               --  Re-split file:line:column properly.
-               declare
-                  D : Diagnostic := Result.Diagnostics.Last_Element;
-                  S : constant String := To_String (D.Where.File);
-                  C1, C2 : Natural := 0;
-               begin
-                  for I in reverse S'Range loop
-                     if S (I) = ':' then
-                        if C2 = 0 then
-                           C2 := I;
-                        else
-                           C1 := I;
-                           exit;
-                        end if;
-                     end if;
-                  end loop;
-                  if C1 > 0 then
-                     D.Where := (File   => To_Unbounded_String (S (S'First .. C1 - 1)),
-                                 Line   => Natural'Value (S (C1 + 1 .. C2 - 1)),
-                                 Column => Natural'Value (S (C2 + 1 .. S'Last)));
-                     Result.Diagnostics.Replace_Element (Result.Diagnostics.Last_Index, D);
-                  end if;
-               exception
-                  when Constraint_Error =>
-                     null;
-               end;
-            end;
-            return;
-      end;
+      XML_Trees.Load (File, T, Problem);
+      if Problem.Failed then
+         if not Is_Root then
+            Report (Result, Error, From, "cannot include '" & File & "'");
+         end if;
+         Report (Result, Error, Problem.Where, To_String (Problem.Text));
+         return;
+      end if;
       L.Trees.Append (T);
       Doc := L.Trees.Last_Index;
       L.Open_Files.Append (Full);
       if Is_Root then
          Result.Name := To_Unbounded_String (T.Name (T.Root));
       end if;
-      Check_Attributes (Result, T, T.Root, "");
+      --  The root element may have any name and any attributes.
       for Child of T.Children (T.Root) loop
          declare
             Kind : constant String := T.Name (Child);
@@ -379,7 +327,6 @@ package body Sancta.Runtime.Configurations is
       E         : Element_Id;
       Constants : String_Map;
       Rank      : Positive;
-      Agent_Id  : String;
       Item      : out Instance;
       Valid     : out Boolean)
    is
@@ -408,7 +355,6 @@ package body Sancta.Runtime.Configurations is
 
       Info : Components.Descriptor;
    begin
-      pragma Unreferenced (Agent_Id);
       Valid := False;
       Item := (Where => T.Where (E), Rank => Rank, others => <>);
       Expand (E, Values_Of);
@@ -829,8 +775,7 @@ package body Sancta.Runtime.Configurations is
             Item  : Instance;
             Valid : Boolean;
          begin
-            Read_Component (Result, L.Trees (M.Doc), M.Node, Constants, Rank, To_String (A.Id),
-                            Item, Valid);
+            Read_Component (Result, L.Trees (M.Doc), M.Node, Constants, Rank, Item, Valid);
             if Valid then
                A.Instances.Append (Item);
             end if;
@@ -997,8 +942,8 @@ package body Sancta.Runtime.Configurations is
       return "n_" & Result;
    end Dot_Id;
 
-   function Quote (S : String) return String is
-      Result : Unbounded_String := To_Unbounded_String ("""");
+   function Escape (S : String) return String is
+      Result : Unbounded_String;
    begin
       for C of S loop
          if C = '"' or else C = '\' then
@@ -1006,8 +951,10 @@ package body Sancta.Runtime.Configurations is
          end if;
          Append (Result, C);
       end loop;
-      return To_String (Result) & """";
-   end Quote;
+      return To_String (Result);
+   end Escape;
+
+   function Quote (S : String) return String is ("""" & Escape (S) & """");
 
    function To_Dot (This : Configuration) return String is
       LF     : constant Character := ASCII.LF;
@@ -1041,10 +988,9 @@ package body Sancta.Runtime.Configurations is
                                          & Dot_Id (To_String (A.Id), To_String (P.Name))
                                          & " -> "
                                          & Dot_Id (To_String (A.Id), To_String (C.Name))
-                                         & " [label="
-                                         & Quote (To_String (Out_B.Key) & "\n"
-                                                  & To_String (Out_B.Type_Name))
-                                         & "];" & LF);
+                                         & " [label=""" & Escape (To_String (Out_B.Key))
+                                         & "\n" & Escape (To_String (Out_B.Type_Name))
+                                         & """];" & LF);
                               end if;
                            end loop;
                         end if;

@@ -145,12 +145,23 @@ package body Sancta.Runtime.XML_Trees is
       raise Parse_Failed;
    end Fatal_Error;
 
-   procedure Load (File : String; Result : out Tree) is
+   procedure Load (File : String; Result : out Tree; Error : out Load_Error) is
       Input   : Input_Sources.File.File_Input;
       Handler : Builder;
+      Opened  : Boolean := False;
+
+      procedure Fail (Where : Position; Text : String) is
+      begin
+         Error := (Failed => True, Where => Where, Text => To_Unbounded_String (Text));
+      end Fail;
+
+      Start : constant Position := (To_Unbounded_String (File), 1, 1);
    begin
+      Error := (Failed => False, Where => Start, Text => Null_Unbounded_String);
+      Result := (Elements => Element_Stores.Empty_Vector);
       if not Ada.Directories.Exists (File) then
-         raise Configuration_Error with File & ":1:1: cannot open: no such file";
+         Fail (Start, "cannot open: no such file");
+         return;
       end if;
       Handler.File := To_Unbounded_String (File);
       declare
@@ -166,34 +177,39 @@ package body Sancta.Runtime.XML_Trees is
             if Ada.Text_IO.Is_Open (F) then
                Ada.Text_IO.Close (F);
             end if;
-            raise Configuration_Error with File & ":1:1: cannot read: "
-              & Ada.Exceptions.Exception_Message (E);
+            Fail (Start, "cannot read: " & Ada.Exceptions.Exception_Message (E));
+            return;
       end;
-      begin
-         Input_Sources.File.Open (File, Input);
-      exception
-         when E : others =>
-            raise Configuration_Error with File & ":1:1: cannot open: "
-              & Ada.Exceptions.Exception_Message (E);
-      end;
+      Input_Sources.File.Open (File, Input);
+      Opened := True;
       Handler.Set_Feature (Sax.Readers.Namespace_Feature, False);
-      begin
-         Handler.Parse (Input);
-      exception
-         when Parse_Failed =>
-            Input_Sources.File.Close (Input);
-            raise Configuration_Error with Image (Handler.Error_Where) & ": malformed XML: "
-              & To_String (Handler.Error_Text);
-         when E : Sax.Readers.XML_Fatal_Error =>
-            Input_Sources.File.Close (Input);
-            raise Configuration_Error with File & ": malformed XML: "
-              & Ada.Exceptions.Exception_Message (E);
-      end;
+      Handler.Parse (Input);
       Input_Sources.File.Close (Input);
       if Handler.Result.Elements.Is_Empty then
-         raise Configuration_Error with File & ":1:1: malformed XML: no root element";
+         Fail (Start, "malformed XML: no root element");
+         return;
       end if;
       Result := Handler.Result;
+   exception
+      when Parse_Failed =>
+         Input_Sources.File.Close (Input);
+         Fail (Handler.Error_Where, "malformed XML: " & To_String (Handler.Error_Text));
+      when E : others =>
+         --  XML/Ada's own exceptions (bad encodings, I/O): no position.
+         if Opened then
+            Input_Sources.File.Close (Input);
+         end if;
+         Fail (Start, "cannot read: " & Ada.Exceptions.Exception_Name (E) & ": "
+               & Strip_Location (Ada.Exceptions.Exception_Message (E)));
+   end Load;
+
+   procedure Load (File : String; Result : out Tree) is
+      Error : Load_Error;
+   begin
+      Load (File, Result, Error);
+      if Error.Failed then
+         raise Configuration_Error with Image (Error.Where) & ": " & To_String (Error.Text);
+      end if;
    end Load;
 
    function Root (This : Tree) return Element_Id is (This.Elements.First_Index);

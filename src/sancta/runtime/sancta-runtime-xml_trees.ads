@@ -37,9 +37,19 @@ package Sancta.Runtime.XML_Trees is
 
    type Tree is tagged private;
 
+   type Load_Error is record
+      Failed : Boolean := False;
+      Where  : Position;
+      Text   : Unbounded_String;
+      --  "malformed XML: ...", "cannot open: ...", "cannot read: ...".
+   end record;
+
+   procedure Load (File : String; Result : out Tree; Error : out Load_Error);
+   --  Parse File; on failure Error says where and why (Result is empty).
+
    procedure Load (File : String; Result : out Tree);
-   --  Parse File. Raises Configuration_Error "file:line:column: malformed
-   --  XML: ..." or "file: cannot open ...".
+   --  The same, raising Configuration_Error "file:line:column: ..." on
+   --  failure.
 
    function Root (This : Tree) return Element_Id;
    function Name (This : Tree; E : Element_Id) return String;
