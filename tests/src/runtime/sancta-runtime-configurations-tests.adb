@@ -1,4 +1,6 @@
 with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Numerics.Discrete_Random;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;
@@ -210,6 +212,61 @@ package body Sancta.Runtime.Configurations.Tests is
       Assert (Count >= 3, "examples:" & Count'Image);
    end Examples;
 
+   --  Random corruptions of a good file (bytes replaced, deleted or
+   --  duplicated; a fixed seed) never make Load raise: every outcome is a
+   --  list of diagnostics, each with a position.
+   procedure Corruptions (Unused : in out Fixture) is
+      package Random_Positions is new Ada.Numerics.Discrete_Random (Positive);
+      Gen      : Random_Positions.Generator;
+      Original : Unbounded_String;
+      F        : Ada.Text_IO.File_Type;
+      Name     : constant String := "out/test/corrupted.xml";
+      Noise    : constant String := "<>/=""'$ {}&;#x-!?azAZ09" & ASCII.LF;
+   begin
+      Ada.Directories.Create_Path ("out/test");
+      Ada.Text_IO.Open (F, Ada.Text_IO.In_File, Data_Dir & "/good-plumbing.xml");
+      while not Ada.Text_IO.End_Of_File (F) loop
+         Append (Original, Ada.Text_IO.Get_Line (F) & ASCII.LF);
+      end loop;
+      Ada.Text_IO.Close (F);
+      Random_Positions.Reset (Gen, 20261121);
+      for Round in 1 .. 300 loop
+         declare
+            Text : Unbounded_String := Original;
+            Config : Configuration;
+         begin
+            for Change in 1 .. 1 + Round mod 4 loop
+               declare
+                  At_Char : constant Positive :=
+                    1 + Random_Positions.Random (Gen) mod Length (Text);
+                  Pick    : constant Positive :=
+                    1 + Random_Positions.Random (Gen) mod Noise'Length;
+               begin
+                  case Random_Positions.Random (Gen) mod 3 is
+                     when 0 => Replace_Element (Text, At_Char, Noise (Pick));
+                     when 1 => Delete (Text, At_Char, At_Char);
+                     when others => Insert (Text, At_Char, Noise (Pick) & Noise (Pick));
+                  end case;
+               end;
+            end loop;
+            Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, Name);
+            Ada.Text_IO.Put (F, To_String (Text));
+            Ada.Text_IO.Close (F);
+            begin
+               Load (Name, Config);
+            exception
+               when E : others =>
+                  Assert (False, "round" & Round'Image & ": Load raised "
+                          & Ada.Exceptions.Exception_Information (E));
+            end;
+            for D of Config.Diagnostics loop
+               Assert (D.Where.Line >= 1 and then D.Where.Column >= 1,
+                       "round" & Round'Image & ": no position in " & Image (D));
+            end loop;
+         end;
+      end loop;
+   end Corruptions;
+
    procedure Distances (Unused : in out Fixture) is
    begin
       Assert (Factory.Edit_Distance ("odometri", "odometry") = 1, "one substitution");
@@ -229,6 +286,8 @@ package body Sancta.Runtime.Configurations.Tests is
                                       Extensions'Access));
       Result.Add_Test (Caller.Create ("configuration: the examples of share/config check clean",
                                       Examples'Access));
+      Result.Add_Test (Caller.Create ("configuration: random corruptions never raise",
+                                      Corruptions'Access));
       Result.Add_Test (Caller.Create ("configuration: edit distance of suggestions",
                                       Distances'Access));
       return Result;
