@@ -95,6 +95,7 @@ begin
        Options    => Option_Vectors.Empty_Vector,
        Any_Inputs => False,
        Refine     => null,
+       Follows_Inputs => True,
        others     => <>),
       Create_Forwarder'Access);
    Factory.Register
@@ -104,6 +105,7 @@ begin
        Options    => Option_Vectors.Empty_Vector,
        Any_Inputs => True,
        Refine     => null,
+       Follows_Inputs => True,
        others     => <>),
       Create_Forwarder'Access);
    Factory.Register
@@ -115,6 +117,7 @@ begin
        Options    => Option_Vectors.Empty_Vector & Make_Option ("initial", Text_Option, ""),
        Any_Inputs => True,
        Refine     => null,
+       Follows_Inputs => True,
        others     => <>),
       Create_Switch'Access);
 end Sancta.Components.Plumbing;

@@ -119,6 +119,7 @@ begin
                        & Make_Option ("period", Duration_Option, "0"),
        Any_Inputs => False,
        Refine     => Output_Type'Access,
-       Check      => Check_Value'Access),
+       Check      => Check_Value'Access,
+       others     => <>),
       Create'Access);
 end Sancta.Components.Sources;

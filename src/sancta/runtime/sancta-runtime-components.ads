@@ -121,6 +121,10 @@ package Sancta.Runtime.Components is
       --  Null, or how the instance's options fix its ports' types.
       Check      : Options_Check;
       --  Null, or a check of the options together (after each one's own).
+      Follows_Inputs : Boolean := False;
+      --  Outputs of any type carry what the inputs of any type receive
+      --  (copy, merge, switch): the configuration check gives them the
+      --  type of what feeds those inputs, when it is one type.
    end record;
 
    function Is_Common_Option (Name : String) return Boolean is

@@ -599,6 +599,8 @@ package body Sancta.Runtime.Configurations is
                                  Key       => To_Unbounded_String (Key),
                                  Type_Name => Effective,
                                  Optional  => Declared.Optional,
+                                 Any_Port  =>
+                                   To_String (Declared.Type_Name) = Values.Any_Type,
                                  Where     => T.Where (Child)));
                   end;
                end;
@@ -627,6 +629,95 @@ package body Sancta.Runtime.Configurations is
      (A.Order < B.Order or else (A.Order = B.Order and then A.Rank < B.Rank));
 
    package Instance_Sorting is new Instance_Vectors.Generic_Sorting (Before);
+
+   procedure Propagate_Types (Result : in out Configuration; A : in out Agent) is
+      --  Untyped outputs of components that follow their inputs take the
+      --  type of what feeds them, repeatedly (chains of copies).
+
+      function Provided_Type (Key : Unbounded_String) return String is
+      begin
+         for I of A.Instances loop
+            if I.Enabled then
+               for B of I.Bindings loop
+                  if B.Direction = Components.Output and then B.Key = Key then
+                     return To_String (B.Type_Name);
+                  end if;
+               end loop;
+            end if;
+         end loop;
+         return "";
+      end Provided_Type;
+
+      procedure Common_Type
+        (I : Instance; Common : out Unbounded_String; Conflict : out Boolean) is
+      begin
+         Common := Null_Unbounded_String;
+         Conflict := False;
+         for B of I.Bindings loop
+            if B.Direction = Components.Input and then B.Any_Port then
+               declare
+                  T : constant String :=
+                    (if To_String (B.Type_Name) /= Values.Any_Type then To_String (B.Type_Name)
+                     else Provided_Type (B.Key));
+               begin
+                  if T /= "" and then T /= Values.Any_Type then
+                     if Length (Common) = 0 then
+                        Common := To_Unbounded_String (T);
+                     elsif Common /= T then
+                        Conflict := True;
+                     end if;
+                  end if;
+               end;
+            end if;
+         end loop;
+      end Common_Type;
+
+      Changed : Boolean := True;
+      Rounds  : Natural := 0;
+   begin
+      while Changed and then Rounds <= Natural (A.Instances.Length) loop
+         Changed := False;
+         Rounds := Rounds + 1;
+         for Index in A.Instances.First_Index .. A.Instances.Last_Index loop
+            declare
+               I        : Instance := A.Instances (Index);
+               Common   : Unbounded_String;
+               Conflict : Boolean;
+            begin
+               if I.Enabled and then Factory.Description (To_String (I.Component)).Follows_Inputs
+               then
+                  Common_Type (I, Common, Conflict);
+                  if Length (Common) > 0 and then not Conflict then
+                     for B of I.Bindings loop
+                        if B.Direction = Components.Output and then B.Any_Port
+                          and then To_String (B.Type_Name) = Values.Any_Type
+                        then
+                           B.Type_Name := Common;
+                           Changed := True;
+                        end if;
+                     end loop;
+                     A.Instances.Replace_Element (Index, I);
+                  end if;
+               end if;
+            end;
+         end loop;
+      end loop;
+      for I of A.Instances loop
+         if I.Enabled and then Factory.Description (To_String (I.Component)).Follows_Inputs then
+            declare
+               Common   : Unbounded_String;
+               Conflict : Boolean;
+            begin
+               Common_Type (I, Common, Conflict);
+               if Conflict then
+                  Report (Result, Warning, I.Where,
+                          "the inputs of " & To_String (I.Name) & " are of different types: "
+                          & "its output is left untyped (any)");
+               end if;
+            end;
+         end if;
+      end loop;
+   end Propagate_Types;
 
    procedure Wire (Result : in out Configuration; A : Agent) is
       type Provider is record
@@ -783,6 +874,7 @@ package body Sancta.Runtime.Configurations is
          end;
       end loop;
       Instance_Sorting.Sort (A.Instances);
+      Propagate_Types (Result, A);
       Wire (Result, A);
       Result.Agents.Append (A);
    end Read_Agent;

@@ -59,6 +59,8 @@ package Sancta.Runtime.Configurations is
       --  The effective type: the declared one, or the configured one for
       --  ports of any type.
       Optional  : Boolean := False;
+      Any_Port  : Boolean := False;
+      --  The component declares this port of any type.
       Where     : Position;
    end record;
 
