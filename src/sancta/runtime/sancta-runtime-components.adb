@@ -179,6 +179,16 @@ package body Sancta.Runtime.Components is
    procedure Output (This : in out Component'Class; Data : String; Item : Values.Value'Class) is
    begin
       if This.Has_Output (Data) then
+         if This.Info.Output_Types.Contains (Data) then
+            declare
+               Expected : constant String := This.Info.Output_Types (Data);
+            begin
+               if Expected /= Values.Any_Type and then Item.Type_Name /= Expected then
+                  raise Type_Error with "output '" & Data & "' of " & This.Name & " is of type "
+                    & Expected & ", but a value of type " & Item.Type_Name & " was written";
+               end if;
+            end;
+         end if;
          This.Info.Database.Put (This.Output_Key (Data), Item);
       end if;
    end Output;

@@ -147,6 +147,9 @@ package Sancta.Runtime.Components is
       Inputs        : String_Maps.Map;
       --  data -> external key, for each bound input.
       Outputs       : String_Maps.Map;
+      Output_Types  : String_Maps.Map;
+      --  data -> the type the configuration check settled for each bound
+      --  output (absent or Values.Any_Type: not checked).
       Options       : String_Maps.Map;
       --  Every declared option with its (validated) value or default.
       Policy        : Error_Policy := Retry;
@@ -203,7 +206,9 @@ package Sancta.Runtime.Components is
 
    procedure Output (This : in out Component'Class; Data : String; Item : Values.Value'Class);
    --  Store Item under the key bound to output Data; nothing when the
-   --  output is not bound (unused outputs may be omitted).
+   --  output is not bound (unused outputs may be omitted). Raises
+   --  Type_Error when Item is not of the output's checked type (a bug of
+   --  the component: the configuration promised that type to consumers).
 
    procedure Log (This : Component'Class; Severity : Logging.Level; Message : String);
    --  Logs under the section "<agent>/<instance>".

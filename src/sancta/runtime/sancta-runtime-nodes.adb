@@ -44,6 +44,7 @@ package body Sancta.Runtime.Nodes is
                      Ctx.Inputs.Include (To_String (B.Data), To_String (B.Key));
                   else
                      Ctx.Outputs.Include (To_String (B.Data), To_String (B.Key));
+                     Ctx.Output_Types.Include (To_String (B.Data), To_String (B.Type_Name));
                   end if;
                end loop;
                This.Members.Append (Factory.Create (To_String (I.Component), Ctx));

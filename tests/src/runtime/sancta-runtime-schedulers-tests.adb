@@ -211,6 +211,7 @@ package body Sancta.Runtime.Schedulers.Tests is
       Clock : aliased Clocks.Manual_Clock;
       DB    : aliased Databases.Database;
       D     : constant Doubler_Access := new Doubler;
+      E     : constant Doubler_Access := new Doubler;
       Ctx   : Components.Context :=
         (Agent_Id => To_Unbounded_String ("Test"), Instance_Name => To_Unbounded_String ("dbl"),
          Database => DB'Unchecked_Access, Clock => Clock'Unchecked_Access,
@@ -231,6 +232,22 @@ package body Sancta.Runtime.Schedulers.Tests is
       D.Stop;
       DB.Put ("x", Values.Real_Value'(Data => 5.0));
       Assert (D.Seen = 3, "no calls after Stop");
+
+      --  An output checked as types.integer refuses the doubler's reals.
+      Ctx.Output_Types.Include ("output", "types.integer");
+      Ctx.Policy := Components.Stop;
+      Ctx.Instance_Name := To_Unbounded_String ("typed");
+      E.Initialize (Ctx);
+      E.Start;
+      Logging.Set_Console (False);
+      DB.Put ("x", Values.Real_Value'(Data => 1.0));
+      Logging.Set_Console (True);
+      Assert (E.Failed, "wrong output type is a failure of the component");
+      Assert (Values.Real_Value (DB.Get ("y")).Data = 4.0, "nothing stored");
+      Assert (Ada.Strings.Fixed.Index
+                (Logging.Last_Message,
+                 "output 'output' of typed is of type types.integer, but a value of type "
+                 & "types.real was written") > 0, Logging.Last_Message);
    end Event_Driven;
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
