@@ -250,6 +250,77 @@ package body Sancta.Runtime.Schedulers.Tests is
                  & "types.real was written") > 0, Logging.Last_Message);
    end Event_Driven;
 
+   --  A component counting its inputs without protection of its own: the
+   --  component's lock must serialise the calls made by several writers.
+   type Counter_Component is new Components.Base_Component with record
+      Count   : Natural := 0;
+      Inside  : Boolean := False;
+      Overlap : Boolean := False;
+   end record;
+
+   overriding procedure Start (This : in out Counter_Component);
+   overriding procedure On_Input
+     (This : in out Counter_Component; Data : String; Item : Values.Value'Class);
+
+   type Counter_Access is access all Counter_Component;
+
+   overriding procedure Start (This : in out Counter_Component) is
+   begin
+      This.Subscribe ("a");
+      This.Subscribe ("b");
+   end Start;
+
+   overriding procedure On_Input
+     (This : in out Counter_Component; Data : String; Item : Values.Value'Class)
+   is
+      pragma Unreferenced (Data, Item);
+      Seen : constant Natural := This.Count;
+   begin
+      if This.Inside then
+         This.Overlap := True;
+      end if;
+      This.Inside := True;
+      delay 0.0;
+      --  Yield: without the component's lock another writer's call would
+      --  now run and one of the two counts would be lost.
+      This.Count := Seen + 1;
+      This.Inside := False;
+   end On_Input;
+
+   procedure Serialised_Inputs (Unused : in out Fixture) is
+      Clock : aliased Clocks.Manual_Clock;
+      DB    : aliased Databases.Database;
+      C     : constant Counter_Access := new Counter_Component;
+      Ctx   : Components.Context :=
+        (Agent_Id => To_Unbounded_String ("Test"), Instance_Name => To_Unbounded_String ("cnt"),
+         Database => DB'Unchecked_Access, Clock => Clock'Unchecked_Access, others => <>);
+      Rounds : constant := 500;
+   begin
+      Ctx.Inputs.Include ("a", "key_a");
+      Ctx.Inputs.Include ("b", "key_b");
+      C.Initialize (Ctx);
+      C.Start;
+      declare
+         task type Writer (Key : access constant String);
+         task body Writer is
+         begin
+            for I in 1 .. Rounds loop
+               DB.Put (Key.all, Values.Integer_Value'(Data => Long_Long_Integer (I)));
+            end loop;
+         end Writer;
+         A1 : aliased constant String := "key_a";
+         B1 : aliased constant String := "key_b";
+         W1 : Writer (A1'Access);
+         W2 : Writer (B1'Access);
+         W3 : Writer (A1'Access);
+         W4 : Writer (B1'Access);
+      begin
+         null;
+      end;
+      Assert (not C.Overlap, "On_Input calls overlapped");
+      Assert (C.Count = 4 * Rounds, "count:" & C.Count'Image);
+   end Serialised_Inputs;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
    begin
@@ -260,6 +331,8 @@ package body Sancta.Runtime.Schedulers.Tests is
                                       Failure_Policies'Access));
       Result.Add_Test (Caller.Create ("components: event-driven base component",
                                       Event_Driven'Access));
+      Result.Add_Test (Caller.Create ("components: concurrent inputs are serialised",
+                                      Serialised_Inputs'Access));
       return Result;
    end Suite;
 
