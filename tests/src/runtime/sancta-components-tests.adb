@@ -133,6 +133,37 @@ package body Sancta.Components.Tests is
       end loop;
    end Watchdog_Abort;
 
+   --  A failed Start is retried after retry_after (on_error="retry").
+   procedure Start_Retry (Unused : in out Fixture) is
+      Config    : Configurations.Configuration;
+      Clock     : aliased Clocks.Manual_Clock;
+      N         : Nodes.Node;
+      Overrides : RC.String_Maps.Map;
+      Dir       : constant String := "out/test/start-retry";
+      Logger    : RC.Component_Access;
+   begin
+      if Ada.Directories.Exists (Dir) then
+         Ada.Directories.Delete_Tree (Dir);
+      end if;
+      Overrides.Include ("dir", Dir);
+      Load_Checked ("tests/data/config/good-start-retry.xml", Config, Overrides);
+      N.Create (Config, 1, Clock'Unchecked_Access);
+      Logger := N.Find ("logger#2");
+      Logging.Set_Console (False);
+      N.Start (Run_Scheduler_Task => False);
+      Run_Until (N, 0.25);
+      Assert (not Logger.Started and then Logger.Failures = 1, "first Start failed");
+      Ada.Directories.Create_Path (Dir);
+      Run_Until (N, 0.75);
+      N.Stop;
+      Logging.Set_Console (True);
+      Assert (Logger.Started and then Logger.Failures = 1, "Start retried at 0.5 s");
+      --  Logged times count from the logger's (successful) start at 0.5 s;
+      --  it was queued before the value's call due at 0.5 s.
+      Assert (File_Text (Dir & "/x.csv") = "time,key,value|0.0,x,1.5|0.25,x,1.5|",
+              File_Text (Dir & "/x.csv"));
+   end Start_Retry;
+
    --  An asynchronous component whose task dies of an exception.
    type Async is new RC.Component with null record;
 
@@ -188,6 +219,8 @@ package body Sancta.Components.Tests is
       Result.Add_Test (Caller.Create ("components: copy, merge, switch, logger, watchdog alarm",
                                       Plumbing_And_Logs'Access));
       Result.Add_Test (Caller.Create ("components: watchdog abort", Watchdog_Abort'Access));
+      Result.Add_Test (Caller.Create ("components: a failed Start is retried",
+                                      Start_Retry'Access));
       Result.Add_Test (Caller.Create ("components: asynchronous task death reported",
                                       Task_Death'Access));
       return Result;
