@@ -1,4 +1,8 @@
 with Harness_Tests;
+with RCL.Logging.Tests;
+with RCL.Names.Tests;
+with RCL.Nodes.Tests;
+with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 
 package body All_Suites is
@@ -10,6 +14,10 @@ package body All_Suites is
    function Suite return Access_Test_Suite is
    begin
       Result.Add_Test (Harness_Tests.Suite);
+      Result.Add_Test (RCL.Names.Tests.Suite);
+      Result.Add_Test (RCL.Logging.Tests.Suite);
+      Result.Add_Test (RCL.Timers.Tests.Suite);
+      Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
