@@ -1,9 +1,11 @@
 with Ada.Unchecked_Deallocation;
 
+with RCL.Clients;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
+with RCL.Services;
 
 package body RCL.Nodes is
 
@@ -140,6 +142,57 @@ package body RCL.Nodes is
          Free (S);
          raise;
    end Add_Subscription;
+
+   procedure Add_Endpoint
+     (This      : in out Node;
+      Type_Name : String;
+      DDS_Topic : String;
+      Name      : String;
+      User_Data : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile;
+      Added     : out Subscription_Access)
+   is
+      S : Subscription_Access := new Subscription;
+   begin
+      S.Topic := new String'(Name);
+      S.Handle := Handle;
+      RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
+                      User_Data => User_Data);
+      This.Entities.Add (S);
+      Added := S;
+   exception
+      when others =>
+         Free (S);
+         raise;
+   end Add_Endpoint;
+
+   -----------------------------
+   -- Services and clients --
+   -----------------------------
+
+   procedure Serve
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default) is
+   begin
+      RCL.Services.Serve (This, Support, Name, Callback, QoS);
+   end Serve;
+
+   function Client_Call
+     (This    : Node;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message is
+   begin
+      return RCL.Clients.Call (This, Support, Name, Request, Timeout);
+   end Client_Call;
 
    type Raw_Handler is new Handler with record
       Callback : Raw_Callback;

@@ -11,6 +11,8 @@
 with Ada.Finalization;
 with Ada.Real_Time;
 with ROSIDL;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Publishers;
 with RCL.QoS;
@@ -65,6 +67,30 @@ package RCL.Nodes is
       QoS       : RCL.QoS.Profile := RCL.QoS.Default);
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
+
+   --  Services and clients (RCL.Services, RCL.Clients) --------------------
+
+   procedure Serve
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default);
+   --  Offers service Name (expanded like a topic): requests are answered
+   --  by Callback while the node spins. See RCL.Services.
+
+   function Client_Call
+     (This    : Node;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message;
+   --  Calls service Name and waits for its response, waiting first for the
+   --  service to be available; RCL_Timeout when Timeout passes. Safe from
+   --  several tasks at once. See RCL.Clients.
 
    --  Timers ---------------------------------------------------------------
 
@@ -141,6 +167,18 @@ package RCL.Nodes is
       Handle    : not null Handler_Access;
       QoS       : RCL.QoS.Profile);
    --  Used by Subscribe_Raw and by the typed Subscribe.
+
+   procedure Add_Endpoint
+     (This      : in out Node;
+      Type_Name : String;
+      DDS_Topic : String;
+      Name      : String;
+      User_Data : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile;
+      Added     : out Subscription_Access);
+   --  As Add_Subscription with the DDS topic ("rq/addRequest"), the fully
+   --  qualified ROS Name and the reader's USER_DATA given (services).
 
    overriding procedure Finalize (This : in out Node);
 

@@ -1,0 +1,149 @@
+with Ada.Calendar;
+with Ada.Exceptions;
+with Ada.Strings.Unbounded;
+with ROSIDL.CDR;
+with RCL.Contexts;
+with RCL.DDS.Matching;
+with RCL.Logging;
+
+package body RCL.Services is
+
+   use Ada.Strings.Unbounded;
+   use type Ada.Calendar.Time;
+   use type RCL.DDS.Matching.Key_Lookup;
+   use type RCL.DDS.GUID;
+
+   function Request_Topic (Service_Name : String) return String is
+     ("rq" & Service_Name & "Request");
+
+   function Reply_Topic (Service_Name : String) return String is
+     ("rr" & Service_Name & "Reply");
+
+   type Service_Handler is new RCL.Nodes.Handler with record
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Callback : Services.Callback;
+      Name     : Unbounded_String;
+      Replies  : RCL.DDS.Writer;
+      Requests : RCL.Nodes.Subscription_Access;
+      --  The node's subscription holding the request reader.
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Service_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+
+   --------------------
+   -- Client_Present --
+   --------------------
+
+   function Client_Present
+     (This : Service_Handler; Requester : RCL.DDS.GUID) return Boolean
+   --  rmw_cyclonedds's check_for_response_reader, waiting up to
+   --  Reply_Match_Wait: True when the reply may be written.
+   is
+      Result   : RCL.DDS.Matching.Key_Lookup;
+      Id       : Unbounded_String;
+      Deadline : constant Ada.Calendar.Time := Ada.Calendar.Clock + Reply_Match_Wait;
+   begin
+      if Requester = RCL.DDS.Null_GUID then
+         return True;  --  Writer unknown to the reader's cache: answer anyway.
+      end if;
+      loop
+         RCL.DDS.Matching.Writer_Key
+           (This.Requests.Reader, Requester, "clientid", Result, Id);
+         case Result is
+            when RCL.DDS.Matching.Gone =>
+               return False;
+            when RCL.DDS.Matching.No_Key =>
+               return True;  --  An old client without id: assume it is ready.
+            when RCL.DDS.Matching.Found =>
+               if RCL.DDS.Matching.Has_Matched_Reader
+                    (This.Replies, "clientid", To_String (Id))
+               then
+                  return True;
+               end if;
+         end case;
+         exit when Ada.Calendar.Clock >= Deadline;
+         delay 0.01;
+      end loop;
+      RCL.Logging.Warn ("service " & To_String (This.Name)
+                        & ": the reply reader of client " & To_String (Id)
+                        & " is not matched after" & Reply_Match_Wait'Image
+                        & " s; reply dropped");
+      return False;
+   end Client_Present;
+
+   -------------
+   -- Deliver --
+   -------------
+
+   overriding procedure Deliver
+     (This : in out Service_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      use ROSIDL.Typesupport;
+      Request  : ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (Request_Support (This.Support));
+      Response : ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (Response_Support (This.Support));
+      Header   : ROSIDL.CDR.Request_Header;
+   begin
+      begin
+         ROSIDL.CDR.Decode (Data, Request, Header);
+      exception
+         when E : ROSIDL.Decode_Error =>
+            RCL.Logging.Warn ("service " & To_String (This.Name)
+                              & ": malformed request dropped: "
+                              & Ada.Exceptions.Exception_Message (E));
+            return;
+      end;
+      This.Callback (Node, Request, Response);
+      if Client_Present (This, RCL.DDS.GUID (Info.Publisher_GID)) then
+         RCL.DDS.Write (This.Replies, ROSIDL.CDR.Encode (Response, Header));
+      end if;
+   end Deliver;
+
+   -----------
+   -- Serve --
+   -----------
+
+   procedure Serve
+     (Node     : in out RCL.Nodes.Node'Class;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   is
+      use ROSIDL.Typesupport;
+      Stored : constant Services.Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      FQ     : constant String := Node.Expand (Name);
+      Id     : constant String :=
+        "serviceid="
+        & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
+      H      : constant RCL.Nodes.Handler_Access := new Service_Handler;
+      S      : Service_Handler renames Service_Handler (H.all);
+   begin
+      S.Support := Support;
+      S.Callback := Stored;
+      S.Name := To_Unbounded_String (FQ);
+      RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
+                      DDS_Type_Name (Response_Support (Support)), QoS, User_Data => Id);
+      Node.Add_Endpoint
+        (Type_Name => DDS_Type_Name (Request_Support (Support)),
+         DDS_Topic => Request_Topic (FQ),
+         Name      => FQ,
+         User_Data => Id,
+         Handle    => H,
+         QoS       => QoS,
+         Added     => S.Requests);
+   end Serve;
+
+end RCL.Services;
