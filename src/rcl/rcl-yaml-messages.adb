@@ -262,8 +262,8 @@ package body RCL.YAML.Messages is
             V    : constant Node := From.Item (N, I);
          begin
             if Field_Index (Def.all, Name) = 0 then
-               Fail (From, V, Full_Name (Def.all) & " has no field '" & Name & "' (fields: "
-                     & Field_Names (Def.all) & ")");
+               raise Parse_Error with From.Key_Where (N, I) & ": " & Full_Name (Def.all)
+                 & " has no field '" & Name & "' (fields: " & Field_Names (Def.all) & ")";
             end if;
             Set_Field (Get (Name), Name, From, V);
          end;

@@ -422,6 +422,7 @@ package body RCL.YAML is
                      V := Flow_Item;
                   end if;
                   D.Nodes (N).Keys.Append (To_Unbounded_String (Key));
+                  D.Nodes (N).Key_At.Append (Position'(K_Line, K_Col));
                   D.Nodes (N).Children.Append (V);
                end;
             end if;
@@ -552,6 +553,7 @@ package body RCL.YAML is
                   V := Inline_Value;
                end if;
                D.Nodes (M).Keys.Append (Key);
+               D.Nodes (M).Key_At.Append (Position'(K_Line, K_Col));
                D.Nodes (M).Children.Append (V);
             end;
             Skip_To_Content;
@@ -702,6 +704,10 @@ package body RCL.YAML is
      (This.Nodes (N).Children (I));
    function Key (This : Document; N : Node; I : Positive) return String is
      (To_String (This.Nodes (N).Keys (I)));
+
+   function Key_Where (This : Document; N : Node; I : Positive) return String is
+     (To_String (This.Source) & ":" & Img (This.Nodes (N).Key_At (I).Line) & ":"
+      & Img (This.Nodes (N).Key_At (I).Column));
 
    function Find (This : Document; N : Node; Key : String) return Natural is
    begin

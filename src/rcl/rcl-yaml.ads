@@ -52,6 +52,9 @@ package RCL.YAML is
    --  The I-th item, or the value of the I-th pair.
    function Key (This : Document; N : Node; I : Positive) return String
      with Pre => Kind (This, N) = Mapping and then I <= Length (This, N);
+   function Key_Where (This : Document; N : Node; I : Positive) return String
+     with Pre => Kind (This, N) = Mapping and then I <= Length (This, N);
+   --  "<source>:<line>:<column>" of the I-th key.
    function Find (This : Document; N : Node; Key : String) return Natural;
    --  The value node of Key in mapping N, 0 when absent.
    function Where (This : Document; N : Node) return String;
@@ -70,6 +73,12 @@ private
    package Index_Vectors is new Ada.Containers.Vectors (Positive, Positive);
    package Key_Vectors is new Ada.Containers.Vectors (Positive, Unbounded_String);
 
+   type Position is record
+      Line, Column : Positive;
+   end record;
+
+   package Position_Vectors is new Ada.Containers.Vectors (Positive, Position);
+
    type Node_Record is record
       Kind     : Node_Kind := Null_Value;
       Text     : Unbounded_String;
@@ -78,6 +87,7 @@ private
       Column   : Positive := 1;
       Children : Index_Vectors.Vector;
       Keys     : Key_Vectors.Vector;
+      Key_At   : Position_Vectors.Vector;
    end record;
 
    package Node_Vectors is new Ada.Containers.Vectors (Positive, Node_Record);

@@ -299,6 +299,16 @@ package body Rclada_Commands is
       end if;
    end Put_Block;
 
+   procedure Put_Lines (Text : String) is
+      --  Text without its trailing empty lines, ending with one line end.
+      Last : Natural := Text'Last;
+   begin
+      while Last >= Text'First and then Text (Last) = LF loop
+         Last := Last - 1;
+      end loop;
+      Put_Line (Text (Text'First .. Last));
+   end Put_Lines;
+
    function Fully_Qualified (Name : String) return String is
      (if Name'Length > 0 and then Name (Name'First) = '/' then Name else "/" & Name);
 
@@ -790,13 +800,13 @@ package body Rclada_Commands is
             Split_Type (Name, Kind, Pkg, Base);
             case Kind is
                when Msg_Part =>
-                  Put (ROSIDL.Definitions.Rendering.Show
+                  Put_Lines (ROSIDL.Definitions.Rendering.Show
                        (ROSIDL.Interfaces.Message (To_String (Pkg), To_String (Base)).all));
                when Srv_Part =>
-                  Put (ROSIDL.Definitions.Rendering.Show
+                  Put_Lines (ROSIDL.Definitions.Rendering.Show
                        (ROSIDL.Interfaces.Service (To_String (Pkg), To_String (Base)).all));
                when Action_Part =>
-                  Put (ROSIDL.Definitions.Rendering.Show
+                  Put_Lines (ROSIDL.Definitions.Rendering.Show
                        (ROSIDL.Interfaces.Action (To_String (Pkg), To_String (Base)).all));
             end case;
          exception
