@@ -442,6 +442,11 @@ package body RCL.YAML is
 
       --  Block collections ------------------------------------------------
 
+      function At_Document_Marker return Boolean is
+        (Col = 1 and then ((Cur = '-' and then Peek (1) = '-' and then Peek (2) = '-')
+                           or else (Cur = '.' and then Peek (1) = '.' and then Peek (2) = '.'))
+         and then Blank_After (3));
+
       function Is_Key_Here return Boolean is
          I : Positive := Pos;
       begin
@@ -557,7 +562,7 @@ package body RCL.YAML is
                D.Nodes (M).Children.Append (V);
             end;
             Skip_To_Content;
-            exit when EOF or else Col < C;
+            exit when EOF or else Col < C or else At_Document_Marker;
             if Col > C then
                Fail ("bad indentation: this line is deeper than the mapping at column"
                      & C'Image & " it would continue");
@@ -641,7 +646,7 @@ package body RCL.YAML is
       D.Root := Parse_Node;
       Skip_To_Content;
       if not EOF then
-         if Cur = '-' and then Peek (1) = '-' and then Peek (2) = '-' then
+         if At_Document_Marker then
             Fail ("only one document is supported");
          end if;
          Fail ("unexpected content (check the indentation)");

@@ -3,6 +3,7 @@ with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
 with RCL.Services.Tests;
+with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 
@@ -21,6 +22,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
+      Result.Add_Test (RCL.YAML.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;
