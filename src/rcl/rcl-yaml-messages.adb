@@ -29,25 +29,7 @@ package body RCL.YAML.Messages is
       if From.Kind (N) /= Scalar or else From.Scalar_Type (N) /= Int_Scalar then
          Fail (From, N, What & ": '" & S & "' is not an integer");
       end if;
-      declare
-         Neg   : constant Boolean := S (S'First) = '-';
-         First : constant Positive := S'First + (if S (S'First) in '+' | '-' then 1 else 0);
-         Base  : Long_Long_Integer := 10;
-         Start : Positive := First;
-         V     : Long_Long_Integer := 0;
-      begin
-         if First + 1 <= S'Last and then S (First) = '0' and then S (First + 1) in 'x' | 'o' then
-            Base := (if S (First + 1) = 'x' then 16 else 8);
-            Start := First + 2;
-         end if;
-         for I in Start .. S'Last loop
-            V := V * Base + (case S (I) is
-                 when '0' .. '9' => Character'Pos (S (I)) - Character'Pos ('0'),
-                 when 'a' .. 'f' => Character'Pos (S (I)) - Character'Pos ('a') + 10,
-                 when others => Character'Pos (S (I)) - Character'Pos ('A') + 10);
-         end loop;
-         return (if Neg then -V else V);
-      end;
+      return RCL.YAML.Integer_Value (S);
    exception
       when Constraint_Error =>
          Fail (From, N, What & ": " & S & " is out of range");
@@ -55,56 +37,14 @@ package body RCL.YAML.Messages is
    end Integer_Value;
 
    function Float_Value (From : Document; N : Node; What : String) return Long_Float is
-      S    : constant String := From.Text (N);
-      Zero : constant Long_Float := Long_Float'Value ("0.0");
-      --  Not static: the divisions below make IEEE infinities and NaN.
+      S : constant String := From.Text (N);
    begin
       if From.Kind (N) /= Scalar
         or else From.Scalar_Type (N) not in Int_Scalar | Float_Scalar
       then
          Fail (From, N, What & ": '" & S & "' is not a number");
       end if;
-      if S in ".inf" | ".Inf" | ".INF" | "+.inf" | "+.Inf" | "+.INF" then
-         return 1.0 / Zero;
-      elsif S in "-.inf" | "-.Inf" | "-.INF" then
-         return -1.0 / Zero;
-      elsif S in ".nan" | ".NaN" | ".NAN" then
-         return Zero / Zero;
-      elsif From.Scalar_Type (N) = Int_Scalar then
-         return Long_Float (Integer_Value (From, N, What));
-      end if;
-      declare
-         --  Ada's 'Value needs digits on both sides of the point.
-         T : String (1 .. 2 * S'Length + 2);
-         L : Natural := 0;
-         procedure Put (C : Character) is
-         begin
-            L := L + 1;
-            T (L) := C;
-         end Put;
-         Seen_Point : Boolean := False;
-      begin
-         for I in S'Range loop
-            if S (I) = '.' then
-               if L = 0 or else T (L) not in '0' .. '9' then
-                  Put ('0');
-               end if;
-               Put ('.');
-               Seen_Point := True;
-               if I = S'Last or else S (I + 1) not in '0' .. '9' then
-                  Put ('0');
-               end if;
-            elsif S (I) in 'e' | 'E' and then not Seen_Point then
-               Put ('.');
-               Put ('0');
-               Put ('e');
-               Seen_Point := True;
-            else
-               Put (S (I));
-            end if;
-         end loop;
-         return Long_Float'Value (T (1 .. L));
-      end;
+      return RCL.YAML.Float_Value (S);
    exception
       when Constraint_Error =>
          Fail (From, N, What & ": " & S & " is not a valid number");

@@ -63,6 +63,12 @@ package RCL.YAML is
    function Classify (Text : String) return Scalar_Kind;
    --  The resolution of a plain scalar Text.
 
+   function Integer_Value (Text : String) return Long_Long_Integer;
+   function Float_Value (Text : String) return Long_Float;
+   --  The value of an Int_Scalar (decimal, 0x hex, 0o octal) / a
+   --  Float_Scalar or Int_Scalar (".inf", ".nan" included); Constraint_Error
+   --  when Text is not of that kind or out of range.
+
    function Image (This : Document; N : Node) return String;
    --  N in flow style ("{a: 1, b: [x, 'y z']}"), for messages and tests.
 
