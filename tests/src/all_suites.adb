@@ -2,6 +2,7 @@ with Harness_Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
+with RCL.Parameters.Tests;
 with RCL.Services.Tests;
 with RCL.YAML.Tests;
 with RCL.Timers.Tests;
@@ -23,6 +24,7 @@ package body All_Suites is
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
+      Result.Add_Test (RCL.Parameters.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       return Result'Access;
