@@ -44,8 +44,8 @@ def new_id():
     return f"{raw[0]:2x}" + "".join(f".{b:x}" for b in raw[1:])
 
 
-def service_qos(user_data):
-    return Qos(Policy.History.KeepLast(10),
+def service_qos(user_data, depth=10):
+    return Qos(Policy.History.KeepLast(depth),
                Policy.Reliability.Reliable(max_blocking_time=10**9),
                Policy.Durability.Volatile,
                Policy.DataRepresentation(use_cdrv0_representation=True),
@@ -55,9 +55,9 @@ def service_qos(user_data):
 class Client:
     """A client of AddTwoInts `name` ("/add_two_ints")."""
 
-    def __init__(self, dp, name="/add_two_ints", with_id=True):
+    def __init__(self, dp, name="/add_two_ints", with_id=True, depth=10):
         self.id = new_id()
-        qos = service_qos(f"clientid={self.id};" if with_id else "")
+        qos = service_qos(f"clientid={self.id};" if with_id else "", depth)
         self.writer = DataWriter(dp, Topic(dp, f"rq{name}Request", AddTwoInts_Request_), qos=qos)
         self.reader = DataReader(dp, Topic(dp, f"rr{name}Reply", AddTwoInts_Response_), qos=qos)
         self.guid = 0x1234_5678_9ABC_DEF0 ^ int.from_bytes(os.urandom(4), "little")
