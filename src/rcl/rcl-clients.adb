@@ -16,6 +16,12 @@ package body RCL.Clients is
    use type RCL.Pending_Calls.Outcome;
    use type RCL.Pending_Calls.Response_Callback;
 
+   Deep_History : constant := 1000;
+   --  The reply reader keeps at least this many replies: many calls in
+   --  flight (tasks, asynchronous calls) must not push replies out of a
+   --  KEEP_LAST history before they are taken. History depth does not
+   --  affect matching.
+
    Slice : constant Duration := 0.05;
    --  Longest single wait of the task reading replies.
 
@@ -48,7 +54,9 @@ package body RCL.Clients is
       RCL.DDS.Create (This.Requests, P.all, RCL.Services.Request_Topic (FQ),
                       DDS_Type_Name (Request_Support (Support)), QoS, User_Data => Id);
       RCL.DDS.Create (This.Replies, P.all, RCL.Services.Reply_Topic (FQ),
-                      DDS_Type_Name (Response_Support (Support)), QoS, User_Data => Id);
+                      DDS_Type_Name (Response_Support (Support)),
+                      (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
+                      User_Data => Id);
       RCL.DDS.Create (This.Waiting, P.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);

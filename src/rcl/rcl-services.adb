@@ -13,6 +13,11 @@ package body RCL.Services is
    use type RCL.DDS.Matching.Key_Lookup;
    use type RCL.DDS.GUID;
 
+   Deep_History : constant := 1000;
+   --  The request reader keeps at least this many requests, so that a burst
+   --  from many clients is not cut by a KEEP_LAST history before the node
+   --  spins (depth does not affect matching).
+
    function Request_Topic (Service_Name : String) return String is
      ("rq" & Service_Name & "Request");
 
@@ -142,7 +147,7 @@ package body RCL.Services is
          Name      => FQ,
          User_Data => Id,
          Handle    => H,
-         QoS       => QoS,
+         QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
          Added     => S.Requests);
    end Serve;
 

@@ -236,19 +236,20 @@ package body RCL.Services.Tests is
       Assert (Failures = 0, Failures'Image & " concurrent calls got a wrong or no response");
 
       --  Asynchronous calls.
-      for I in 1 .. 10 loop
+      for I in 1 .. 100 loop
          Client.Call_Async (Request (ROSIDL.Int64 (I), 0), On_Async'Access, 10.0);
       end loop;
       declare
          Deadline : constant Ada.Real_Time.Time :=
            Ada.Real_Time.Clock + Ada.Real_Time.Seconds (10);
       begin
-         while Async_Results.Count < 10 and Ada.Real_Time.Clock < Deadline loop
+         while Async_Results.Count < 100 and Ada.Real_Time.Clock < Deadline loop
             delay 0.01;
          end loop;
       end;
-      Assert (Async_Results.Count = 10, "ten asynchronous responses:" & Async_Results.Count'Image);
-      Assert (Async_Results.Total = 55, "their sums add up to 55");
+      Assert (Async_Results.Count = 100,
+              "100 asynchronous responses:" & Async_Results.Count'Image);
+      Assert (Async_Results.Total = 5050, "their sums add up to 5050");
       Assert (Client.Pending_Async = 0, "none pending");
 
       --  A missing service times out.

@@ -390,6 +390,9 @@ package body Rclada_Commands is
                      Section ("Publishers", "rt", RCL.Graph.Publisher);
                      Section ("Service Servers", "rq", RCL.Graph.Subscription);
                      Section ("Service Clients", "rq", RCL.Graph.Publisher);
+                     Put_Line ("  Action Servers:");
+                     Put_Line ("  Action Clients:");
+                     --  Actions are not listed yet (no action support in RCL).
                   end;
                end if;
             end loop;
