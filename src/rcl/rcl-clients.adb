@@ -233,7 +233,10 @@ package body RCL.Clients is
       begin
          Send (This, Request, Sequence);
          while not Into.Filled loop
-            if Clock >= Deadline or RCL.Contexts.Is_Shutdown then
+            if RCL.Contexts.Is_Shutdown then
+               raise ROS_Exception with "shut down while waiting for service "
+                 & To_String (This.Name);
+            elsif Clock >= Deadline then
                raise RCL_Timeout with "no response from service " & To_String (This.Name)
                  & " after" & Seconds_Image (Timeout);
             end if;

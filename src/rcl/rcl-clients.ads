@@ -67,7 +67,7 @@ package RCL.Clients is
      with Pre => Is_Open (This);
    --  RCL_Timeout (naming the service) when no response came within
    --  Timeout; ROS_Exception when Request is not of the service's request
-   --  type.
+   --  type, or when the context shuts down (Ctrl-C) during the wait.
 
    procedure Call_Async
      (This     : in out Client;
