@@ -1,11 +1,15 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
+with Ada.Strings.Unbounded;
 with AUnit.Assertions; use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Clients;
+with RCL.Graph;
+with RCL.Publishers;
+with RCL.QoS;
 with RCL.DDS.Matching;
 with RCL.Nodes;
 with RCL.Pending_Calls;
@@ -276,6 +280,44 @@ package body RCL.Services.Tests is
          raise;
    end Calls;
 
+   --  Graph queries on this process's own endpoints -------------------------
+
+   procedure Own_Graph (Unused : in out Fixture) is
+      use Ada.Strings.Unbounded;
+      Node : RCL.Nodes.Node := RCL.Nodes.Init ("graph_test", "/gt");
+      Pub  : constant RCL.Publishers.Publisher :=
+        Node.Publish_Raw ("std_msgs::msg::dds_::String_", "out", RCL.QoS.Sensor_Data);
+      pragma Unreferenced (Pub);
+
+      procedure Adder
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message) is null;
+
+      function Has (List : RCL.Graph.Name_And_Types_Array; Name, Types : String)
+        return Boolean is
+        (for some E of List => E.Name = Name and then E.Types = Types);
+   begin
+      Node.Serve (Add_Support, "graph_add", Adder'Access);
+      RCL.Graph.Wait_For_Discovery (0.2);
+      Assert (RCL.Graph.Count_Publishers ("/gt/out") = 1, "one publisher on /gt/out");
+      Assert (RCL.Graph.Count_Subscribers ("/gt/out") = 0, "no subscriber");
+      Assert (Has (RCL.Graph.Topic_Names_And_Types, "/gt/out", "std_msgs/msg/String"),
+              "topic with its type");
+      Assert (Has (RCL.Graph.Service_Names_And_Types, "/gt/graph_add",
+                   "example_interfaces/srv/AddTwoInts"), "service with its type");
+      Assert (not Has (RCL.Graph.Topic_Names_And_Types, "/gt/graph_add",
+                       "example_interfaces/srv/AddTwoInts"), "services are not topics");
+      declare
+         Info : constant RCL.Graph.Endpoint_Array := RCL.Graph.Publishers_Info ("/gt/out");
+         use type RCL.QoS.Reliability_Policy;
+      begin
+         Assert (Info'Length = 1
+                 and then Info (Info'First).QoS.Reliability = RCL.QoS.Best_Effort
+                 and then Info (Info'First).QoS.Depth = 5, "endpoint QoS (sensor data)");
+      end;
+   end Own_Graph;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
@@ -284,6 +326,7 @@ package body RCL.Services.Tests is
       Result.Add_Test (Caller.Create ("services: client/service ids, USER_DATA", Ids'Access));
       Result.Add_Test (Caller.Create ("services: sync, concurrent, async calls, timeout",
                                       Calls'Access));
+      Result.Add_Test (Caller.Create ("graph: own topics, services, QoS", Own_Graph'Access));
       return Result;
    end Suite;
 
