@@ -239,6 +239,41 @@ package body RCL.Services.Tests is
       Assert (Done = 8, "all workers ended");
       Assert (Failures = 0, Failures'Image & " concurrent calls got a wrong or no response");
 
+      --  Two clients of one service: both readers see every reply of the
+      --  topic, each keeps only its own (request header guid).
+      declare
+         Other      : RCL.Clients.Client;
+         Other_Fail : Natural := 0 with Atomic;
+      begin
+         Other.Init (Client_Node, Add_Support, "adder");
+         Assert (Other.Wait_For_Service (10.0), "second client sees the service");
+         declare
+            task Second;
+            task body Second is
+            begin
+               for I in 1 .. 50 loop
+                  if Sum_Of (Other.Call (Request (ROSIDL.Int64 (I), 1_000), 10.0))
+                    /= ROSIDL.Int64 (I) + 1_000
+                  then
+                     Other_Fail := Other_Fail + 1;
+                  end if;
+               end loop;
+            exception
+               when others =>
+                  Other_Fail := Other_Fail + 100;
+            end Second;
+         begin
+            for I in 1 .. 50 loop
+               if Sum_Of (Client.Call (Request (ROSIDL.Int64 (I), 2_000), 10.0))
+                 /= ROSIDL.Int64 (I) + 2_000
+               then
+                  Count_Lock.Fail;
+               end if;
+            end loop;
+         end;
+         Assert (Other_Fail = 0 and Failures = 0, "each client got its own responses");
+      end;
+
       --  Asynchronous calls.
       for I in 1 .. 100 loop
          Client.Call_Async (Request (ROSIDL.Int64 (I), 0), On_Async'Access, 10.0);
