@@ -1,5 +1,6 @@
 with Ada.Unchecked_Deallocation;
 
+with ROSIDL.CDR;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
@@ -113,6 +114,19 @@ package body RCL.Nodes is
       end return;
    end Publish_Raw;
 
+   -------------
+   -- Publish --
+   -------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
+   begin
+      return This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS);
+   end Publish;
+
    ----------------------
    -- Add_Subscription --
    ----------------------
@@ -153,6 +167,48 @@ package body RCL.Nodes is
    begin
       This.Callback (Node, Data, Info);
    end Deliver;
+
+   type Typed_Callback is access procedure
+     (Node : in out Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info);
+
+   type Typed_Handler is new Handler with record
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Callback : Typed_Callback;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Typed_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+   begin
+      This.Callback (Node, Msg, Info);
+   end Deliver;
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Typed_Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Typed_Handler'(Support => Support, Callback => Stored);
+   begin
+      This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+   exception
+      when others =>
+         Free (H);
+         raise;
+   end Subscribe;
 
    procedure Subscribe_Raw
      (This      : in out Node;

@@ -3,7 +3,9 @@
 --  context's DDS participant (RCL.Contexts).
 --
 --     Node : Nodes.Node := Nodes.Init ("listener", Namespace => "/robot1");
---     Node.Subscribe_Raw ("std_msgs::msg::dds_::String_", "chatter", On_Bytes'Access);
+--     Node.Subscribe
+--       (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
+--        "chatter", Callback'Access);
 --     Node.Spin (During => Forever);  --  until Ctrl-C or Contexts.Shutdown
 --
 --  (RCLAda's slides write Spin (Until => Forever); "until" being an Ada
@@ -11,6 +13,8 @@
 with Ada.Finalization;
 with Ada.Real_Time;
 with ROSIDL;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Publishers;
 with RCL.QoS;
@@ -38,6 +42,30 @@ package RCL.Nodes is
 
    function Expand (This : Node; Topic : String) return String;
    --  The fully qualified topic name (relative, "~", substitutions).
+
+   --  Publish / subscribe --------------------------------------------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher;
+   --  Topic is expanded (relative, "~", substitutions) and validated.
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Each sample is decoded into a message of Support's type and passed to
+   --  Callback by the executor spinning the node. Bytes that do not decode
+   --  are reported (ROSIDL.Decode_Error with the byte offset, logged with
+   --  the topic) and skipped. Callback may be nested in the main subprogram
+   --  (as in the RCLAda slides): it must stay callable while the node exists.
 
    --  Raw (serialized) publish / subscribe ---------------------------------
 
