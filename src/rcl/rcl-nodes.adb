@@ -71,6 +71,7 @@ package body RCL.Nodes is
          return N : Node do
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
+            RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
@@ -110,7 +111,8 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ));
+         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
+                                This.Graph_Id);
       end return;
    end Publish_Raw;
 
@@ -149,6 +151,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS);
       This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
       when others =>
          Free (S);
@@ -318,6 +321,8 @@ package body RCL.Nodes is
       N_Tims : Natural;
       procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
    begin
+      RCL.Graph.Remove_Node (This.Graph_Id);
+      This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop
          Free (Subs (I).Handle);

@@ -16,6 +16,7 @@ with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
@@ -202,6 +203,7 @@ private
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Entities  : Registry;
+      Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;
 
 end RCL.Nodes;

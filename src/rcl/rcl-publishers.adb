@@ -50,11 +50,25 @@ package body RCL.Publishers is
       Topic      : String;
       Type_Name  : String;
       Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String) is
+      DDS_Topic  : String;
+      Node       : RCL.Graph.Node_Id) is
    begin
       RCL.DDS.Create (This.W, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, Profile);
       This.Topic := To_Unbounded_String (Topic);
+      This.Node := Node;
+      RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
    end Create;
+
+   overriding procedure Finalize (This : in out Publisher) is
+   begin
+      if RCL.DDS.Is_Open (This.W) then
+         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.W));
+      end if;
+      This.Node := RCL.Graph.No_Node;
+   exception
+      when others =>
+         null;
+   end Finalize;
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer is
      (This.W'Unchecked_Access);

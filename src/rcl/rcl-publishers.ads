@@ -6,6 +6,7 @@
 with Ada.Finalization;
 with ROSIDL.Dynamic;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
@@ -40,15 +41,19 @@ package RCL.Publishers is
       Topic      : String;
       Type_Name  : String;
       Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String);
+      DDS_Topic  : String;
+      Node       : RCL.Graph.Node_Id);
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer;
+
+   overriding procedure Finalize (This : in out Publisher);
 
 private
 
    type Publisher is new Ada.Finalization.Limited_Controlled with record
       W     : aliased RCL.DDS.Writer;
       Topic : Ada.Strings.Unbounded.Unbounded_String;
+      Node  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;
 
 end RCL.Publishers;
