@@ -439,3 +439,46 @@ dds_return_t sancta_dds_entity_guid (dds_entity_t entity, unsigned char guid[16]
     memcpy (guid, g.v, 16);
   return rc;
 }
+
+/* ------------------------------------------------------------------ */
+/* Participant and domain creation with SIGINT/SIGTERM blocked, so that
+   the threads Cyclone starts inherit a mask that leaves these signals to
+   the Ada runtime's interrupt handling (RCL.Contexts). */
+
+#include <signal.h>
+#include <pthread.h>
+
+static void block_stop_signals (sigset_t *old)
+{
+  sigset_t set;
+  sigemptyset (&set);
+  sigaddset (&set, SIGINT);
+  sigaddset (&set, SIGTERM);
+  pthread_sigmask (SIG_BLOCK, &set, old);
+}
+
+void sancta_block_stop_signals (void)
+{
+  sigset_t old;
+  block_stop_signals (&old);
+}
+
+dds_entity_t sancta_dds_create_participant (dds_domainid_t domain, const dds_qos_t *qos)
+{
+  sigset_t old;
+  dds_entity_t result;
+  block_stop_signals (&old);
+  result = dds_create_participant (domain, qos, NULL);
+  pthread_sigmask (SIG_SETMASK, &old, NULL);
+  return result;
+}
+
+dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config)
+{
+  sigset_t old;
+  dds_entity_t result;
+  block_stop_signals (&old);
+  result = dds_create_domain (domain, config);
+  pthread_sigmask (SIG_SETMASK, &old, NULL);
+  return result;
+}

@@ -60,6 +60,9 @@ package body RCL.Clients is
       RCL.DDS.Create (This.Waiting, P.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);
+      This.Node := Node.Graph_Id;
+      RCL.Graph.Add_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
+      RCL.Graph.Add_Reader (This.Node, RCL.DDS.Endpoint_GUID (This.Replies));
       This.Open := True;
    end Init;
 
@@ -316,7 +319,15 @@ package body RCL.Clients is
          end loop;
          Free (This.Pumper);
       end if;
+      if This.Open then
+         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
+         --  (RCL.Graph has no Remove_Reader: the reply reader stays listed
+         --  until the node goes.)
+      end if;
       This.Open := False;
+   exception
+      when others =>
+         This.Open := False;
    end Finalize;
 
    ------------------------

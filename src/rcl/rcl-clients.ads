@@ -26,6 +26,7 @@ with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
 private with RCL.DDS;
+private with RCL.Graph;
 
 package RCL.Clients is
 
@@ -119,6 +120,8 @@ private
       Handle   : ROSIDL.UInt64 := 0;
       Calls    : RCL.Pending_Calls.Table;
       Pumper   : Pump_Access;
+      Node     : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      --  Where the endpoints are announced (ros_discovery_info).
    end record;
 
 end RCL.Clients;

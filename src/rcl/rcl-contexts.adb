@@ -3,6 +3,7 @@ pragma Unreserve_All_Interrupts;
 
 with Ada.Environment_Variables;
 with Ada.Interrupts.Names;
+with Ada.Real_Time;
 with GNAT.OS_Lib;
 
 package body RCL.Contexts is
@@ -86,6 +87,7 @@ package body RCL.Contexts is
    procedure Init is
       P : Participant_Access;
    begin
+      Install_Signal_Handlers;
       State.Init (P);
    end Init;
 
@@ -129,17 +131,27 @@ package body RCL.Contexts is
       procedure Installed (Done : out Boolean);
    private
       Count : Natural := 0;
+      First : Ada.Real_Time.Time;
       Is_Installed : Boolean := False;
    end Signals;
 
    protected body Signals is
       procedure Handle is
          pragma Warnings (Off, "potentially blocking operation");
+         use type Ada.Real_Time.Time;
+         use type Ada.Real_Time.Time_Span;
+         Now : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
       begin
          Count := Count + 1;
          if Count > 1 then
-            GNAT.OS_Lib.OS_Exit (130);
+            --  A repeated signal (tools such as timeout send two at once):
+            --  exit at once only when it comes after a second.
+            if Now - First > Ada.Real_Time.Seconds (1) then
+               GNAT.OS_Lib.OS_Exit (130);
+            end if;
+            return;
          end if;
+         First := Now;
          --  Runs in GNAT's interrupt server task, not in signal context:
          --  waking the waitsets (a mutex and a condition variable) is safe.
          Shutdown;
@@ -153,12 +165,19 @@ package body RCL.Contexts is
    end Signals;
 
    procedure Install_Signal_Handlers is
+      procedure Block_Stop_Signals
+        with Import, Convention => C, External_Name => "sancta_block_stop_signals";
       Done : Boolean;
    begin
       Signals.Installed (Done);
       if not Done then
          Ada.Interrupts.Attach_Handler (Signals.Handle'Access, Ada.Interrupts.Names.SIGINT);
          Ada.Interrupts.Attach_Handler (Signals.Handle'Access, Ada.Interrupts.Names.SIGTERM);
+         --  The runtime takes the signals with sigwait: they must be
+         --  blocked in every thread, including this one (usually the
+         --  environment task); Cyclone's threads are started with them
+         --  blocked (see csrc).
+         Block_Stop_Signals;
       end if;
    exception
       when Program_Error =>

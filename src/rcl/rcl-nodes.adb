@@ -1,5 +1,6 @@
 with Ada.Unchecked_Deallocation;
 
+with ROSIDL.CDR;
 with RCL.Clients;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
@@ -72,12 +73,15 @@ package body RCL.Nodes is
          return N : Node do
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
+            RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
          end return;
       end;
    end Init;
+
+   function Graph_Id (This : Node) return RCL.Graph.Node_Id is (This.Graph_Id);
 
    function Name (This : Node) return String is (To_String (This.Name));
    function Namespace (This : Node) return String is (To_String (This.Namespace));
@@ -111,9 +115,23 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ));
+         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
+                                This.Graph_Id);
       end return;
    end Publish_Raw;
+
+   -------------
+   -- Publish --
+   -------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
+   begin
+      return This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS);
+   end Publish;
 
    ----------------------
    -- Add_Subscription --
@@ -137,6 +155,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS);
       This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
       when others =>
          Free (S);
@@ -160,6 +179,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
                       User_Data => User_Data);
       This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
       Added := S;
    exception
       when others =>
@@ -206,6 +226,48 @@ package body RCL.Nodes is
    begin
       This.Callback (Node, Data, Info);
    end Deliver;
+
+   type Typed_Callback is access procedure
+     (Node : in out Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info);
+
+   type Typed_Handler is new Handler with record
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Callback : Typed_Callback;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Typed_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+   begin
+      This.Callback (Node, Msg, Info);
+   end Deliver;
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Typed_Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Typed_Handler'(Support => Support, Callback => Stored);
+   begin
+      This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+   exception
+      when others =>
+         Free (H);
+         raise;
+   end Subscribe;
 
    procedure Subscribe_Raw
      (This      : in out Node;
@@ -315,6 +377,8 @@ package body RCL.Nodes is
       N_Tims : Natural;
       procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
    begin
+      RCL.Graph.Remove_Node (This.Graph_Id);
+      This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop
          Free (Subs (I).Handle);

@@ -3,7 +3,9 @@
 --  context's DDS participant (RCL.Contexts).
 --
 --     Node : Nodes.Node := Nodes.Init ("listener", Namespace => "/robot1");
---     Node.Subscribe_Raw ("std_msgs::msg::dds_::String_", "chatter", On_Bytes'Access);
+--     Node.Subscribe
+--       (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
+--        "chatter", Callback'Access);
 --     Node.Spin (During => Forever);  --  until Ctrl-C or Contexts.Shutdown
 --
 --  (RCLAda's slides write Spin (Until => Forever); "until" being an Ada
@@ -14,6 +16,7 @@ with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
@@ -40,6 +43,30 @@ package RCL.Nodes is
 
    function Expand (This : Node; Topic : String) return String;
    --  The fully qualified topic name (relative, "~", substitutions).
+
+   --  Publish / subscribe --------------------------------------------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher;
+   --  Topic is expanded (relative, "~", substitutions) and validated.
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Each sample is decoded into a message of Support's type and passed to
+   --  Callback by the executor spinning the node. Bytes that do not decode
+   --  are reported (ROSIDL.Decode_Error with the byte offset, logged with
+   --  the topic) and skipped. Callback may be nested in the main subprogram
+   --  (as in the RCLAda slides): it must stay callable while the node exists.
 
    --  Raw (serialized) publish / subscribe ---------------------------------
 
@@ -151,6 +178,9 @@ package RCL.Nodes is
    Max_Subscriptions : constant := 64;
    Max_Timers        : constant := 64;
 
+   function Graph_Id (This : Node) return RCL.Graph.Node_Id;
+   --  For endpoints made outside this package (services, clients).
+
    function Version (This : Node) return Natural;
    --  Changes whenever a subscription or timer is added.
    function Subscription_Count (This : Node) return Natural;
@@ -212,6 +242,7 @@ private
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Entities  : Registry;
+      Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;
 
 end RCL.Nodes;

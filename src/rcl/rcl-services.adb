@@ -4,6 +4,7 @@ with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
 with RCL.Contexts;
 with RCL.DDS.Matching;
+with RCL.Graph;
 with RCL.Logging;
 
 package body RCL.Services is
@@ -141,6 +142,7 @@ package body RCL.Services is
       S.Name := To_Unbounded_String (FQ);
       RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
                       DDS_Type_Name (Response_Support (Support)), QoS, User_Data => Id);
+      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
       Node.Add_Endpoint
         (Type_Name => DDS_Type_Name (Request_Support (Support)),
          DDS_Topic => Request_Topic (FQ),

@@ -216,7 +216,7 @@ package body RCL.DDS is
       This.Domain := Dom;
       Q := Thin.Create_Qos;
       Thin.Qset_Userdata (Q, User_Data'Address, User_Data'Length);
-      Result := Thin.Create_Participant (Thin.Domain_Id_T (Domain), Q, System.Null_Address);
+      Result := Thin.Create_Participant (Thin.Domain_Id_T (Domain), Q);
       Thin.Delete_Qos (Q);
       if Result < 0 then
          This.Finalize;
@@ -511,6 +511,10 @@ package body RCL.DDS is
    begin
       Check (Integer (Result), "creating a waitset");
       This.Handle := Entity_Id (Result);
+      --  Attached to itself (key 0, never reported) so that Wake, which sets
+      --  its trigger, ends a Wait.
+      Check (Integer (Thin.Waitset_Attach (Result, Result, 0)),
+             "attaching a waitset to itself");
    end Create;
 
    function Is_Open (This : Waitset) return Boolean is (This.Handle > 0);

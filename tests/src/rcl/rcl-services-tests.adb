@@ -7,7 +7,7 @@ with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Clients;
-with RCL.Graph;
+with RCL.Graph.Queries;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.DDS.Matching;
@@ -21,6 +21,8 @@ package body RCL.Services.Tests is
    use type RCL.Pending_Calls.Response_Callback;
    use type Ada.Real_Time.Time;
    use type Ada.Real_Time.Time_Span;
+
+   package Graph renames RCL.Graph.Queries;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
    package Caller is new AUnit.Test_Caller (Fixture);
@@ -329,22 +331,22 @@ package body RCL.Services.Tests is
          Request  : ROSIDL.Dynamic.Message;
          Response : in out ROSIDL.Dynamic.Message) is null;
 
-      function Has (List : RCL.Graph.Name_And_Types_Array; Name, Types : String)
+      function Has (List : Graph.Name_And_Types_Array; Name, Types : String)
         return Boolean is
         (for some E of List => E.Name = Name and then E.Types = Types);
    begin
       Node.Serve (Add_Support, "graph_add", Adder'Access);
-      RCL.Graph.Wait_For_Discovery (0.2);
-      Assert (RCL.Graph.Count_Publishers ("/gt/out") = 1, "one publisher on /gt/out");
-      Assert (RCL.Graph.Count_Subscribers ("/gt/out") = 0, "no subscriber");
-      Assert (Has (RCL.Graph.Topic_Names_And_Types, "/gt/out", "std_msgs/msg/String"),
+      Graph.Wait_For_Discovery (0.2);
+      Assert (Graph.Count_Publishers ("/gt/out") = 1, "one publisher on /gt/out");
+      Assert (Graph.Count_Subscribers ("/gt/out") = 0, "no subscriber");
+      Assert (Has (Graph.Topic_Names_And_Types, "/gt/out", "std_msgs/msg/String"),
               "topic with its type");
-      Assert (Has (RCL.Graph.Service_Names_And_Types, "/gt/graph_add",
+      Assert (Has (Graph.Service_Names_And_Types, "/gt/graph_add",
                    "example_interfaces/srv/AddTwoInts"), "service with its type");
-      Assert (not Has (RCL.Graph.Topic_Names_And_Types, "/gt/graph_add",
+      Assert (not Has (Graph.Topic_Names_And_Types, "/gt/graph_add",
                        "example_interfaces/srv/AddTwoInts"), "services are not topics");
       declare
-         Info : constant RCL.Graph.Endpoint_Array := RCL.Graph.Publishers_Info ("/gt/out");
+         Info : constant Graph.Endpoint_Array := Graph.Publishers_Info ("/gt/out");
          use type RCL.QoS.Reliability_Policy;
       begin
          Assert (Info'Length = 1

@@ -7,7 +7,7 @@ with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
-with RCL.Graph;
+with RCL.Graph.Queries;
 with RCL.YAML.Messages;
 
 package body RCL.YAML.Tests is
@@ -184,7 +184,7 @@ package body RCL.YAML.Tests is
    end Messages_From_YAML;
 
    procedure Mangling (Unused : in out Fixture) is
-      use RCL.Graph;
+      use RCL.Graph.Queries;
       K : Name_Kind;
       N : Unbounded_String;
    begin
@@ -210,7 +210,7 @@ package body RCL.YAML.Tests is
 
    procedure Discovery_Info (Unused : in out Fixture) is
       use Ada.Streams;
-      use RCL.Graph;
+      use RCL.Graph.Queries;
       --  One participant, one node "/ns" "n" with one reader and no writer,
       --  little-endian, 24-byte gids.
       Data : Stream_Element_Array (1 .. 4 + 24 + 4 + 4 + 4 + 4 + 2 + 2 + 4 + 24 + 4) :=

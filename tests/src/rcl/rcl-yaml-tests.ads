@@ -1,5 +1,5 @@
 --  Tests of RCL.YAML (the YAML subset and its positioned errors),
---  RCL.YAML.Messages (dynamic messages from YAML) and RCL.Graph's pure
+--  RCL.YAML.Messages (dynamic messages from YAML) and RCL.Graph.Queries' pure
 --  parts (name mangling, ros_discovery_info decoding).
 with AUnit.Test_Suites;
 

@@ -13,7 +13,7 @@ with ROSIDL.Typesupport;
 with RCL.Clients;
 with RCL.Contexts;
 with RCL.DDS;
-with RCL.Graph;
+with RCL.Graph.Queries;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
@@ -25,6 +25,8 @@ package body Rclada_Commands is
    use Ada.Strings.Unbounded;
    use Ada.Text_IO;
    use type Ada.Real_Time.Time;
+
+   package Graph renames RCL.Graph.Queries;
 
    LF : constant Character := Ada.Characters.Latin_1.LF;
 
@@ -150,7 +152,7 @@ package body Rclada_Commands is
 
    procedure Discover (Args : Arguments) is
    begin
-      RCL.Graph.Wait_For_Discovery (Duration (Number_Option (Args, "--spin-time", "1.0")));
+      Graph.Wait_For_Discovery (Duration (Number_Option (Args, "--spin-time", "1.0")));
    end Discover;
 
    function Tool_Node return RCL.Nodes.Node is
@@ -356,8 +358,8 @@ package body Rclada_Commands is
          raise Usage_Error with "missing sub-command (list, info)";
       elsif Pos (1) = "list" then
          Discover (Args);
-         for N of RCL.Graph.Node_Names loop
-            Put_Line (RCL.Graph.Fully_Qualified (N));
+         for N of Graph.Node_Names loop
+            Put_Line (Graph.Fully_Qualified (N));
          end loop;
       elsif Pos (1) = "info" then
          if Natural (Pos.Length) /= 2 then
@@ -368,13 +370,13 @@ package body Rclada_Commands is
             Wanted : constant String := Fully_Qualified (Pos (2));
             Found  : Boolean := False;
          begin
-            for N of RCL.Graph.Node_Names loop
-               if RCL.Graph.Fully_Qualified (N) = Wanted then
+            for N of Graph.Node_Names loop
+               if Graph.Fully_Qualified (N) = Wanted then
                   Found := True;
                   declare
-                     E : constant RCL.Graph.Endpoint_Array := RCL.Graph.Node_Endpoints (N);
-                     procedure Section (Title, Prefix : String; Kind : RCL.Graph.Endpoint_Kind) is
-                        use type RCL.Graph.Endpoint_Kind;
+                     E : constant Graph.Endpoint_Array := Graph.Node_Endpoints (N);
+                     procedure Section (Title, Prefix : String; Kind : Graph.Endpoint_Kind) is
+                        use type Graph.Endpoint_Kind;
                      begin
                         Put_Line ("  " & Title & ":");
                         for X of E loop
@@ -386,10 +388,10 @@ package body Rclada_Commands is
                      end Section;
                   begin
                      Put_Line (Wanted);
-                     Section ("Subscribers", "rt", RCL.Graph.Subscription);
-                     Section ("Publishers", "rt", RCL.Graph.Publisher);
-                     Section ("Service Servers", "rq", RCL.Graph.Subscription);
-                     Section ("Service Clients", "rq", RCL.Graph.Publisher);
+                     Section ("Subscribers", "rt", Graph.Subscription);
+                     Section ("Publishers", "rt", Graph.Publisher);
+                     Section ("Service Servers", "rq", Graph.Subscription);
+                     Section ("Service Clients", "rq", Graph.Publisher);
                      Put_Line ("  Action Servers:");
                      Put_Line ("  Action Clients:");
                      --  Actions are not listed yet (no action support in RCL).
@@ -415,7 +417,7 @@ package body Rclada_Commands is
       Discover (Args);
       for Attempt in 1 .. 20 loop
          declare
-            P : constant RCL.Graph.Endpoint_Array := RCL.Graph.Publishers_Info (Topic);
+            P : constant Graph.Endpoint_Array := Graph.Publishers_Info (Topic);
          begin
             if P'Length > 0 then
                return To_String (P (P'First).Type_Name);
@@ -431,7 +433,7 @@ package body Rclada_Commands is
       Types : constant Boolean := Has_Flag (Args, "-t", "--show-types");
    begin
       Discover (Args);
-      for T of RCL.Graph.Topic_Names_And_Types loop
+      for T of Graph.Topic_Names_And_Types loop
          if Types then
             Put_Line (To_String (T.Name) & " [" & To_String (T.Types) & "]");
          else
@@ -471,11 +473,11 @@ package body Rclada_Commands is
    begin
       Discover (Args);
       declare
-         Pubs : constant RCL.Graph.Endpoint_Array := RCL.Graph.Publishers_Info (Topic);
-         Subs : constant RCL.Graph.Endpoint_Array := RCL.Graph.Subscriptions_Info (Topic);
+         Pubs : constant Graph.Endpoint_Array := Graph.Publishers_Info (Topic);
+         Subs : constant Graph.Endpoint_Array := Graph.Subscriptions_Info (Topic);
          Type_Name : Unbounded_String;
 
-         procedure Show (E : RCL.Graph.Endpoint_Array; Kind : String) is
+         procedure Show (E : Graph.Endpoint_Array; Kind : String) is
          begin
             for X of E loop
                Put_Line ("Node name: " & To_String (X.Node.Name));
@@ -728,7 +730,7 @@ package body Rclada_Commands is
       elsif Pos (1) = "list" then
          Check_Options (Args, "-t --show-types --spin-time");
          Discover (Args);
-         for S of RCL.Graph.Service_Names_And_Types loop
+         for S of Graph.Service_Names_And_Types loop
             if Has_Flag (Args, "-t", "--show-types") then
                Put_Line (To_String (S.Name) & " [" & To_String (S.Types) & "]");
             else
