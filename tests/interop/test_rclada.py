@@ -52,6 +52,17 @@ def rclada(*args, timeout=30):
     return p.returncode, p.stdout, p.stderr
 
 
+def rclada_until(check, *args, attempts=5):
+    """Runs rclada until check(rc, out, err) holds (discovery is eventually
+    consistent, and slow on a loaded machine); returns the last result."""
+    for _ in range(attempts):
+        result = rclada(*args)
+        if check(*result):
+            return result
+        time.sleep(0.5)
+    return result
+
+
 def gid(guid_bytes):
     return Gid_(data=list(guid_bytes) + [0] * 8)
 
@@ -75,7 +86,8 @@ def test_python_endpoints_in_topic_list():
     dp = ps.participant()
     wr = ps.writer(dp, "rt/py_topic", String_)
     rd = ps.reader(dp, "rt/py_sub/inner", String_)
-    rc, out, err = rclada("topic", "list", "-t")
+    rc, out, err = rclada_until(lambda rc, out, err: "/py_sub/inner" in out.split(),
+                                "topic", "list", "-t")
     assert rc == 0, err
     assert "/py_topic [std_msgs/msg/String]" in out.splitlines(), out
     assert "/py_sub/inner [std_msgs/msg/String]" in out.splitlines(), out
@@ -91,14 +103,15 @@ def test_python_endpoints_in_topic_list():
 def test_peer_leaving_disappears_from_list():
     dp = ps.participant()
     wr = ps.writer(dp, "rt/short_lived", String_)
-    rc, out, _ = rclada("topic", "list")
+    rc, out, _ = rclada_until(lambda rc, out, err: "/short_lived" in out.split(),
+                              "topic", "list")
     assert "/short_lived" in out.splitlines(), out
     del wr
     dp = None  # noqa: F841  (the participant goes: its endpoints are disposed)
     import gc
     gc.collect()
-    time.sleep(0.5)
-    rc, out, _ = rclada("topic", "list")
+    rc, out, _ = rclada_until(lambda rc, out, err: "/short_lived" not in out.split(),
+                              "topic", "list")
     assert "/short_lived" not in out.splitlines(), out
 
 
@@ -107,7 +120,8 @@ def test_node_list_and_info_from_discovery_info():
     wr = ps.writer(dp, "rt/py_node_out", String_)
     rd = ps.reader(dp, "rt/py_node_in", String_)
     ann = announce(dp, "/py", "py_node", readers=[rd], writers=[wr])
-    rc, out, err = rclada("node", "list")
+    rc, out, err = rclada_until(lambda rc, out, err: "/py/py_node" in out.split(),
+                                "node", "list")
     assert rc == 0, err
     assert "/py/py_node" in out.splitlines(), out
     rc, out, err = rclada("node", "info", "/py/py_node")
@@ -125,7 +139,16 @@ def test_node_list_and_info_from_discovery_info():
 def test_service_list_and_call():
     ada = ps.start("server")
     try:
-        rc, out, err = rclada("service", "list", "-t")
+        rc, out, err = rclada_until(lambda rc, out, err: "/add_two_ints_server" in out.split(),
+                                    "node", "list")
+        assert rc == 0 and "/add_two_ints_server" in out.splitlines(), (out, err)
+        rc, out, err = rclada("node", "info", "/add_two_ints_server")
+        assert rc == 0, err
+        lines = out.splitlines()
+        assert "    /add_two_ints: example_interfaces/srv/AddTwoInts" in \
+            lines[lines.index("  Service Servers:"):lines.index("  Service Clients:")], out
+        rc, out, err = rclada_until(lambda rc, out, err: "/add_two_ints" in out.split(),
+                                    "service", "list", "-t")
         assert rc == 0, err
         assert "/add_two_ints [example_interfaces/srv/AddTwoInts]" in out.splitlines(), out
         rc, out, err = rclada("service", "call", "/add_two_ints",

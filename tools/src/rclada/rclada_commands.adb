@@ -37,7 +37,7 @@ package body Rclada_Commands is
    function Usage (Verb : String) return String is
    begin
       if Verb = "node" then
-         return "usage: rclada node list [--spin-time S]" & LF
+         return "usage: rclada node list [-a|--all] [--spin-time S]" & LF
            & "       rclada node info NODE_NAME [--spin-time S]" & LF
            & "  list: the fully qualified names of the nodes on the network" & LF
            & "  info: a node's publishers, subscribers, service servers and clients";
@@ -359,7 +359,11 @@ package body Rclada_Commands is
       elsif Pos (1) = "list" then
          Discover (Args);
          for N of Graph.Node_Names loop
-            Put_Line (Graph.Fully_Qualified (N));
+            --  Hidden nodes (name starting with '_', like this tool's own)
+            --  only with --all, as ros2 node list does.
+            if Has_Flag (Args, "-a", "--all") or else Element (N.Name, 1) /= '_' then
+               Put_Line (Graph.Fully_Qualified (N));
+            end if;
          end loop;
       elsif Pos (1) = "info" then
          if Natural (Pos.Length) /= 2 then
@@ -415,7 +419,7 @@ package body Rclada_Commands is
       --  The type of Topic's publishers (after discovery).
    begin
       Discover (Args);
-      for Attempt in 1 .. 20 loop
+      for Attempt in 1 .. 50 loop
          declare
             P : constant Graph.Endpoint_Array := Graph.Publishers_Info (Topic);
          begin
