@@ -5,6 +5,7 @@ with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
+with RCL.Rosout;
 
 package body RCL.Nodes is
 
@@ -72,6 +73,7 @@ package body RCL.Nodes is
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
             RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
+            RCL.Rosout.Enable;
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
