@@ -1,6 +1,7 @@
 with Ada.Unchecked_Deallocation;
 
 with ROSIDL.CDR;
+with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
@@ -63,6 +64,8 @@ package body RCL.Nodes is
    ----------
 
    function Init (Name : String; Namespace : String := "/") return Node is
+      Sim_Time : constant Boolean :=
+        RCL.Clocks.Sim_Time_Requested and then not RCL.Clocks.Sim_Time_Enabled;
    begin
       RCL.Names.Validate_Node_Name (Name);
       declare
@@ -74,6 +77,9 @@ package body RCL.Nodes is
             N.Namespace := To_Unbounded_String (NS);
             RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
             RCL.Rosout.Enable;
+            if Sim_Time then
+               RCL.Clocks.Enable_Sim_Time (N);
+            end if;
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
