@@ -12,6 +12,12 @@ package body RCL.Nodes is
 
    use type Ada.Real_Time.Time;
 
+   type Spinner is record
+      E : RCL.Executors.Sequential.Executor (Max_Nodes => 1);
+   end record;
+
+   procedure Free is new Ada.Unchecked_Deallocation (Spinner, Spinner_Access);
+
    --------------
    -- Registry --
    --------------
@@ -134,7 +140,11 @@ package body RCL.Nodes is
       Topic   : String;
       QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
    begin
-      return This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS);
+      return P : RCL.Publishers.Publisher :=
+        This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS)
+      do
+         RCL.Publishers.Set_Support (P, Support);
+      end return;
    end Publish;
 
    ----------------------
@@ -184,9 +194,33 @@ package body RCL.Nodes is
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info);
 
+   --  One decoded message kept per subscription and reused (no allocation
+   --  per sample); a concurrent delivery that finds it taken decodes into a
+   --  fresh one.
+   protected type Cache_Lock is
+      procedure Try (Got : out Boolean);
+      procedure Release;
+   private
+      Taken : Boolean := False;
+   end Cache_Lock;
+
+   protected body Cache_Lock is
+      procedure Try (Got : out Boolean) is
+      begin
+         Got := not Taken;
+         Taken := True;
+      end Try;
+      procedure Release is
+      begin
+         Taken := False;
+      end Release;
+   end Cache_Lock;
+
    type Typed_Handler is new Handler with record
       Support  : ROSIDL.Typesupport.Message_Support;
       Callback : Typed_Callback;
+      Cached   : ROSIDL.Dynamic.Message;
+      Lock     : Cache_Lock;
    end record;
 
    overriding procedure Deliver
@@ -195,9 +229,29 @@ package body RCL.Nodes is
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
    is
-      Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+      Got : Boolean;
    begin
-      This.Callback (Node, Msg, Info);
+      This.Lock.Try (Got);
+      if Got then
+         begin
+            if not ROSIDL.Dynamic.Is_Initialised (This.Cached) then
+               This.Cached := ROSIDL.Dynamic.Init (This.Support);
+            end if;
+            ROSIDL.CDR.Decode (Data, This.Cached);
+            This.Callback (Node, This.Cached, Info);
+         exception
+            when others =>
+               This.Lock.Release;
+               raise;
+         end;
+         This.Lock.Release;
+      else
+         declare
+            Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+         begin
+            This.Callback (Node, Msg, Info);
+         end;
+      end if;
    end Deliver;
 
    procedure Subscribe
@@ -212,13 +266,17 @@ package body RCL.Nodes is
    is
       Stored : constant Typed_Callback with Import, Address => Callback'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      H : Handler_Access := new Typed_Handler'(Support => Support, Callback => Stored);
+      H : Handler_Access := new Typed_Handler;
    begin
-      This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
-   exception
-      when others =>
-         Free (H);
-         raise;
+      Typed_Handler (H.all).Support := Support;
+      Typed_Handler (H.all).Callback := Stored;
+      begin
+         This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+      exception
+         when others =>
+            Free (H);
+            raise;
+      end;
    end Subscribe;
 
    procedure Subscribe_Raw
@@ -285,10 +343,12 @@ package body RCL.Nodes is
       During : Duration := Forever;
       Once   : Boolean := False)
    is
-      E : RCL.Executors.Sequential.Executor;
    begin
-      E.Add (This);
-      E.Spin (During => During, Once => Once);
+      if This.Spin_Exec = null then
+         This.Spin_Exec := new Spinner;
+         This.Spin_Exec.E.Add (This);
+      end if;
+      This.Spin_Exec.E.Spin (During => During, Once => Once);
    end Spin;
 
    ---------------------
@@ -329,6 +389,8 @@ package body RCL.Nodes is
       N_Tims : Natural;
       procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
    begin
+      Free (This.Spin_Exec);
+      --  Before the subscriptions: it detaches their readers.
       RCL.Graph.Remove_Node (This.Graph_Id);
       This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
