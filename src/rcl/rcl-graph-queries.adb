@@ -366,7 +366,8 @@ package body RCL.Graph.Queries is
       function Seconds (T : RCL.DDS.Time_Ns) return Duration is
         (if T = RCL.DDS.Time_Ns'Last or else T <= 0 then 0.0
          elsif T > 1_000_000_000 * 86_400 then 86_400.0
-         else Duration (T) / 1_000_000_000);
+         else Duration (T / 1_000_000_000) + Duration (T mod 1_000_000_000) / 1_000_000_000);
+      --  Whole seconds first: Duration (T) would overflow beyond ~9.2e9 ns.
    begin
       return P : Profile do
          P.History := (case E.History is when 0 => Keep_Last, when 1 => Keep_All,

@@ -238,7 +238,13 @@ private
       N_Tim  : Natural := 0;
    end Registry;
 
+   type Spinner;
+   type Spinner_Access is access Spinner;
+   --  The sequential executor of Node.Spin, made by the first Spin and
+   --  reused (completed in the body).
+
    type Node is new Ada.Finalization.Limited_Controlled with record
+      Spin_Exec : Spinner_Access;
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Entities  : Registry;

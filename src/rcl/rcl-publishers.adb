@@ -1,6 +1,5 @@
 with Ada.Streams;
 with ROSIDL.CDR;
-with ROSIDL.Typesupport;
 with RCL.Contexts;
 
 package body RCL.Publishers is
@@ -19,8 +18,11 @@ package body RCL.Publishers is
       use type Ada.Streams.Stream_Element_Offset;
    begin
       if not ROSIDL.Dynamic.Is_Initialised (Msg)
-        or else ROSIDL.Typesupport.DDS_Type_Name (ROSIDL.Dynamic.Support (Msg))
-                /= Type_Name (This)
+        or else not ((This.Typed
+                      and then ROSIDL.Typesupport."=" (ROSIDL.Dynamic.Support (Msg),
+                                                       This.Support))
+                     or else ROSIDL.Typesupport.DDS_Type_Name (ROSIDL.Dynamic.Support (Msg))
+                             = Type_Name (This))
       then
          raise ROS_Exception with "publishing on " & Topic (This) & ": a "
            & ROSIDL.Dynamic.Type_Name (Msg) & " message, the topic has type "
@@ -58,6 +60,13 @@ package body RCL.Publishers is
       This.Node := Node;
       RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
    end Create;
+
+   procedure Set_Support
+     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support) is
+   begin
+      This.Support := Support;
+      This.Typed := True;
+   end Set_Support;
 
    overriding procedure Finalize (This : in out Publisher) is
    begin

@@ -5,6 +5,7 @@
 --     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header
 with Ada.Finalization;
 with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Graph;
 with RCL.QoS;
@@ -46,6 +47,10 @@ package RCL.Publishers is
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer;
 
+   procedure Set_Support
+     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support);
+   --  The message type of a typed publisher (a cheaper check in Publish).
+
    overriding procedure Finalize (This : in out Publisher);
 
 private
@@ -54,6 +59,8 @@ private
       W     : aliased RCL.DDS.Writer;
       Topic : Ada.Strings.Unbounded.Unbounded_String;
       Node  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Typed : Boolean := False;
+      Support : ROSIDL.Typesupport.Message_Support;
    end record;
 
 end RCL.Publishers;

@@ -1,4 +1,5 @@
 with Harness_Tests;
+with RCL.Clocks.Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
@@ -21,6 +22,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Logging.Tests.Suite);
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
+      Result.Add_Test (RCL.Clocks.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);

@@ -353,6 +353,15 @@ package body RCL.Services.Tests is
                  and then Info (Info'First).QoS.Reliability = RCL.QoS.Best_Effort
                  and then Info (Info'First).QoS.Depth = 5, "endpoint QoS (sensor data)");
       end;
+      declare
+         Rosout : constant Graph.Endpoint_Array := Graph.Publishers_Info ("/rosout");
+         use type RCL.QoS.Durability_Policy;
+      begin
+         Assert (Rosout'Length >= 1, "this process publishes /rosout");
+         Assert (Rosout (Rosout'First).QoS.Lifespan = 10.0
+                 and then Rosout (Rosout'First).QoS.Durability = RCL.QoS.Transient_Local,
+                 "rosout QoS: lifespan 10 s, transient local");
+      end;
    end Own_Graph;
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
