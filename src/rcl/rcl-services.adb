@@ -1,4 +1,5 @@
 with Ada.Calendar;
+with Ada.Containers.Ordered_Sets;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
@@ -25,6 +26,27 @@ package body RCL.Services is
    function Reply_Topic (Service_Name : String) return String is
      ("rr" & Service_Name & "Reply");
 
+   function "<" (L, R : RCL.DDS.GUID) return Boolean is
+     (RCL.DDS.Image (L) < RCL.DDS.Image (R));
+
+   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", RCL.DDS."=");
+
+   protected type GUID_Set is
+      --  Deliver may run in several executor tasks at once.
+      function Contains (G : RCL.DDS.GUID) return Boolean;
+      procedure Include (G : RCL.DDS.GUID);
+   private
+      Set : GUID_Sets.Set;
+   end GUID_Set;
+
+   protected body GUID_Set is
+      function Contains (G : RCL.DDS.GUID) return Boolean is (Set.Contains (G));
+      procedure Include (G : RCL.DDS.GUID) is
+      begin
+         Set.Include (G);
+      end Include;
+   end GUID_Set;
+
    type Service_Handler is new RCL.Nodes.Handler with record
       Support  : ROSIDL.Typesupport.Service_Support;
       Callback : Services.Callback;
@@ -32,6 +54,10 @@ package body RCL.Services is
       Replies  : RCL.DDS.Writer;
       Requests : RCL.Nodes.Subscription_Access;
       --  The node's subscription holding the request reader.
+      Ready    : GUID_Set;
+      --  Request writers whose client's reply reader is known to be
+      --  matched: their replies are written without checking again (a
+      --  reply to a client gone meanwhile is harmless).
    end record;
 
    overriding procedure Deliver
@@ -45,7 +71,7 @@ package body RCL.Services is
    --------------------
 
    function Client_Present
-     (This : Service_Handler; Requester : RCL.DDS.GUID) return Boolean
+     (This : in out Service_Handler; Requester : RCL.DDS.GUID) return Boolean
    --  rmw_cyclonedds's check_for_response_reader, waiting up to
    --  Reply_Match_Wait: True when the reply may be written.
    is
@@ -55,6 +81,8 @@ package body RCL.Services is
    begin
       if Requester = RCL.DDS.Null_GUID then
          return True;  --  Writer unknown to the reader's cache: answer anyway.
+      elsif This.Ready.Contains (Requester) then
+         return True;
       end if;
       loop
          RCL.DDS.Matching.Writer_Key
@@ -68,6 +96,7 @@ package body RCL.Services is
                if RCL.DDS.Matching.Has_Matched_Reader
                     (This.Replies, "clientid", To_String (Id))
                then
+                  This.Ready.Include (Requester);
                   return True;
                end if;
          end case;
