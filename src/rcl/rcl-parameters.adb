@@ -116,6 +116,71 @@ package body RCL.Parameters is
       return To_String (R);
    end Image;
 
+   ----------------
+   -- YAML_Image --
+   ----------------
+
+   function YAML_Image (V : Value) return String is
+      function Quote (S : String) return String is
+         R : Unbounded_String := To_Unbounded_String ("'");
+      begin
+         for C of S loop
+            Append (R, (if C = ''' then "''" else [C]));
+         end loop;
+         return To_String (R) & "'";
+      end Quote;
+
+      function Real (D : Long_Float) return String is
+         S : constant String := Double_Image (D);
+      begin
+         --  Keep it a float for YAML ("3" would read back as an integer).
+         return (if Ada.Strings.Fixed.Index (S, ".") = 0
+                   and then Ada.Strings.Fixed.Index (S, "E") = 0
+                 then S & ".0" else S);
+      end Real;
+
+      R : Unbounded_String;
+      procedure Add (S : String) is
+      begin
+         Append (R, (if Length (R) = 1 then "" else ", ") & S);
+      end Add;
+   begin
+      case V.Kind is
+         when Not_Set => return "~";
+         when Bool_Type => return (if V.Bool then "true" else "false");
+         when Integer_Type => return Trim (V.Int'Image);
+         when Double_Type => return Real (V.Double);
+         when String_Type => return Quote (To_String (V.Text));
+         when others => null;
+      end case;
+      R := To_Unbounded_String ("[");
+      case V.Kind is
+         when Byte_Array_Type =>
+            for B of V.Bytes loop
+               Add (Trim (B'Image));
+            end loop;
+         when Bool_Array_Type =>
+            for B of V.Bools loop
+               Add (if B then "true" else "false");
+            end loop;
+         when Integer_Array_Type =>
+            for I of V.Ints loop
+               Add (Trim (I'Image));
+            end loop;
+         when Double_Array_Type =>
+            for D of V.Doubles loop
+               Add (Real (D));
+            end loop;
+         when String_Array_Type =>
+            for T of V.Texts loop
+               Add (Quote (To_String (T)));
+            end loop;
+         when others => null;
+      end case;
+      Append (R, "]");
+      return To_String (R);
+   end YAML_Image;
+
    ---------------
    -- From_YAML --
    ---------------

@@ -76,6 +76,10 @@ package RCL.Parameters is
    --  As "ros2 param get" shows the value: "10", "2.5", "True", "text",
    --  "[1, 2]", "['a', 'b']".
 
+   function YAML_Image (V : Value) return String;
+   --  V as a YAML flow value that Parse reads back as V: "true", "10",
+   --  "2.5", "'it''s'", "[1, 2]" (strings always single-quoted).
+
    function From_YAML (From : RCL.YAML.Document; N : RCL.YAML.Node) return Value;
    --  A scalar (bool, integer, double, string) or a sequence of one kind
    --  (integers and doubles mixed make a double array). RCL.YAML.Parse_Error

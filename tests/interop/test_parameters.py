@@ -227,3 +227,29 @@ def test_rclada_param_commands():
         assert rc == 1 and "Node not found: /nobody" in err, err
     finally:
         ss.stop(ada)
+
+
+def test_rclada_param_dump_round_trip(tmp_path):
+    """param dump writes a ROS 2 parameter file that --params-file reads
+    back to the same values."""
+    ada = start_demo()
+    try:
+        assert rclada("param", "set", "/parameters_demo", "name", "it's 'quoted'")[0] == 0
+        assert rclada("param", "set", "/parameters_demo", "gain", "0.1")[0] == 0
+        rc, dumped, err = rclada("param", "dump", "/parameters_demo")
+        assert rc == 0, err
+    finally:
+        ss.stop(ada)
+    assert dumped.startswith("/parameters_demo:\n  ros__parameters:\n"), dumped
+    assert "    name: 'it''s ''quoted'''\n" in dumped, dumped
+    assert "    ids: [1, 2, 3]\n" in dumped and "    gain: 0.1\n" in dumped, dumped
+    f = tmp_path / "dump.yaml"
+    # frozen is read-only and keeps its default; drop it like any override.
+    f.write_text(dumped)
+    ada = start_demo("--ros-args", "--params-file", str(f))
+    try:
+        rc, again, err = rclada("param", "dump", "/parameters_demo")
+    finally:
+        ss.stop(ada)
+    assert rc == 0, err
+    assert again == dumped

@@ -120,6 +120,46 @@ begin
               & Results.Element (1).Field_Reference ("reason").Get_String;
          end if;
       end;
+   elsif Pos (1) = "dump" then
+      Need (2, "param dump takes one node name");
+      declare
+         Node_Name : constant String := Fully_Qualified (Pos (2));
+         procedure No_Fill (Request : ROSIDL.Dynamic.Message) is null;
+         Listed : constant ROSIDL.Dynamic.Message :=
+           Call (Node_Name, "list_parameters", "ListParameters", No_Fill'Access);
+         Names  : constant ROSIDL.Dynamic.Array_Ref := Listed ("result")("names").As_Array;
+         Sorted : Argument_Vectors.Vector;
+         package Sorting is new Argument_Vectors.Generic_Sorting;
+      begin
+         for I in 1 .. Names.Length loop
+            Sorted.Append (Names.Element (I).Get_String);
+         end loop;
+         Sorting.Sort (Sorted);
+         declare
+            procedure Fill (Request : ROSIDL.Dynamic.Message) is
+               Asked : constant ROSIDL.Dynamic.Array_Ref := Request ("names").As_Array;
+            begin
+               Asked.Resize (Natural (Sorted.Length));
+               for I in 1 .. Natural (Sorted.Length) loop
+                  Asked.Element (I).Set_String (Sorted (I));
+               end loop;
+            end Fill;
+            Got    : constant ROSIDL.Dynamic.Message :=
+              Call (Node_Name, "get_parameters", "GetParameters", Fill'Access);
+            Values : constant ROSIDL.Dynamic.Array_Ref := Got ("values").As_Array;
+         begin
+            if Values.Length /= Natural (Sorted.Length) then
+               raise Command_Error with "the node answered" & Values.Length'Image
+                 & " values for" & Sorted.Length'Image & " parameters";
+            end if;
+            Put_Line (Node_Name & ":");
+            Put_Line ("  ros__parameters:");
+            for I in 1 .. Values.Length loop
+               Put_Line ("    " & Sorted (I) & ": "
+                         & YAML_Image (Get_Parameter_Value (Values.Element (I))));
+            end loop;
+         end;
+      end;
    elsif Pos (1) = "describe" then
       Need (3, "param describe takes a node name and a parameter name");
       declare

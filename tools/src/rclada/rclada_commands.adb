@@ -58,7 +58,8 @@ package body Rclada_Commands is
          return "usage: rclada param list NODE_NAME" & LF
            & "       rclada param get NODE_NAME PARAMETER" & LF
            & "       rclada param set NODE_NAME PARAMETER VALUE" & LF
-           & "       rclada param describe NODE_NAME PARAMETER   [--timeout S]" & LF
+           & "       rclada param describe NODE_NAME PARAMETER" & LF
+           & "       rclada param dump NODE_NAME   (YAML for --params-file)  [--timeout S]" & LF
            & "  through the node's ~/list_parameters, ~/get_parameters and" & LF
            & "  ~/set_parameters services; VALUE is YAML (1, 2.5, true, text, [1, 2])";
       elsif Verb = "interface" then
@@ -72,7 +73,7 @@ package body Rclada_Commands is
            & "  node       list | info NODE" & LF
            & "  topic      list [-t] | info | echo | pub | hz" & LF
            & "  service    list [-t] | call NAME TYPE 'YAML'" & LF
-           & "  param      list | get | set | describe" & LF
+           & "  param      list | get | set | describe | dump" & LF
            & "  interface  show TYPE | list | package PKG" & LF
            & "The network is the one of ROS_DOMAIN_ID (CYCLONEDDS_URI, ROS_LOCALHOST_ONLY).";
       end if;
