@@ -244,7 +244,7 @@ def test_rclada_param_dump_round_trip(tmp_path):
     assert "    name: 'it''s ''quoted'''\n" in dumped, dumped
     assert "    ids: [1, 2, 3]\n" in dumped and "    gain: 0.1\n" in dumped, dumped
     f = tmp_path / "dump.yaml"
-    # frozen is read-only and keeps its default; drop it like any override.
+    # Overrides apply at declaration, to read-only parameters too (as in ROS 2).
     f.write_text(dumped)
     ada = start_demo("--ros-args", "--params-file", str(f))
     try:
