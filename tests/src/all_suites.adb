@@ -3,6 +3,7 @@ with RCL.Clocks.Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
+with RCL.QoS.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 
@@ -20,6 +21,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
+      Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
