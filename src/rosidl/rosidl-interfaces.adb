@@ -41,6 +41,7 @@ package body ROSIDL.Interfaces is
       procedure Insert_Service (Key : String; Value : Service_Access);
       procedure Insert_Action (Key : String; Value : Action_Access);
       procedure Append_Folder (Folder : String);
+      procedure Delete_Folder (Folder : String);
       function Added_Folders return String_Vectors.Vector;
    private
       Message_Cache : Message_Maps.Map;
@@ -81,6 +82,14 @@ package body ROSIDL.Interfaces is
             Folders.Append (Folder);
          end if;
       end Append_Folder;
+
+      procedure Delete_Folder (Folder : String) is
+         I : constant Natural := Folders.Find_Index (Folder);
+      begin
+         if I /= String_Vectors.No_Index then
+            Folders.Delete (I);
+         end if;
+      end Delete_Folder;
 
       function Added_Folders return String_Vectors.Vector is (Folders);
 
@@ -202,6 +211,12 @@ package body ROSIDL.Interfaces is
       end if;
       Registry.Append_Folder (Ada.Directories.Full_Name (Folder));
    end Add_Folder;
+
+   procedure Remove_Folder (Folder : String) is
+   begin
+      Registry.Delete_Folder
+        (if Is_Folder (Folder) then Ada.Directories.Full_Name (Folder) else Folder);
+   end Remove_Folder;
 
    function Search_Path return String_Vectors.Vector is
       Result : String_Vectors.Vector;

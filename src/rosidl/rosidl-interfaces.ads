@@ -24,6 +24,10 @@ package ROSIDL.Interfaces is
    --  Appends a folder to the search path. Raises Definition_Error when the
    --  folder does not exist.
 
+   procedure Remove_Folder (Folder : String);
+   --  Removes a folder added by Add_Folder (nothing when it was not added).
+   --  Definitions already loaded from it stay cached.
+
    function Search_Path return String_Vectors.Vector;
    --  The folders searched, in order (bundled first).
 

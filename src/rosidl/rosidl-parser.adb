@@ -379,17 +379,102 @@ package body ROSIDL.Parser is
       return L'Last;
    end Content_End;
 
+   procedure Add_Constant
+     (C          : Context;
+      Def        : in out Message_Definition;
+      Line       : Positive;
+      Type_Token : String;
+      Type_Col   : Positive;
+      Name       : String;
+      Name_Col   : Positive;
+      Value      : String;
+      Value_Col  : Positive)
+   --  "<type> <NAME>=<value>"; Value is trimmed ("" when missing).
+   is
+      File : constant String := To_String (C.File);
+      T    : constant Field_Type := Parse_Type (C, Type_Token, Line, Type_Col);
+   begin
+      if T.Kind = Message_Kind or else T.Collection /= Single or else T.String_Bound /= 0 then
+         Fail (File, Line, Type_Col, "a primitive, string or wstring type for a constant",
+               Quote (Type_Token));
+      elsif Name'Length = 0 then
+         Fail (File, Line, Name_Col, "a constant name before '='", "'='");
+      elsif not Is_Valid_Constant_Name (Name) then
+         Fail (File, Line, Name_Col,
+               "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')", Quote (Name));
+      end if;
+      for K of Def.Constants loop
+         if K.Name = Name then
+            Fail (File, Line, Name_Col, "a new constant name",
+                  Quote (Name) & " (already defined at line" & K.Position.Line'Image & ")");
+         end if;
+      end loop;
+      if Value'Length = 0 then
+         Fail (File, Line, Value_Col, "a constant value after '='", "end of line");
+      end if;
+      declare
+         R : constant Check_Result := Check_Scalar (T.Kind, 0, Value);
+      begin
+         if not R.OK then
+            Fail (File, Line, Value_Col, To_String (R.Expected), Quote (Value));
+         end if;
+         Def.Constants.Append
+           (Constant_Definition'(Name     => To_Unbounded_String (Name),
+                                 Kind     => T.Kind,
+                                 Value    => R.Value,
+                                 Position => (C.File, Line, Name_Col)));
+      end;
+   end Add_Constant;
+
+   procedure Add_Field
+     (C          : Context;
+      Def        : in out Message_Definition;
+      Line       : Positive;
+      Type_Token : String;
+      Type_Col   : Positive;
+      Name       : String;
+      Name_Col   : Positive;
+      Value      : String;
+      Value_Col  : Positive)
+   --  "<type> <name> [<default>]"; Value is trimmed ("" when there is none).
+   is
+      File : constant String := To_String (C.File);
+      F    : Field;
+   begin
+      F.Of_Type := Parse_Type (C, Type_Token, Line, Type_Col);
+      if not Is_Valid_Field_Name (Name) then
+         Fail (File, Line, Name_Col,
+               "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')", Quote (Name));
+      elsif Is_Reserved_Name (Name) then
+         Fail (File, Line, Name_Col, "a field name that is not a reserved word", Quote (Name));
+      end if;
+      for G of Def.Fields loop
+         if G.Name = Name then
+            Fail (File, Line, Name_Col, "a new field name",
+                  Quote (Name) & " (already defined at line" & G.Position.Line'Image & ")");
+         end if;
+      end loop;
+      F.Name := To_Unbounded_String (Name);
+      F.Position := (C.File, Line, Name_Col);
+      if Value'Length > 0 then
+         Check_Default (C, F.Of_Type, Value, Line, Value_Col, F.Default);
+      end if;
+      Def.Fields.Append (F);
+   end Add_Field;
+
    procedure Parse_Line
      (C    : Context;
       Line : Line_Record;
       Def  : in out Message_Definition)
+   --  One line: blank, a comment, a constant or a field. The line is cut in
+   --  tokens (type, name, then '=' and a value, or a default value) and
+   --  each token's column is kept for the messages.
    is
       Full : constant String := To_String (Line.Text);
       L    : constant String := Full (Full'First .. Content_End (Full));
       Last : Natural := L'Last;
       I    : Positive := L'First;
       N    : constant Positive := Line.Number;
-      File : constant String := To_String (C.File);
 
       function Col (J : Positive) return Positive is (J - Full'First + 1);
 
@@ -400,6 +485,7 @@ package body ROSIDL.Parser is
          end loop;
       end Skip_Blanks;
 
+      Type_First, Type_Last, Name_First, Name_Last : Positive;
    begin
       while Last >= L'First and then Is_Blank (L (Last)) loop
          Last := Last - 1;
@@ -409,124 +495,41 @@ package body ROSIDL.Parser is
          return;  --  blank or comment line
       end if;
 
-      declare
-         Type_First : constant Positive := I;
-      begin
-         while I <= Last and then not Is_Blank (L (I)) loop
-            I := I + 1;
-         end loop;
-         declare
-            Type_Token : constant String := L (Type_First .. I - 1);
-         begin
-            if Type_Token = "---" then
-               Fail (File, N, Col (Type_First),
-                     "a field or a constant ('---' only separates .srv and .action parts)",
-                     "'---'");
-            end if;
-            Skip_Blanks;
-            if I > Last then
-               Fail (File, N, Col (I),
-                     "a field or constant name after the type " & Quote (Type_Token),
-                     "end of line");
-            end if;
-            declare
-               Name_First : constant Positive := I;
-            begin
-               while I <= Last and then not Is_Blank (L (I)) and then L (I) /= '=' loop
-                  I := I + 1;
-               end loop;
-               declare
-                  Name : constant String := L (Name_First .. I - 1);
-               begin
-                  Skip_Blanks;
-                  if I <= Last and then L (I) = '=' then
-                     --  A constant.
-                     declare
-                        T     : constant Field_Type :=
-                          Parse_Type (C, Type_Token, N, Col (Type_First));
-                        Value : constant String := Trim_Blanks (L (I + 1 .. Last));
-                        Value_First : Positive := I + 1;
-                     begin
-                        if T.Kind = Message_Kind or else T.Collection /= Single
-                          or else T.String_Bound /= 0
-                        then
-                           Fail (File, N, Col (Type_First),
-                                 "a primitive, string or wstring type for a constant",
-                                 Quote (Type_Token));
-                        elsif Name'Length = 0 then
-                           Fail (File, N, Col (Name_First), "a constant name before '='",
-                                 "'='");
-                        elsif not Is_Valid_Constant_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')",
-                                 Quote (Name));
-                        end if;
-                        for K of Def.Constants loop
-                           if K.Name = Name then
-                              Fail (File, N, Col (Name_First),
-                                    "a new constant name",
-                                    Quote (Name) & " (already defined at line"
-                                    & K.Position.Line'Image & ")");
-                           end if;
-                        end loop;
-                        while Value_First <= Last and then Is_Blank (L (Value_First)) loop
-                           Value_First := Value_First + 1;
-                        end loop;
-                        if Value'Length = 0 then
-                           Fail (File, N, Col (Value_First), "a constant value after '='",
-                                 "end of line");
-                        end if;
-                        declare
-                           R : constant Check_Result := Check_Scalar (T.Kind, 0, Value);
-                        begin
-                           if not R.OK then
-                              Fail (File, N, Col (Value_First), To_String (R.Expected),
-                                    Quote (Value));
-                           end if;
-                           Def.Constants.Append
-                             (Constant_Definition'(Name     => To_Unbounded_String (Name),
-                               Kind     => T.Kind,
-                               Value    => R.Value,
-                               Position => (C.File, N, Col (Name_First))));
-                        end;
-                     end;
-                  else
-                     --  A field, with an optional default value.
-                     declare
-                        T : constant Field_Type :=
-                          Parse_Type (C, Type_Token, N, Col (Type_First));
-                        F : Field;
-                     begin
-                        if not Is_Valid_Field_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')",
-                                 Quote (Name));
-                        elsif Is_Reserved_Name (Name) then
-                           Fail (File, N, Col (Name_First),
-                                 "a field name that is not a reserved word",
-                                 Quote (Name));
-                        end if;
-                        for G of Def.Fields loop
-                           if G.Name = Name then
-                              Fail (File, N, Col (Name_First),
-                                    "a new field name",
-                                    Quote (Name) & " (already defined at line"
-                                    & G.Position.Line'Image & ")");
-                           end if;
-                        end loop;
-                        F.Name := To_Unbounded_String (Name);
-                        F.Of_Type := T;
-                        F.Position := (C.File, N, Col (Name_First));
-                        if I <= Last then
-                           Check_Default (C, T, L (I .. Last), N, Col (I), F.Default);
-                        end if;
-                        Def.Fields.Append (F);
-                     end;
-                  end if;
-               end;
-            end;
-         end;
-      end;
+      Type_First := I;
+      while I <= Last and then not Is_Blank (L (I)) loop
+         I := I + 1;
+      end loop;
+      Type_Last := I - 1;
+      if L (Type_First .. Type_Last) = "---" then
+         Fail (To_String (C.File), N, Col (Type_First),
+               "a field or a constant ('---' only separates .srv and .action parts)",
+               "'---'");
+      end if;
+
+      Skip_Blanks;
+      if I > Last then
+         Fail (To_String (C.File), N, Col (I),
+               "a field or constant name after the type "
+               & Quote (L (Type_First .. Type_Last)), "end of line");
+      end if;
+      Name_First := I;
+      while I <= Last and then not Is_Blank (L (I)) and then L (I) /= '=' loop
+         I := I + 1;
+      end loop;
+      Name_Last := I - 1;
+      Skip_Blanks;
+
+      if I <= Last and then L (I) = '=' then
+         I := I + 1;
+         Skip_Blanks;
+         Add_Constant
+           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
+            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+      else
+         Add_Field
+           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
+            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+      end if;
    end Parse_Line;
 
    function Parse_Section

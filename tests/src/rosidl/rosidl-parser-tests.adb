@@ -21,6 +21,10 @@ package body ROSIDL.Parser.Tests is
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
 
+   overriding procedure Tear_Down (Unused : in out Fixture);
+   --  Takes the test folders off the search path, so that suites run later
+   --  (which may walk every package on the path) see the bundled ones only.
+
    package Caller is new AUnit.Test_Caller (Fixture);
 
    type Message_Access_List is array (Positive range <>) of Message_Access;
@@ -39,6 +43,29 @@ package body ROSIDL.Parser.Tests is
    begin
       ROSIDL.Interfaces.Add_Folder (User_Folder);
    end Add_User_Folder;
+
+   Had_Path_Variable : constant Boolean :=
+     Ada.Environment_Variables.Exists (ROSIDL.Interfaces.Path_Variable);
+   Saved_Path_Variable : constant String :=
+     (if Had_Path_Variable
+      then Ada.Environment_Variables.Value (ROSIDL.Interfaces.Path_Variable) else "");
+   --  The variable as the run started; tests that change it restore it.
+
+   procedure Restore_Path_Variable is
+   begin
+      if Had_Path_Variable then
+         Ada.Environment_Variables.Set (ROSIDL.Interfaces.Path_Variable, Saved_Path_Variable);
+      else
+         Ada.Environment_Variables.Clear (ROSIDL.Interfaces.Path_Variable);
+      end if;
+   end Restore_Path_Variable;
+
+   overriding procedure Tear_Down (Unused : in out Fixture) is
+   begin
+      ROSIDL.Interfaces.Remove_Folder (User_Folder);
+      ROSIDL.Interfaces.Remove_Folder (Test_Data & "/bad_interfaces");
+      Restore_Path_Variable;
+   end Tear_Down;
 
    function Error_Of (Action : not null access procedure) return String is
       --  The message of the Definition_Error Action raises, "" when none.
@@ -552,7 +579,7 @@ package body ROSIDL.Parser.Tests is
          Assert (Interfaces.Message ("sancta_env_msgs", "Ping").Fields.Length = 1, "Ping");
          Assert (Interfaces.Packages.Contains ("sancta_env_msgs"), "listed package");
       end;
-      Ada.Environment_Variables.Clear (Interfaces.Path_Variable);
+      Restore_Path_Variable;
 
       --  Without SANCTA_ROOT the bundled folder is found from the program's
       --  own folder (bin/../share/ros2_interfaces).
@@ -600,6 +627,10 @@ package body ROSIDL.Parser.Tests is
             Raised := True;
       end;
       Assert (Raised, "Add_Folder of a missing folder raises Definition_Error");
+      Interfaces.Remove_Folder (User_Folder);
+      Assert (not Interfaces.Search_Path.Contains (User_Folder), "Remove_Folder");
+      Assert (not Interfaces.Packages.Contains ("sancta_test_msgs"), "removed package");
+      Add_User_Folder;
 
       --  Listings of the bundled packages, sorted.
       declare
