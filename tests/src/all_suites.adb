@@ -4,10 +4,12 @@ with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
 with RCL.Parameters.Tests;
+with RCL.QoS.Tests;
 with RCL.Services.Tests;
 with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
+with ROSIDL.CDR.Tests;
 
 package body All_Suites is
 
@@ -23,7 +25,9 @@ package body All_Suites is
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
+      Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
+      Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
