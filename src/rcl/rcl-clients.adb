@@ -339,36 +339,63 @@ package body RCL.Clients is
    package Client_Maps is new Ada.Containers.Indefinite_Hashed_Maps
      (String, Client_Access, Ada.Strings.Hash, "=");
 
+   procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
+
    protected Cache is
-      procedure Get
-        (Node    : RCL.Nodes.Node'Class;
-         Support : ROSIDL.Typesupport.Service_Support;
-         Name    : String;
-         Result  : out Client_Access);
+      function Find (Key : String) return Client_Access;
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean);
+      --  Made becomes the cached client (another task's if it came first;
+      --  Kept is then False and the caller frees its own).
    private
       Clients : Client_Maps.Map;
    end Cache;
 
    protected body Cache is
-      procedure Get
-        (Node    : RCL.Nodes.Node'Class;
-         Support : ROSIDL.Typesupport.Service_Support;
-         Name    : String;
-         Result  : out Client_Access)
-      is
-         Key : constant String :=
-           Node.Fully_Qualified_Name & " " & Node.Expand (Name) & " "
-           & ROSIDL.Typesupport.Full_Name (Support);
+      function Find (Key : String) return Client_Access is
+        (if Clients.Contains (Key) then Clients.Element (Key) else null);
+
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean) is
       begin
-         if Clients.Contains (Key) then
-            Result := Clients.Element (Key);
+         Kept := not Clients.Contains (Key);
+         if Kept then
+            Clients.Insert (Key, Made);
          else
-            Result := new Client;
-            Result.Init (Node, Support, Name);
-            Clients.Insert (Key, Result);
+            Made := Clients.Element (Key);
          end if;
-      end Get;
+      end Insert;
    end Cache;
+
+   function Client_For
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String) return Client_Access
+   is
+      --  The client is made outside the protected object: making it
+      --  announces endpoints (RCL.Graph), which may block.
+      Key    : constant String :=
+        Node.Fully_Qualified_Name & " " & Node.Expand (Name) & " "
+        & ROSIDL.Typesupport.Full_Name (Support);
+      Result : Client_Access := Cache.Find (Key);
+      Mine   : Client_Access;
+      Kept   : Boolean;
+   begin
+      if Result = null then
+         Mine := new Client;
+         begin
+            Mine.Init (Node, Support, Name);
+         exception
+            when others =>
+               Free (Mine);
+               raise;
+         end;
+         Result := Mine;
+         Cache.Insert (Key, Result, Kept);
+         if not Kept then
+            Free (Mine);
+         end if;
+      end if;
+      return Result;
+   end Client_For;
 
    function Call
      (Node    : RCL.Nodes.Node'Class;
@@ -377,9 +404,8 @@ package body RCL.Clients is
       Request : ROSIDL.Dynamic.Message;
       Timeout : Duration := Forever) return ROSIDL.Dynamic.Message
    is
-      C : Client_Access;
+      C : constant Client_Access := Client_For (Node, Support, Name);
    begin
-      Cache.Get (Node, Support, Name, C);
       return C.Call (Request, Timeout);
    end Call;
 
@@ -389,9 +415,8 @@ package body RCL.Clients is
       Name    : String;
       Timeout : Duration := Forever)
    is
-      C : Client_Access;
+      C : constant Client_Access := Client_For (Node, Support, Name);
    begin
-      Cache.Get (Node, Support, Name, C);
       C.Wait_For_Service (Timeout);
    end Wait_For_Service;
 

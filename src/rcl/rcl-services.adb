@@ -2,6 +2,7 @@ with Ada.Calendar;
 with Ada.Containers.Ordered_Sets;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with RCL.Contexts;
 with RCL.DDS.Matching;
@@ -146,6 +147,9 @@ package body RCL.Services is
    -- Serve --
    -----------
 
+   procedure Free is new Ada.Unchecked_Deallocation
+     (RCL.Nodes.Handler'Class, RCL.Nodes.Handler_Access);
+
    procedure Serve
      (Node     : in out RCL.Nodes.Node'Class;
       Support  : ROSIDL.Typesupport.Service_Support;
@@ -163,7 +167,7 @@ package body RCL.Services is
       Id     : constant String :=
         "serviceid="
         & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
-      H      : constant RCL.Nodes.Handler_Access := new Service_Handler;
+      H      : RCL.Nodes.Handler_Access := new Service_Handler;
       S      : Service_Handler renames Service_Handler (H.all);
    begin
       S.Support := Support;
@@ -180,6 +184,10 @@ package body RCL.Services is
          Handle    => H,
          QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
          Added     => S.Requests);
+   exception
+      when others =>
+         Free (H);  --  (Add_Endpoint did not keep it.)
+         raise;
    end Serve;
 
 end RCL.Services;
