@@ -5,6 +5,7 @@ with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
+with RCL.Clocks;
 with RCL.DDS;
 with RCL.Publishers;
 with RCL.QoS;
@@ -880,10 +881,25 @@ package body RCL.Parameters is
       function Srv (Name : String) return Service_Support is
         (Get_Service_Support ("rcl_interfaces", Name));
       Q : constant RCL.QoS.Profile := RCL.QoS.Parameters;
+      Declared : Boolean;
    begin
       if not Event_Support_Set then
          Event_Support := Get_Message_Support ("rcl_interfaces", "ParameterEvent");
          Event_Support_Set := True;
+      end if;
+      if not Has_Parameter (Node, "use_sim_time") then
+         --  As every ROS 2 node has it. Read-only here: simulated time is
+         --  chosen at start (--ros-args -p use_sim_time:=true, RCL.Clocks).
+         Store.Insert
+           (Node.Fully_Qualified_Name, "use_sim_time",
+            (Desc    => (Name        => To_Unbounded_String ("use_sim_time"),
+                         Kind        => Bool_Type,
+                         Description => To_Unbounded_String
+                           ("ROS time follows /clock (set at start only)"),
+                         Read_Only   => True),
+             Current => To_Value (RCL.Clocks.Sim_Time_Enabled
+                                  or else RCL.Clocks.Sim_Time_Requested)),
+            Declared);
       end if;
       RCL.Services.Serve (Node, Srv ("GetParameters"), "~/get_parameters",
                           Get_Parameters'Access, Q);

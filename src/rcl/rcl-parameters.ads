@@ -155,7 +155,8 @@ package RCL.Parameters is
 
    procedure Serve (Node : in out RCL.Nodes.Node'Class);
    --  Offers the six parameter services of Node and publishes its changes
-   --  on /parameter_events (answered while the node spins).
+   --  on /parameter_events (answered while the node spins). Declares the
+   --  read-only "use_sim_time" (RCL.Clocks) unless declared already.
 
    --  Initial values ------------------------------------------------------
 

@@ -208,7 +208,9 @@ def test_rclada_param_commands():
     try:
         rc, out, err = rclada("param", "list", "/parameters_demo")
         assert rc == 0, err
-        assert out.split() == ["frozen", "gain", "ids", "name", "rate"], out
+        assert out.split() == ["frozen", "gain", "ids", "name", "rate", "use_sim_time"], out
+        rc, out, err = rclada("param", "get", "/parameters_demo", "use_sim_time")
+        assert out == "Boolean value is: False\n", out
         rc, out, err = rclada("param", "get", "/parameters_demo", "gain")
         assert (rc, out) == (0, "Double value is: 1.5\n"), err
         rc, out, err = rclada("param", "set", "/parameters_demo", "rate", "77")
