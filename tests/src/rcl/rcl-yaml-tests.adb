@@ -211,40 +211,54 @@ package body RCL.YAML.Tests is
    procedure Discovery_Info (Unused : in out Fixture) is
       use Ada.Streams;
       use RCL.Graph.Queries;
-      --  One participant, one node "/ns" "n" with one reader and no writer,
-      --  little-endian, 24-byte gids.
-      Data : Stream_Element_Array (1 .. 4 + 24 + 4 + 4 + 4 + 4 + 2 + 2 + 4 + 24 + 4) :=
-        [others => 0];
-      Pos  : Stream_Element_Offset := 5;
-      procedure Put32 (V : Stream_Element) is
+
+      function Build (Gid_Size : Stream_Element_Offset) return Stream_Element_Array is
+         --  One participant, one node "/ns" "n" with one reader and no
+         --  writer, little-endian.
+         Data : Stream_Element_Array (1 .. 4 + Gid_Size + 4 + 4 + 4 + 4 + 2 + 2 + 4
+                                      + Gid_Size + 4) := [others => 0];
+         Pos  : Stream_Element_Offset := 5;
+         procedure Put32 (V : Stream_Element) is
+         begin
+            Data (Pos) := V;
+            Pos := Pos + 4;
+         end Put32;
       begin
-         Data (Pos) := V;
+         Data (2) := 1;
+         Data (5) := 16#AA#;             --  participant gid
+         Pos := 5 + Gid_Size;
+         Put32 (1);                      --  one node
+         Put32 (4);                      --  "/ns" + NUL
+         Data (Pos .. Pos + 3) := [Character'Pos ('/'), Character'Pos ('n'),
+                                   Character'Pos ('s'), 0];
          Pos := Pos + 4;
-      end Put32;
+         Put32 (2);                      --  "n" + NUL
+         Data (Pos .. Pos + 1) := [Character'Pos ('n'), 0];
+         Pos := Pos + 4;                 --  two bytes and padding
+         Put32 (1);                      --  one reader gid
+         Data (Pos) := 16#BB#;
+         Pos := Pos + Gid_Size;
+         Put32 (0);                      --  no writer
+         return Data (1 .. Pos - 1);
+      end Build;
+
+      Data : constant Stream_Element_Array := Build (24);
    begin
-      Data (2) := 1;
-      Data (5) := 16#AA#;             --  participant gid
-      Pos := 5 + 24;
-      Put32 (1);                      --  one node
-      Put32 (4);                      --  "/ns" + NUL
-      Data (Pos .. Pos + 3) := [Character'Pos ('/'), Character'Pos ('n'),
-                                Character'Pos ('s'), 0];
-      Pos := Pos + 4;
-      Put32 (2);                      --  "n" + NUL
-      Data (Pos .. Pos + 1) := [Character'Pos ('n'), 0];
-      Pos := Pos + 4;                 --  two bytes and padding
-      Put32 (1);                      --  one reader gid
-      Data (Pos) := 16#BB#;
-      Pos := Pos + 24;
-      Put32 (0);                      --  no writer
-      declare
-         P : constant Participant_Info := Decode_Participant_Info (Data (1 .. Pos - 1));
-      begin
-         Assert (P.Count = 1 and then P.Participant (1) = 16#AA#, "one node");
-         Assert (P.Nodes (1).Id.Name = "n" and then P.Nodes (1).Id.Namespace = "/ns", "names");
-         Assert (Contains (To_String (P.Nodes (1).Readers), "bb.00"), "reader gid");
-         Assert (Length (P.Nodes (1).Writers) = 0, "no writer");
-      end;
+      for Size in Stream_Element_Offset range 16 .. 24 loop
+         if Size in 16 | 24 then
+            declare
+               P : constant Participant_Info := Decode_Participant_Info (Build (Size));
+               Layout : constant String := Size'Image & "-byte gids";
+            begin
+               Assert (P.Count = 1 and then P.Participant (1) = 16#AA#, "one node" & Layout);
+               Assert (P.Nodes (1).Id.Name = "n" and then P.Nodes (1).Id.Namespace = "/ns",
+                       "names" & Layout);
+               Assert (Contains (To_String (P.Nodes (1).Readers), "bb.00"),
+                       "reader gid" & Layout);
+               Assert (Length (P.Nodes (1).Writers) = 0, "no writer" & Layout);
+            end;
+         end if;
+      end loop;
       declare
          function Truncated_Error return String is
          begin
