@@ -1,5 +1,6 @@
 with Harness_Tests;
 with RCL.Clocks.Tests;
+with RCL.Graph.Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
@@ -26,6 +27,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
       Result.Add_Test (RCL.QoS.Tests.Suite);
+      Result.Add_Test (RCL.Graph.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
