@@ -42,4 +42,19 @@ dds_return_t sancta_dds_publication_guid (dds_entity_t reader, dds_instance_hand
                                           unsigned char guid[16]);
 dds_return_t sancta_dds_entity_guid (dds_entity_t entity, unsigned char guid[16]);
 
+/* dds_create_participant / dds_create_domain with SIGINT and SIGTERM
+   blocked in the calling thread meanwhile (Cyclone's threads inherit it). */
+dds_entity_t sancta_dds_create_participant (dds_domainid_t domain, const dds_qos_t *qos);
+dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config);
+
+/* Blocks SIGINT and SIGTERM in the calling thread: once the Ada runtime
+   waits for them (sigwait in its interrupt server tasks), no other thread
+   may take them. */
+void sancta_block_stop_signals (void);
+
+/* The endpoints DDS discovery knows (publications or subscriptions), one
+   "topic<TAB>type<LF>" line each; NULL on error; free with sancta_dds_free. */
+char *sancta_dds_endpoint_list (dds_entity_t participant, int publications);
+void sancta_dds_free (void *p);
+
 #endif

@@ -4,10 +4,12 @@
 --  it), shared by every node of the process; and orderly shutdown.
 --
 --  The context is created by the first node (or Init) and lives until the
---  end of the program. Shutdown (also on Ctrl-C / SIGTERM once a spin has
---  started) makes every Spin return; publishing afterwards raises
+--  end of the program; Init also installs handlers for SIGINT and SIGTERM
+--  (blocking them in the calling task). Shutdown (also on Ctrl-C / SIGTERM)
+--  makes every Spin return; publishing afterwards raises
 --  ROS_Exception, which ends publisher tasks such as the slides' talker's.
---  A second Ctrl-C exits the process at once (status 130).
+--  Another Ctrl-C more than a second later exits the process at once
+--  (status 130).
 with RCL.DDS;
 
 package RCL.Contexts is
@@ -16,8 +18,15 @@ package RCL.Contexts is
    --  Creates the participant if not done yet; raises ROS_Exception on a
    --  bad ROS_DOMAIN_ID (naming the variable and its value) or a DDS error.
 
+   procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean)
+     with Pre => not Is_Initialized;
+   --  The same with an explicit domain and discovery range instead of the
+   --  environment's (before the first node).
+
+   function Is_Initialized return Boolean;
+
    function Domain return RCL.DDS.Domain_Id;
-   --  ROS_DOMAIN_ID (default 0).
+   --  The context's domain: ROS_DOMAIN_ID (default 0) unless Init said.
 
    function Localhost_Only return Boolean;
 
@@ -30,7 +39,7 @@ package RCL.Contexts is
    function Is_Shutdown return Boolean;
 
    procedure Install_Signal_Handlers;
-   --  SIGINT and SIGTERM call Shutdown (done by the executors).
+   --  SIGINT and SIGTERM call Shutdown (done by Init).
 
    type Waitset_Access is access all RCL.DDS.Waitset;
 

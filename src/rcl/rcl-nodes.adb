@@ -1,13 +1,24 @@
 with Ada.Unchecked_Deallocation;
 
+with ROSIDL.CDR;
+with RCL.Clients;
+with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
+with RCL.Rosout;
+with RCL.Services;
 
 package body RCL.Nodes is
 
    use type Ada.Real_Time.Time;
+
+   type Spinner is record
+      E : RCL.Executors.Sequential.Executor (Max_Nodes => 1);
+   end record;
+
+   procedure Free is new Ada.Unchecked_Deallocation (Spinner, Spinner_Access);
 
    --------------
    -- Registry --
@@ -61,6 +72,8 @@ package body RCL.Nodes is
    ----------
 
    function Init (Name : String; Namespace : String := "/") return Node is
+      Sim_Time : constant Boolean :=
+        RCL.Clocks.Sim_Time_Requested and then not RCL.Clocks.Sim_Time_Enabled;
    begin
       RCL.Names.Validate_Node_Name (Name);
       declare
@@ -70,12 +83,19 @@ package body RCL.Nodes is
          return N : Node do
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
+            RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
+            RCL.Rosout.Enable;
+            if Sim_Time then
+               RCL.Clocks.Enable_Sim_Time (N);
+            end if;
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
          end return;
       end;
    end Init;
+
+   function Graph_Id (This : Node) return RCL.Graph.Node_Id is (This.Graph_Id);
 
    function Name (This : Node) return String is (To_String (This.Name));
    function Namespace (This : Node) return String is (To_String (This.Namespace));
@@ -109,9 +129,27 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ));
+         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
+                                This.Graph_Id);
       end return;
    end Publish_Raw;
+
+   -------------
+   -- Publish --
+   -------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
+   begin
+      return P : RCL.Publishers.Publisher :=
+        This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS)
+      do
+         RCL.Publishers.Set_Support (P, Support);
+      end return;
+   end Publish;
 
    ----------------------
    -- Add_Subscription --
@@ -135,11 +173,64 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS);
       This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
       when others =>
          Free (S);
          raise;
    end Add_Subscription;
+
+   procedure Add_Endpoint
+     (This      : in out Node;
+      Type_Name : String;
+      DDS_Topic : String;
+      Name      : String;
+      User_Data : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile;
+      Added     : out Subscription_Access)
+   is
+      S : Subscription_Access := new Subscription;
+   begin
+      S.Topic := new String'(Name);
+      S.Handle := Handle;
+      RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
+                      User_Data => User_Data);
+      This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
+      Added := S;
+   exception
+      when others =>
+         Free (S);
+         raise;
+   end Add_Endpoint;
+
+   -----------------------------
+   -- Services and clients --
+   -----------------------------
+
+   procedure Serve
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default) is
+   begin
+      RCL.Services.Serve (This, Support, Name, Callback, QoS);
+   end Serve;
+
+   function Client_Call
+     (This    : Node;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message is
+   begin
+      return RCL.Clients.Call (This, Support, Name, Request, Timeout);
+   end Client_Call;
 
    type Raw_Handler is new Handler with record
       Callback : Raw_Callback;
@@ -153,6 +244,96 @@ package body RCL.Nodes is
    begin
       This.Callback (Node, Data, Info);
    end Deliver;
+
+   type Typed_Callback is access procedure
+     (Node : in out Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info);
+
+   --  One decoded message kept per subscription and reused (no allocation
+   --  per sample); a concurrent delivery that finds it taken decodes into a
+   --  fresh one.
+   protected type Cache_Lock is
+      procedure Try (Got : out Boolean);
+      procedure Release;
+   private
+      Taken : Boolean := False;
+   end Cache_Lock;
+
+   protected body Cache_Lock is
+      procedure Try (Got : out Boolean) is
+      begin
+         Got := not Taken;
+         Taken := True;
+      end Try;
+      procedure Release is
+      begin
+         Taken := False;
+      end Release;
+   end Cache_Lock;
+
+   type Typed_Handler is new Handler with record
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Callback : Typed_Callback;
+      Cached   : ROSIDL.Dynamic.Message;
+      Lock     : Cache_Lock;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Typed_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      Got : Boolean;
+   begin
+      This.Lock.Try (Got);
+      if Got then
+         begin
+            if not ROSIDL.Dynamic.Is_Initialised (This.Cached) then
+               This.Cached := ROSIDL.Dynamic.Init (This.Support);
+            end if;
+            ROSIDL.CDR.Decode (Data, This.Cached);
+            This.Callback (Node, This.Cached, Info);
+         exception
+            when others =>
+               This.Lock.Release;
+               raise;
+         end;
+         This.Lock.Release;
+      else
+         declare
+            Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+         begin
+            This.Callback (Node, Msg, Info);
+         end;
+      end if;
+   end Deliver;
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Typed_Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Typed_Handler;
+   begin
+      Typed_Handler (H.all).Support := Support;
+      Typed_Handler (H.all).Callback := Stored;
+      begin
+         This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+      exception
+         when others =>
+            Free (H);
+            raise;
+      end;
+   end Subscribe;
 
    procedure Subscribe_Raw
      (This      : in out Node;
@@ -218,10 +399,12 @@ package body RCL.Nodes is
       During : Duration := Forever;
       Once   : Boolean := False)
    is
-      E : RCL.Executors.Sequential.Executor;
    begin
-      E.Add (This);
-      E.Spin (During => During, Once => Once);
+      if This.Spin_Exec = null then
+         This.Spin_Exec := new Spinner;
+         This.Spin_Exec.E.Add (This);
+      end if;
+      This.Spin_Exec.E.Spin (During => During, Once => Once);
    end Spin;
 
    ---------------------
@@ -262,6 +445,10 @@ package body RCL.Nodes is
       N_Tims : Natural;
       procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
    begin
+      Free (This.Spin_Exec);
+      --  Before the subscriptions: it detaches their readers.
+      RCL.Graph.Remove_Node (This.Graph_Id);
+      This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop
          Free (Subs (I).Handle);

@@ -3,7 +3,9 @@
 --  context's DDS participant (RCL.Contexts).
 --
 --     Node : Nodes.Node := Nodes.Init ("listener", Namespace => "/robot1");
---     Node.Subscribe_Raw ("std_msgs::msg::dds_::String_", "chatter", On_Bytes'Access);
+--     Node.Subscribe
+--       (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
+--        "chatter", Callback'Access);
 --     Node.Spin (During => Forever);  --  until Ctrl-C or Contexts.Shutdown
 --
 --  (RCLAda's slides write Spin (Until => Forever); "until" being an Ada
@@ -11,7 +13,10 @@
 with Ada.Finalization;
 with Ada.Real_Time;
 with ROSIDL;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
@@ -26,7 +31,10 @@ package RCL.Nodes is
 
    function Init (Name : String; Namespace : String := "/") return Node;
    --  Validates Name (RCL.Names.Name_Error naming the offending character)
-   --  and normalizes Namespace ("ns" and "/ns/" become "/ns").
+   --  and normalizes Namespace ("ns" and "/ns/" become "/ns"). The first
+   --  node creates the context (RCL.Contexts) and starts /rosout and
+   --  ros_discovery_info; with --ros-args -p use_sim_time:=true it also
+   --  subscribes to /clock (RCL.Clocks).
 
    function Name (This : Node) return String;
    function Namespace (This : Node) return String;
@@ -38,6 +46,30 @@ package RCL.Nodes is
 
    function Expand (This : Node; Topic : String) return String;
    --  The fully qualified topic name (relative, "~", substitutions).
+
+   --  Publish / subscribe --------------------------------------------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher;
+   --  Topic is expanded (relative, "~", substitutions) and validated.
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Each sample is decoded into a message of Support's type and passed to
+   --  Callback by the executor spinning the node. Bytes that do not decode
+   --  are reported (ROSIDL.Decode_Error with the byte offset, logged with
+   --  the topic) and skipped. Callback may be nested in the main subprogram
+   --  (as in the RCLAda slides): it must stay callable while the node exists.
 
    --  Raw (serialized) publish / subscribe ---------------------------------
 
@@ -65,6 +97,30 @@ package RCL.Nodes is
       QoS       : RCL.QoS.Profile := RCL.QoS.Default);
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
+
+   --  Services and clients (RCL.Services, RCL.Clients) --------------------
+
+   procedure Serve
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default);
+   --  Offers service Name (expanded like a topic): requests are answered
+   --  by Callback while the node spins. See RCL.Services.
+
+   function Client_Call
+     (This    : Node;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message;
+   --  Calls service Name and waits for its response, waiting first for the
+   --  service to be available; RCL_Timeout when Timeout passes. Safe from
+   --  several tasks at once. See RCL.Clients.
 
    --  Timers ---------------------------------------------------------------
 
@@ -94,8 +150,10 @@ package RCL.Nodes is
       During : Duration := Forever;
       Once   : Boolean := False);
    --  Runs this node's callbacks in the calling task (a sequential
-   --  executor): for During, or until one batch of work has run (Once), or
-   --  until shutdown (Ctrl-C, SIGTERM, Contexts.Shutdown).
+   --  executor, made by the first Spin and reused): for During, or until one
+   --  batch of work has run (Once), or until shutdown (Ctrl-C, SIGTERM,
+   --  Contexts.Shutdown). Spin a node from one task at a time; to run
+   --  several nodes, or callbacks in parallel, use RCL.Executors.
 
    --  Not for users: the executors' view ----------------------------------
 
@@ -125,6 +183,9 @@ package RCL.Nodes is
    Max_Subscriptions : constant := 64;
    Max_Timers        : constant := 64;
 
+   function Graph_Id (This : Node) return RCL.Graph.Node_Id;
+   --  For endpoints made outside this package (services, clients).
+
    function Version (This : Node) return Natural;
    --  Changes whenever a subscription or timer is added.
    function Subscription_Count (This : Node) return Natural;
@@ -141,6 +202,18 @@ package RCL.Nodes is
       Handle    : not null Handler_Access;
       QoS       : RCL.QoS.Profile);
    --  Used by Subscribe_Raw and by the typed Subscribe.
+
+   procedure Add_Endpoint
+     (This      : in out Node;
+      Type_Name : String;
+      DDS_Topic : String;
+      Name      : String;
+      User_Data : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile;
+      Added     : out Subscription_Access);
+   --  As Add_Subscription with the DDS topic ("rq/addRequest"), the fully
+   --  qualified ROS Name and the reader's USER_DATA given (services).
 
    overriding procedure Finalize (This : in out Node);
 
@@ -170,10 +243,17 @@ private
       N_Tim  : Natural := 0;
    end Registry;
 
+   type Spinner;
+   type Spinner_Access is access Spinner;
+   --  The sequential executor of Node.Spin, made by the first Spin and
+   --  reused (completed in the body).
+
    type Node is new Ada.Finalization.Limited_Controlled with record
+      Spin_Exec : Spinner_Access;
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Entities  : Registry;
+      Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;
 
 end RCL.Nodes;

@@ -1,10 +1,13 @@
 --  Publishers: made by Node.Publish; publish messages on one topic.
 --
---     Pub : Publishers.Publisher := Node.Publish_Raw
---       ("std_msgs::msg::dds_::String_", "/chatter");
+--     Pub : Publishers.Publisher := Node.Publish (Support, "/chatter");
+--     Pub.Publish (Msg);        --  a ROSIDL.Dynamic.Message of that type
 --     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header
 with Ada.Finalization;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
@@ -17,6 +20,11 @@ package RCL.Publishers is
      with Pre => Data'Length >= 4;
    --  Publishes serialized bytes as they are. Raises ROS_Exception after
    --  the context has shut down, or on a DDS error.
+
+   procedure Publish (This : in out Publisher; Msg : ROSIDL.Dynamic.Message);
+   --  Serializes Msg (XCDR1, native byte order) and publishes it; raises
+   --  ROS_Exception when Msg's type is not the publisher's, after shutdown,
+   --  or on a DDS error; ROSIDL.Encode_Error when a bound is exceeded.
 
    function Topic (This : Publisher) return String;
    --  The fully qualified ROS topic name ("/chatter").
@@ -34,15 +42,25 @@ package RCL.Publishers is
       Topic      : String;
       Type_Name  : String;
       Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String);
+      DDS_Topic  : String;
+      Node       : RCL.Graph.Node_Id);
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer;
+
+   procedure Set_Support
+     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support);
+   --  The message type of a typed publisher (a cheaper check in Publish).
+
+   overriding procedure Finalize (This : in out Publisher);
 
 private
 
    type Publisher is new Ada.Finalization.Limited_Controlled with record
       W     : aliased RCL.DDS.Writer;
       Topic : Ada.Strings.Unbounded.Unbounded_String;
+      Node  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Typed : Boolean := False;
+      Support : ROSIDL.Typesupport.Message_Support;
    end record;
 
 end RCL.Publishers;

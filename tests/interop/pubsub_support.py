@@ -22,6 +22,7 @@ os.environ.setdefault("ROS_LOCALHOST_ONLY", "1")
 
 from cyclonedds.core import Policy, Qos  # noqa: E402
 from cyclonedds.domain import DomainParticipant  # noqa: E402
+from cyclonedds.idl import IdlStruct  # noqa: E402
 from cyclonedds.pub import DataWriter  # noqa: E402
 from cyclonedds.sub import DataReader  # noqa: E402
 from cyclonedds.topic import Topic  # noqa: E402
@@ -69,12 +70,18 @@ def wait_matched(entity, timeout=10.0):
     return False
 
 
+def take(rd):
+    """The valid samples available now (instance state changes, such as the
+    writer leaving, come as InvalidSample and are dropped)."""
+    return [s for s in rd.take(N=100) if isinstance(s, IdlStruct)]
+
+
 def take_until(rd, count, timeout=10.0):
-    """Takes samples until `count` arrived or time is out."""
+    """Takes valid samples until `count` arrived or time is out."""
     got = []
     deadline = time.monotonic() + timeout
     while len(got) < count and time.monotonic() < deadline:
-        got.extend(rd.take(N=100))
+        got.extend(take(rd))
         time.sleep(0.02)
     return got
 

@@ -71,12 +71,13 @@ package RCL.DDS.Thin is
 
    function Create_Domain
      (Domain : Domain_Id_T; Config : C.Strings.chars_ptr) return Entity_T
-     with Import, Convention => C, External_Name => "dds_create_domain";
+     with Import, Convention => C, External_Name => "sancta_dds_create_domain";
+   --  dds_create_domain with SIGINT/SIGTERM blocked meanwhile (shim).
 
-   function Create_Participant
-     (Domain : Domain_Id_T; Qos : Qos_Ptr; Listener : System.Address)
-      return Entity_T
-     with Import, Convention => C, External_Name => "dds_create_participant";
+   function Create_Participant (Domain : Domain_Id_T; Qos : Qos_Ptr) return Entity_T
+     with Import, Convention => C, External_Name => "sancta_dds_create_participant";
+   --  dds_create_participant (no listener) with SIGINT/SIGTERM blocked
+   --  meanwhile, so Cyclone's threads leave them to the Ada runtime (shim).
 
    function Delete (Entity : Entity_T) return Return_T
      with Import, Convention => C, External_Name => "dds_delete";
@@ -216,5 +217,12 @@ package RCL.DDS.Thin is
 
    function Entity_Guid (Entity : Entity_T; Guid : out Guid_Bytes) return Return_T
      with Import, Convention => C, External_Name => "sancta_dds_entity_guid";
+
+   function Endpoint_List
+     (Participant : Entity_T; Publications : C.int) return C.Strings.chars_ptr
+     with Import, Convention => C, External_Name => "sancta_dds_endpoint_list";
+
+   procedure Free (P : C.Strings.chars_ptr)
+     with Import, Convention => C, External_Name => "sancta_dds_free";
 
 end RCL.DDS.Thin;

@@ -216,7 +216,7 @@ package body RCL.DDS is
       This.Domain := Dom;
       Q := Thin.Create_Qos;
       Thin.Qset_Userdata (Q, User_Data'Address, User_Data'Length);
-      Result := Thin.Create_Participant (Thin.Domain_Id_T (Domain), Q, System.Null_Address);
+      Result := Thin.Create_Participant (Thin.Domain_Id_T (Domain), Q);
       Thin.Delete_Qos (Q);
       if Result < 0 then
          This.Finalize;
@@ -236,6 +236,20 @@ package body RCL.DDS is
       Check (Integer (Thin.Entity_Guid (C.int (This.Handle), G)), "getting a GUID");
       return GUID (G);
    end Instance_GUID;
+
+   function Endpoints (This : Participant; Publications : Boolean) return String is
+      use type CS.chars_ptr;
+      List : constant CS.chars_ptr :=
+        Thin.Endpoint_List (C.int (This.Handle), (if Publications then 1 else 0));
+   begin
+      if List = CS.Null_Ptr then
+         raise ROS_Exception with "reading the DDS built-in "
+           & (if Publications then "publication" else "subscription") & " topic";
+      end if;
+      return Result : constant String := CS.Value (List) do
+         Thin.Free (List);
+      end return;
+   end Endpoints;
 
    overriding procedure Finalize (This : in out Participant) is
       To_Delete : Entity_Id;
@@ -511,6 +525,10 @@ package body RCL.DDS is
    begin
       Check (Integer (Result), "creating a waitset");
       This.Handle := Entity_Id (Result);
+      --  Attached to itself (key 0, never reported) so that Wake, which sets
+      --  its trigger, ends a Wait.
+      Check (Integer (Thin.Waitset_Attach (Result, Result, 0)),
+             "attaching a waitset to itself");
    end Create;
 
    function Is_Open (This : Waitset) return Boolean is (This.Handle > 0);

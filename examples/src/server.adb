@@ -1,0 +1,41 @@
+--  The RCLAda slides' Server example: offers example_interfaces/AddTwoInts
+--  as "add_two_ints" and answers until Ctrl-C (or SIGTERM).
+--     server [SERVICE_NAME]
+with Ada.Command_Line;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.Logging;
+with RCL.Nodes;
+
+procedure Server is
+
+   use RCL;
+
+   Support : constant ROSIDL.Typesupport.Service_Support :=
+     ROSIDL.Typesupport.Get_Service_Support ("example_interfaces", "AddTwoInts");
+
+   Node : Nodes.Node := Nodes.Init ("add_two_ints_server");
+
+   procedure Adder
+     (Node : in out Nodes.Node'Class;
+      Req  : ROSIDL.Dynamic.Message;
+      Resp : in out ROSIDL.Dynamic.Message)
+   is
+      pragma Unreferenced (Node);
+      use type ROSIDL.Int64;
+      A : constant ROSIDL.Int64 := Req ("a").As_Int64;
+      B : constant ROSIDL.Int64 := Req ("b").As_Int64;
+   begin
+      Resp ("sum").As_Int64 := A + B;
+      Logging.Info ("Incoming request a:" & A'Image & " b:" & B'Image);
+   end Adder;
+
+   Name : constant String :=
+     (if Ada.Command_Line.Argument_Count >= 1 then Ada.Command_Line.Argument (1)
+      else "add_two_ints");
+
+begin
+   Node.Serve (Support, Name, Adder'Access);
+   Logging.Info ("Ready to add two ints on " & Node.Expand (Name));
+   Node.Spin (During => Nodes.Forever);
+end Server;

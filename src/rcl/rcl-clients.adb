@@ -1,0 +1,423 @@
+with Ada.Containers.Indefinite_Hashed_Maps;
+with Ada.Exceptions;
+with Ada.Real_Time;
+with Ada.Strings.Hash;
+with Ada.Unchecked_Deallocation;
+with ROSIDL.CDR;
+with RCL.Contexts;
+with RCL.DDS.Matching;
+with RCL.Logging;
+with RCL.Services;
+
+package body RCL.Clients is
+
+   use Ada.Real_Time;
+   use type ROSIDL.UInt64;
+   use type RCL.Pending_Calls.Outcome;
+   use type RCL.Pending_Calls.Response_Callback;
+
+   Deep_History : constant := 1000;
+   --  The reply reader keeps at least this many replies: many calls in
+   --  flight (tasks, asynchronous calls) must not push replies out of a
+   --  KEEP_LAST history before they are taken. History depth does not
+   --  affect matching.
+
+   Slice : constant Duration := 0.05;
+   --  Longest single wait of the task reading replies.
+
+   function Earliest (A, B : Time) return Time is (if A < B then A else B);
+
+   function Deadline_Of (Timeout : Duration) return Time is
+     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
+
+   function Seconds_Image (Timeout : Duration) return String is
+     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
+
+   ----------
+   -- Init --
+   ----------
+
+   procedure Init
+     (This    : in out Client;
+      Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   is
+      use ROSIDL.Typesupport;
+      FQ : constant String := Node.Expand (Name);
+      P  : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
+      Id : constant String := "clientid=" & RCL.DDS.Matching.New_Id (P.all) & ";";
+   begin
+      This.Name := To_Unbounded_String (FQ);
+      This.Support := Support;
+      RCL.DDS.Create (This.Requests, P.all, RCL.Services.Request_Topic (FQ),
+                      DDS_Type_Name (Request_Support (Support)), QoS, User_Data => Id);
+      RCL.DDS.Create (This.Replies, P.all, RCL.Services.Reply_Topic (FQ),
+                      DDS_Type_Name (Response_Support (Support)),
+                      (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
+                      User_Data => Id);
+      RCL.DDS.Create (This.Waiting, P.all);
+      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
+      This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);
+      This.Node := Node.Graph_Id;
+      RCL.Graph.Add_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
+      RCL.Graph.Add_Reader (This.Node, RCL.DDS.Endpoint_GUID (This.Replies));
+      This.Open := True;
+   end Init;
+
+   function Is_Open (This : Client) return Boolean is (This.Open);
+
+   function Service_Name (This : Client) return String is (To_String (This.Name));
+
+   -----------------------
+   -- Service_Available --
+   -----------------------
+
+   function Service_Available (This : Client) return Boolean is
+     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
+
+   function Wait_For_Service (This : Client; Timeout : Duration := Forever) return Boolean is
+      Deadline : constant Time := Deadline_Of (Timeout);
+   begin
+      loop
+         if This.Service_Available then
+            return True;
+         end if;
+         exit when Clock >= Deadline or RCL.Contexts.Is_Shutdown;
+         delay until Earliest (Deadline, Clock + Milliseconds (10));
+      end loop;
+      return This.Service_Available;
+   end Wait_For_Service;
+
+   procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
+   begin
+      if not This.Wait_For_Service (Timeout) then
+         raise RCL_Timeout with "service " & To_String (This.Name)
+           & " not available after" & Seconds_Image (Timeout);
+      end if;
+   end Wait_For_Service;
+
+   -----------------
+   -- Take_Replies --
+   -----------------
+
+   procedure Take_Replies (This : in out Client; Taken : out Natural) is
+      --  Takes every reply available and hands it to its call.
+      Info : RCL.DDS.Sample_Info;
+   begin
+      Taken := 0;
+      loop
+         declare
+            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Replies, Info);
+            Response : ROSIDL.Dynamic.Message :=
+              ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
+            Header   : ROSIDL.CDR.Request_Header;
+            Result   : RCL.Pending_Calls.Outcome;
+            Callback : RCL.Pending_Calls.Response_Callback;
+         begin
+            exit when Data'Length = 0;
+            Taken := Taken + 1;
+            ROSIDL.CDR.Decode (Data, Response, Header);
+            if Header.GUID = This.Handle then
+               This.Calls.Deliver (Header.Sequence, Response, Result, Callback);
+               if Result = RCL.Pending_Calls.Run_Callback then
+                  begin
+                     Callback (Response);
+                  exception
+                     when E : others =>
+                        RCL.Logging.Error
+                          ("response callback of service " & To_String (This.Name)
+                           & " raised " & Ada.Exceptions.Exception_Information (E));
+                  end;
+               end if;
+            end if;
+            --  Replies to other clients of this topic, and late replies
+            --  (Unknown_Sequence), are dropped.
+         exception
+            when E : ROSIDL.Decode_Error =>
+               RCL.Logging.Warn ("service " & To_String (This.Name)
+                                 & ": malformed reply dropped: "
+                                 & Ada.Exceptions.Exception_Message (E));
+         end;
+      end loop;
+   end Take_Replies;
+
+   procedure Pump_Once (This : in out Client; Until_Time : Time) is
+      --  Reads replies, waiting for them until Until_Time (at most Slice).
+      Ready : RCL.DDS.Key_Array (1 .. 1);
+      Last  : Natural;
+      Taken : Natural;
+   begin
+      Take_Replies (This, Taken);
+      if Taken = 0 then
+         RCL.DDS.Wait (This.Waiting,
+                       Duration'Min (Slice, To_Duration (Until_Time - Clock)), Ready, Last);
+         Take_Replies (This, Taken);
+      end if;
+   end Pump_Once;
+
+   ----------
+   -- Pump --
+   ----------
+
+   task body Pump is
+      Done    : Boolean := False;
+      Got     : Boolean;
+      Expired : Natural;
+   begin
+      while not Done loop
+         Owner.Calls.Try_Lead (Got);
+         if Got then
+            begin
+               Pump_Once (Owner.all, Clock + To_Time_Span (Slice));
+            exception
+               when E : others =>
+                  RCL.Logging.Error ("reading the replies of service "
+                                     & To_String (Owner.Name) & ": "
+                                     & Ada.Exceptions.Exception_Message (E));
+            end;
+            Owner.Calls.Release;
+         else
+            delay 0.002;
+         end if;
+         Owner.Calls.Expire (Clock, Expired);
+         if Expired > 0 then
+            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
+                              & To_String (Owner.Name) & " got no response in time");
+         end if;
+         Owner.Calls.Pumping_Done (Done);
+      end loop;
+   end Pump;
+
+   ----------
+   -- Send --
+   ----------
+
+   procedure Send
+     (This : in out Client; Request : ROSIDL.Dynamic.Message; Sequence : ROSIDL.Int64)
+   is
+      use ROSIDL.Typesupport;
+   begin
+      if ROSIDL.Dynamic.Type_Name (Request)
+        /= Full_Name (Request_Support (This.Support))
+      then
+         raise ROS_Exception with "service " & To_String (This.Name) & " takes "
+           & Full_Name (Request_Support (This.Support)) & " requests, not "
+           & ROSIDL.Dynamic.Type_Name (Request);
+      end if;
+      RCL.DDS.Write (This.Requests,
+                     ROSIDL.CDR.Encode (Request, (GUID => This.Handle, Sequence => Sequence)));
+   end Send;
+
+   ----------
+   -- Call --
+   ----------
+
+   procedure Free is new Ada.Unchecked_Deallocation
+     (RCL.Pending_Calls.Slot, RCL.Pending_Calls.Slot_Access);
+
+   function Call
+     (This    : in out Client;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message
+   is
+      Deadline : constant Time := Deadline_Of (Timeout);
+      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
+      Into     : RCL.Pending_Calls.Slot_Access;
+      Got      : Boolean;
+   begin
+      if not This.Wait_For_Service (Timeout) then
+         raise RCL_Timeout with "service " & To_String (This.Name)
+           & " not available after" & Seconds_Image (Timeout);
+      end if;
+      Into := new RCL.Pending_Calls.Slot;
+      This.Calls.Add_Sync (Sequence, Into);
+      begin
+         Send (This, Request, Sequence);
+         while not Into.Filled loop
+            if RCL.Contexts.Is_Shutdown then
+               raise ROS_Exception with "shut down while waiting for service "
+                 & To_String (This.Name);
+            elsif Clock >= Deadline then
+               raise RCL_Timeout with "no response from service " & To_String (This.Name)
+                 & " after" & Seconds_Image (Timeout);
+            end if;
+            This.Calls.Try_Lead (Got);
+            if Got then
+               begin
+                  Pump_Once (This, Deadline);
+               exception
+                  when others =>
+                     This.Calls.Release;
+                     raise;
+               end;
+               This.Calls.Release;
+            else
+               select
+                  Into.Wait;
+               or
+                  delay until Earliest (Deadline, Clock + Milliseconds (2));
+               end select;
+            end if;
+         end loop;
+      exception
+         when others =>
+            This.Calls.Remove (Sequence);
+            Free (Into);
+            raise;
+      end;
+      return Response : constant ROSIDL.Dynamic.Message := Into.Response do
+         Free (Into);
+      end return;
+   end Call;
+
+   ----------------
+   -- Call_Async --
+   ----------------
+
+   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
+
+   procedure Call_Async
+     (This     : in out Client;
+      Request  : ROSIDL.Dynamic.Message;
+      Callback : not null Response_Callback;
+      Timeout  : Duration := 60.0)
+   is
+      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
+      Start    : Boolean;
+   begin
+      This.Calls.Add_Async (Sequence, Callback, Deadline_Of (Timeout), Start);
+      if Start then
+         if This.Pumper /= null then
+            while not This.Pumper'Terminated loop
+               delay 0.001;  --  The previous pump is ending.
+            end loop;
+            Free (This.Pumper);
+         end if;
+         This.Pumper := new Pump (This'Unchecked_Access);
+      end if;
+      Send (This, Request, Sequence);
+   exception
+      when others =>
+         This.Calls.Remove (Sequence);
+         raise;
+   end Call_Async;
+
+   function Pending_Async (This : Client) return Natural is (This.Calls.Async_Count);
+
+   --------------
+   -- Finalize --
+   --------------
+
+   overriding procedure Finalize (This : in out Client) is
+   begin
+      This.Calls.Stop;
+      if This.Pumper /= null then
+         while not This.Pumper'Terminated loop
+            delay 0.001;
+         end loop;
+         Free (This.Pumper);
+      end if;
+      if This.Open then
+         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
+         --  (RCL.Graph has no Remove_Reader: the reply reader stays listed
+         --  until the node goes.)
+      end if;
+      This.Open := False;
+   exception
+      when others =>
+         This.Open := False;
+   end Finalize;
+
+   ------------------------
+   -- Per-node clients --
+   ------------------------
+
+   type Client_Access is access Client;
+
+   package Client_Maps is new Ada.Containers.Indefinite_Hashed_Maps
+     (String, Client_Access, Ada.Strings.Hash, "=");
+
+   procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
+
+   protected Cache is
+      function Find (Key : String) return Client_Access;
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean);
+      --  Made becomes the cached client (another task's if it came first;
+      --  Kept is then False and the caller frees its own).
+   private
+      Clients : Client_Maps.Map;
+   end Cache;
+
+   protected body Cache is
+      function Find (Key : String) return Client_Access is
+        (if Clients.Contains (Key) then Clients.Element (Key) else null);
+
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean) is
+      begin
+         Kept := not Clients.Contains (Key);
+         if Kept then
+            Clients.Insert (Key, Made);
+         else
+            Made := Clients.Element (Key);
+         end if;
+      end Insert;
+   end Cache;
+
+   function Client_For
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String) return Client_Access
+   is
+      --  The client is made outside the protected object: making it
+      --  announces endpoints (RCL.Graph), which may block.
+      Key    : constant String :=
+        Node.Fully_Qualified_Name & " " & Node.Expand (Name) & " "
+        & ROSIDL.Typesupport.Full_Name (Support);
+      Result : Client_Access := Cache.Find (Key);
+      Mine   : Client_Access;
+      Kept   : Boolean;
+   begin
+      if Result = null then
+         Mine := new Client;
+         begin
+            Mine.Init (Node, Support, Name);
+         exception
+            when others =>
+               Free (Mine);
+               raise;
+         end;
+         Result := Mine;
+         Cache.Insert (Key, Result, Kept);
+         if not Kept then
+            Free (Mine);
+         end if;
+      end if;
+      return Result;
+   end Client_For;
+
+   function Call
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message
+   is
+      C : constant Client_Access := Client_For (Node, Support, Name);
+   begin
+      return C.Call (Request, Timeout);
+   end Call;
+
+   procedure Wait_For_Service
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Timeout : Duration := Forever)
+   is
+      C : constant Client_Access := Client_For (Node, Support, Name);
+   begin
+      C.Wait_For_Service (Timeout);
+   end Wait_For_Service;
+
+end RCL.Clients;

@@ -1,0 +1,127 @@
+--  Clients: calls of a service, with the conventions of rmw_cyclonedds_cpp
+--  (see RCL.Services): requests on "rq/<name>Request" from a writer whose
+--  USER_DATA is "clientid=<id>;", replies on "rr/<name>Reply" read by a
+--  reader with the same USER_DATA; the request header carries the request
+--  writer's instance handle and a process-wide sequence number, and only
+--  replies with this client's handle are kept.
+--
+--     C : Clients.Client;
+--     C.Init (Node, Get_Service_Support ("example_interfaces", "AddTwoInts"),
+--             "add_two_ints");
+--     C.Wait_For_Service (Timeout => 5.0);            --  RCL_Timeout if not
+--     Sum := C.Call (Request, Timeout => 1.0) ("sum").As_Int64;
+--     C.Call_Async (Request, On_Sum'Access);          --  returns at once
+--
+--  Several tasks may call one client at once: each gets its own response
+--  (pairing by sequence number, RCL.Pending_Calls). Call waits for the
+--  service to be available before sending (a request sent to nobody would
+--  be lost), all within its Timeout. Asynchronous callbacks run in a task
+--  of the client that lives while asynchronous calls are pending.
+with Ada.Finalization;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.Nodes;
+with RCL.Pending_Calls;
+with RCL.QoS;
+
+private with Ada.Strings.Unbounded;
+private with RCL.DDS;
+private with RCL.Graph;
+
+package RCL.Clients is
+
+   Forever : constant Duration := RCL.Nodes.Forever;
+
+   subtype Response_Callback is RCL.Pending_Calls.Response_Callback;
+
+   type Client is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Init
+     (This    : in out Client;
+      Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
+     with Pre => not Is_Open (This);
+   --  Name is expanded like a topic name (relative to the node's namespace).
+
+   function Is_Open (This : Client) return Boolean;
+
+   function Service_Name (This : Client) return String;
+   --  The fully qualified service name.
+
+   function Service_Available (This : Client) return Boolean
+     with Pre => Is_Open (This);
+   --  A server's request reader and reply writer (same serviceid) matched.
+
+   function Wait_For_Service (This : Client; Timeout : Duration := Forever) return Boolean
+     with Pre => Is_Open (This);
+   procedure Wait_For_Service (This : Client; Timeout : Duration := Forever)
+     with Pre => Is_Open (This);
+   --  The procedure raises RCL_Timeout when the service is not available
+   --  within Timeout.
+
+   function Call
+     (This    : in out Client;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message
+     with Pre => Is_Open (This);
+   --  RCL_Timeout (naming the service) when no response came within
+   --  Timeout; ROS_Exception when Request is not of the service's request
+   --  type, or when the context shuts down (Ctrl-C) during the wait.
+
+   procedure Call_Async
+     (This     : in out Client;
+      Request  : ROSIDL.Dynamic.Message;
+      Callback : not null Response_Callback;
+      Timeout  : Duration := 60.0)
+     with Pre => Is_Open (This);
+   --  Sends Request at once (without waiting for the service) and returns;
+   --  Callback runs with the response in the client's task. A response not
+   --  come within Timeout is forgotten (a warning is logged).
+
+   function Pending_Async (This : Client) return Natural;
+   --  Asynchronous calls still waiting for their response.
+
+   --  One client per (node, service name) made on first use:
+
+   function Call
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Request : ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever) return ROSIDL.Dynamic.Message;
+   --  What Node.Client_Call does.
+
+   procedure Wait_For_Service
+     (Node    : RCL.Nodes.Node'Class;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      Timeout : Duration := Forever);
+   --  RCL_Timeout when the service is not available within Timeout.
+
+   overriding procedure Finalize (This : in out Client);
+
+private
+
+   use Ada.Strings.Unbounded;
+
+   task type Pump (Owner : not null access Client);
+   --  Reads replies while asynchronous calls are pending.
+   type Pump_Access is access Pump;
+
+   type Client is new Ada.Finalization.Limited_Controlled with record
+      Open     : Boolean := False;
+      Name     : Unbounded_String;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Requests : RCL.DDS.Writer;
+      Replies  : RCL.DDS.Reader;
+      Waiting  : RCL.DDS.Waitset;
+      Handle   : ROSIDL.UInt64 := 0;
+      Calls    : RCL.Pending_Calls.Table;
+      Pumper   : Pump_Access;
+      Node     : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      --  Where the endpoints are announced (ros_discovery_info).
+   end record;
+
+end RCL.Clients;

@@ -1,0 +1,1031 @@
+with Ada.Command_Line;
+with Ada.Containers.Indefinite_Ordered_Maps;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with ROSIDL.CDR;
+with ROSIDL.Typesupport;
+with RCL.Clocks;
+with RCL.DDS;
+with RCL.Publishers;
+with RCL.QoS;
+with RCL.Services;
+
+package body RCL.Parameters is
+
+   use ROSIDL.Dynamic;
+   use type RCL.YAML.Node_Kind;
+   use type RCL.YAML.Scalar_Kind;
+
+   ----------------
+   -- Type_Image --
+   ----------------
+
+   function Type_Image (T : Parameter_Type) return String is
+     (case T is
+         when Not_Set => "not set",
+         when Bool_Type => "boolean",
+         when Integer_Type => "integer",
+         when Double_Type => "double",
+         when String_Type => "string",
+         when Byte_Array_Type => "byte array",
+         when Bool_Array_Type => "boolean array",
+         when Integer_Array_Type => "integer array",
+         when Double_Array_Type => "double array",
+         when String_Array_Type => "string array");
+
+   function To_Value (B : Boolean) return Value is ((Kind => Bool_Type, Bool => B, others => <>));
+   function To_Value (I : Long_Long_Integer) return Value is
+     ((Kind => Integer_Type, Int => I, others => <>));
+   function To_Value (D : Long_Float) return Value is
+     ((Kind => Double_Type, Double => D, others => <>));
+   function To_Value (S : String) return Value is
+     ((Kind => String_Type, Text => To_Unbounded_String (S), others => <>));
+
+   -----------
+   -- Image --
+   -----------
+
+   function Trim (S : String) return String is
+     (Ada.Strings.Fixed.Trim (S, Ada.Strings.Both));
+
+   function Double_Image (D : Long_Float) return String is
+      --  The shortest decimal form that reads back as D ("2.5", "0.1").
+      package F is new Ada.Text_IO.Float_IO (Long_Float);
+      Buffer : String (1 .. 64);
+   begin
+      if D /= D then
+         return ".nan";
+      elsif D > Long_Float'Last then
+         return ".inf";
+      elsif D < Long_Float'First then
+         return "-.inf";
+      end if;
+      for Aft in 1 .. 17 loop
+         if abs D >= 1.0E-4 and then abs D < 1.0E15 then
+            F.Put (Buffer, D, Aft => Aft, Exp => 0);
+         else
+            F.Put (Buffer, D, Aft => Aft, Exp => 3);
+         end if;
+         if Long_Float'Value (Buffer) = D or else Aft = 17 then
+            return Trim (Buffer);
+         end if;
+      end loop;
+      return Trim (Buffer);
+   end Double_Image;
+
+   function Image (V : Value) return String is
+      R : Unbounded_String;
+      procedure Add (S : String) is
+      begin
+         Append (R, (if Length (R) = 1 then "" else ", ") & S);
+      end Add;
+   begin
+      case V.Kind is
+         when Not_Set => return "";
+         when Bool_Type => return (if V.Bool then "True" else "False");
+         when Integer_Type => return Trim (V.Int'Image);
+         when Double_Type => return Double_Image (V.Double);
+         when String_Type => return To_String (V.Text);
+         when others => null;
+      end case;
+      R := To_Unbounded_String ("[");
+      case V.Kind is
+         when Byte_Array_Type =>
+            for B of V.Bytes loop
+               Add (Trim (B'Image));
+            end loop;
+         when Bool_Array_Type =>
+            for B of V.Bools loop
+               Add (if B then "True" else "False");
+            end loop;
+         when Integer_Array_Type =>
+            for I of V.Ints loop
+               Add (Trim (I'Image));
+            end loop;
+         when Double_Array_Type =>
+            for D of V.Doubles loop
+               Add (Double_Image (D));
+            end loop;
+         when String_Array_Type =>
+            for T of V.Texts loop
+               Add ("'" & To_String (T) & "'");
+            end loop;
+         when others => null;
+      end case;
+      Append (R, "]");
+      return To_String (R);
+   end Image;
+
+   ----------------
+   -- YAML_Image --
+   ----------------
+
+   function YAML_Image (V : Value) return String is
+      function Quote (S : String) return String is
+         R : Unbounded_String := To_Unbounded_String ("'");
+      begin
+         for C of S loop
+            Append (R, (if C = ''' then "''" else [C]));
+         end loop;
+         return To_String (R) & "'";
+      end Quote;
+
+      function Real (D : Long_Float) return String is
+         S : constant String := Double_Image (D);
+      begin
+         --  Keep it a float for YAML ("3" would read back as an integer).
+         return (if Ada.Strings.Fixed.Index (S, ".") = 0
+                   and then Ada.Strings.Fixed.Index (S, "E") = 0
+                 then S & ".0" else S);
+      end Real;
+
+      R : Unbounded_String;
+      procedure Add (S : String) is
+      begin
+         Append (R, (if Length (R) = 1 then "" else ", ") & S);
+      end Add;
+   begin
+      case V.Kind is
+         when Not_Set => return "~";
+         when Bool_Type => return (if V.Bool then "true" else "false");
+         when Integer_Type => return Trim (V.Int'Image);
+         when Double_Type => return Real (V.Double);
+         when String_Type => return Quote (To_String (V.Text));
+         when others => null;
+      end case;
+      R := To_Unbounded_String ("[");
+      case V.Kind is
+         when Byte_Array_Type =>
+            for B of V.Bytes loop
+               Add (Trim (B'Image));
+            end loop;
+         when Bool_Array_Type =>
+            for B of V.Bools loop
+               Add (if B then "true" else "false");
+            end loop;
+         when Integer_Array_Type =>
+            for I of V.Ints loop
+               Add (Trim (I'Image));
+            end loop;
+         when Double_Array_Type =>
+            for D of V.Doubles loop
+               Add (Real (D));
+            end loop;
+         when String_Array_Type =>
+            for T of V.Texts loop
+               Add (Quote (To_String (T)));
+            end loop;
+         when others => null;
+      end case;
+      Append (R, "]");
+      return To_String (R);
+   end YAML_Image;
+
+   ---------------
+   -- From_YAML --
+   ---------------
+
+   function From_YAML (From : RCL.YAML.Document; N : RCL.YAML.Node) return Value is
+      use RCL.YAML;
+
+      procedure Fail (At_Node : Node; Message : String) is
+      begin
+         raise Parse_Error with From.Where (At_Node) & ": " & Message;
+      end Fail;
+
+      function Scalar_Value (At_Node : Node) return Value is
+         T : constant String := From.Text (At_Node);
+      begin
+         if From.Kind (At_Node) in Sequence | Mapping then
+            Fail (At_Node, "a parameter value must be a scalar or a sequence of scalars");
+         end if;
+         case From.Scalar_Type (At_Node) is
+            when Null_Scalar =>
+               Fail (At_Node, "a parameter value cannot be null");
+               return (others => <>);
+            when Bool_Scalar =>
+               return To_Value (T in "true" | "True" | "TRUE");
+            when Int_Scalar =>
+               return To_Value (Integer_Value (T));
+            when Float_Scalar =>
+               return To_Value (Float_Value (T));
+            when String_Scalar =>
+               return To_Value (T);
+         end case;
+      exception
+         when Constraint_Error =>
+            Fail (At_Node, "'" & T & "' is out of range");
+            return (others => <>);
+      end Scalar_Value;
+   begin
+      if From.Kind (N) /= Sequence then
+         return Scalar_Value (N);
+      end if;
+      declare
+         Items : array (1 .. From.Length (N)) of Value;
+         Kind  : Parameter_Type := Not_Set;
+         R     : Value;
+      begin
+         for I in Items'Range loop
+            Items (I) := Scalar_Value (From.Item (N, I));
+            if Kind = Not_Set then
+               Kind := Items (I).Kind;
+            elsif Kind /= Items (I).Kind then
+               if Kind in Integer_Type | Double_Type
+                 and then Items (I).Kind in Integer_Type | Double_Type
+               then
+                  Kind := Double_Type;
+               else
+                  Fail (From.Item (N, I), "a parameter array holds values of one type ("
+                        & Type_Image (Kind) & " here, not " & Type_Image (Items (I).Kind) & ")");
+               end if;
+            end if;
+         end loop;
+         case Kind is
+            when Bool_Type | Not_Set =>
+               R.Kind := (if Kind = Not_Set then String_Array_Type else Bool_Array_Type);
+               for V of Items loop
+                  R.Bools.Append (V.Bool);
+               end loop;
+            when Integer_Type =>
+               R.Kind := Integer_Array_Type;
+               for V of Items loop
+                  R.Ints.Append (V.Int);
+               end loop;
+            when Double_Type =>
+               R.Kind := Double_Array_Type;
+               for V of Items loop
+                  R.Doubles.Append (if V.Kind = Integer_Type then Long_Float (V.Int) else V.Double);
+               end loop;
+            when others =>
+               R.Kind := String_Array_Type;
+               for V of Items loop
+                  R.Texts.Append (V.Text);
+               end loop;
+         end case;
+         return R;
+      end;
+   end From_YAML;
+
+   function Parse (Text : String; Source : String := "<value>") return Value is
+      D : constant RCL.YAML.Document := RCL.YAML.Parse (Text, Source);
+   begin
+      return From_YAML (D, D.Root);
+   end Parse;
+
+   -----------
+   -- Store --
+   -----------
+
+   type Entry_Record is record
+      Desc    : Descriptor;
+      Current : Value;
+   end record;
+
+   package Entry_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Entry_Record);
+   package Validator_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Validator);
+
+   type Publisher_Access is access RCL.Publishers.Publisher;
+   package Publisher_Maps is new Ada.Containers.Indefinite_Ordered_Maps
+     (String, Publisher_Access);
+
+   type Override is record
+      Pattern, Name : Unbounded_String;
+      New_Value     : Value;
+   end record;
+
+   package Override_Vectors is new Ada.Containers.Vectors (Positive, Override);
+
+   function Key (Node_Name, Name : String) return String is (Node_Name & ASCII.NUL & Name);
+
+   function Matches (Pattern, Node_Name : String) return Boolean is
+      Base : constant Natural := Ada.Strings.Fixed.Index (Node_Name, "/", Ada.Strings.Backward);
+   begin
+      return Pattern in "/**" | "**"
+        or else Pattern = Node_Name
+        or else Pattern = Node_Name (Base + 1 .. Node_Name'Last);
+   end Matches;
+
+   protected Store is
+      procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean);
+      function Contains (Node_Name, Name : String) return Boolean;
+      function Get (Node_Name, Name : String) return Entry_Record;
+      procedure Put_Value (Node_Name, Name : String; V : Value);
+      function Names_Of (Node_Name : String) return Text_Vectors.Vector;
+      procedure Set_Validator (Node_Name : String; Check : Validator);
+      function Validator_Of (Node_Name : String) return Validator;
+      procedure Set_Publisher (Node_Name : String; P : Publisher_Access);
+      function Publisher_Of (Node_Name : String) return Publisher_Access;
+      procedure Add_Override (O : Override);
+      procedure Clear_Overrides;
+      procedure Find_Override
+        (Node_Name, Name : String; Found : out Boolean; V : out Value;
+         Pattern : out Unbounded_String);
+      procedure Mark_Loaded (Was_Loaded : out Boolean);
+   private
+      Entries    : Entry_Maps.Map;
+      Validators : Validator_Maps.Map;
+      Publishers : Publisher_Maps.Map;
+      Overrides  : Override_Vectors.Vector;
+      Loaded     : Boolean := False;
+   end Store;
+
+   protected body Store is
+
+      procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean) is
+      begin
+         Done := not Entries.Contains (Key (Node_Name, Name));
+         if Done then
+            Entries.Insert (Key (Node_Name, Name), E);
+         end if;
+      end Insert;
+
+      function Contains (Node_Name, Name : String) return Boolean is
+        (Entries.Contains (Key (Node_Name, Name)));
+
+      function Get (Node_Name, Name : String) return Entry_Record is
+        (Entries.Element (Key (Node_Name, Name)));
+
+      procedure Put_Value (Node_Name, Name : String; V : Value) is
+      begin
+         Entries.Reference (Key (Node_Name, Name)).Current := V;
+      end Put_Value;
+
+      function Names_Of (Node_Name : String) return Text_Vectors.Vector is
+         Prefix : constant String := Node_Name & ASCII.NUL;
+      begin
+         return R : Text_Vectors.Vector do
+            for C in Entries.Iterate loop
+               declare
+                  K : constant String := Entry_Maps.Key (C);
+               begin
+                  if K'Length > Prefix'Length
+                    and then K (K'First .. K'First + Prefix'Length - 1) = Prefix
+                  then
+                     R.Append (To_Unbounded_String (K (K'First + Prefix'Length .. K'Last)));
+                  end if;
+               end;
+            end loop;
+         end return;
+      end Names_Of;
+
+      procedure Set_Validator (Node_Name : String; Check : Validator) is
+      begin
+         Validators.Include (Node_Name, Check);
+      end Set_Validator;
+
+      function Validator_Of (Node_Name : String) return Validator is
+        (if Validators.Contains (Node_Name) then Validators.Element (Node_Name) else null);
+
+      procedure Set_Publisher (Node_Name : String; P : Publisher_Access) is
+      begin
+         Publishers.Include (Node_Name, P);
+      end Set_Publisher;
+
+      function Publisher_Of (Node_Name : String) return Publisher_Access is
+        (if Publishers.Contains (Node_Name) then Publishers.Element (Node_Name) else null);
+
+      procedure Add_Override (O : Override) is
+      begin
+         Overrides.Append (O);
+      end Add_Override;
+
+      procedure Clear_Overrides is
+      begin
+         Overrides.Clear;
+      end Clear_Overrides;
+
+      procedure Find_Override
+        (Node_Name, Name : String; Found : out Boolean; V : out Value;
+         Pattern : out Unbounded_String) is
+      begin
+         Found := False;
+         for O of Overrides loop
+            if To_String (O.Name) = Name and then Matches (To_String (O.Pattern), Node_Name) then
+               Found := True;
+               V := O.New_Value;
+               Pattern := O.Pattern;
+            end if;
+         end loop;
+      end Find_Override;
+
+      procedure Mark_Loaded (Was_Loaded : out Boolean) is
+      begin
+         Was_Loaded := Loaded;
+         Loaded := True;
+      end Mark_Loaded;
+
+   end Store;
+
+   procedure Add_Override (Node_Pattern, Name : String; New_Value : Value) is
+   begin
+      Store.Add_Override ((To_Unbounded_String (Node_Pattern), To_Unbounded_String (Name),
+                           New_Value));
+   end Add_Override;
+
+   procedure Clear_Overrides is
+   begin
+      Store.Clear_Overrides;
+   end Clear_Overrides;
+
+   ------------
+   -- Events --
+   ------------
+
+   Event_Support : ROSIDL.Typesupport.Message_Support;
+   Event_Support_Set : Boolean := False;
+
+   procedure Put_Parameter_Value (Ref : Field_Ref; V : Value) is
+   begin
+      Ref.Field_Reference ("type").As_UInt8.Element.all := Parameter_Type'Pos (V.Kind);
+      case V.Kind is
+         when Not_Set => null;
+         when Bool_Type => Ref.Field_Reference ("bool_value").As_Bool.Element.all := V.Bool;
+         when Integer_Type =>
+            Ref.Field_Reference ("integer_value").As_Int64.Element.all := ROSIDL.Int64 (V.Int);
+         when Double_Type =>
+            Ref.Field_Reference ("double_value").As_Float64.Element.all :=
+              ROSIDL.Float64 (V.Double);
+         when String_Type =>
+            Ref.Field_Reference ("string_value").Set_String (To_String (V.Text));
+         when Byte_Array_Type =>
+            declare
+               A : UInt8_Array (1 .. Natural (V.Bytes.Length));
+            begin
+               for I in A'Range loop
+                  A (I) := V.Bytes (I);
+               end loop;
+               Ref.Field_Reference ("byte_array_value").Set_UInt8_Array (A);
+            end;
+         when Bool_Array_Type =>
+            declare
+               A : Bool_Array (1 .. Natural (V.Bools.Length));
+            begin
+               for I in A'Range loop
+                  A (I) := V.Bools (I);
+               end loop;
+               Ref.Field_Reference ("bool_array_value").Set_Bool_Array (A);
+            end;
+         when Integer_Array_Type =>
+            declare
+               A : Int64_Array (1 .. Natural (V.Ints.Length));
+            begin
+               for I in A'Range loop
+                  A (I) := ROSIDL.Int64 (V.Ints.Element (I));
+               end loop;
+               Ref.Field_Reference ("integer_array_value").Set_Int64_Array (A);
+            end;
+         when Double_Array_Type =>
+            declare
+               A : Float64_Array (1 .. Natural (V.Doubles.Length));
+            begin
+               for I in A'Range loop
+                  A (I) := ROSIDL.Float64 (V.Doubles.Element (I));
+               end loop;
+               Ref.Field_Reference ("double_array_value").Set_Float64_Array (A);
+            end;
+         when String_Array_Type =>
+            declare
+               A : constant Array_Ref := Ref.Field_Reference ("string_array_value").As_Array;
+            begin
+               A.Resize (Natural (V.Texts.Length));
+               for I in 1 .. Natural (V.Texts.Length) loop
+                  A.Element (I).Set_String (To_String (V.Texts (I)));
+               end loop;
+            end;
+      end case;
+   end Put_Parameter_Value;
+
+   function Get_Parameter_Value (Ref : Field_Ref) return Value is
+      T : constant Natural := Natural (Ref.Field_Reference ("type").As_UInt8.Element.all);
+      V : Value;
+   begin
+      if T > Parameter_Type'Pos (Parameter_Type'Last) then
+         raise Parameter_Error with "unknown parameter type" & T'Image;
+      end if;
+      V.Kind := Parameter_Type'Val (T);
+      case V.Kind is
+         when Not_Set => null;
+         when Bool_Type => V.Bool := Ref.Field_Reference ("bool_value").As_Bool.Element.all;
+         when Integer_Type =>
+            V.Int := Long_Long_Integer
+              (Ref.Field_Reference ("integer_value").As_Int64.Element.all);
+         when Double_Type =>
+            V.Double := Long_Float (Ref.Field_Reference ("double_value").As_Float64.Element.all);
+         when String_Type =>
+            V.Text := To_Unbounded_String (Ref.Field_Reference ("string_value").Get_String);
+         when Byte_Array_Type =>
+            for B of Ref.Field_Reference ("byte_array_value").Get_UInt8_Array loop
+               V.Bytes.Append (B);
+            end loop;
+         when Bool_Array_Type =>
+            for B of Ref.Field_Reference ("bool_array_value").Get_Bool_Array loop
+               V.Bools.Append (B);
+            end loop;
+         when Integer_Array_Type =>
+            for I of Ref.Field_Reference ("integer_array_value").Get_Int64_Array loop
+               V.Ints.Append (Long_Long_Integer (I));
+            end loop;
+         when Double_Array_Type =>
+            for D of Ref.Field_Reference ("double_array_value").Get_Float64_Array loop
+               V.Doubles.Append (Long_Float (D));
+            end loop;
+         when String_Array_Type =>
+            declare
+               A : constant Array_Ref := Ref.Field_Reference ("string_array_value").As_Array;
+            begin
+               for I in 1 .. A.Length loop
+                  V.Texts.Append (To_Unbounded_String (A.Element (I).Get_String));
+               end loop;
+            end;
+      end case;
+      return V;
+   end Get_Parameter_Value;
+
+   procedure Publish_Event (Node_Name : String; Names : Text_Vectors.Vector; Is_New : Boolean) is
+      P : constant Publisher_Access := Store.Publisher_Of (Node_Name);
+   begin
+      if P = null or else not Event_Support_Set then
+         return;
+      end if;
+      declare
+         Event : constant Message := Init (Event_Support);
+         Now   : constant RCL.DDS.Time_Ns := RCL.DDS.Now;
+         use type RCL.DDS.Time_Ns;
+         List  : constant Array_Ref :=
+           Event ((if Is_New then "new_parameters" else "changed_parameters")).As_Array;
+      begin
+         Event ("stamp")("sec").As_Int32.Element.all := ROSIDL.Int32 (Now / 1_000_000_000);
+         Event ("stamp")("nanosec").As_UInt32.Element.all :=
+           ROSIDL.UInt32 (Now mod 1_000_000_000);
+         Event ("node").Set_String (Node_Name);
+         List.Resize (Natural (Names.Length));
+         for I in 1 .. Natural (Names.Length) loop
+            List.Element (I).Field_Reference ("name").Set_String (To_String (Names (I)));
+            Put_Parameter_Value (List.Element (I).Field_Reference ("value"),
+                                 Store.Get (Node_Name, To_String (Names (I))).Current);
+         end loop;
+         P.Publish_Raw (ROSIDL.CDR.Encode (Event));
+      end;
+   end Publish_Event;
+
+   ---------------------
+   -- Declare and get --
+   ---------------------
+
+   procedure Declare_Parameter
+     (Node        : RCL.Nodes.Node'Class;
+      Name        : String;
+      Default     : Value;
+      Description : String := "";
+      Read_Only   : Boolean := False)
+   is
+      Node_Name : constant String := Node.Fully_Qualified_Name;
+      Loaded    : Boolean;
+      Found     : Boolean;
+      Initial   : Value := Default;
+      From      : Unbounded_String;
+      Done      : Boolean;
+   begin
+      if Name = "" then
+         raise Parameter_Error with "empty parameter name";
+      end if;
+      Store.Mark_Loaded (Loaded);
+      if not Loaded then
+         Load_Arguments;
+      end if;
+      Store.Find_Override (Node_Name, Name, Found, Initial, From);
+      if not Found then
+         Initial := Default;
+      elsif Initial.Kind /= Default.Kind then
+         if Default.Kind = Double_Type and then Initial.Kind = Integer_Type then
+            Initial := To_Value (Long_Float (Initial.Int));
+         else
+            raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name & " is "
+              & Type_Image (Default.Kind) & ", but the override for '" & To_String (From)
+              & "' is " & Type_Image (Initial.Kind) & " (" & Image (Initial) & ")";
+         end if;
+      end if;
+      Store.Insert (Node_Name, Name,
+                    (Desc    => (Name        => To_Unbounded_String (Name),
+                                 Kind        => Default.Kind,
+                                 Description => To_Unbounded_String (Description),
+                                 Read_Only   => Read_Only),
+                     Current => Initial), Done);
+      if not Done then
+         raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name
+           & " is already declared";
+      end if;
+      Publish_Event (Node_Name, Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), True);
+   end Declare_Parameter;
+
+   function Has_Parameter (Node : RCL.Nodes.Node'Class; Name : String) return Boolean is
+     (Store.Contains (Node.Fully_Qualified_Name, Name));
+
+   function Get (Node : RCL.Nodes.Node'Class; Name : String) return Value is
+   begin
+      if not Store.Contains (Node.Fully_Qualified_Name, Name) then
+         raise Parameter_Error with "parameter '" & Name & "' of "
+           & Node.Fully_Qualified_Name & " is not declared";
+      end if;
+      return Store.Get (Node.Fully_Qualified_Name, Name).Current;
+   end Get;
+
+   procedure On_Set
+     (Node  : RCL.Nodes.Node'Class;
+      Check : not null access function (Name : String; New_Value : Value) return String)
+   is
+      Stored : constant Validator with Import, Address => Check'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+   begin
+      Store.Set_Validator (Node.Fully_Qualified_Name, Stored);
+   end On_Set;
+
+   ---------
+   -- Set --
+   ---------
+
+   function Check (Node_Name, Name : String; New_Value : Value) return String is
+      --  "" when New_Value may be set, else the reason.
+   begin
+      if not Store.Contains (Node_Name, Name) then
+         return "parameter '" & Name & "' is not declared";
+      end if;
+      declare
+         E : constant Entry_Record := Store.Get (Node_Name, Name);
+         V : constant Validator := Store.Validator_Of (Node_Name);
+      begin
+         if E.Desc.Read_Only then
+            return "parameter '" & Name & "' is read-only";
+         elsif New_Value.Kind /= E.Desc.Kind then
+            return "parameter '" & Name & "' is " & Type_Image (E.Desc.Kind) & ", not "
+              & Type_Image (New_Value.Kind);
+         elsif V /= null then
+            return V (Name, New_Value);
+         end if;
+         return "";
+      end;
+   exception
+      when E : others =>
+         return "the validation of '" & Name & "' failed: "
+           & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E);
+   end Check;
+
+   function Try_Set (Node_Name, Name : String; New_Value : Value) return String is
+      Reason : constant String := Check (Node_Name, Name, New_Value);
+   begin
+      if Reason = "" then
+         Store.Put_Value (Node_Name, Name, New_Value);
+         Publish_Event (Node_Name, Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), False);
+      end if;
+      return Reason;
+   end Try_Set;
+
+   procedure Set (Node : RCL.Nodes.Node'Class; Name : String; New_Value : Value) is
+      Reason : constant String := Try_Set (Node.Fully_Qualified_Name, Name, New_Value);
+   begin
+      if Reason /= "" then
+         raise Parameter_Error with Reason;
+      end if;
+   end Set;
+
+   function Try_Set_Atomically (Node_Name : String; Values : Assignment_Array) return String is
+      Changed : Text_Vectors.Vector;
+   begin
+      for A of Values loop
+         declare
+            Reason : constant String := Check (Node_Name, To_String (A.Name), A.New_Value);
+         begin
+            if Reason /= "" then
+               return Reason;
+            end if;
+         end;
+      end loop;
+      for A of Values loop
+         Store.Put_Value (Node_Name, To_String (A.Name), A.New_Value);
+         Changed.Append (A.Name);
+      end loop;
+      Publish_Event (Node_Name, Changed, False);
+      return "";
+   end Try_Set_Atomically;
+
+   function Names (Node_Name : String) return Text_Vectors.Vector is (Store.Names_Of (Node_Name));
+
+   function Describe (Node_Name, Name : String) return Descriptor is
+     (if Store.Contains (Node_Name, Name) then Store.Get (Node_Name, Name).Desc
+      else (Name => To_Unbounded_String (Name), others => <>));
+
+   --------------
+   -- Services --
+   --------------
+
+   function Node_Of (Node : RCL.Nodes.Node'Class) return String is (Node.Fully_Qualified_Name);
+
+   procedure Get_Parameters
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Req_Names : constant Array_Ref := Request ("names").As_Array;
+      Values    : constant Array_Ref := Response ("values").As_Array;
+   begin
+      Values.Resize (Req_Names.Length);
+      for I in 1 .. Req_Names.Length loop
+         declare
+            Name : constant String := Req_Names.Element (I).Get_String;
+         begin
+            if Store.Contains (Node_Of (Node), Name) then
+               Put_Parameter_Value (Values.Element (I),
+                                    Store.Get (Node_Of (Node), Name).Current);
+            end if;
+         end;
+      end loop;
+   end Get_Parameters;
+
+   procedure Get_Parameter_Types
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Req_Names : constant Array_Ref := Request ("names").As_Array;
+      Types     : UInt8_Array (1 .. Req_Names.Length);
+   begin
+      for I in Types'Range loop
+         Types (I) := Parameter_Type'Pos
+           (Describe (Node_Of (Node), Req_Names.Element (I).Get_String).Kind);
+      end loop;
+      Response ("types").Set_UInt8_Array (Types);
+   end Get_Parameter_Types;
+
+   procedure Set_Parameters
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Params  : constant Array_Ref := Request ("parameters").As_Array;
+      Results : constant Array_Ref := Response ("results").As_Array;
+   begin
+      Results.Resize (Params.Length);
+      for I in 1 .. Params.Length loop
+         declare
+            Reason : constant String :=
+              Try_Set (Node_Of (Node), Params.Element (I).Field_Reference ("name").Get_String,
+                       Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
+         begin
+            Results.Element (I).Field_Reference ("successful").As_Bool.Element.all :=
+              Reason = "";
+            Results.Element (I).Field_Reference ("reason").Set_String (Reason);
+         end;
+      end loop;
+   end Set_Parameters;
+
+   procedure Set_Parameters_Atomically
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Params : constant Array_Ref := Request ("parameters").As_Array;
+      List   : Assignment_Array (1 .. Params.Length);
+   begin
+      for I in List'Range loop
+         List (I) := (To_Unbounded_String (Params.Element (I).Field_Reference ("name").Get_String),
+                      Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
+      end loop;
+      declare
+         Reason : constant String := Try_Set_Atomically (Node_Of (Node), List);
+      begin
+         Response ("result")("successful").As_Bool.Element.all := Reason = "";
+         Response ("result")("reason").Set_String (Reason);
+      end;
+   end Set_Parameters_Atomically;
+
+   procedure Describe_Parameters
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Req_Names : constant Array_Ref := Request ("names").As_Array;
+      Descs     : constant Array_Ref := Response ("descriptors").As_Array;
+   begin
+      Descs.Resize (Req_Names.Length);
+      for I in 1 .. Req_Names.Length loop
+         declare
+            D : constant Descriptor := Describe (Node_Of (Node), Req_Names.Element (I).Get_String);
+            R : constant Field_Ref := Descs.Element (I);
+         begin
+            R.Field_Reference ("name").Set_String (To_String (D.Name));
+            R.Field_Reference ("type").As_UInt8.Element.all := Parameter_Type'Pos (D.Kind);
+            R.Field_Reference ("description").Set_String (To_String (D.Description));
+            R.Field_Reference ("read_only").As_Bool.Element.all := D.Read_Only;
+         end;
+      end loop;
+   end Describe_Parameters;
+
+   procedure List_Parameters
+     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
+   is
+      Prefixes : constant Array_Ref := Request ("prefixes").As_Array;
+      Depth    : constant Natural := Natural'Min
+        (Natural'Last / 2, Natural (ROSIDL.UInt64'Min (Request ("depth").As_UInt64.Element.all,
+                                                        ROSIDL.UInt64 (Natural'Last / 2))));
+      Found    : Text_Vectors.Vector;
+      Groups   : Text_Vectors.Vector;
+
+      function Dots (S : String) return Natural is
+        (Ada.Strings.Fixed.Count (S, "."));
+   begin
+      for N of Names (Node_Of (Node)) loop
+         declare
+            Name : constant String := To_String (N);
+            Ok   : Boolean := Prefixes.Length = 0;
+         begin
+            for I in 1 .. Prefixes.Length loop
+               declare
+                  P : constant String := Prefixes.Element (I).Get_String;
+               begin
+                  if Name = P
+                    or else (Name'Length > P'Length
+                             and then Name (Name'First .. Name'First + P'Length) = P & ".")
+                  then
+                     Ok := Ok or (Depth = 0 or else Dots (Name) - Dots (P) <= Depth);
+                  end if;
+               end;
+            end loop;
+            if Prefixes.Length = 0 and then Depth > 0 and then Dots (Name) >= Depth then
+               Ok := False;
+            end if;
+            if Ok then
+               Found.Append (N);
+               declare
+                  Last_Dot : constant Natural :=
+                    Ada.Strings.Fixed.Index (Name, ".", Ada.Strings.Backward);
+               begin
+                  if Last_Dot > 0
+                    and then not Groups.Contains
+                      (To_Unbounded_String (Name (Name'First .. Last_Dot - 1)))
+                  then
+                     Groups.Append (To_Unbounded_String (Name (Name'First .. Last_Dot - 1)));
+                  end if;
+               end;
+            end if;
+         end;
+      end loop;
+      declare
+         Out_Names : constant Array_Ref := Response ("result")("names").As_Array;
+         Out_Pref  : constant Array_Ref := Response ("result")("prefixes").As_Array;
+      begin
+         Out_Names.Resize (Natural (Found.Length));
+         for I in 1 .. Natural (Found.Length) loop
+            Out_Names.Element (I).Set_String (To_String (Found (I)));
+         end loop;
+         Out_Pref.Resize (Natural (Groups.Length));
+         for I in 1 .. Natural (Groups.Length) loop
+            Out_Pref.Element (I).Set_String (To_String (Groups (I)));
+         end loop;
+      end;
+   end List_Parameters;
+
+   procedure Serve (Node : in out RCL.Nodes.Node'Class) is
+      use ROSIDL.Typesupport;
+      function Srv (Name : String) return Service_Support is
+        (Get_Service_Support ("rcl_interfaces", Name));
+      Q : constant RCL.QoS.Profile := RCL.QoS.Parameters;
+      Declared : Boolean;
+   begin
+      if not Event_Support_Set then
+         Event_Support := Get_Message_Support ("rcl_interfaces", "ParameterEvent");
+         Event_Support_Set := True;
+      end if;
+      if not Has_Parameter (Node, "use_sim_time") then
+         --  As every ROS 2 node has it. Read-only here: simulated time is
+         --  chosen at start (--ros-args -p use_sim_time:=true, RCL.Clocks).
+         Store.Insert
+           (Node.Fully_Qualified_Name, "use_sim_time",
+            (Desc    => (Name        => To_Unbounded_String ("use_sim_time"),
+                         Kind        => Bool_Type,
+                         Description => To_Unbounded_String
+                           ("ROS time follows /clock (set at start only)"),
+                         Read_Only   => True),
+             Current => To_Value (RCL.Clocks.Sim_Time_Enabled
+                                  or else RCL.Clocks.Sim_Time_Requested)),
+            Declared);
+      end if;
+      RCL.Services.Serve (Node, Srv ("GetParameters"), "~/get_parameters",
+                          Get_Parameters'Access, Q);
+      RCL.Services.Serve (Node, Srv ("GetParameterTypes"), "~/get_parameter_types",
+                          Get_Parameter_Types'Access, Q);
+      RCL.Services.Serve (Node, Srv ("SetParameters"), "~/set_parameters",
+                          Set_Parameters'Access, Q);
+      RCL.Services.Serve (Node, Srv ("SetParametersAtomically"), "~/set_parameters_atomically",
+                          Set_Parameters_Atomically'Access, Q);
+      RCL.Services.Serve (Node, Srv ("DescribeParameters"), "~/describe_parameters",
+                          Describe_Parameters'Access, Q);
+      RCL.Services.Serve (Node, Srv ("ListParameters"), "~/list_parameters",
+                          List_Parameters'Access, Q);
+      Store.Set_Publisher
+        (Node.Fully_Qualified_Name,
+         new RCL.Publishers.Publisher'
+           (Node.Publish_Raw (DDS_Type_Name (Event_Support), "/parameter_events",
+                              RCL.QoS.Parameter_Events)));
+   end Serve;
+
+   --------------------
+   -- Initial values --
+   --------------------
+
+   procedure Load_File (Path : String) is
+      use RCL.YAML;
+      D : constant Document := Parse_File (Path);
+
+      procedure Flatten (Pattern : String; Prefix : String; N : Node) is
+      begin
+         for I in 1 .. D.Length (N) loop
+            declare
+               K : constant String := D.Key (N, I);
+               V : constant Node := D.Item (N, I);
+            begin
+               if D.Kind (V) = Mapping then
+                  Flatten (Pattern, Prefix & K & ".", V);
+               else
+                  Add_Override (Pattern, Prefix & K, From_YAML (D, V));
+               end if;
+            end;
+         end loop;
+      end Flatten;
+
+      procedure Walk (Scope : String; N : Node) is
+      begin
+         if D.Kind (N) /= Mapping then
+            raise Parse_Error with D.Where (N) & ": expected 'node_name: ros__parameters: ...'";
+         end if;
+         for I in 1 .. D.Length (N) loop
+            declare
+               K : constant String := D.Key (N, I);
+               V : constant Node := D.Item (N, I);
+            begin
+               if K = "ros__parameters" then
+                  if Scope = "" then
+                     raise Parse_Error with D.Key_Where (N, I)
+                       & ": 'ros__parameters' must be under a node name";
+                  end if;
+                  if D.Kind (V) = Mapping then
+                     Flatten (Scope, "", V);
+                  elsif D.Kind (V) /= Null_Value then
+                     raise Parse_Error with D.Where (V)
+                       & ": 'ros__parameters' must hold a mapping of parameters";
+                  end if;
+               elsif D.Kind (V) = Mapping then
+                  Walk ((if Scope = "" then K
+                         elsif K (K'First) = '/' then Scope & K
+                         else (if Scope (Scope'First) = '/' then Scope else "/" & Scope)
+                              & "/" & K), V);
+               else
+                  raise Parse_Error with D.Key_Where (N, I) & ": expected '" & K
+                    & ": ros__parameters: ...' (a node name and its parameters)";
+               end if;
+            end;
+         end loop;
+      end Walk;
+   begin
+      if D.Kind (D.Root) /= Null_Value then
+         Walk ("", D.Root);
+      end if;
+   end Load_File;
+
+   procedure Load_Arguments is
+      package CL renames Ada.Command_Line;
+      In_ROS : Boolean := False;
+      I      : Natural := 1;
+   begin
+      while I <= CL.Argument_Count loop
+         declare
+            A : constant String := CL.Argument (I);
+         begin
+            if A = "--ros-args" then
+               In_ROS := True;
+            elsif In_ROS and then A = "--" then
+               In_ROS := False;
+            elsif In_ROS and then A in "-p" | "--param" then
+               if I = CL.Argument_Count then
+                  raise Parameter_Error with A & " needs name:=value";
+               end if;
+               I := I + 1;
+               declare
+                  Arg : constant String := CL.Argument (I);
+                  Sep : constant Natural := Ada.Strings.Fixed.Index (Arg, ":=");
+               begin
+                  if Sep <= Arg'First then
+                     raise Parameter_Error with "argument" & I'Image & " '" & Arg
+                       & "': expected name:=value";
+                  end if;
+                  Add_Override ("/**", Arg (Arg'First .. Sep - 1),
+                                Parse (Arg (Sep + 2 .. Arg'Last),
+                                       "argument" & I'Image & " (" & Arg (Arg'First .. Sep - 1)
+                                       & ")"));
+               end;
+            elsif In_ROS and then A = "--params-file" then
+               if I = CL.Argument_Count then
+                  raise Parameter_Error with "--params-file needs a file name";
+               end if;
+               I := I + 1;
+               Load_File (CL.Argument (I));
+            elsif In_ROS and then A in "-r" | "--remap" | "--log-level" | "-e" | "--enclave" then
+               I := I + 1;  --  Not handled here: skip the value.
+            end if;
+         end;
+         I := I + 1;
+      end loop;
+   end Load_Arguments;
+
+end RCL.Parameters;

@@ -1,0 +1,379 @@
+with Ada.Exceptions;
+with Ada.Real_Time;
+with Ada.Strings.Unbounded;
+with AUnit.Assertions; use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.Clients;
+with RCL.Graph.Queries;
+with RCL.Publishers;
+with RCL.QoS;
+with RCL.DDS.Matching;
+with RCL.Nodes;
+with RCL.Pending_Calls;
+
+package body RCL.Services.Tests is
+
+   use type ROSIDL.Int64;
+   use type RCL.Pending_Calls.Outcome;
+   use type RCL.Pending_Calls.Response_Callback;
+   use type Ada.Real_Time.Time;
+   use type Ada.Real_Time.Time_Span;
+
+   package Graph renames RCL.Graph.Queries;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   function Add_Support return ROSIDL.Typesupport.Service_Support is
+     (ROSIDL.Typesupport.Get_Service_Support ("example_interfaces", "AddTwoInts"));
+
+   function Sum_Of (Response : ROSIDL.Dynamic.Message) return ROSIDL.Int64 is
+     (Response ("sum").As_Int64);
+
+   --  Pairing ---------------------------------------------------------------
+
+   Callback_Sum : ROSIDL.Int64 := 0;
+
+   procedure Note (Response : ROSIDL.Dynamic.Message) is
+   begin
+      Callback_Sum := Callback_Sum + Sum_Of (Response);
+   end Note;
+
+   procedure Pairing (Unused : in out Fixture) is
+      use RCL.Pending_Calls;
+      T        : Table;
+      A, B     : constant Slot_Access := new Slot;
+      Response : constant ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (Add_Support));
+      Result   : Outcome;
+      CB       : Response_Callback;
+      Start    : Boolean;
+      Done     : Boolean;
+      Expired  : Natural;
+      S1       : constant ROSIDL.Int64 := Next_Sequence;
+      S2       : constant ROSIDL.Int64 := Next_Sequence;
+   begin
+      Assert (S2 = S1 + 1, "sequence numbers follow each other");
+      T.Add_Sync (5, A);
+      T.Add_Sync (6, B);
+      T.Add_Async (7, Note'Access, Ada.Real_Time.Clock + Ada.Real_Time.Seconds (60), Start);
+      Assert (Start, "the first asynchronous call starts a pump");
+      T.Add_Async (8, Note'Access, Ada.Real_Time.Clock - Ada.Real_Time.Seconds (1), Start);
+      Assert (not Start, "a pump is already running");
+      Assert (T.Count = 4 and T.Async_Count = 2, "four calls, two asynchronous");
+      Response ("sum").As_Int64 := 11;
+      T.Deliver (6, Response, Result, CB);
+      Assert (Result = Delivered and B.Filled and not A.Filled, "reply 6 goes to B only");
+      Assert (Sum_Of (B.Response) = 11, "B holds the response");
+      T.Deliver (6, Response, Result, CB);
+      Assert (Result = Unknown_Sequence, "a duplicate reply is unknown");
+      T.Deliver (99, Response, Result, CB);
+      Assert (Result = Unknown_Sequence, "someone else's sequence is unknown");
+      T.Deliver (7, Response, Result, CB);
+      Assert (Result = Run_Callback and CB = Note'Access, "reply 7 runs its callback");
+      T.Pumping_Done (Done);
+      Assert (not Done, "call 8 still pending");
+      T.Expire (Ada.Real_Time.Clock, Expired);
+      Assert (Expired = 1 and T.Async_Count = 0, "call 8 expired");
+      T.Deliver (8, Response, Result, CB);
+      Assert (Result = Unknown_Sequence, "a late reply is unknown");
+      T.Pumping_Done (Done);
+      Assert (Done, "no asynchronous call left: the pump ends");
+      T.Remove (5);
+      T.Remove (5);
+      Assert (T.Count = 0, "call 5 removed (twice is harmless)");
+      declare
+         First, Second : Boolean;
+      begin
+         T.Try_Lead (First);
+         T.Try_Lead (Second);
+         Assert (First and not Second, "one leader at a time");
+         T.Release;
+         T.Try_Lead (Second);
+         Assert (Second, "leading again after Release");
+      end;
+   end Pairing;
+
+   --  Ids ------------------------------------------------------------------
+
+   procedure Ids (Unused : in out Fixture) is
+      use RCL.DDS.Matching;
+      Prefix : RCL.DDS.GUID := [others => 0];
+   begin
+      Prefix (1) := 16#01#;
+      Prefix (2) := 16#0F#;
+      Prefix (3) := 16#AB#;
+      Prefix (16) := 16#FF#;  --  Replaced by the counter.
+      Assert (Id_Image (Prefix, 258) = " 1.f.ab.0.0.0.0.0.0.0.0.0.0.0.1.2",
+              "rmw_cyclonedds format: " & Id_Image (Prefix, 258));
+      Prefix (1) := 16#C3#;
+      Assert (Id_Image (Prefix, 16#0A0B0C0D#) = "c3.f.ab.0.0.0.0.0.0.0.0.0.a.b.c.d",
+              "counter big-endian: " & Id_Image (Prefix, 16#0A0B0C0D#));
+      Assert (User_Data_Value ("clientid=1.2.3;enclave=/;", "clientid") = "1.2.3", "first key");
+      Assert (User_Data_Value ("clientid=1.2.3;enclave=/;", "enclave") = "/", "second key");
+      Assert (User_Data_Value ("clientid=1.2.3;", "serviceid") = "", "absent key");
+      Assert (User_Data_Value ("xclientid=4;clientid=5", "clientid") = "5",
+              "whole key names only, last item without ';'");
+      Assert (User_Data_Value ("", "clientid") = "", "empty user data");
+   end Ids;
+
+   --  In-process calls -------------------------------------------------------
+
+   protected Async_Results is
+      procedure Add (Value : ROSIDL.Int64);
+      function Count return Natural;
+      function Total return ROSIDL.Int64;
+   private
+      N   : Natural := 0;
+      Sum : ROSIDL.Int64 := 0;
+   end Async_Results;
+
+   protected body Async_Results is
+      procedure Add (Value : ROSIDL.Int64) is
+      begin
+         N := N + 1;
+         Sum := Sum + Value;
+      end Add;
+      function Count return Natural is (N);
+      function Total return ROSIDL.Int64 is (Sum);
+   end Async_Results;
+
+   procedure On_Async (Response : ROSIDL.Dynamic.Message) is
+   begin
+      Async_Results.Add (Sum_Of (Response));
+   end On_Async;
+
+   procedure Calls (Unused : in out Fixture) is
+      Server_Node : RCL.Nodes.Node := RCL.Nodes.Init ("svc_test_server", "/svc_tests");
+      Client_Node : constant RCL.Nodes.Node := RCL.Nodes.Init ("svc_test_client", "/svc_tests");
+      Stop        : Boolean := False with Atomic;
+
+      procedure Adder
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message)
+      is
+         pragma Unreferenced (Node);
+      begin
+         Response ("sum").As_Int64 := Request ("a").As_Int64 + Request ("b").As_Int64;
+      end Adder;
+
+      task Spinner;
+      task body Spinner is
+      begin
+         while not Stop loop
+            Server_Node.Spin (During => 0.05);
+         end loop;
+      end Spinner;
+
+      Client : RCL.Clients.Client;
+      Failures : Natural := 0 with Atomic;
+      Done : Natural := 0 with Atomic;
+
+      function Request (A, B : ROSIDL.Int64) return ROSIDL.Dynamic.Message is
+         R : constant ROSIDL.Dynamic.Message :=
+           ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Add_Support));
+      begin
+         R ("a").As_Int64 := A;
+         R ("b").As_Int64 := B;
+         return R;
+      end Request;
+
+      protected Count_Lock is
+         procedure Fail;
+         procedure Finish;
+      end Count_Lock;
+      protected body Count_Lock is
+         procedure Fail is
+         begin
+            Failures := Failures + 1;
+         end Fail;
+         procedure Finish is
+         begin
+            Done := Done + 1;
+         end Finish;
+      end Count_Lock;
+
+   begin
+      Server_Node.Serve (Add_Support, "adder", Adder'Access);
+      Client.Init (Client_Node, Add_Support, "adder");
+      Assert (Client.Service_Name = "/svc_tests/adder", "relative name expanded");
+      Assert (Client.Wait_For_Service (10.0), "service available");
+      Assert (Sum_Of (Client.Call (Request (2, 3), 5.0)) = 5, "2 + 3");
+      Assert (Sum_Of (Client_Node.Client_Call (Add_Support, "/svc_tests/adder",
+                                               Request (40, 2), 5.0)) = 42,
+              "Node.Client_Call");
+
+      --  Eight tasks calling one client at once: each gets its own sum.
+      declare
+         task type Worker (Id : Natural);
+         task body Worker is
+         begin
+            for I in 1 .. 25 loop
+               declare
+                  A : constant ROSIDL.Int64 := ROSIDL.Int64 (Id * 1000 + I);
+                  B : constant ROSIDL.Int64 := ROSIDL.Int64 (I * 7);
+               begin
+                  if Sum_Of (Client.Call (Request (A, B), 10.0)) /= A + B then
+                     Count_Lock.Fail;
+                  end if;
+               exception
+                  when others =>
+                     Count_Lock.Fail;
+               end;
+            end loop;
+            Count_Lock.Finish;
+         end Worker;
+         W1 : Worker (1);
+         W2 : Worker (2);
+         W3 : Worker (3);
+         W4 : Worker (4);
+         W5 : Worker (5);
+         W6 : Worker (6);
+         W7 : Worker (7);
+         W8 : Worker (8);
+      begin
+         null;
+      end;
+      Assert (Done = 8, "all workers ended");
+      Assert (Failures = 0, Failures'Image & " concurrent calls got a wrong or no response");
+
+      --  Two clients of one service: both readers see every reply of the
+      --  topic, each keeps only its own (request header guid).
+      declare
+         Other      : RCL.Clients.Client;
+         Other_Fail : Natural := 0 with Atomic;
+      begin
+         Other.Init (Client_Node, Add_Support, "adder");
+         Assert (Other.Wait_For_Service (10.0), "second client sees the service");
+         declare
+            task Second;
+            task body Second is
+            begin
+               for I in 1 .. 50 loop
+                  if Sum_Of (Other.Call (Request (ROSIDL.Int64 (I), 1_000), 10.0))
+                    /= ROSIDL.Int64 (I) + 1_000
+                  then
+                     Other_Fail := Other_Fail + 1;
+                  end if;
+               end loop;
+            exception
+               when others =>
+                  Other_Fail := Other_Fail + 100;
+            end Second;
+         begin
+            for I in 1 .. 50 loop
+               if Sum_Of (Client.Call (Request (ROSIDL.Int64 (I), 2_000), 10.0))
+                 /= ROSIDL.Int64 (I) + 2_000
+               then
+                  Count_Lock.Fail;
+               end if;
+            end loop;
+         end;
+         Assert (Other_Fail = 0 and Failures = 0, "each client got its own responses");
+      end;
+
+      --  Asynchronous calls.
+      for I in 1 .. 100 loop
+         Client.Call_Async (Request (ROSIDL.Int64 (I), 0), On_Async'Access, 10.0);
+      end loop;
+      declare
+         Deadline : constant Ada.Real_Time.Time :=
+           Ada.Real_Time.Clock + Ada.Real_Time.Seconds (10);
+      begin
+         while Async_Results.Count < 100 and Ada.Real_Time.Clock < Deadline loop
+            delay 0.01;
+         end loop;
+      end;
+      Assert (Async_Results.Count = 100,
+              "100 asynchronous responses:" & Async_Results.Count'Image);
+      Assert (Async_Results.Total = 5050, "their sums add up to 5050");
+      Assert (Client.Pending_Async = 0, "none pending");
+
+      --  A missing service times out.
+      declare
+         Nobody  : RCL.Clients.Client;
+         Raised  : Boolean := False;
+         Started : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      begin
+         Nobody.Init (Client_Node, Add_Support, "nobody_serves_this");
+         begin
+            Assert (Sum_Of (Nobody.Call (Request (1, 1), 0.3)) = 2, "unreachable");
+         exception
+            when E : RCL_Timeout =>
+               Raised := Ada.Exceptions.Exception_Message (E)'Length > 0;
+         end;
+         Assert (Raised, "RCL_Timeout for a missing service");
+         Assert (Ada.Real_Time.Clock - Started < Ada.Real_Time.Seconds (5),
+                 "the timeout is honoured");
+      end;
+      Stop := True;
+   exception
+      when others =>
+         Stop := True;
+         raise;
+   end Calls;
+
+   --  Graph queries on this process's own endpoints -------------------------
+
+   procedure Own_Graph (Unused : in out Fixture) is
+      use Ada.Strings.Unbounded;
+      Node : RCL.Nodes.Node := RCL.Nodes.Init ("graph_test", "/gt");
+      Pub  : constant RCL.Publishers.Publisher :=
+        Node.Publish_Raw ("std_msgs::msg::dds_::String_", "out", RCL.QoS.Sensor_Data);
+      pragma Unreferenced (Pub);
+
+      procedure Adder
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message) is null;
+
+      function Has (List : Graph.Name_And_Types_Array; Name, Types : String)
+        return Boolean is
+        (for some E of List => E.Name = Name and then E.Types = Types);
+   begin
+      Node.Serve (Add_Support, "graph_add", Adder'Access);
+      Graph.Wait_For_Discovery (0.2);
+      Assert (Graph.Count_Publishers ("/gt/out") = 1, "one publisher on /gt/out");
+      Assert (Graph.Count_Subscribers ("/gt/out") = 0, "no subscriber");
+      Assert (Has (Graph.Topic_Names_And_Types, "/gt/out", "std_msgs/msg/String"),
+              "topic with its type");
+      Assert (Has (Graph.Service_Names_And_Types, "/gt/graph_add",
+                   "example_interfaces/srv/AddTwoInts"), "service with its type");
+      Assert (not Has (Graph.Topic_Names_And_Types, "/gt/graph_add",
+                       "example_interfaces/srv/AddTwoInts"), "services are not topics");
+      declare
+         Info : constant Graph.Endpoint_Array := Graph.Publishers_Info ("/gt/out");
+         use type RCL.QoS.Reliability_Policy;
+      begin
+         Assert (Info'Length = 1
+                 and then Info (Info'First).QoS.Reliability = RCL.QoS.Best_Effort
+                 and then Info (Info'First).QoS.Depth = 5, "endpoint QoS (sensor data)");
+      end;
+      declare
+         Rosout : constant Graph.Endpoint_Array := Graph.Publishers_Info ("/rosout");
+         use type RCL.QoS.Durability_Policy;
+      begin
+         Assert (Rosout'Length >= 1, "this process publishes /rosout");
+         Assert (Rosout (Rosout'First).QoS.Lifespan = 10.0
+                 and then Rosout (Rosout'First).QoS.Durability = RCL.QoS.Transient_Local,
+                 "rosout QoS: lifespan 10 s, transient local");
+      end;
+   end Own_Graph;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite :=
+        new AUnit.Test_Suites.Test_Suite;
+   begin
+      Result.Add_Test (Caller.Create ("services: request/reply pairing", Pairing'Access));
+      Result.Add_Test (Caller.Create ("services: client/service ids, USER_DATA", Ids'Access));
+      Result.Add_Test (Caller.Create ("services: sync, concurrent, async calls, timeout",
+                                      Calls'Access));
+      Result.Add_Test (Caller.Create ("graph: own topics, services, QoS", Own_Graph'Access));
+      return Result;
+   end Suite;
+
+end RCL.Services.Tests;
