@@ -1,0 +1,40 @@
+--  Named sample messages shared by the CDR tests, the cdr_tool program and
+--  the Python interoperability test (tests/interop/test_cdr_interop.py
+--  declares the same values with the cyclonedds package).
+with ROSIDL.Definitions;
+with ROSIDL.Dynamic;
+
+package ROSIDL.CDR.Samples is
+
+   Names : constant ROSIDL.Definitions.String_Vectors.Vector :=
+     ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid",
+      "add_two_ints_request", "everything", "arrays", "wstrings"];
+
+   Test_Header : constant Request_Header :=
+     (GUID => 16#0102_0304_0506_0708#, Sequence => 42);
+   --  The request header of add_two_ints_request.
+
+   procedure Use_Test_Interfaces;
+   --  Adds tests/interfaces (cdr_test_msgs) to the search path, once; the
+   --  folder is found from SANCTA_ROOT, else the current directory.
+
+   function Make (Name : String) return ROSIDL.Dynamic.Message;
+   --  The sample called Name; Constraint_Error for an unknown name.
+
+   function Is_Request (Name : String) return Boolean is
+     (Name = "add_two_ints_request");
+   --  Encoded with Test_Header.
+
+   function Encode_Sample
+     (Name : String; Order : Byte_Order := Little_Endian)
+      return Ada.Streams.Stream_Element_Array;
+   --  Make (Name) encoded (with Test_Header when Is_Request).
+
+   function Hex (Data : Ada.Streams.Stream_Element_Array) return String;
+   --  "0001000003000000..." (lower case, no separators).
+
+   function From_Hex (Text : String) return Ada.Streams.Stream_Element_Array;
+   --  The inverse of Hex; spaces are ignored; Constraint_Error when
+   --  malformed.
+
+end ROSIDL.CDR.Samples;
