@@ -3,6 +3,7 @@ with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Strings.Fixed;
 with ROSIDL;
 with ROSIDL.Typesupport;
+with Sancta.Runtime.Values;
 
 package body Sancta.Components.Robot_Messages is
 
@@ -142,7 +143,7 @@ package body Sancta.Components.Robot_Messages is
 
    function Goals_Image (Goals : Robot.Executors.Point_Array) return String is
       function Img (X : Real) return String is
-        (Ada.Strings.Fixed.Trim (Real'Image (X), Ada.Strings.Both));
+        (Runtime.Values.Real_Image (Long_Float (X)));
    begin
       if Goals'Length = 0 then
          return "";
