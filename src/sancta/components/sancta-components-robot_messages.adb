@@ -36,6 +36,62 @@ package body Sancta.Components.Robot_Messages is
       return Result;
    end To_Scan;
 
+   procedure Set_Time (Stamp : Field_Ref; T : Real) is
+      Seconds : constant Real := Real'Floor (T);
+      Nanos   : constant Real := Real'Floor ((T - Seconds) * 1.0E9);
+   begin
+      Stamp ("sec").As_Int32 := ROSIDL.Int32 (Seconds);
+      Stamp ("nanosec").As_UInt32 := ROSIDL.UInt32 (Real'Min (Nanos, 999_999_999.0));
+   end Set_Time;
+
+   procedure Set_Pose (Target : Field_Ref; P : Pose) is
+      use Ada.Numerics.Long_Elementary_Functions;
+   begin
+      Target ("position")("x").As_Float64 := ROSIDL.Float64 (P.X);
+      Target ("position")("y").As_Float64 := ROSIDL.Float64 (P.Y);
+      Target ("position")("z").As_Float64 := 0.0;
+      Target ("orientation")("x").As_Float64 := 0.0;
+      Target ("orientation")("y").As_Float64 := 0.0;
+      Target ("orientation")("z").As_Float64 := ROSIDL.Float64 (Sin (Long_Float (P.Yaw) / 2.0));
+      Target ("orientation")("w").As_Float64 := ROSIDL.Float64 (Cos (Long_Float (P.Yaw) / 2.0));
+   end Set_Pose;
+
+   function Scan_Message (Scan : Robot.Sensors.Laser_Scan; Frame_Id : String) return Message is
+      Result : constant Message :=
+        Init (ROSIDL.Typesupport.Get_Message_Support ("sensor_msgs", "LaserScan"));
+      Ranges : Float32_Array (1 .. Scan.Beams);
+   begin
+      for I in Ranges'Range loop
+         Ranges (I) := ROSIDL.Float32 (Scan.Ranges (I));
+      end loop;
+      Set_Time (Result ("header")("stamp"), Scan.Stamp);
+      Result ("header")("frame_id").Set_String (Frame_Id);
+      Result ("angle_min").As_Float32 := ROSIDL.Float32 (Scan.Angle_Min);
+      Result ("angle_max").As_Float32 := ROSIDL.Float32 (Scan.Angle_Max);
+      Result ("angle_increment").As_Float32 := ROSIDL.Float32 (Scan.Angle_Increment);
+      Result ("time_increment").As_Float32 := ROSIDL.Float32 (Scan.Time_Increment);
+      Result ("scan_time").As_Float32 := ROSIDL.Float32 (Scan.Scan_Time);
+      Result ("range_min").As_Float32 := ROSIDL.Float32 (Scan.Range_Min);
+      Result ("range_max").As_Float32 := ROSIDL.Float32 (Scan.Range_Max);
+      Result ("ranges").Set_Float32_Array (Ranges);
+      return Result;
+   end Scan_Message;
+
+   function Fix_Message (Fix : Robot.Sensors.GPS_Fix) return Message is
+      Result : constant Message := Init
+        (ROSIDL.Typesupport.Get_Message_Support ("geometry_msgs", "PoseWithCovarianceStamped"));
+      Cov    : Float64_Array (1 .. 36) := [others => 0.0];
+   begin
+      Set_Time (Result ("header")("stamp"), Fix.Stamp);
+      Result ("header")("frame_id").Set_String ("map");
+      Set_Pose (Result ("pose")("pose"), (Fix.Position.X, Fix.Position.Y, 0.0));
+      Cov (1) := ROSIDL.Float64 (Fix.Std_Dev ** 2);
+      Cov (8) := ROSIDL.Float64 (Fix.Std_Dev ** 2);
+      Cov (36) := 1.0E6;
+      Result ("pose")("covariance").Set_Float64_Array (Cov);
+      return Result;
+   end Fix_Message;
+
    function Twist_Message (Command : Robot.Sensors.Twist) return Message is
       Result : constant Message :=
         Init (ROSIDL.Typesupport.Get_Message_Support ("geometry_msgs", "Twist"));

@@ -28,6 +28,21 @@ package Sancta.Components.Robot_Messages is
    --  A sensor_msgs/LaserScan (Field_Error for another type). NaN and
    --  infinite ranges read as range_max (no hit).
 
+   function Scan_Message
+     (Scan : Robot.Sensors.Laser_Scan; Frame_Id : String) return ROSIDL.Dynamic.Message;
+   --  The sensor_msgs/LaserScan of Scan (no intensities).
+
+   function Fix_Message (Fix : Robot.Sensors.GPS_Fix) return ROSIDL.Dynamic.Message;
+   --  A geometry_msgs/PoseWithCovarianceStamped in frame "map": the
+   --  position, variances Std_Dev^2 for x and y, 1e6 for the (unobserved)
+   --  heading.
+
+   procedure Set_Time (Stamp : ROSIDL.Dynamic.Field_Ref; T : Geometry.Real);
+   --  A builtin_interfaces/Time of T seconds (T >= 0).
+
+   procedure Set_Pose (Target : ROSIDL.Dynamic.Field_Ref; P : Geometry.Pose);
+   --  A geometry_msgs/Pose of a planar pose (quaternion about z).
+
    function Twist_Message (Command : Robot.Sensors.Twist) return ROSIDL.Dynamic.Message;
    --  A geometry_msgs/Twist with linear.x and angular.z set.
 

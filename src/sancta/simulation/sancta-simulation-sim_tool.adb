@@ -21,6 +21,7 @@ with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with Sancta.Geometry;               use Sancta.Geometry;
 with Sancta.Robot.Sensors;
+with Sancta.Components.Robot_Messages;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Robot_Lists;
 with Sancta.Simulation.Simulators;
@@ -34,6 +35,7 @@ package body Sancta.Simulation.Sim_Tool is
    use ROSIDL.Dynamic;
 
    package Math renames Ada.Numerics.Long_Elementary_Functions;
+   package Robot_Messages renames Sancta.Components.Robot_Messages;
 
    Usage_Error : exception;
 
@@ -220,9 +222,7 @@ package body Sancta.Simulation.Sim_Tool is
 
       Twist_Msg : Message := Init (Twist_Support);
       Odom_Msg  : constant Message := Init (Odom_Support);
-      Scan_Msg  : constant Message := Init (Scan_Support);
       Truth_Msg : constant Message := Init (Truth_Support);
-      GPS_Msg   : constant Message := Init (GPS_Support);
       Clock_Msg : constant Message := Init (Clock_Support);
       Text_Msg  : constant Message := Init (Text_Support);
       Request   : Message := Init (Request_Support (Control));
@@ -310,42 +310,15 @@ package body Sancta.Simulation.Sim_Tool is
          Count := Sim.Scan_Count (R.Id);
          if Count /= R.Last_Scan then
             R.Last_Scan := Count;
-            declare
-               S      : constant Sancta.Robot.Sensors.Laser_Scan := Sim.Latest_Scan (R.Id);
-               Ranges : ROSIDL.Dynamic.Float32_Array (1 .. S.Beams);
-            begin
-               for I in Ranges'Range loop
-                  Ranges (I) := ROSIDL.Float32 (S.Ranges (I));
-               end loop;
-               Set_Stamp (Scan_Msg ("header"), S.Stamp, To_String (R.Name) & "/base_link");
-               Scan_Msg ("angle_min").As_Float32 := ROSIDL.Float32 (S.Angle_Min);
-               Scan_Msg ("angle_max").As_Float32 := ROSIDL.Float32 (S.Angle_Max);
-               Scan_Msg ("angle_increment").As_Float32 := ROSIDL.Float32 (S.Angle_Increment);
-               Scan_Msg ("time_increment").As_Float32 := ROSIDL.Float32 (S.Time_Increment);
-               Scan_Msg ("scan_time").As_Float32 := ROSIDL.Float32 (S.Scan_Time);
-               Scan_Msg ("range_min").As_Float32 := ROSIDL.Float32 (S.Range_Min);
-               Scan_Msg ("range_max").As_Float32 := ROSIDL.Float32 (S.Range_Max);
-               Scan_Msg ("ranges").Set_Float32_Array (Ranges);
-               R.Scan.Publish (Scan_Msg);
-            end;
+            R.Scan.Publish
+              (Robot_Messages.Scan_Message
+                 (Sim.Latest_Scan (R.Id), To_String (R.Name) & "/base_link"));
          end if;
          if R.GPS /= null then
             Count := Sim.GPS_Count (R.Id);
             if Count /= R.Last_GPS then
                R.Last_GPS := Count;
-               declare
-                  F   : constant Sancta.Robot.Sensors.GPS_Fix := Sim.Latest_GPS (R.Id);
-                  Cov : ROSIDL.Dynamic.Float64_Array (1 .. 36) := [others => 0.0];
-               begin
-                  Set_Stamp (GPS_Msg ("header"), F.Stamp, "map");
-                  Set_Pose (GPS_Msg ("pose")("pose"), (F.Position.X, F.Position.Y, 0.0));
-                  Cov (1) := ROSIDL.Float64 (F.Std_Dev ** 2);
-                  Cov (8) := ROSIDL.Float64 (F.Std_Dev ** 2);
-                  Cov (36) := 1.0E6;
-                  --  The heading is not observed.
-                  GPS_Msg ("pose")("covariance").Set_Float64_Array (Cov);
-                  R.GPS.Publish (GPS_Msg);
-               end;
+               R.GPS.Publish (Robot_Messages.Fix_Message (Sim.Latest_GPS (R.Id)));
             end if;
          end if;
          if With_Truth then
