@@ -5,9 +5,11 @@ with Sancta.Components.ROS2.Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
+with RCL.Clocks.Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
+with RCL.QoS.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 
@@ -29,6 +31,8 @@ package body All_Suites is
       Result.Add_Test (RCL.Logging.Tests.Suite);
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
+      Result.Add_Test (RCL.Clocks.Tests.Suite);
+      Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
