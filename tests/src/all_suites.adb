@@ -2,6 +2,7 @@ with Simulation_Suites;
 with Harness_Tests;
 with Sancta.Components.Tests;
 with Sancta.Components.ROS2.Tests;
+with Sancta.Logging.Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
@@ -27,6 +28,7 @@ package body All_Suites is
       Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
       Result.Add_Test (Sancta.Components.Tests.Suite);
       Result.Add_Test (Sancta.Components.ROS2.Tests.Suite);
+      Result.Add_Test (Sancta.Logging.Tests.Suite);
       Result.Add_Test (RCL.Names.Tests.Suite);
       Result.Add_Test (RCL.Logging.Tests.Suite);
       Result.Add_Test (RCL.Timers.Tests.Suite);
