@@ -457,7 +457,7 @@ package body Sancta.Simulation.Sim_Tool is
          end loop;
       end Report_Events;
 
-      Started    : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      Started    : Ada.Real_Time.Time := Ada.Real_Time.Clock;
       Next_Truth : Real := 0.0;
    begin
       Sim.Initialize (World, Seed);
@@ -475,6 +475,8 @@ package body Sancta.Simulation.Sim_Tool is
       for R of Robots loop
          Add (To_String (R.Name), R.Config, R.Start);
       end loop;
+      Started := Ada.Real_Time.Clock;
+      --  Wall time and pacing count from here (robots made).
       Put_Line ("sancta-sim: " & Natural'Image (Natural (IO.Length)) & " robot(s), domain"
                 & RCL.DDS.Domain_Id'Image (RCL.Contexts.Domain) & ", "
                 & (if As_Fast then "as fast as possible" else "rate " & Image (Rate) & "x"));
@@ -503,7 +505,13 @@ package body Sancta.Simulation.Sim_Tool is
             delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
          end if;
       end loop;
-      Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock));
+      declare
+         Wall : constant Real := Real (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started));
+      begin
+         Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock) & " after " & Image (Wall)
+                   & " s of wall time (real-time factor "
+                   & Image (Sim.Clock / Real'Max (Wall, 1.0E-3)) & ")");
+      end;
    exception
       when RCL.ROS_Exception =>
          if not RCL.Contexts.Is_Shutdown then
