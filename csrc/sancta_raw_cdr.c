@@ -107,6 +107,8 @@ static struct ddsi_serdata *raw_serdata_from_ser (const struct ddsi_sertype *typ
     }
     fragchain = fragchain->nextfrag;
   }
+  if (off < size)
+    memset (d->data + off, 0, size - off); /* never expose stale heap bytes */
   return &d->c;
 }
 
@@ -127,6 +129,8 @@ static struct ddsi_serdata *raw_serdata_from_ser_iov (const struct ddsi_sertype 
     memcpy (d->data + off, iov[i].iov_base, n);
     off += n;
   }
+  if (off < size)
+    memset (d->data + off, 0, size - off);
   return &d->c;
 }
 

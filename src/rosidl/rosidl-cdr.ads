@@ -46,17 +46,23 @@ package ROSIDL.CDR is
 
    function Encoded_Size
      (Msg : ROSIDL.Dynamic.Message; With_Request_Header : Boolean := False)
-      return Stream_Element_Count;
+      return Stream_Element_Count
+     with Post => Encoded_Size'Result mod 4 = 0
+                  and then Encoded_Size'Result
+                           >= (if With_Request_Header then 20 else 4);
    --  Bytes Encode produces (header and final padding included).
 
    function Encode
      (Msg : ROSIDL.Dynamic.Message; Order : Byte_Order := Native_Order)
-      return Stream_Element_Array;
+      return Stream_Element_Array
+     with Post => Encode'Result'Length = Encoded_Size (Msg)
+                  and then Byte_Order_Of (Encode'Result) = Order;
 
    function Encode
      (Msg    : ROSIDL.Dynamic.Message;
       Header : Request_Header;
-      Order  : Byte_Order := Native_Order) return Stream_Element_Array;
+      Order  : Byte_Order := Native_Order) return Stream_Element_Array
+     with Post => Encode'Result'Length = Encoded_Size (Msg, True);
 
    procedure Encode
      (Msg    : ROSIDL.Dynamic.Message;
@@ -64,7 +70,8 @@ package ROSIDL.CDR is
       Last   : out Stream_Element_Offset;
       Order  : Byte_Order := Native_Order);
    --  Into a caller's buffer (e.g. a DDS serdata): Buffer (Buffer'First ..
-   --  Last) is the encoding. Encode_Error when Buffer is too small.
+   --  Last) is the encoding (Encoded_Size (Msg) bytes). Encode_Error when
+   --  Buffer is too small.
 
    procedure Encode
      (Msg    : ROSIDL.Dynamic.Message;

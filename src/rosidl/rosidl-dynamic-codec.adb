@@ -160,7 +160,7 @@ package body ROSIDL.Dynamic.Codec is
          when String_Kind =>
             for I in 1 .. Cell.Count loop
                declare
-                  L : constant Natural := Length (Cell.Texts (I));
+                  L : constant Natural := Length (Cell.Extra.Texts (I));
                begin
                   if T.String_Bound > 0 and then L > T.String_Bound then
                      Set_Index (S, I);
@@ -174,7 +174,7 @@ package body ROSIDL.Dynamic.Codec is
          when WString_Kind =>
             for I in 1 .. Cell.Count loop
                declare
-                  L : constant Natural := Length (Cell.WTexts (I));
+                  L : constant Natural := Length (Cell.Extra.WTexts (I));
                begin
                   if T.String_Bound > 0 and then L > T.String_Bound then
                      Set_Index (S, I);
@@ -188,7 +188,7 @@ package body ROSIDL.Dynamic.Codec is
          when Message_Kind =>
             for I in 1 .. Cell.Count loop
                Set_Index (S, I);
-               Size_Node (Cell.Nodes (I), S);
+               Size_Node (Cell.Extra.Nodes (I), S);
             end loop;
       end case;
    end Size_Cell;
@@ -304,7 +304,7 @@ package body ROSIDL.Dynamic.Codec is
             when String_Kind =>
                for I in 1 .. Cell.Count loop
                   declare
-                     Text : constant String := To_String (Cell.Texts (I));
+                     Text : constant String := To_String (Cell.Extra.Texts (I));
                   begin
                      Put_Unsigned (Unsigned_64 (Text'Length + 1), 4);
                      for C of Text loop
@@ -319,7 +319,7 @@ package body ROSIDL.Dynamic.Codec is
                for I in 1 .. Cell.Count loop
                   declare
                      Text : constant Wide_Wide_String :=
-                       To_Wide_Wide_String (Cell.WTexts (I));
+                       To_Wide_Wide_String (Cell.Extra.WTexts (I));
                   begin
                      Put_Unsigned (Unsigned_64 (Text'Length), 4);
                      for C of Text loop
@@ -329,7 +329,7 @@ package body ROSIDL.Dynamic.Codec is
                end loop;
             when Message_Kind =>
                for I in 1 .. Cell.Count loop
-                  Put_Node (Cell.Nodes (I));
+                  Put_Node (Cell.Extra.Nodes (I));
                end loop;
          end case;
       end Put_Cell;
@@ -451,11 +451,22 @@ package body ROSIDL.Dynamic.Codec is
          end if;
          S.Pos := Aligned (S.Pos, Size);
          if Remaining < Bytes then
-            if T.Collection /= Single then
-               Set_Index (S, Natural (Long_Long_Integer'Max (Remaining, 0)
-                                      / Long_Long_Integer (Size)) + 1);
-            end if;
-            Need (Bytes, Image (T));
+            declare
+               Whole : constant Natural := Natural
+                 (Long_Long_Integer'Max (Remaining, 0) / Long_Long_Integer (Size));
+               Text  : constant String :=
+                 "truncated: " & Image (T)
+                 & (if T.Collection = Single then ""
+                    else " of" & Count'Image & " elements")
+                 & " needs" & Bytes'Image & " bytes,"
+                 & Long_Long_Integer'Max (Remaining, 0)'Image & " remain";
+            begin
+               if T.Collection /= Single then
+                  Set_Index (S, Whole + 1);
+                  S.Pos := S.Pos + Stream_Element_Offset (Whole * Size);
+               end if;
+               Decode_Failure (S, Text);
+            end;
          end if;
          Allocate (Cell, Count);
          declare
@@ -558,13 +569,13 @@ package body ROSIDL.Dynamic.Codec is
                            Decode_Failure (S, "string not terminated by a NUL");
                         end if;
                         if Len = 0 then
-                           Cell.Texts (I) := Null_Unbounded_String;
+                           Cell.Extra.Texts (I) := Null_Unbounded_String;
                         else
                            declare
                               Text : String (1 .. Len)
                                 with Import, Address => Data (First)'Address;
                            begin
-                              Cell.Texts (I) := To_Unbounded_String (Text);
+                              Cell.Extra.Texts (I) := To_Unbounded_String (Text);
                            end;
                         end if;
                         S.Pos := S.Pos + Stream_Element_Offset (L);
@@ -595,9 +606,12 @@ package body ROSIDL.Dynamic.Codec is
                            & " characters exceeds its bound" & T.String_Bound'Image);
                      end if;
                      declare
-                        Text : Wide_Wide_String (1 .. Natural (L));
+                        --  Built by chunks: L may be large (no stack copy).
+                        Chunk : Wide_Wide_String (1 .. 256) := [others => ' '];
+                        Used  : Natural := 0;
+                        Text  : Unbounded_Wide_Wide_String;
                      begin
-                        for C of Text loop
+                        for Unused in 1 .. L loop
                            declare
                               Code : constant Unsigned_64 :=
                                 Get_Unsigned (4, "wstring character");
@@ -608,10 +622,16 @@ package body ROSIDL.Dynamic.Codec is
                                    (S, "wstring character" & Code'Image
                                     & " out of range");
                               end if;
-                              C := Wide_Wide_Character'Val (Code);
+                              if Used = Chunk'Last then
+                                 Append (Text, Chunk);
+                                 Used := 0;
+                              end if;
+                              Used := Used + 1;
+                              Chunk (Used) := Wide_Wide_Character'Val (Code);
                            end;
                         end loop;
-                        Cell.WTexts (I) := To_Unbounded_Wide_Wide_String (Text);
+                        Append (Text, Chunk (1 .. Used));
+                        Cell.Extra.WTexts (I) := Text;
                      end;
                   end;
                end loop;
@@ -621,7 +641,7 @@ package body ROSIDL.Dynamic.Codec is
                end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
-                  Get_Node (Cell.Nodes (I));
+                  Get_Node (Cell.Extra.Nodes (I));
                end loop;
          end case;
       end Get_Cell;
@@ -641,6 +661,7 @@ package body ROSIDL.Dynamic.Codec is
       if Msg.Root = null then
          raise Decode_Error with "decoding into an uninitialised message";
       end if;
+      Make_Unique (Msg, Referenced => False, Keep_Contents => False);
       S.Root := Msg.Root.Def;
       S.Little := Little_Endian_Header (Data);
       S.Swap := S.Little /= Native_Little;

@@ -3,6 +3,7 @@ with Ada.Unchecked_Conversion;
 with Ada.Unchecked_Deallocation;
 with ROSIDL.Dynamic.Images;
 with Interfaces;
+with System.Address_To_Access_Conversions;
 with System.Storage_Elements;
 
 package body ROSIDL.Dynamic is
@@ -16,6 +17,7 @@ package body ROSIDL.Dynamic is
    procedure Free_Words is new Ada.Unchecked_Deallocation
      (Word_Array, Word_Access);
    procedure Free_Node is new Ada.Unchecked_Deallocation (Node, Node_Access);
+   procedure Free_Extra is new Ada.Unchecked_Deallocation (Cell_Extra, Extra_Access);
 
    --  Access types used to designate elements inside Word_Array storage;
    --  they alias the words, so strict aliasing is off for them.
@@ -134,20 +136,20 @@ package body ROSIDL.Dynamic is
                Fresh := null;
             end;
          when String_Kind =>
-            Cell.Texts.Set_Length (Ada.Containers.Count_Type (Count));
+            Cell.Extra.Texts.Set_Length (Ada.Containers.Count_Type (Count));
          when WString_Kind =>
-            Cell.WTexts.Set_Length (Ada.Containers.Count_Type (Count));
+            Cell.Extra.WTexts.Set_Length (Ada.Containers.Count_Type (Count));
          when Message_Kind =>
-            while Natural (Cell.Nodes.Length) > Count loop
+            while Natural (Cell.Extra.Nodes.Length) > Count loop
                declare
-                  Last : Node_Access := Cell.Nodes.Last_Element;
+                  Last : Node_Access := Cell.Extra.Nodes.Last_Element;
                begin
                   Free (Last);
-                  Cell.Nodes.Delete_Last;
+                  Cell.Extra.Nodes.Delete_Last;
                end;
             end loop;
-            while Natural (Cell.Nodes.Length) < Count loop
-               Cell.Nodes.Append (New_Node (T.Nested));
+            while Natural (Cell.Extra.Nodes.Length) < Count loop
+               Cell.Extra.Nodes.Append (New_Node (T.Nested));
             end loop;
       end case;
       Cell.Count := Count;
@@ -223,12 +225,16 @@ package body ROSIDL.Dynamic is
       N.Def := Def;
       for I in N.Cells'Range loop
          declare
-            F    : constant Field := Def.Fields (I);
+            F    : Field renames Def.Fields (I);
             Cell : Field_Cell renames N.Cells (I);
             D    : constant Natural := Natural (F.Default.Length);
          begin
             Cell.Owner := N;
             Cell.Field := I;
+            Cell.Of_Type := F.Of_Type;
+            if F.Of_Type.Kind not in Primitive_Kind then
+               Cell.Extra := new Cell_Extra;
+            end if;
             Set_Count
               (Cell,
                (case F.Of_Type.Collection is
@@ -243,9 +249,9 @@ package body ROSIDL.Dynamic is
                      when Primitive_Kind =>
                         Set_Primitive_Text (Cell, E, Text);
                      when String_Kind =>
-                        Cell.Texts (E) := To_Unbounded_String (Text);
+                        Cell.Extra.Texts (E) := To_Unbounded_String (Text);
                      when WString_Kind =>
-                        Cell.WTexts (E) := To_Unbounded_Wide_Wide_String
+                        Cell.Extra.WTexts (E) := To_Unbounded_Wide_Wide_String
                           (Ada.Characters.Conversions.To_Wide_Wide_String (Text));
                      when Message_Kind =>
                         null;
@@ -264,9 +270,12 @@ package body ROSIDL.Dynamic is
       end if;
       for Cell of N.Cells loop
          Free_Words (Cell.Prims);
-         for Child of Cell.Nodes loop
-            Free (Child);
-         end loop;
+         if Cell.Extra /= null then
+            for Child of Cell.Extra.Nodes loop
+               Free (Child);
+            end loop;
+            Free_Extra (Cell.Extra);
+         end if;
       end loop;
       Free_Node (N);
    end Free;
@@ -287,15 +296,19 @@ package body ROSIDL.Dynamic is
             begin
                D.Owner := R;
                D.Field := I;
+               D.Of_Type := S.Of_Type;
                D.Count := S.Count;
                if S.Prims /= null then
                   D.Prims := new Word_Array'(S.Prims.all);
                end if;
-               D.Texts := S.Texts;
-               D.WTexts := S.WTexts;
-               for Child of S.Nodes loop
-                  D.Nodes.Append (Copy (Child));
-               end loop;
+               if S.Extra /= null then
+                  D.Extra := new Cell_Extra'(Texts  => S.Extra.Texts,
+                                             WTexts => S.Extra.WTexts,
+                                             Nodes  => <>);
+                  for Child of S.Extra.Nodes loop
+                     D.Extra.Nodes.Append (Copy (Child));
+                  end loop;
+               end if;
             end;
          end loop;
          return R;
@@ -331,14 +344,17 @@ package body ROSIDL.Dynamic is
                   end if;
                end;
             end if;
-            if A.Texts /= B.Texts or else A.WTexts /= B.WTexts then
-               return False;
-            end if;
-            for J in 1 .. Natural (A.Nodes.Length) loop
-               if not Equal (A.Nodes (J), B.Nodes (J)) then
+            if A.Extra /= null then
+               if A.Extra.Texts /= B.Extra.Texts or else A.Extra.WTexts /= B.Extra.WTexts
+               then
                   return False;
                end if;
-            end loop;
+               for J in 1 .. Natural (A.Extra.Nodes.Length) loop
+                  if not Equal (A.Extra.Nodes (J), B.Extra.Nodes (J)) then
+                     return False;
+                  end if;
+               end loop;
+            end if;
          end;
       end loop;
       return True;
@@ -372,13 +388,69 @@ package body ROSIDL.Dynamic is
 
    overriding procedure Adjust (This : in out Message) is
    begin
-      This.Root := Copy (This.Root);
+      if This.Root /= null then
+         if This.Root.Referenced then
+            This.Root := Copy (This.Root);
+         else
+            System.Atomic_Counters.Increment (This.Root.Shares);
+         end if;
+      end if;
    end Adjust;
 
    overriding procedure Finalize (This : in out Message) is
    begin
-      Free (This.Root);
+      if This.Root /= null then
+         if System.Atomic_Counters.Decrement (This.Root.Shares) then
+            Free (This.Root);
+         end if;
+         This.Root := null;
+      end if;
    end Finalize;
+
+   package Message_Pointers is new System.Address_To_Access_Conversions (Message);
+
+   --  Taking a private copy of a shared root is serialised, so that tasks
+   --  reading one message object at the same time (each handing out
+   --  references) do not both replace its root. The common case (an
+   --  unshared root) takes no lock.
+   protected Unsharing is
+      procedure Unshare (This : Message'Class; Keep_Contents : Boolean);
+   end Unsharing;
+
+   protected body Unsharing is
+      procedure Unshare (This : Message'Class; Keep_Contents : Boolean) is
+         Old : Node_Access := This.Root;
+      begin
+         if System.Atomic_Counters.Is_One (Old.Shares) then
+            return;  --  another task got there first
+         end if;
+         declare
+            Mine : constant Node_Access :=
+              (if Keep_Contents then Copy (Old) else New_Node (Old.Def));
+         begin
+            --  This is a variable even when seen as a constant (a Message
+            --  is a by-reference type): only its root pointer changes.
+            Message_Pointers.To_Pointer (This'Address).Root := Mine;
+            if System.Atomic_Counters.Decrement (Old.Shares) then
+               Free (Old);
+            end if;
+         end;
+      end Unshare;
+   end Unsharing;
+
+   procedure Make_Unique
+     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True) is
+   begin
+      if This.Root = null then
+         return;
+      end if;
+      if not System.Atomic_Counters.Is_One (This.Root.Shares) then
+         Unsharing.Unshare (This, Keep_Contents);
+      end if;
+      if Referenced then
+         This.Root.Referenced := True;
+      end if;
+   end Make_Unique;
 
    function Find
      (N : Node_Access; Name : String; Context : String) return Positive
@@ -401,8 +473,11 @@ package body ROSIDL.Dynamic is
    end Find;
 
    function Reference (This : Message'Class; Name : String) return Field_Ref is
-     (Cell  => This.Root.Cells (Find (This.Root, Name, ""))'Access,
-      Index => 0);
+      I : constant Positive := Find (This.Root, Name, "");
+   begin
+      Make_Unique (This, Referenced => True);
+      return (Cell => This.Root.Cells (I)'Access, Index => 0);
+   end Reference;
 
    --  The element a reference to a single value designates.
    function Single_Index (This : Field_Ref'Class; Requested : String) return Positive is
@@ -428,7 +503,7 @@ package body ROSIDL.Dynamic is
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Requested);
       end if;
-      return This.Cell.Nodes (Single_Index (This, Requested));
+      return This.Cell.Extra.Nodes (Single_Index (This, Requested));
    end Nested_Node;
 
    function Field_Reference (This : Field_Ref; Name : String) return Field_Ref is
@@ -490,6 +565,30 @@ package body ROSIDL.Dynamic is
    function As_Float64 (This : Field_Ref) return Float64_Ref is
      ((Element => To_Float64 (Scalar_Address (This, Float64_Kind))));
 
+   function Is_NaN (This : Field_Ref) return Boolean is
+      use type Interfaces.Unsigned_32;
+      use type Interfaces.Unsigned_64;
+      T : constant Field_Type := Cell_Type (This.Cell.all);
+   begin
+      if T.Kind = Float32_Kind then
+         declare
+            Bits : constant Interfaces.Unsigned_32 :=
+              To_UInt32 (Scalar_Address (This, Float32_Kind, "float")).all;
+         begin
+            return (Bits and 16#7F80_0000#) = 16#7F80_0000#
+              and then (Bits and 16#007F_FFFF#) /= 0;
+         end;
+      else
+         declare
+            Bits : constant Interfaces.Unsigned_64 :=
+              To_UInt64 (Scalar_Address (This, Float64_Kind, "float")).all;
+         begin
+            return (Bits and 16#7FF0_0000_0000_0000#) = 16#7FF0_0000_0000_0000#
+              and then (Bits and 16#000F_FFFF_FFFF_FFFF#) /= 0;
+         end;
+      end if;
+   end Is_NaN;
+
    function Text_Index
      (This : Field_Ref'Class; Kind : Text_Kind; Requested : String) return Positive
    is
@@ -505,22 +604,22 @@ package body ROSIDL.Dynamic is
 
    procedure Set_String (This : Field_Ref; Value : String) is
    begin
-      This.Cell.Texts (Text_Index (This, String_Kind, "string")) :=
+      This.Cell.Extra.Texts (Text_Index (This, String_Kind, "string")) :=
         To_Unbounded_String (Value);
    end Set_String;
 
    function Get_String (This : Field_Ref) return String is
-     (To_String (This.Cell.Texts (Text_Index (This, String_Kind, "string"))));
+     (To_String (This.Cell.Extra.Texts (Text_Index (This, String_Kind, "string"))));
 
    procedure Set_WString (This : Field_Ref; Value : Wide_Wide_String) is
    begin
-      This.Cell.WTexts (Text_Index (This, WString_Kind, "wstring")) :=
+      This.Cell.Extra.WTexts (Text_Index (This, WString_Kind, "wstring")) :=
         To_Unbounded_Wide_Wide_String (Value);
    end Set_WString;
 
    function Get_WString (This : Field_Ref) return Wide_Wide_String is
      (To_Wide_Wide_String
-        (This.Cell.WTexts (Text_Index (This, WString_Kind, "wstring"))));
+        (This.Cell.Extra.WTexts (Text_Index (This, WString_Kind, "wstring"))));
 
    function To_Message (This : Field_Ref'Class) return Message is
      (Ada.Finalization.Controlled with
@@ -538,7 +637,7 @@ package body ROSIDL.Dynamic is
             & Type_Name (Value));
       end if;
       Free (Old);
-      This.Cell.Nodes (Target) := Copy (Value.Root);
+      This.Cell.Extra.Nodes (Target) := Copy (Value.Root);
    end Set_Message;
 
    ---------------------------------------------------------------------
@@ -624,7 +723,7 @@ package body ROSIDL.Dynamic is
            & Field_Names (N.Def.all);
       end if;
       declare
-         Layout : constant Node_Access := N.Cells (Layout_I).Nodes (1);
+         Layout : constant Node_Access := N.Cells (Layout_I).Extra.Nodes (1);
          Dims   : Field_Cell renames
            Layout.Cells (Field_Index (Layout.Def.all, "dim"));
          Offset : constant UInt32 := To_UInt32
@@ -634,7 +733,7 @@ package body ROSIDL.Dynamic is
          Pos    : Long_Long_Integer := Long_Long_Integer (Offset);
 
          function Dim_Value (D : Positive; Name : String) return Long_Long_Integer is
-            Dim : constant Node_Access := Dims.Nodes (D);
+            Dim : constant Node_Access := Dims.Extra.Nodes (D);
          begin
             return Long_Long_Integer
               (To_UInt32 (Element_Address
@@ -680,6 +779,7 @@ package body ROSIDL.Dynamic is
       if This.Root = null then
          raise Field_Error with "As_Matrix on an uninitialised message";
       end if;
+      Make_Unique (This, Referenced => True);
       return Matrix_Element (This.Root, Indices);
    end As_Matrix;
 

@@ -3,7 +3,8 @@
 --  knows its type support; fields are reached by indexing with their name
 --  and yield references into the message (no copy):
 --
---     Msg : Message := Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
+--     Msg : constant Message :=
+--       Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
 --     Msg ("angle_min").As_Float32 := -1.57;
 --     Msg ("header")("frame_id").Set_String ("laser");
 --     Msg ("header").Get_Message ("stamp")("sec").As_Int32 := 12;
@@ -22,9 +23,13 @@
 --
 --  Primitive arrays and sequences are stored compactly (one contiguous
 --  buffer in native layout) so that bulk access and the CDR codec are block
---  copies. References (Field_Ref, Array_Ref, the As_* results) stay valid
---  as long as the message is neither finalised nor the enclosing sequence
---  resized, as with the standard containers.
+--  copies. Copies of a message share its storage until one of them hands
+--  out a reference, so returning or passing messages costs no copy.
+--  References (Field_Ref, Array_Ref, the As_* results) stay valid as long
+--  as the message is neither finalised nor the enclosing sequence resized,
+--  as with the standard containers. Several tasks may read one message
+--  object at once (indexing included); writing it, or copying it while
+--  another task writes it, needs the caller's synchronisation.
 with Ada.Finalization;
 with Ada.Strings.Unbounded;
 with Ada.Strings.Wide_Wide_Unbounded;
@@ -32,6 +37,7 @@ with Ada.Containers.Vectors;
 with ROSIDL.Definitions;
 with ROSIDL.Typesupport;
 with System;
+with System.Atomic_Counters;
 
 package ROSIDL.Dynamic is
 
@@ -42,8 +48,11 @@ package ROSIDL.Dynamic is
      with Constant_Indexing => Reference;
    --  A message of one type. The default value is not initialised (every
    --  access raises Field_Error); obtain messages through Init.
+   --  (GNAT 12 ignores the indexing aspects where the full view is visible,
+   --  i.e. in children of this package: call Reference there.)
 
-   function Init (Support : Message_Support) return Message;
+   function Init (Support : Message_Support) return Message
+     with Post => Is_Initialised (Init'Result);
    --  A message whose fields have their default values: the definition's
    --  defaults when given, else zero, False, empty strings; sequences empty
    --  (or the default list), fixed arrays sized.
@@ -133,6 +142,12 @@ package ROSIDL.Dynamic is
    function As_Float64 (This : Field_Ref) return Float64_Ref;
    --  The single value This designates; Field_Error when the field's
    --  element type is not the one requested or This is a whole array.
+   --  Builds with validity checks (-gnatVa, the debug build) raise
+   --  Constraint_Error on reading a NaN float: test Is_NaN first.
+
+   function Is_NaN (This : Field_Ref) return Boolean;
+   --  The float32 / float64 value This designates is a NaN (read without
+   --  reading it as a float). Field_Error for other types.
 
    procedure Set_String (This : Field_Ref; Value : String);
    function Get_String (This : Field_Ref) return String;
@@ -169,7 +184,8 @@ package ROSIDL.Dynamic is
    function Capacity (This : Array_Ref) return Natural;
    --  N for T[N] and T[<=N]; Natural'Last for T[].
 
-   procedure Resize (This : Array_Ref; Length : Natural);
+   procedure Resize (This : Array_Ref; Length : Natural)
+     with Post => ROSIDL.Dynamic.Length (This) = Length;
    --  New elements take their type's zero/default value. Field_Error for
    --  a fixed array (unless Length is its size) or beyond a bound.
 
@@ -265,30 +281,55 @@ private
      (Positive, Unbounded_Wide_Wide_String);
    package Node_Vectors is new Ada.Containers.Vectors (Positive, Node_Access);
 
+   type Cell_Extra is record
+      Texts  : Text_Vectors.Vector;
+      WTexts : Wide_Text_Vectors.Vector;
+      Nodes  : Node_Vectors.Vector;
+   end record;
+   --  The storage of string, wstring and message fields (only theirs).
+
+   type Extra_Access is access Cell_Extra;
+
    type Field_Cell is limited record
       Owner  : Node_Access;
       --  The message holding this field.
       Field  : Positive := 1;
       --  Its index in Owner.Def.Fields.
+      Of_Type : Field_Type;
+      --  Owner.Def.Fields (Field).Of_Type, cached.
       Count  : Natural := 0;
       --  Number of elements (1 for a single value).
       Prims  : Word_Access;
       --  Primitive elements (Count * size bytes used).
-      Texts  : Text_Vectors.Vector;
-      WTexts : Wide_Text_Vectors.Vector;
-      Nodes  : Node_Vectors.Vector;
+      Extra  : Extra_Access;
+      --  Elements of the other kinds (null for a primitive field).
    end record;
 
    type Cell_Array is array (Positive range <>) of aliased Field_Cell;
 
    type Node (Field_Count : Positive) is limited record
-      Def   : Message_Access;
-      Cells : Cell_Array (1 .. Field_Count);
+      Def        : Message_Access;
+      Shares     : System.Atomic_Counters.Atomic_Counter;
+      --  Messages sharing this root (1 when unshared); unused elsewhere.
+      Referenced : Boolean := False;
+      --  A reference into this root was handed out: copies must be deep.
+      Cells      : Cell_Array (1 .. Field_Count);
    end record;
 
    type Message is new Ada.Finalization.Controlled with record
       Root : Node_Access;
    end record;
+   --  Copies share their root until one of them hands out a reference
+   --  (Reference, As_Matrix) or is decoded into: then it takes a private
+   --  deep copy first. A root that has handed out references is always
+   --  deep-copied. So function results (Decode, Init) are not copied, and
+   --  writes through references never show in another message.
+
+   procedure Make_Unique
+     (This : Message'Class; Referenced : Boolean; Keep_Contents : Boolean := True);
+   --  Gives This a root of its own (a deep copy when shared, or a message
+   --  of default values unless Keep_Contents); Referenced marks it as
+   --  having handed out references.
 
    overriding procedure Adjust (This : in out Message);
    overriding procedure Finalize (This : in out Message);
@@ -319,7 +360,6 @@ private
    --  Resizes the storage of Cell (any element kind), new elements get
    --  their default values (zero for primitives).
 
-   function Cell_Type (Cell : Field_Cell) return Field_Type is
-     (Cell.Owner.Def.Fields (Cell.Field).Of_Type);
+   function Cell_Type (Cell : Field_Cell) return Field_Type is (Cell.Of_Type);
 
 end ROSIDL.Dynamic;

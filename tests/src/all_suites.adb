@@ -13,6 +13,7 @@ with RCL.Nodes.Tests;
 with RCL.QoS.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
+with ROSIDL.CDR.Tests;
 
 package body All_Suites is
 
@@ -36,6 +37,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Clocks.Tests.Suite);
       Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
+      Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (Simulation_Suites.Suite);

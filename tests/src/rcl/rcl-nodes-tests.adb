@@ -9,6 +9,8 @@ with RCL.Contexts;
 with RCL.Executors.Concurrent;
 with RCL.Executors.Sequential;
 with RCL.Names;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with System;
 
 package body RCL.Nodes.Tests is
@@ -224,6 +226,42 @@ package body RCL.Nodes.Tests is
       Assert (E.Is_Shut_Down, "shut down deterministically");
    end Concurrent;
 
+   Typed_Count : Natural := 0;
+   Typed_Text  : access String;
+
+   procedure On_String
+     (Node : in out Nodes.Node'Class; Msg : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Node, Info);
+   begin
+      Typed_Count := Typed_Count + 1;
+      Typed_Text := new String'(Msg ("data").Get_String);
+   end On_String;
+
+   procedure Malformed_Bytes (Unused : in out Fixture) is
+      Support : constant ROSIDL.Typesupport.Message_Support :=
+        ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String");
+      N   : Node := Init ("malformed_test");
+      Pub : RCL.Publishers.Publisher := N.Publish (Support, "malformed");
+      Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
+      Bad : constant Stream_Element_Array :=
+        [0, 1, 0, 0, 16#E8#, 16#03#, 0, 0, Character'Pos ('h'), 0, 0, 0];
+      --  A string of length 1000 in 4 bytes: must be rejected, not over-read.
+   begin
+      N.Subscribe (Support, "malformed", On_String'Access);
+      Msg ("data").Set_String ("valid");
+      Typed_Count := 0;
+      for I in 1 .. 100 loop
+         exit when Typed_Count > 0;
+         Pub.Publish_Raw (Bad);
+         Pub.Publish (Msg);
+         N.Spin (During => 0.05);
+      end loop;
+      Assert (Typed_Count > 0 and then Typed_Text.all = "valid",
+              "malformed samples are skipped (logged), valid ones delivered");
+   end Malformed_Bytes;
+
    procedure Errors (Unused : in out Fixture) is
       N : constant Node := Init ("error_test");
       pragma Unreferenced (N);
@@ -284,6 +322,7 @@ package body RCL.Nodes.Tests is
       Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
       Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
       Result.Add_Test (Caller.Create ("nodes: errors", Errors'Access));
+      Result.Add_Test (Caller.Create ("nodes: malformed bytes", Malformed_Bytes'Access));
       return Result;
    end Suite;
 

@@ -5,28 +5,124 @@
 --     cdr_tool decode NAME HEX      decodes HEX as the sample's type and
 --                                   prints its image (exit 2 and the
 --                                   Decode_Error text on malformed input)
+--     cdr_tool types                every message type: "T dds_name" then
+--                                   "F name kind collection size bound
+--                                   nested_dds_name|-" per field
+--     cdr_tool random SEED          a random message of every type (printable
+--                                   ASCII strings): "dds_name hex" lines
+--     cdr_tool reencode             reads "dds_name hex" lines, decodes each
+--                                   and prints "dds_name hex" of its
+--                                   little-endian re-encoding (or
+--                                   "dds_name ERROR text")
 with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Streams;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with ROSIDL.CDR.Samples;
+with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 
 procedure CDR_Tool is
    use Ada.Command_Line;
    use Ada.Text_IO;
    use ROSIDL.CDR;
 
+   procedure Put_Image (Text : String) is
+   begin
+      --  Text ends with LF: written so that Text_IO adds no terminator.
+      Put (Text (Text'First .. Text'Last - 1));
+      New_Line;
+   end Put_Image;
+
+   function Trim (S : String) return String is
+     (if S'Length > 0 and then S (S'First) = ' ' then S (S'First + 1 .. S'Last) else S);
+
+   procedure Put_Types is
+      use ROSIDL.Definitions;
+   begin
+      for Support of Samples.All_Types loop
+         Put_Line ("T " & ROSIDL.Typesupport.DDS_Type_Name (Support));
+         for F of ROSIDL.Typesupport.Definition (Support).Fields loop
+            declare
+               T : constant Field_Type := F.Of_Type;
+            begin
+               Put_Line ("F " & Ada.Strings.Unbounded.To_String (F.Name) & " "
+                         & (case T.Kind is
+                               when Primitive_Kind => Type_Name (T.Kind),
+                               when String_Kind => "string",
+                               when WString_Kind => "wstring",
+                               when Message_Kind => "message")
+                         & " " & T.Collection'Image & " " & Trim (T.Size'Image) & " "
+                         & Trim (T.String_Bound'Image) & " "
+                         & (if T.Kind = Message_Kind then DDS_Type_Name (T.Nested.all)
+                            else "-"));
+            end;
+         end loop;
+      end loop;
+   end Put_Types;
+
+   procedure Put_Random (Seed_Text : String) is
+      Seed : ROSIDL.UInt64 := ROSIDL.UInt64'Value (Seed_Text);
+   begin
+      for Support of Samples.All_Types loop
+         Put_Line (ROSIDL.Typesupport.DDS_Type_Name (Support) & " "
+                   & Samples.Hex (Encode (Samples.Random_Message (Support, Seed,
+                                                                  ASCII_Text => True),
+                                          Little_Endian)));
+      end loop;
+   end Put_Random;
+
+   procedure Reencode is
+      Types : constant Samples.Support_Vectors.Vector := Samples.All_Types;
+   begin
+      while not End_Of_File loop
+         declare
+            Line  : constant String := Get_Line;
+            Space : constant Natural := Ada.Strings.Fixed.Index (Line, " ");
+            Name  : constant String := Line (Line'First .. Space - 1);
+            Found : Boolean := False;
+         begin
+            for Support of Types loop
+               if ROSIDL.Typesupport.DDS_Type_Name (Support) = Name then
+                  Found := True;
+                  declare
+                     Msg : constant ROSIDL.Dynamic.Message :=
+                       Decode (Support, Samples.From_Hex (Line (Space + 1 .. Line'Last)));
+                  begin
+                     Put_Line (Name & " " & Samples.Hex (Encode (Msg, Little_Endian)));
+                  exception
+                     when E : ROSIDL.Decode_Error | ROSIDL.Encode_Error =>
+                        Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
+                  end;
+                  exit;
+               end if;
+            end loop;
+            if not Found then
+               Put_Line (Name & " ERROR unknown type");
+            end if;
+         end;
+      end loop;
+   end Reencode;
+
    procedure Usage is
    begin
       Put_Line (Standard_Error,
                 "usage: cdr_tool list | encode NAME [be] | image NAME"
-                & " | decode NAME HEX");
+                & " | decode NAME HEX | types | random SEED | reencode");
       Set_Exit_Status (Failure);
    end Usage;
 
 begin
-   if Argument_Count = 1 and then Argument (1) = "list" then
+   if Argument_Count = 1 and then Argument (1) = "types" then
+      Put_Types;
+   elsif Argument_Count = 2 and then Argument (1) = "random" then
+      Put_Random (Argument (2));
+   elsif Argument_Count = 1 and then Argument (1) = "reencode" then
+      Reencode;
+   elsif Argument_Count = 1 and then Argument (1) = "list" then
       for N of Samples.Names loop
          Put_Line (N);
       end loop;
@@ -37,7 +133,7 @@ begin
             (if Argument_Count = 3 and then Argument (3) = "be" then Big_Endian
              else Little_Endian))));
    elsif Argument_Count = 2 and then Argument (1) = "image" then
-      Put (ROSIDL.Dynamic.Image (Samples.Make (Argument (2))));
+      Put_Image (ROSIDL.Dynamic.Image (Samples.Make (Argument (2))));
    elsif Argument_Count = 3 and then Argument (1) = "decode" then
       declare
          Msg  : ROSIDL.Dynamic.Message := Samples.Make (Argument (2));
@@ -51,7 +147,7 @@ begin
          else
             Decode (Data, Msg);
          end if;
-         Put (ROSIDL.Dynamic.Image (Msg));
+         Put_Image (ROSIDL.Dynamic.Image (Msg));
       exception
          when E : ROSIDL.Decode_Error =>
             Put_Line (Standard_Error, "Decode_Error: "
