@@ -52,4 +52,9 @@ dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config
    may take them. */
 void sancta_block_stop_signals (void);
 
+/* The endpoints DDS discovery knows (publications or subscriptions), one
+   "topic<TAB>type<LF>" line each; NULL on error; free with sancta_dds_free. */
+char *sancta_dds_endpoint_list (dds_entity_t participant, int publications);
+void sancta_dds_free (void *p);
+
 #endif
