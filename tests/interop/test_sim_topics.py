@@ -179,3 +179,25 @@ def test_sigint_stops_cleanly():
     assert sim.returncode == 0 and "stopped at" in out, out
     assert first is not None and last is not None, out
     assert (last.clock.sec, last.clock.nanosec) > (first.clock.sec, first.clock.nanosec)
+
+
+def test_cmd_timeout_stops_a_robot_left_without_commands():
+    dp = ps.participant()
+    truth = ps.reader(dp, "rt/r1/ground_truth", ss.PoseStamped_)
+    cmd = ps.writer(dp, "rt/r1/cmd_vel", ss.Twist_)
+    sim = ps.start("sancta-sim", "arena", "--robot", "r1 5 5 0", "--rate", "4x",
+                   "--cmd-timeout", "0.5")
+    try:
+        assert ps.wait_matched(cmd, 15) and ps.wait_matched(truth, 15)
+        start = ss.latest(truth)
+        cmd.write(ss.Twist_(linear=ss.Vector3_(0.5, 0, 0)))  # once, then silence
+        time.sleep(2.0)  # 8 simulated seconds
+        a = ss.latest(truth)
+        time.sleep(0.5)
+        b = ss.latest(truth)
+    finally:
+        stop(sim)
+    moved = a.pose.position.x - start.pose.position.x
+    # It moved (at most 0.5 s at 0.5 m/s, with acceleration), then stopped.
+    assert 0.02 < moved < 0.3, moved
+    assert b.pose.position.x == a.pose.position.x and ss.stamp_of(b.header) > ss.stamp_of(a.header)

@@ -53,6 +53,8 @@ package body Sancta.Simulation.Sim_Tool is
       Put_Line ("  --duration S            stop after S simulated seconds (default: never)");
       Put_Line ("  --step S                simulated seconds per step (default 0.02)");
       Put_Line ("  --truth-period S        ground-truth period (default 0.1)");
+      Put_Line ("  --cmd-timeout S         stop a robot S simulated seconds after its last");
+      Put_Line ("                          cmd_vel (default 0: never)");
       Put_Line ("  --quiet                 do not print events");
    end Usage;
 
@@ -133,6 +135,8 @@ package body Sancta.Simulation.Sim_Tool is
       Last_Odom : Natural := 0;
       Last_Scan : Natural := 0;
       Last_GPS  : Natural := 0;
+      Last_Cmd  : Real := 0.0;
+      --  Simulated time of the last cmd_vel.
    end record;
 
    package IO_Vectors is new Ada.Containers.Vectors (Positive, Robot_IO);
@@ -198,6 +202,7 @@ package body Sancta.Simulation.Sim_Tool is
       Duration_S  : Real;
       Step        : Real;
       Truth_Every : Real;
+      Cmd_Timeout : Real;
       Quiet       : Boolean)
    is
       use ROSIDL.Typesupport;
@@ -265,6 +270,7 @@ package body Sancta.Simulation.Sim_Tool is
          Sim.Add_Robot (Config, Start, R.Id, Name);
          R.Name := To_Unbounded_String (Name);
          R.Start := Start;
+         R.Last_Cmd := Sim.Clock;
          R.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_sim", Namespace => NS));
          R.Odom := new RCL.Publishers.Publisher'(R.Node.Publish (Odom_Support, "odom"));
          R.Scan := new RCL.Publishers.Publisher'
@@ -341,6 +347,7 @@ package body Sancta.Simulation.Sim_Tool is
             begin
                exit when Data'Length = 0;
                ROSIDL.CDR.Decode (Data, Twist_Msg);
+               R.Last_Cmd := Sim.Clock;
                Sim.Set_Command
                  (R.Id,
                   (Linear_X  => Real (ROSIDL.Float64'(Twist_Msg ("linear")("x").As_Float64)),
@@ -351,6 +358,9 @@ package body Sancta.Simulation.Sim_Tool is
                        & Ada.Exceptions.Exception_Message (E));
             end;
          end loop;
+         if Cmd_Timeout > 0.0 and then Sim.Clock - R.Last_Cmd > Cmd_Timeout then
+            Sim.Set_Command (R.Id, (0.0, 0.0));
+         end if;
       end Take_Commands;
 
       procedure Answer (Header : ROSIDL.CDR.Request_Header) is
@@ -528,6 +538,7 @@ package body Sancta.Simulation.Sim_Tool is
       Duration_S  : Real := Real'Last;
       Step        : Real := 0.02;
       Truth_Every : Real := 0.1;
+      Cmd_Timeout : Real := 0.0;
       Quiet       : Boolean := False;
       K           : Positive := 1;
 
@@ -599,6 +610,12 @@ package body Sancta.Simulation.Sim_Tool is
                   raise Usage_Error with "--truth-period: expected a positive time";
                end if;
                K := K + 1;
+            elsif A = "--cmd-timeout" then
+               Cmd_Timeout := To_Real ("--cmd-timeout", Value);
+               if Cmd_Timeout < 0.0 then
+                  raise Usage_Error with "--cmd-timeout: expected a time >= 0";
+               end if;
+               K := K + 1;
             elsif A = "--quiet" then
                Quiet := True;
             elsif A'Length > 0 and then A (A'First) = '-' then
@@ -625,7 +642,7 @@ package body Sancta.Simulation.Sim_Tool is
             World : constant Worlds.World := Map_Files.Load_World (File);
          begin
             Simulate (World, Robots, Rate, As_Fast, Seed, Duration_S, Step, Truth_Every,
-                      Quiet);
+                      Cmd_Timeout, Quiet);
          end;
       end;
    exception

@@ -20,6 +20,7 @@
 --
 --     sancta-sim office --robot "robot1 2 10 0" --rate 10x --seed 3
 --     sancta-sim share/worlds/arena.yaml --robots team.txt --as-fast-as-possible
+--     sancta-sim arena --robot "r1 5 5 0" --cmd-timeout 0.5   # stops without commands
 package Sancta.Simulation.Sim_Tool is
 
    procedure Run;
