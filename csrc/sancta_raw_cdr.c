@@ -538,3 +538,31 @@ void sancta_dds_free (void *p)
 {
   ddsrt_free (p);
 }
+
+/* ------------------------------------------------------------------ */
+/* Writing without an intermediate buffer: the caller serializes straight
+   into a new serdata's storage. */
+
+void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **buffer)
+{
+  struct raw_serdata *d = raw_serdata_new (sertype, SDK_DATA, size);
+  if (d == NULL) {
+    *buffer = NULL;
+    return NULL;
+  }
+  *buffer = d->data;
+  return d;
+}
+
+dds_return_t sancta_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
+                                       dds_time_t timestamp)
+{
+  struct raw_serdata *d = serdata;
+  if (used < d->size) {
+    /* Shrink: keep the bytes up to the next multiple of 4 zeroed. */
+    memset (d->data + used, 0, align4 (d->size) - used);
+    d->size = (uint32_t) used;
+  }
+  d->c.timestamp.v = timestamp;
+  return dds_writecdr (writer, &d->c); /* consumes the reference */
+}
