@@ -5,6 +5,7 @@
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
 with Ada.Command_Line;
 with Ada.Text_IO;
+with Sancta.Commands.Plan;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -16,6 +17,7 @@ procedure Sancta_CLI is
       Put_Line ("commands:");
       --  One line per subcommand, in the order below.
       Put_Line ("  help             this text");
+      Put_Line ("  plan FILE ...    task allocation (sancta plan --help)");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -24,7 +26,8 @@ begin
      or else Command = "-h"
    then
       Usage;
-   --  elsif Command = "plan" then Sancta.Commands.Plan.Run;
+   elsif Command = "plan" then
+      Sancta.Commands.Plan.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage;
