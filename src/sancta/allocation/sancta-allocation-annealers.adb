@@ -602,7 +602,7 @@ package body Sancta.Allocation.Annealers is
 
    type Move_Kind is
      (Or_Opt_Near, Two_Opt_Near, Cross_Near, Random_Move, Move_Owner,
-      Guided_Move, Log_Auction, Swap_Any, Switch_Or);
+      Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse);
 
    function Movable (P : Problem; S : State; T : Positive) return Boolean is
      (S.Pos (T) > P.Frozen_Length (S.Own (T)));
@@ -624,7 +624,18 @@ package body Sancta.Allocation.Annealers is
    --  Move the tasks at positions I .. J of robot R1 to after position Q of
    --  robot R2 (Q in the current numbering of R2), reversed or not.
    procedure Relocate (S : State; Mv : in out Move; R1 : Positive; I, J : Positive;
-                       R2 : Positive; Q : Natural; Rev : Boolean; Ok : out Boolean) is
+                       R2 : Positive; Q : Natural; Rev : Boolean; Ok : out Boolean;
+                       New_Loc : Natural := 0)
+   is
+      --  With New_Loc /= 0 (I = J), the task moves to its new OR choice there.
+      procedure Moved (T : in out Tour_Plan) is
+      begin
+         if New_Loc /= 0 then
+            Add_Single (T, S.Tk (R1, I), New_Loc);
+         else
+            Add (T, R1, I, J, Rev);
+         end if;
+      end Moved;
    begin
       Mv.A := (others => <>);
       Mv.B := (others => <>);
@@ -635,20 +646,25 @@ package body Sancta.Allocation.Annealers is
          Add (Mv.A, R1, J + 1, S.Len (R1));
          Mv.B.Robot := R2;
          Add (Mv.B, R2, 1, Q);
-         Add (Mv.B, R1, I, J, Rev);
+         Moved (Mv.B);
          Add (Mv.B, R2, Q + 1, S.Len (R2));
       elsif Q + 1 < I then
          Mv.A.Robot := R1;
          Add (Mv.A, R1, 1, Q);
-         Add (Mv.A, R1, I, J, Rev);
+         Moved (Mv.A);
          Add (Mv.A, R1, Q + 1, I - 1);
          Add (Mv.A, R1, J + 1, S.Len (R1));
       elsif Q > J then
          Mv.A.Robot := R1;
          Add (Mv.A, R1, 1, I - 1);
          Add (Mv.A, R1, J + 1, Q);
-         Add (Mv.A, R1, I, J, Rev);
+         Moved (Mv.A);
          Add (Mv.A, R1, Q + 1, S.Len (R1));
+      elsif New_Loc /= 0 then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Moved (Mv.A);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
       elsif Rev and then I < J then
          Mv.A.Robot := R1;
          Add (Mv.A, R1, 1, I - 1);
@@ -752,6 +768,9 @@ package body Sancta.Allocation.Annealers is
             Add (Mv.B, R1, I + 1, S.Len (R1));
          else
             --  R2: 1..J then R1's I..; R1: 1..I-1 then R2's J+1..
+            if J < P.Frozen_Length (R2) then
+               return;
+            end if;
             Add (Mv.A, R1, 1, I - 1);
             Add (Mv.A, R2, J + 1, S.Len (R2));
             Add (Mv.B, R2, 1, J);
@@ -910,7 +929,8 @@ package body Sancta.Allocation.Annealers is
       type Real_Array is array (Move_Kind) of Long_Float;
       Weight : Real_Array := [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Cross_Near => 1.5,
                               Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
-                              Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5];
+                              Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
+                              Segment_Move => 0.5, Random_Reverse => 0.5];
       Score, Tries : Real_Array := [others => 0.0];
       Has_Or : Boolean := False;
       Log_Tries : constant Positive :=
@@ -1006,6 +1026,36 @@ package body Sancta.Allocation.Annealers is
                      Ok := True;
                   end if;
                end;
+            when Segment_Move =>
+               --  A random segment (any length) of T's tour, moved to a
+               --  random place of a random robot, maybe reversed.
+               declare
+                  R1 : constant Positive := S.Own (T);
+                  I  : constant Positive := S.Pos (T);
+                  J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
+                  R2 : constant Positive := 1 + Random.Below (G, S.NR);
+                  Q  : constant Natural := Random_Robot_Position (P, S.all, G, R2);
+               begin
+                  if R2 /= R1 or else Q + 1 < I or else Q > J then
+                     Relocate (S.all, Mv, R1, I, J, R2, Q, Random.Below (G, 2) = 0, Ok);
+                  end if;
+               end;
+            when Random_Reverse =>
+               declare
+                  R1 : constant Positive := S.Own (T);
+                  I  : constant Positive := S.Pos (T);
+                  J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
+               begin
+                  if J > I then
+                     Mv.A := (others => <>);
+                     Mv.B := (others => <>);
+                     Mv.A.Robot := R1;
+                     Add (Mv.A, R1, 1, I - 1);
+                     Add (Mv.A, R1, I, J, True);
+                     Add (Mv.A, R1, J + 1, S.Len (R1));
+                     Ok := True;
+                  end if;
+               end;
             when Swap_Any =>
                declare
                   U : constant Natural := Random_Task (P, S.all, G);
@@ -1015,21 +1065,40 @@ package body Sancta.Allocation.Annealers is
                   end if;
                end;
             when Switch_Or =>
+               --  Another alternative of an OR task, at the best of a few
+               --  random places (its own place among them).
                if P.Alt_Count (T) > 1 then
                   declare
                      C : Positive := 1 + Random.Below (G, P.Alt_Count (T) - 1);
                      R : constant Positive := S.Own (T);
                      I : constant Positive := S.Pos (T);
+                     Cand, Best_Mv : Move;
+                     C_Ok : Boolean;
                   begin
                      if C >= S.Choice (T) then
                         C := C + 1;
                      end if;
-                     Mv.A := (others => <>);
-                     Mv.B := (others => <>);
-                     Mv.A.Robot := R;
-                     Add (Mv.A, R, 1, I - 1);
-                     Add_Single (Mv.A, T, Location_Of (P, T, C));
-                     Add (Mv.A, R, I + 1, S.Len (R));
+                     Relocate (S.all, Best_Mv, R, I, I, R, I, False, C_Ok,
+                               New_Loc => Location_Of (P, T, C));
+                     Evaluate_Move (P, S.all, W, Best_Mv, C_Ok);
+                     for Try in 1 .. Log_Tries loop
+                        declare
+                           R2 : constant Positive := 1 + Random.Below (G, S.NR);
+                           Q  : constant Natural := Random_Robot_Position (P, S.all, G, R2);
+                        begin
+                           if R2 /= R or else (Q /= I and then Q + 1 /= I) then
+                              Relocate (S.all, Cand, R, I, I, R2, Q, False, C_Ok,
+                                        New_Loc => Location_Of (P, T, C));
+                              if C_Ok then
+                                 Evaluate_Move (P, S.all, W, Cand, C_Ok);
+                                 if C_Ok and then Cand.Value < Best_Mv.Value then
+                                    Best_Mv := Cand;
+                                 end if;
+                              end if;
+                           end if;
+                        end;
+                     end loop;
+                     Mv := Best_Mv;
                      Mv.Switch_Task := T;
                      Mv.Switch_To := C;
                      Ok := True;
@@ -1159,7 +1228,8 @@ package body Sancta.Allocation.Annealers is
             Propose (Pick_Kind, Mv, Ok);
             if Ok then
                Evaluate_Move (P, S.all, W, Mv, Ok);
-               if Ok and then Mv.Value > Cur then
+               if Ok and then Mv.Value > Cur and then Mv.Value - Cur < 0.5 * Long_Float (Infinity)
+               then
                   Sum_Up := Sum_Up + (Mv.Value - Cur);
                   N_Up := N_Up + 1;
                end if;

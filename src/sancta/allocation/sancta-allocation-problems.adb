@@ -4,7 +4,7 @@ package body Sancta.Allocation.Problems is
      (Locations, Tasks, Robots : Positive; Alternatives : Natural := 0)
       return Problem_Access
    is
-      Alts : constant Positive := Positive'Max (Tasks, Alternatives);
+      Alts : constant Positive := Tasks + Alternatives;
       P    : constant Problem_Access :=
         new Problem (Locations, Tasks, Robots, Alts);
    begin
@@ -77,13 +77,20 @@ package body Sancta.Allocation.Problems is
 
    procedure Set_Task (This : in out Problem; T : Positive; Location : Positive) is
    begin
-      This.Alt_Location (This.Alt_First (T)) := Location;
+      This.Alt_First (T) := T;
+      This.Alt_Location (T) := Location;
       This.Alt_Count (T) := 1;
    end Set_Task;
 
    procedure Set_Task_Alternatives
      (This : in out Problem; T : Positive; Locations : Location_Array) is
    begin
+      if Locations'Length = 1 then
+         This.Alt_First (T) := T;
+         This.Alt_Count (T) := 1;
+         This.Alt_Location (T) := Locations (Locations'First);
+         return;
+      end if;
       if This.Next_Alt + Locations'Length - 1 > This.Alternatives then
          raise Constraint_Error with "no room for the alternatives of task" & T'Image;
       end if;

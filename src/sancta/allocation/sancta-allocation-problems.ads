@@ -65,8 +65,8 @@ package Sancta.Allocation.Problems is
    function Create
      (Locations, Tasks, Robots : Positive; Alternatives : Natural := 0)
       return Problem_Access;
-   --  A problem with all distances 0, task T at location T (alternatives
-   --  room: Alternatives, at least Tasks), robots starting at location 1 on
+   --  A problem with all distances 0, task T at location T, room for
+   --  Alternatives extra OR alternatives, robots starting at location 1 on
    --  closed tours.
 
    Nowhere : constant := 0;
