@@ -1346,8 +1346,12 @@ package body Sancta.Allocation.Annealers is
                      Best_Value := Cur;
                      Best_Saved := False;
                      Last_Best_Move := Moves;
-                     Best_Time := Elapsed;
+                     Best_Time := To_Duration (Clock - Start);
                      Score (Kind) := Score (Kind) + 2.0;
+                     if Opts.Target > 0.0 and then True_Value <= Opts.Target then
+                        Stop := True;
+                        exit Main;
+                     end if;
                   end if;
                else
                   Since_Improve := Since_Improve + 1;

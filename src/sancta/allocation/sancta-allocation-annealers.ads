@@ -51,6 +51,8 @@ package Sancta.Allocation.Annealers is
       Initial      : Boolean := False;
       --  Start from Start_From (below) instead of best insertion.
       Report_Every : Duration := 0.5;
+      Target       : Long_Float := 0.0;
+      --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
    end record;
 
    type Progress is record

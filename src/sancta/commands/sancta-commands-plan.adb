@@ -42,6 +42,7 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --real SCALE         real Euclidean distances in fixed point, x SCALE");
       Put_Line ("  --open               open tours (robots do not return)");
       Put_Line ("  --min-tasks N        each robot visits at least N cities (default 1)");
+      Put_Line ("  --target V           stop as soon as the objective is <= V");
       Put_Line ("  --no-polish          skip the final local search");
       Put_Line ("  --check              expensive self-check after every move (slow)");
       Put_Line ("  --svg FILE           draw the tours");
@@ -351,6 +352,18 @@ package body Sancta.Commands.Plan is
                Open_Tours := True;
             elsif A = "--min-tasks" then
                Min_Tasks := Natural (Long_Long_Integer'Min (1000, Parse_Natural (A, Value_Of (A))));
+            elsif A = "--target" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Target := Long_Float'Value (S);
+                  if Opts.Target <= 0.0 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--target: '" & S & "' is not a positive value";
+               end;
             elsif A = "--no-polish" then
                Opts.Polish := False;
             elsif A = "--check" then
@@ -389,6 +402,7 @@ package body Sancta.Commands.Plan is
          Stats : Annealers.Progress;
       begin
          Scale_Factor := P.Scale;
+         Opts.Target := Opts.Target * Scale_Factor;
          if Open_Tours then
             for R in 1 .. P.Robots loop
                Set_Robot (P.all, R, P.Start (R), Closed => False,
