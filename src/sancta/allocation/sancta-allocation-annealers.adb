@@ -171,6 +171,7 @@ package body Sancta.Allocation.Annealers is
       New_A_Cost, New_B_Cost : Cost := 0;
       New_A_Comp, New_B_Comp : Cost := 0;
       New_A_Len, New_B_Len   : Natural := 0;
+      New_Max, New_Sum, New_Comp : Cost := 0;
       Value       : Long_Float := 0.0;
    end record;
 
@@ -281,6 +282,9 @@ package body Sancta.Allocation.Annealers is
          Comp := Comp - S.RCm (B) + Mv.New_B_Comp;
          Max := Cost'Max (Max, Mv.New_B_Cost);
       end if;
+      Mv.New_Max := Max;
+      Mv.New_Sum := Sum;
+      Mv.New_Comp := Comp;
       Mv.Value := Objective (W, Max, Sum, Comp, P.Tasks);
    end Evaluate_Move;
 
@@ -916,7 +920,11 @@ package body Sancta.Allocation.Annealers is
       G     : Gen := Random.Seeded (Opts.Seed);
       Start : constant Time := Clock;
       Next_Report : Time := Start + To_Time_Span (Opts.Report_Every);
-      W     : Weights;
+      W, WT : Weights;
+      --  W guides the search, WT is the criterion (with its tie-break).
+      Guide0 : Long_Float := 0.0;
+      --  Pure makespan: W adds Guide * total cost, Guide decaying from
+      --  Guide0 to WT.Tie over the budget (balances all tours early on).
       Cur, Best_Value : Long_Float;
       Best_Saved : Boolean := True;
       --  Best holds the best solution; False while the current solution is
@@ -1209,12 +1217,17 @@ package body Sancta.Allocation.Annealers is
       else
          Construct (P, S.all, Opts.Criterion, G);
       end if;
-      W := Make_Weights (P, Opts.Criterion, S.Sum);
+      WT := Make_Weights (P, Opts.Criterion, S.Sum);
+      W := WT;
+      if WT.Tie > 0.0 then
+         Guide0 := (if Opts.Balance >= 0.0 then Opts.Balance else 1.0 / Long_Float (P.Robots));
+         W.Tie := Long_Float'Max (WT.Tie, Guide0);
+      end if;
       if Opts.Check then
          Verify (P, S.all, (others => <>), False);
       end if;
       Cur := Current_Value (P, S.all, W);
-      Best_Value := Cur;
+      Best_Value := Current_Value (P, S.all, WT);
       Save_Best;
 
       --  Temperatures: from the mean uphill delta of sampled moves.
@@ -1235,11 +1248,11 @@ package body Sancta.Allocation.Annealers is
                end if;
             end if;
          end loop;
-         T0 := (if N_Up > 0 then 0.5 * Sum_Up / Long_Float (N_Up) else 1.0);
+         T0 := (if N_Up > 0 then Opts.Start_Factor * Sum_Up / Long_Float (N_Up) else 1.0);
          if Opts.Start_Temperature > 0.0 then
             T0 := Opts.Start_Temperature;
          end if;
-         T1 := (if Opts.End_Temperature > 0.0 then Opts.End_Temperature else T0 / 5000.0);
+         T1 := (if Opts.End_Temperature > 0.0 then Opts.End_Temperature else T0 / Opts.End_Ratio);
          T1 := Long_Float'Min (T1, T0);
          Temp := T0;
          Reheat_T := T0;
@@ -1272,6 +1285,10 @@ package body Sancta.Allocation.Annealers is
                end if;
                exit Main when Stop;
                X := Long_Float'Min (1.0, X);
+               if Guide0 > WT.Tie and then Opts.Balance_Decay then
+                  W.Tie := Long_Float'Max (WT.Tie, Guide0 * (WT.Tie / Guide0) ** X);
+                  Cur := Current_Value (P, S.all, W);
+               end if;
                case Opts.Schedule is
                   when Geometric =>
                      Temp := T0 * (T1 / T0) ** X;
@@ -1315,7 +1332,7 @@ package body Sancta.Allocation.Annealers is
             Kind : constant Move_Kind := Pick_Kind;
             Mv   : Move;
             Ok   : Boolean;
-            D    : Long_Float;
+            D, TV : Long_Float;
          begin
             Propose (Kind, Mv, Ok);
             Tries (Kind) := Tries (Kind) + 1.0;
@@ -1327,7 +1344,8 @@ package body Sancta.Allocation.Annealers is
                if D <= 0.0 or else (D < 30.0 * Temp
                                      and then Random.Uniform (G) < Exp (-D / Temp))
                then
-                  if D > 0.0 and then not Best_Saved then
+                  TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp, P.Tasks);
+                  if not Best_Saved and then TV > Best_Value then
                      Save_Best;
                   end if;
                   Do_Apply (Mv);
@@ -1342,8 +1360,8 @@ package body Sancta.Allocation.Annealers is
                   else
                      Since_Improve := Since_Improve + 1;
                   end if;
-                  if Cur < Best_Value - 1.0E-9 then
-                     Best_Value := Cur;
+                  if TV < Best_Value - 1.0E-9 then
+                     Best_Value := TV;
                      Best_Saved := False;
                      Last_Best_Move := Moves;
                      Best_Time := To_Duration (Clock - Start);
@@ -1362,6 +1380,7 @@ package body Sancta.Allocation.Annealers is
       if not Best_Saved then
          Save_Best;
       end if;
+      W := WT;
       if Opts.Polish then
          Load (P, S.all, Best);
          Cur := Current_Value (P, S.all, W);

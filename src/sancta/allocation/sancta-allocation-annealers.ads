@@ -40,7 +40,10 @@ package Sancta.Allocation.Annealers is
       Cycles       : Positive := 3;
       Start_Temperature : Long_Float := 0.0;
       End_Temperature   : Long_Float := 0.0;
-      --  0.0 = automatic, from sampled move deltas.
+      --  0.0 = automatic, from sampled move deltas: T0 = Start_Factor *
+      --  mean uphill delta, T1 = T0 / End_Ratio.
+      Start_Factor : Long_Float := 0.5;
+      End_Ratio    : Long_Float := 2000.0;
       Neighbours   : Positive := 10;
       Adaptive     : Boolean := True;
       Polish       : Boolean := True;
@@ -51,6 +54,10 @@ package Sancta.Allocation.Annealers is
       Initial      : Boolean := False;
       --  Start from Start_From (below) instead of best insertion.
       Report_Every : Duration := 0.5;
+      Balance      : Long_Float := 0.05;
+      --  Pure makespan only: weight of the total cost in the search
+      --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
+      Balance_Decay : Boolean := False;
       Target       : Long_Float := 0.0;
       --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
    end record;

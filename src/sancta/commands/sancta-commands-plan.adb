@@ -43,6 +43,10 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --open               open tours (robots do not return)");
       Put_Line ("  --min-tasks N        each robot visits at least N cities (default 1)");
       Put_Line ("  --target V           stop as soon as the objective is <= V");
+      Put_Line ("  --balance W          minmax: initial weight of the total cost in the");
+      Put_Line ("                       search objective (default 0.05, 0 = none)");
+      Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
+      Put_Line ("                       end temperature = start / R (2000)");
       Put_Line ("  --no-polish          skip the final local search");
       Put_Line ("  --check              expensive self-check after every move (slow)");
       Put_Line ("  --svg FILE           draw the tours");
@@ -363,6 +367,31 @@ package body Sancta.Commands.Plan is
                exception
                   when Constraint_Error =>
                      raise Usage_Error with "--target: '" & S & "' is not a positive value";
+               end;
+            elsif A = "--balance" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Balance := Long_Float'Value (S);
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--balance: '" & S & "' is not a number";
+               end;
+            elsif A = "--t0" or else A = "--cool" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  if A = "--t0" then
+                     Opts.Start_Factor := Long_Float'Value (S);
+                  else
+                     Opts.End_Ratio := Long_Float'Value (S);
+                  end if;
+                  if Opts.Start_Factor <= 0.0 or else Opts.End_Ratio < 1.0 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with A & ": '" & S & "' is not a valid factor";
                end;
             elsif A = "--no-polish" then
                Opts.Polish := False;
