@@ -7,6 +7,7 @@ visit at least one city; first solution PATH_CHEAPEST_ARC, metaheuristic
 GUIDED_LOCAL_SEARCH; wall-clock limit. Prints one JSON object.
 
 usage: ortools_peer.py FILE --robots M --objective minsum|minmax --time S [--real SCALE]
+       [--first STRATEGY]
 """
 import argparse
 import json
@@ -89,7 +90,7 @@ def _row(fmt, a, n):
             "UPPER_DIAG_ROW": range(a, n), "LOWER_DIAG_ROW": range(a + 1)}[fmt]
 
 
-def solve(d, m, objective, seconds):
+def solve(d, m, objective, seconds, first="PATH_CHEAPEST_ARC"):
     n = len(d)
     manager = pywrapcp.RoutingIndexManager(n, m, 0)
     routing = pywrapcp.RoutingModel(manager)
@@ -108,12 +109,27 @@ def solve(d, m, objective, seconds):
         for v in range(m):
             count.CumulVar(routing.End(v)).SetMin(2)
     params = pywrapcp.DefaultRoutingSearchParameters()
-    params.first_solution_strategy = routing_enums_pb2.FirstSolutionStrategy.PATH_CHEAPEST_ARC
+    if first != "SWEEP":
+        params.first_solution_strategy = getattr(routing_enums_pb2.FirstSolutionStrategy,
+                                                 first)
     params.local_search_metaheuristic = (
         routing_enums_pb2.LocalSearchMetaheuristic.GUIDED_LOCAL_SEARCH)
     params.time_limit.FromMilliseconds(int(seconds * 1000))
     start = time.time()
-    sol = routing.SolveWithParameters(params)
+    if first == "SWEEP":
+        # Start from m consecutive chunks of the cities (in node order): used
+        # when the protocol's PATH_CHEAPEST_ARC cannot build a first solution
+        # satisfying the count constraint (m >= 8 here).
+        params.first_solution_strategy = (
+            routing_enums_pb2.FirstSolutionStrategy.PATH_CHEAPEST_ARC)
+        routing.CloseModelWithParameters(params)
+        cities = list(range(1, n))
+        k = len(cities)
+        routes = [cities[v * k // m:(v + 1) * k // m] for v in range(m)]
+        init = routing.ReadAssignmentFromRoutes(routes, True)
+        sol = routing.SolveFromAssignmentWithParameters(init, params) if init else None
+    else:
+        sol = routing.SolveWithParameters(params)
     used = time.time() - start
     if sol is None:
         return {"status": "no solution", "time_used": used}
@@ -139,9 +155,13 @@ def main():
     ap.add_argument("--objective", default="minsum", choices=["minsum", "minmax"])
     ap.add_argument("--time", type=float, default=10.0)
     ap.add_argument("--real", type=float, default=0.0)
+    ap.add_argument("--first", default="PATH_CHEAPEST_ARC",
+                    help="first solution strategy (the protocol's is PATH_CHEAPEST_ARC); "
+                         "SWEEP = start from m chunks of the cities in node order")
     a = ap.parse_args()
     d = read_tsplib(a.file, a.real)
-    r = solve(d, a.robots, a.objective, a.time)
+    r = solve(d, a.robots, a.objective, a.time, a.first)
+    r["first_solution"] = a.first
     r["objective"] = r.get("makespan" if a.objective == "minmax" else "total")
     json.dump(r, sys.stdout)
     print()

@@ -94,8 +94,8 @@ package body Sancta.Allocation.Annealers is
 
    function Key (S : State; R : Positive) return Cost is (S.RC (R));
 
-   function Current_Max (S : State) return Cost is
-     (if S.NR = 1 then S.Tree (1) else S.Tree (1));
+   function Current_Max (S : State) return Cost is (S.Tree (1));
+   --  With one robot the single leaf is Tree (1) itself.
 
    ---------------------------------------------------------------------------
    --  Rebuild the caches of robot R from position From on (tasks in Tk).
@@ -933,7 +933,6 @@ package body Sancta.Allocation.Annealers is
       T0, T1, Temp : Long_Float;
       Elapsed : Duration := 0.0;
       Best_Time : Duration := 0.0;
-      N_Kinds : constant := Move_Kind'Pos (Move_Kind'Last) + 1;
       type Real_Array is array (Move_Kind) of Long_Float;
       Weight : Real_Array := [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Cross_Near => 1.5,
                               Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
@@ -1401,7 +1400,6 @@ package body Sancta.Allocation.Annealers is
                 Moves_Per_Second => (if Elapsed > 0.0
                                      then Long_Float (Moves) / Long_Float (Elapsed) else 0.0),
                 Time_To_Best => Best_Time);
-      pragma Unreferenced (N_Kinds);
       Free (S);
    end Solve;
 

@@ -175,9 +175,8 @@ package body Sancta.Allocation.Missions is
                end if;
             end loop;
             if E = "task" then
-               H.Points.Append
-              (Sancta.Geometry.Point'(Real_Attr (H, Atts, "x", E),
-                                      Real_Attr (H, Atts, "y", E)));
+               H.Points.Append (Sancta.Geometry.Point'(Real_Attr (H, Atts, "x", E),
+                                                       Real_Attr (H, Atts, "y", E)));
                T.Count := 1;
             else
                H.In_Or := True;
@@ -188,9 +187,8 @@ package body Sancta.Allocation.Missions is
          if not H.In_Or then
             Fail (H, "<at> outside <or>");
          end if;
-         H.Points.Append
-              (Sancta.Geometry.Point'(Real_Attr (H, Atts, "x", E),
-                                      Real_Attr (H, Atts, "y", E)));
+         H.Points.Append (Sancta.Geometry.Point'(Real_Attr (H, Atts, "x", E),
+                                                 Real_Attr (H, Atts, "y", E)));
          declare
             T : Task_Info := H.Tasks.Last_Element;
          begin
