@@ -273,14 +273,18 @@ package body Sancta.Allocation.Annealers is
       Valid := Mv.New_A_Len >= P.Min_Tasks or else Mv.New_A_Len >= S.Len (A);
       Sum := S.Sum - S.RC (A) + Mv.New_A_Cost;
       Comp := S.Comp - S.RCm (A) + Mv.New_A_Comp;
-      Max := Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost);
+      Max := (if W.C.Max_Weight = 0.0 then 0
+              else Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost));
+      --  The makespan only when the criterion uses it (saves O (log R)).
       if B /= 0 then
          Eval_Tour (P, S, Mv.B, Mv.New_B_Cost, Mv.New_B_Comp, Mv.New_B_Len);
          Valid := Valid and then
            (Mv.New_B_Len >= P.Min_Tasks or else Mv.New_B_Len >= S.Len (B));
          Sum := Sum - S.RC (B) + Mv.New_B_Cost;
          Comp := Comp - S.RCm (B) + Mv.New_B_Comp;
-         Max := Cost'Max (Max, Mv.New_B_Cost);
+         if W.C.Max_Weight /= 0.0 then
+            Max := Cost'Max (Max, Mv.New_B_Cost);
+         end if;
       end if;
       Mv.New_Max := Max;
       Mv.New_Sum := Sum;

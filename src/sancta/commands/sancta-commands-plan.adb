@@ -483,6 +483,20 @@ package body Sancta.Commands.Plan is
                   raise Usage_Error with "--solver exact: needs a pure criterion "
                     & "(minmax, minsum or minave)";
                end if;
+               declare
+                  Free_Tasks : Natural := 0;
+               begin
+                  for T in 1 .. P.Tasks loop
+                     if not P.Is_Frozen (T) then
+                        Free_Tasks := Free_Tasks + 1;
+                     end if;
+                  end loop;
+                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks then
+                     raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
+                       & " tasks; the exact solver takes at most"
+                       & Sancta.Allocation.Exact.Max_Tasks'Image;
+                  end if;
+               end;
                Result := Sancta.Allocation.Exact.Solve (P.all, Crit);
             else
                Result := Sancta.Allocation.Baselines.Solve
@@ -590,6 +604,9 @@ package body Sancta.Commands.Plan is
       when E : Ada.Text_IO.Name_Error | Ada.Text_IO.Use_Error =>
          Put_Line (Standard_Error, "sancta plan: cannot write: "
                    & Ada.Exceptions.Exception_Message (E));
+         CL.Set_Exit_Status (CL.Failure);
+      when E : Constraint_Error =>
+         Put_Line (Standard_Error, "sancta plan: " & Ada.Exceptions.Exception_Message (E));
          CL.Set_Exit_Status (CL.Failure);
    end Run;
 
