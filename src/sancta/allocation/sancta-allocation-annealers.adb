@@ -898,6 +898,19 @@ package body Sancta.Allocation.Annealers is
 
    ---------------------------------------------------------------------------
 
+   protected body Best_Box is
+      procedure Post (A : Assignment; V : Long_Float) is
+      begin
+         Current := A;
+         Current_Value := V;
+         Posted := True;
+      end Post;
+
+      function Has_Value return Boolean is (Posted);
+      function Value return Long_Float is (Current_Value);
+      function Best return Assignment is (Current);
+   end Best_Box;
+
    function Greedy_Start (P : Problem; C : Criterion; Seed : Interfaces.Unsigned_64)
      return Assignment
    is
@@ -1134,6 +1147,12 @@ package body Sancta.Allocation.Annealers is
 
       procedure Send_Report is
       begin
+         if Opts.Box /= null then
+            if not Best_Saved then
+               Save_Best;
+            end if;
+            Opts.Box.Post (Best, Best_Value);
+         end if;
          if Report /= null then
             Report ((Best => Best_Value, Current => Cur, Temperature => Temp, Moves => Moves,
                      Accepted => Accepted, Elapsed => Elapsed,
