@@ -1299,10 +1299,14 @@ package body Sancta.Allocation.Annealers is
                   Stop := Stop or else Moves >= Opts.Iterations;
                end if;
                if Opts.Convergence > 0 then
-                  Stop := Stop or else Moves - Last_Best_Move >= Opts.Convergence;
+                  Stop := Stop or else
+                    (Moves - Last_Best_Move >= Opts.Convergence
+                     and then (Opts.Time_Limit > 0.0 or else Opts.Iterations > 0
+                               or else Moves >= 10 * Opts.Convergence));
+                  --  Alone, it applies once the schedule is half way down.
                   if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 then
-                     X := Long_Float'Min (0.99, Long_Float (Moves - Last_Best_Move)
-                                          / Long_Float (Opts.Convergence));
+                     --  Convergence only: cool over 20 stagnation windows.
+                     X := Long_Float (Moves) / (20.0 * Long_Float (Opts.Convergence));
                   end if;
                end if;
                exit Main when Stop;
