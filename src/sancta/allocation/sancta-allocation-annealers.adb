@@ -963,6 +963,7 @@ package body Sancta.Allocation.Annealers is
       Reheat_T : Long_Float;
       Since_Improve : Long_Long_Integer := 0;
       Cycle_Best : Long_Float;
+      Cycle : Natural := 0;
 
       function Pick_Kind return Move_Kind is
          Total : Long_Float := 0.0;
@@ -1319,11 +1320,27 @@ package body Sancta.Allocation.Annealers is
                   when Geometric =>
                      Temp := T0 * (T1 / T0) ** X;
                   when Cyclic =>
+                     --  Cycles of geometric cooling; each new cycle restarts
+                     --  from the best so far, at a start temperature divided
+                     --  by Cycle_Drop per cycle.
                      declare
                         C : constant Long_Float := X * Long_Float (Opts.Cycles);
-                        F : constant Long_Float := C - Long_Float'Floor (C);
+                        K : constant Natural :=
+                          Natural (Long_Float'Min (Long_Float (Opts.Cycles - 1),
+                                                   Long_Float'Floor (C)));
+                        F : constant Long_Float := Long_Float'Min (1.0, C - Long_Float (K));
+                        T0K : constant Long_Float :=
+                          Long_Float'Max (T1, T0 / Opts.Cycle_Drop ** K);
                      begin
-                        Temp := T0 * (T1 / T0) ** (if X >= 1.0 then 1.0 else F);
+                        if K /= Cycle then
+                           Cycle := K;
+                           if not Best_Saved then
+                              Save_Best;
+                           end if;
+                           Load (P, S.all, Best);
+                           Cur := Current_Value (P, S.all, W);
+                        end if;
+                        Temp := T0K * (T1 / T0K) ** F;
                      end;
                   when Reheat =>
                      if Since_Improve > 20_000 then

@@ -23,7 +23,8 @@ with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 package Sancta.Allocation.Annealers is
 
    type Schedule_Kind is (Geometric, Cyclic, Reheat);
-   --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs.
+   --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs,
+   --  each from the best so far at a lower start temperature.
    --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
    --  without improvement, back to T0 after a long stretch without a new best.
 
@@ -51,6 +52,8 @@ package Sancta.Allocation.Annealers is
       --  Stop after this many moves without a new best; 0 = never.
       Schedule     : Schedule_Kind := Geometric;
       Cycles       : Positive := 3;
+      Cycle_Drop   : Long_Float := 3.0;
+      --  Cyclic: each cycle restarts from the best at T0 / Cycle_Drop ** k.
       Start_Temperature : Long_Float := 0.0;
       End_Temperature   : Long_Float := 0.0;
       --  0.0 = automatic, from sampled move deltas: T0 = Start_Factor *

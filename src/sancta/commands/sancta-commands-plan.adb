@@ -37,6 +37,7 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --converge N         stop after N moves without a new best");
       Put_Line ("  --seed N             random seed (default 1)");
       Put_Line ("  --schedule S         geometric | cyclic | reheat (default geometric)");
+      Put_Line ("  --cycles N           cyclic schedule: cycles, each from the best (3)");
       Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
       Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
       Put_Line ("  --real SCALE         real Euclidean distances in fixed point, x SCALE");
@@ -323,6 +324,15 @@ package body Sancta.Commands.Plan is
                      raise Usage_Error with "--schedule: '" & S
                        & "' is not geometric, cyclic or reheat";
                   end if;
+               end;
+            elsif A = "--cycles" then
+               declare
+                  N : constant Long_Long_Integer := Parse_Natural (A, Value_Of (A));
+               begin
+                  if N < 1 or else N > 1000 then
+                     raise Usage_Error with "--cycles: must be 1 .. 1000";
+                  end if;
+                  Opts.Cycles := Positive (N);
                end;
             elsif A = "--restarts" then
                declare
