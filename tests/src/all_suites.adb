@@ -18,6 +18,7 @@ with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
+with Sancta.Allocation.Tests;
 
 package body All_Suites is
 
@@ -46,6 +47,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (Simulation_Suites.Suite);
