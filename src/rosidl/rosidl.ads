@@ -42,4 +42,19 @@ package ROSIDL is
    --  wrong type; the message names the message type, the field and the
    --  valid fields.
 
+   type GID is array (1 .. 16) of Byte;
+   --  A DDS endpoint GUID (what ROS 2 calls a gid; the 24-byte rmw_gid_t
+   --  of Humble holds these 16 bytes followed by zeros).
+
+   type Message_Info is record
+      Source_Timestamp   : Int64 := 0;
+      --  Nanoseconds since the Unix epoch, stamped by the publisher.
+      Received_Timestamp : Int64 := 0;
+      --  Nanoseconds since the Unix epoch, when the sample was taken.
+      Publisher_GID      : GID := [others => 0];
+      --  The endpoint GUID of the publishing writer.
+   end record;
+   --  What a subscription callback learns about a message besides its
+   --  contents (RCLAda's ROSIDL.Message_Info; written by RCL).
+
 end ROSIDL;

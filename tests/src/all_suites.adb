@@ -1,5 +1,14 @@
 with Simulation_Suites;
 with Harness_Tests;
+with Sancta.Components.Tests;
+with Sancta.Components.ROS2.Tests;
+with Sancta.Runtime.Configurations.Tests;
+with Sancta.Runtime.Databases.Tests;
+with Sancta.Runtime.Schedulers.Tests;
+with RCL.Logging.Tests;
+with RCL.Names.Tests;
+with RCL.Nodes.Tests;
+with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
 
@@ -12,6 +21,15 @@ package body All_Suites is
    function Suite return Access_Test_Suite is
    begin
       Result.Add_Test (Harness_Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Configurations.Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
+      Result.Add_Test (Sancta.Components.Tests.Suite);
+      Result.Add_Test (Sancta.Components.ROS2.Tests.Suite);
+      Result.Add_Test (RCL.Names.Tests.Suite);
+      Result.Add_Test (RCL.Logging.Tests.Suite);
+      Result.Add_Test (RCL.Timers.Tests.Suite);
+      Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       --  Each area adds its suite here, e.g.

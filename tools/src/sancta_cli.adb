@@ -3,8 +3,12 @@
 --     sancta check FILE        validate a configuration and show its wiring
 --     sancta run FILE ...      run agents of a configuration
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
+pragma Unreserve_All_Interrupts;
+--  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
 with Ada.Text_IO;
+with Sancta.Commands.Check;
+with Sancta.Commands.Run;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -16,6 +20,8 @@ procedure Sancta_CLI is
       Put_Line ("commands:");
       --  One line per subcommand, in the order below.
       Put_Line ("  help             this text");
+      Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
+      Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -25,6 +31,10 @@ begin
    then
       Usage;
    --  elsif Command = "plan" then Sancta.Commands.Plan.Run;
+   elsif Command = "check" then
+      Sancta.Commands.Check.Run;
+   elsif Command = "run" then
+      Sancta.Commands.Run.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage;

@@ -1,0 +1,236 @@
+--  The thick Ada layer over Cyclone DDS used by RCL (clients of RCL never
+--  see it): participants, raw-CDR writers and readers, waitsets. Every
+--  Cyclone error becomes RCL.ROS_Exception with a message saying what was
+--  attempted and Cyclone's own text (dds_strretcode).
+--
+--     P : Participant;
+--     W : Writer;
+--     Create (P, Domain => 0, Localhost_Only => True);
+--     Create (W, P, "rt/chatter", "std_msgs::msg::dds_::String_", QoS.Default);
+--     Write (W, Bytes);  --  CDR including the 4-byte encapsulation header
+with Ada.Finalization;
+with Ada.Streams;
+with Interfaces;
+with RCL.QoS;
+
+private with System;
+
+package RCL.DDS is
+
+   subtype Byte_Array is Ada.Streams.Stream_Element_Array;
+
+   type GUID is array (1 .. 16) of Interfaces.Unsigned_8;
+   --  A DDS GUID: 12-byte participant prefix and 4-byte entity id.
+
+   Null_GUID : constant GUID := [others => 0];
+
+   function Image (This : GUID) return String;
+   --  Hex bytes separated by dots, "01.0f.3a...".
+
+   type Domain_Id is range 0 .. 232;
+   --  ROS_DOMAIN_ID range.
+
+   procedure Check (Code : Integer; What : String);
+   --  Raises ROS_Exception "<What>: <dds_strretcode (Code)>" when Code < 0.
+
+   function Error_Text (Code : Integer) return String;
+   --  dds_strretcode (Code).
+
+   type Time_Ns is new Interfaces.Integer_64;
+   --  Nanoseconds since the Unix epoch (DDS time).
+
+   Invalid_Time : constant Time_Ns := Time_Ns'Last;
+   --  DDS_TIME_INVALID.
+
+   function Now return Time_Ns;
+   --  The system clock as DDS time.
+
+   -----------------
+   -- Participant --
+   -----------------
+
+   type Participant is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Create
+     (This           : in out Participant;
+      Domain         : Domain_Id;
+      Localhost_Only : Boolean;
+      User_Data      : String := "enclave=/;")
+     with Pre => not Is_Open (This);
+   --  CYCLONEDDS_URI, when set, is Cyclone's whole configuration (Cyclone
+   --  reads it itself). Otherwise, with Localhost_Only, the domain gets a
+   --  loopback-only configuration (unicast discovery on 127.0.0.1, no
+   --  multicast).
+
+   function Is_Open (This : Participant) return Boolean;
+
+   function Instance_GUID (This : Participant) return GUID
+     with Pre => Is_Open (This);
+
+   overriding procedure Finalize (This : in out Participant);
+
+   ------------
+   -- Writer --
+   ------------
+
+   type Writer is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Create
+     (This       : in out Writer;
+      Owner      : Participant'Class;
+      Topic_Name : String;
+      Type_Name  : String;
+      Profile    : RCL.QoS.Profile;
+      User_Data  : String := "")
+     with Pre => Is_Open (Owner) and then not Is_Open (This);
+   --  Topic_Name is the DDS name ("rt/chatter").
+
+   function Is_Open (This : Writer) return Boolean;
+
+   procedure Write
+     (This      : Writer;
+      Data      : Byte_Array;
+      Timestamp : Time_Ns := Invalid_Time)
+     with Pre => Is_Open (This) and then Data'Length >= 4;
+   --  Data is CDR with its encapsulation header. A reliable writer blocks
+   --  while the history of a reader is full. Invalid_Time stamps now.
+
+   function Endpoint_GUID (This : Writer) return GUID
+     with Pre => Is_Open (This);
+
+   function Matched_Readers (This : Writer) return Natural
+     with Pre => Is_Open (This);
+
+   function Topic_Name (This : Writer) return String;
+   function Type_Name (This : Writer) return String;
+
+   overriding procedure Finalize (This : in out Writer);
+
+   ------------
+   -- Reader --
+   ------------
+
+   type Reader is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Create
+     (This        : in out Reader;
+      Owner       : Participant'Class;
+      Topic_Name  : String;
+      Type_Name   : String;
+      Profile     : RCL.QoS.Profile;
+      User_Data   : String := "";
+      Ignore_Self : Boolean := False)
+     with Pre => Is_Open (Owner) and then not Is_Open (This);
+   --  Ignore_Self: do not receive what this participant writes.
+
+   function Is_Open (This : Reader) return Boolean;
+
+   type Sample_Info is record
+      Source_Timestamp : Time_Ns;
+      Publisher        : GUID;
+      --  The writer's endpoint GUID (Null_GUID if it vanished meanwhile).
+   end record;
+
+   procedure Take
+     (This    : in out Reader;
+      Process : not null access procedure (Data : Byte_Array; Info : Sample_Info);
+      Taken   : out Boolean)
+     with Pre => Is_Open (This);
+   --  Takes one sample, if any, and calls Process with its bytes (valid
+   --  only during the call: no copy is made).
+
+   function Take (This : in out Reader; Info : out Sample_Info) return Byte_Array
+     with Pre => Is_Open (This);
+   --  A copy of the next sample; an empty array when there is none.
+
+   function Endpoint_GUID (This : Reader) return GUID
+     with Pre => Is_Open (This);
+
+   function Matched_Writers (This : Reader) return Natural
+     with Pre => Is_Open (This);
+
+   function Topic_Name (This : Reader) return String;
+   function Type_Name (This : Reader) return String;
+
+   overriding procedure Finalize (This : in out Reader);
+
+   -------------
+   -- Waitset --
+   -------------
+
+   type Waitset is new Ada.Finalization.Limited_Controlled with private;
+   --  Waits for data on readers, or for a wake-up from another task.
+
+   subtype Attach_Key is Positive;
+
+   procedure Create (This : in out Waitset; Owner : Participant'Class)
+     with Pre => Is_Open (Owner);
+
+   function Is_Open (This : Waitset) return Boolean;
+
+   procedure Attach (This : in out Waitset; Source : Reader'Class; Key : Attach_Key)
+     with Pre => Is_Open (This) and then Is_Open (Source);
+   --  Key is reported by Wait when Source has data.
+
+   procedure Detach (This : in out Waitset; Source : Reader'Class)
+     with Pre => Is_Open (This) and then Is_Open (Source);
+
+   type Key_Array is array (Positive range <>) of Attach_Key;
+
+   procedure Wait
+     (This    : in out Waitset;
+      Timeout : Duration;
+      Ready   : out Key_Array;
+      Last    : out Natural);
+   --  Blocks until data, Wake, or Timeout; Ready (Ready'First .. Last) are
+   --  the keys of the readers with data (Last = Ready'First - 1: none).
+   --  Wake's trigger is cleared on return.
+
+   procedure Wake (This : Waitset);
+   --  Makes a current or the next Wait return; callable from any task.
+
+   overriding procedure Finalize (This : in out Waitset);
+
+private
+
+   use Interfaces;
+
+   type Entity_Id is new Integer_32;
+   No_Entity : constant Entity_Id := 0;
+
+   type Participant is new Ada.Finalization.Limited_Controlled with record
+      Handle : Entity_Id := No_Entity;
+      Domain : Entity_Id := No_Entity;
+      --  Our own explicitly created Cyclone domain, if any.
+   end record;
+
+   type Name_Access is access String;
+
+   type Writer is new Ada.Finalization.Limited_Controlled with record
+      Handle  : Entity_Id := No_Entity;
+      Topic   : Entity_Id := No_Entity;
+      Sertype : System.Address := System.Null_Address;
+      Topic_Name, Type_Name : Name_Access;
+   end record;
+
+   type Handle_GUID is record
+      Handle : Unsigned_64 := 0;
+      Id     : GUID := Null_GUID;
+   end record;
+
+   type GUID_Cache is array (1 .. 8) of Handle_GUID;
+   --  Publication handle -> writer GUID, most recent first.
+
+   type Reader is new Ada.Finalization.Limited_Controlled with record
+      Handle    : Entity_Id := No_Entity;
+      Topic     : Entity_Id := No_Entity;
+      Condition : Entity_Id := No_Entity;
+      Cache     : GUID_Cache;
+      Topic_Name, Type_Name : Name_Access;
+   end record;
+
+   type Waitset is new Ada.Finalization.Limited_Controlled with record
+      Handle : Entity_Id := No_Entity;
+   end record;
+
+end RCL.DDS;

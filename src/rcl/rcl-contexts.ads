@@ -1,0 +1,46 @@
+--  The process's ROS 2 context: one DDS participant (USER_DATA
+--  "enclave=/;") on ROS_DOMAIN_ID, loopback-only when ROS_LOCALHOST_ONLY=1
+--  or ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST (CYCLONEDDS_URI applied over
+--  it), shared by every node of the process; and orderly shutdown.
+--
+--  The context is created by the first node (or Init) and lives until the
+--  end of the program; Init also installs handlers for SIGINT and SIGTERM
+--  (blocking them in the calling task). Shutdown (also on Ctrl-C / SIGTERM)
+--  makes every Spin return; publishing afterwards raises
+--  ROS_Exception, which ends publisher tasks such as the slides' talker's.
+--  Another Ctrl-C more than a second later exits the process at once
+--  (status 130).
+with RCL.DDS;
+
+package RCL.Contexts is
+
+   procedure Init;
+   --  Creates the participant if not done yet; raises ROS_Exception on a
+   --  bad ROS_DOMAIN_ID (naming the variable and its value) or a DDS error.
+
+   function Domain return RCL.DDS.Domain_Id;
+   --  ROS_DOMAIN_ID (default 0).
+
+   function Localhost_Only return Boolean;
+
+   function Participant return not null access RCL.DDS.Participant;
+   --  Not for users. Calls Init.
+
+   procedure Shutdown;
+   --  Stops every spin of the process (idempotent).
+
+   function Is_Shutdown return Boolean;
+
+   procedure Install_Signal_Handlers;
+   --  SIGINT and SIGTERM call Shutdown (done by Init).
+
+   type Waitset_Access is access all RCL.DDS.Waitset;
+
+   procedure Register_Waker (Set : not null Waitset_Access; Key : out Positive);
+   procedure Unregister_Waker (Key : Positive);
+   --  Not for users: executors register to be woken by Shutdown.
+
+   function Parse_Domain_Id (Image : String) return RCL.DDS.Domain_Id;
+   --  "" -> 0; raises ROS_Exception naming ROS_DOMAIN_ID and the bad value.
+
+end RCL.Contexts;

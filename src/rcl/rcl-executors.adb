@@ -1,0 +1,194 @@
+with Ada.Exceptions;
+with Ada.Real_Time;
+with Ada.Unchecked_Deallocation;
+with RCL.Logging;
+with RCL.Timers;
+
+package body RCL.Executors is
+
+   use Ada.Real_Time;
+   use type RCL.Contexts.Waitset_Access;
+
+   procedure Add (This : in out Executor; Node : in out RCL.Nodes.Node'Class) is
+   begin
+      if This.N_Nodes = This.Max_Nodes then
+         raise ROS_Exception with "executor full: it takes at most" & This.Max_Nodes'Image
+           & " nodes";
+      end if;
+      This.N_Nodes := This.N_Nodes + 1;
+      This.Nodes (This.N_Nodes) := Node'Unchecked_Access;
+   end Add;
+
+   procedure Stop (This : in out Executor) is
+   begin
+      This.Stopping := True;
+      if This.Set /= null then
+         RCL.DDS.Wake (This.Set.all);
+      end if;
+   end Stop;
+
+   function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info is
+     ((Source_Timestamp   => ROSIDL.Int64 (Info.Source_Timestamp),
+       Received_Timestamp => ROSIDL.Int64 (RCL.DDS.Now),
+       Publisher_GID      => ROSIDL.GID (Info.Publisher)));
+
+   procedure Run_Subscription
+     (Node : not null Node_Access;
+      Sub  : not null RCL.Nodes.Subscription_Access;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is
+   begin
+      Sub.Handle.Deliver (Node.all, Data, Info);
+   exception
+      when E : others =>
+         RCL.Logging.Error
+           ("exception in the callback of subscription " & Sub.Topic.all & ": "
+            & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E),
+            Logger => Node.Logger_Name);
+   end Run_Subscription;
+
+   procedure Run_Timer
+     (Node    : not null Node_Access;
+      Timer   : RCL.Nodes.Timer_Entry;
+      Elapsed : Duration)
+   is
+      T : RCL.Timers.Timer := RCL.Timers.To_Timer (Timer.State);
+   begin
+      Timer.Callback (Node.all, T, Elapsed);
+   exception
+      when E : others =>
+         RCL.Logging.Error
+           ("exception in a timer callback (period" & RCL.Timers.Period (T)'Image & " s): "
+            & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E),
+            Logger => Node.Logger_Name);
+   end Run_Timer;
+
+   --  Re-attaches the readers of all nodes when any node changed.
+   procedure Refresh (This : in out Executor'Class) is
+      Changed : Boolean := False;
+   begin
+      for I in 1 .. This.N_Nodes loop
+         if This.Versions (I) /= This.Nodes (I).Version then
+            Changed := True;
+         end if;
+      end loop;
+      if not Changed then
+         return;
+      end if;
+      for I in 1 .. This.N_Attached loop
+         RCL.DDS.Detach (This.Set.all, This.Attached (I).Sub.Reader);
+      end loop;
+      This.N_Attached := 0;
+      for I in 1 .. This.N_Nodes loop
+         This.Versions (I) := This.Nodes (I).Version;
+         for J in 1 .. This.Nodes (I).Subscription_Count loop
+            if This.N_Attached = Max_Attached then
+               raise ROS_Exception with "executor: more than" & Max_Attached'Image
+                 & " subscriptions";
+            end if;
+            This.N_Attached := This.N_Attached + 1;
+            This.Attached (This.N_Attached) :=
+              (This.Nodes (I), This.Nodes (I).Get_Subscription (J));
+            RCL.DDS.Attach (This.Set.all, This.Attached (This.N_Attached).Sub.Reader,
+                            This.N_Attached);
+         end loop;
+      end loop;
+   end Refresh;
+
+   procedure Spin
+     (This   : in out Executor'Class;
+      During : Duration := Forever;
+      Once   : Boolean := False)
+   is
+      Deadline : constant Time :=
+        (if During >= Forever then Time_Last else Clock + To_Time_Span (During));
+      Waker    : Positive;
+      Ready    : RCL.DDS.Key_Array (1 .. Max_Attached);
+      Last     : Natural;
+   begin
+      RCL.Contexts.Install_Signal_Handlers;
+      if This.Set = null then
+         This.Set := new RCL.DDS.Waitset;
+         RCL.DDS.Create (This.Set.all, RCL.Contexts.Participant.all);
+      end if;
+      This.Stopping := False;
+      RCL.Contexts.Register_Waker (This.Set, Waker);
+      loop
+         exit when RCL.Contexts.Is_Shutdown or else This.Stopping;
+         Refresh (This);
+         declare
+            Wake_At : Time := Deadline;
+            Now     : Time := Clock;
+            Worked  : Boolean := False;
+         begin
+            for I in 1 .. This.N_Nodes loop
+               declare
+                  Due : constant Time := This.Nodes (I).Next_Timer_Due;
+               begin
+                  if Due < Wake_At then
+                     Wake_At := Due;
+                  end if;
+               end;
+            end loop;
+            RCL.DDS.Wait
+              (This.Set.all,
+               (if Wake_At = Time_Last then Forever
+                else To_Duration (Wake_At - Now)),
+               Ready, Last);
+            exit when RCL.Contexts.Is_Shutdown or else This.Stopping;
+            for K in Ready'First .. Last loop
+               if Ready (K) <= This.N_Attached then
+                  This.Dispatch_Sample (This.Attached (Ready (K)).Node,
+                                        This.Attached (Ready (K)).Sub);
+                  Worked := True;
+               end if;
+            end loop;
+            Now := Clock;
+            for I in 1 .. This.N_Nodes loop
+               for J in 1 .. This.Nodes (I).Timer_Count loop
+                  declare
+                     T       : constant RCL.Nodes.Timer_Entry := This.Nodes (I).Get_Timer (J);
+                     Fired   : Boolean;
+                     Elapsed : Duration;
+                  begin
+                     T.State.Fire (Now, Fired, Elapsed);
+                     if Fired then
+                        This.Dispatch_Timer (This.Nodes (I), T, Elapsed);
+                        Worked := True;
+                     end if;
+                  end;
+               end loop;
+            end loop;
+            exit when Once and then Worked;
+            exit when Clock >= Deadline;
+         end;
+      end loop;
+      RCL.Contexts.Unregister_Waker (Waker);
+      This.Flush;
+   exception
+      when others =>
+         RCL.Contexts.Unregister_Waker (Waker);
+         raise;
+   end Spin;
+
+   overriding procedure Finalize (This : in out Executor) is
+      procedure Free is new Ada.Unchecked_Deallocation
+        (RCL.DDS.Waitset, RCL.Contexts.Waitset_Access);
+   begin
+      if This.Set /= null then
+         for I in 1 .. This.N_Attached loop
+            begin
+               RCL.DDS.Detach (This.Set.all, This.Attached (I).Sub.Reader);
+            exception
+               when others =>
+                  null;
+            end;
+         end loop;
+         Free (This.Set);
+      end if;
+   exception
+      when others =>
+         null;
+   end Finalize;
+
+end RCL.Executors;

@@ -1,0 +1,104 @@
+--  Executors: run the callbacks (subscriptions, timers) of their nodes.
+--
+--  The spinning task waits on a DDS waitset (never on a DDS thread), takes
+--  the samples and hands each callback to the executor's Dispatch: the
+--  sequential executor runs it at once in the spinning task, the concurrent
+--  one queues it for a pool of tasks. An exception in a user callback is
+--  logged with the callback's topic; the node keeps running.
+--
+--     E : Executors.Sequential.Executor;
+--     E.Add (Node_1);  E.Add (Node_2);
+--     E.Spin (During => Executors.Forever);
+--
+--  Nodes must outlive the executors they are added to.
+with Ada.Finalization;
+with ROSIDL;
+with RCL.DDS;
+with RCL.Nodes;
+
+private with RCL.Contexts;
+
+package RCL.Executors is
+
+   Forever : constant Duration := RCL.Nodes.Forever;
+
+   Default_Nodes_Per_Executor : constant := 16;
+
+   type Executor (Max_Nodes : Positive) is abstract
+     new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Add (This : in out Executor; Node : in out RCL.Nodes.Node'Class);
+   --  Raises ROS_Exception when Max_Nodes are already added.
+
+   procedure Spin
+     (This   : in out Executor'Class;
+      During : Duration := Forever;
+      Once   : Boolean := False);
+   --  Runs callbacks in the calling task for During, or until one batch of
+   --  ready work was dispatched (Once), or until Stop or shutdown (Ctrl-C,
+   --  SIGTERM, Contexts.Shutdown). Returns once dispatched work is done.
+
+   procedure Stop (This : in out Executor);
+   --  Makes a Spin of This (in another task) return soon.
+
+   --  For executor implementations ----------------------------------------
+
+   type Node_Access is access all RCL.Nodes.Node'Class;
+
+   procedure Dispatch_Sample
+     (This : in out Executor;
+      Node : not null Node_Access;
+      Sub  : not null RCL.Nodes.Subscription_Access) is abstract;
+   --  Sub's reader has data: take it all and have the callbacks run.
+
+   procedure Dispatch_Timer
+     (This    : in out Executor;
+      Node    : not null Node_Access;
+      Timer   : RCL.Nodes.Timer_Entry;
+      Elapsed : Duration) is abstract;
+
+   procedure Flush (This : in out Executor) is null;
+   --  Waits until dispatched work has run (end of Spin).
+
+   procedure Run_Subscription
+     (Node : not null Node_Access;
+      Sub  : not null RCL.Nodes.Subscription_Access;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+   --  Calls the subscription's callback; logs its exceptions.
+
+   procedure Run_Timer
+     (Node    : not null Node_Access;
+      Timer   : RCL.Nodes.Timer_Entry;
+      Elapsed : Duration);
+   --  Calls the timer's callback; logs its exceptions.
+
+   function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info;
+
+   overriding procedure Finalize (This : in out Executor);
+
+private
+
+   type Node_Array is array (Positive range <>) of Node_Access;
+
+   Max_Attached : constant := 256;
+
+   type Attached_Entry is record
+      Node : Node_Access;
+      Sub  : RCL.Nodes.Subscription_Access;
+   end record;
+   type Attached_Array is array (1 .. Max_Attached) of Attached_Entry;
+   type Version_Array is array (Positive range <>) of Integer;
+
+   type Executor (Max_Nodes : Positive) is abstract
+     new Ada.Finalization.Limited_Controlled with record
+      Nodes      : Node_Array (1 .. Max_Nodes) := [others => null];
+      N_Nodes    : Natural := 0;
+      Versions   : Version_Array (1 .. Max_Nodes) := [others => -1];
+      Set        : RCL.Contexts.Waitset_Access;
+      Attached   : Attached_Array;
+      N_Attached : Natural := 0;
+      Stopping   : Boolean := False with Atomic;
+   end record;
+
+end RCL.Executors;

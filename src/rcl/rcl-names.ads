@@ -1,0 +1,47 @@
+--  ROS 2 names: validation of node names and namespaces, expansion of
+--  topic names to fully qualified names (rcl's rules), and the DDS topic
+--  names derived from them.
+--
+--     Expand_Topic_Name ("chatter", Node => "talker", Namespace => "/ns")
+--       = "/ns/chatter"
+--     Expand_Topic_Name ("~/status", "talker", "/ns") = "/ns/talker/status"
+--     DDS_Topic_Name ("/ns/chatter") = "rt/ns/chatter"
+package RCL.Names is
+
+   Name_Error : exception;
+   --  An invalid name; the message quotes the name and names the offending
+   --  character and its position (1-based).
+
+   function Node_Name_Problem (Name : String) return String;
+   --  "" when Name is a valid node name (letters, digits, underscores, not
+   --  starting with a digit, not empty), else what is wrong with it.
+
+   procedure Validate_Node_Name (Name : String);
+   --  Raises Name_Error with Node_Name_Problem.
+
+   function Namespace_Problem (Namespace : String) return String;
+   --  "" when Namespace is a valid absolute namespace ("/" or "/a/b").
+
+   function Normalize_Namespace (Namespace : String) return String;
+   --  "" -> "/", "ns" -> "/ns", "/ns/" -> "/ns"; then validated (Name_Error).
+
+   function Topic_Problem (Name : String) return String;
+   --  "" when Name is a valid fully qualified topic name.
+
+   function Expand_Topic_Name
+     (Name : String; Node : String; Namespace : String) return String
+     with Pre => Node_Name_Problem (Node) = ""
+                 and then Namespace_Problem (Namespace) = "";
+   --  Relative names get the namespace, "~" the node's fully qualified
+   --  name, "{node}" and "{ns}" / "{namespace}" are substituted; the result
+   --  is validated (Name_Error naming the offending character).
+
+   function Fully_Qualified_Node_Name (Node : String; Namespace : String) return String;
+   --  "/ns/node" ("/node" in the root namespace).
+
+   function DDS_Topic_Name (Fully_Qualified : String) return String
+     with Pre => Fully_Qualified'Length > 1
+                 and then Fully_Qualified (Fully_Qualified'First) = '/';
+   --  "rt" & Fully_Qualified.
+
+end RCL.Names;

@@ -1,0 +1,335 @@
+with Ada.Unchecked_Deallocation;
+
+with ROSIDL.CDR;
+with RCL.Contexts;
+with RCL.Executors.Sequential;
+with RCL.Logging;
+with RCL.Names;
+
+package body RCL.Nodes is
+
+   use type Ada.Real_Time.Time;
+
+   --------------
+   -- Registry --
+   --------------
+
+   protected body Registry is
+
+      procedure Add (S : Subscription_Access) is
+      begin
+         if N_Sub = Max_Subscriptions then
+            raise ROS_Exception with "more than" & Max_Subscriptions'Image
+              & " subscriptions in one node";
+         end if;
+         N_Sub := N_Sub + 1;
+         Subs (N_Sub) := S;
+         Ver := Ver + 1;
+      end Add;
+
+      procedure Add (T : Timer_Entry) is
+      begin
+         if N_Tim = Max_Timers then
+            raise ROS_Exception with "more than" & Max_Timers'Image & " timers in one node";
+         end if;
+         N_Tim := N_Tim + 1;
+         Tims (N_Tim) := T;
+         Ver := Ver + 1;
+      end Add;
+
+      function Version return Natural is (Ver);
+      function Sub_Count return Natural is (N_Sub);
+      function Sub (I : Positive) return Subscription_Access is (Subs (I));
+      function Tim_Count return Natural is (N_Tim);
+      function Tim (I : Positive) return Timer_Entry is (Tims (I));
+
+      procedure Take_All (Subs : out Subscription_Array; N_Subs : out Natural;
+                          Tims : out Timer_Array; N_Tims : out Natural) is
+      begin
+         Subs := Registry.Subs;
+         N_Subs := N_Sub;
+         Tims := Registry.Tims;
+         N_Tims := N_Tim;
+         N_Sub := 0;
+         N_Tim := 0;
+         Ver := Ver + 1;
+      end Take_All;
+
+   end Registry;
+
+   ----------
+   -- Init --
+   ----------
+
+   function Init (Name : String; Namespace : String := "/") return Node is
+   begin
+      RCL.Names.Validate_Node_Name (Name);
+      declare
+         NS : constant String := RCL.Names.Normalize_Namespace (Namespace);
+      begin
+         RCL.Contexts.Init;
+         return N : Node do
+            N.Name := To_Unbounded_String (Name);
+            N.Namespace := To_Unbounded_String (NS);
+            if RCL.Logging.Default_Logger = "" then
+               RCL.Logging.Set_Default_Logger (N.Logger_Name);
+            end if;
+         end return;
+      end;
+   end Init;
+
+   function Name (This : Node) return String is (To_String (This.Name));
+   function Namespace (This : Node) return String is (To_String (This.Namespace));
+   function Fully_Qualified_Name (This : Node) return String is
+     (RCL.Names.Fully_Qualified_Node_Name (Name (This), Namespace (This)));
+
+   function Logger_Name (This : Node) return String is
+      FQN : String := Fully_Qualified_Name (This);
+   begin
+      for C of FQN loop
+         if C = '/' then
+            C := '.';
+         end if;
+      end loop;
+      return FQN (FQN'First + 1 .. FQN'Last);
+   end Logger_Name;
+
+   function Expand (This : Node; Topic : String) return String is
+     (RCL.Names.Expand_Topic_Name (Topic, Name (This), Namespace (This)));
+
+   -----------------
+   -- Publish_Raw --
+   -----------------
+
+   function Publish_Raw
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher
+   is
+      FQ : constant String := This.Expand (Topic);
+   begin
+      return P : RCL.Publishers.Publisher do
+         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ));
+      end return;
+   end Publish_Raw;
+
+   -------------
+   -- Publish --
+   -------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
+   begin
+      return This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS);
+   end Publish;
+
+   ----------------------
+   -- Add_Subscription --
+   ----------------------
+
+   procedure Free is new Ada.Unchecked_Deallocation (Subscription, Subscription_Access);
+   procedure Free is new Ada.Unchecked_Deallocation (Handler'Class, Handler_Access);
+
+   procedure Add_Subscription
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile)
+   is
+      FQ : constant String := This.Expand (Topic);
+      S  : Subscription_Access := new Subscription;
+   begin
+      S.Topic := new String'(FQ);
+      S.Handle := Handle;
+      RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
+                      Type_Name, QoS);
+      This.Entities.Add (S);
+   exception
+      when others =>
+         Free (S);
+         raise;
+   end Add_Subscription;
+
+   type Raw_Handler is new Handler with record
+      Callback : Raw_Callback;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Raw_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is
+   begin
+      This.Callback (Node, Data, Info);
+   end Deliver;
+
+   type Typed_Callback is access procedure
+     (Node : in out Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info);
+
+   type Typed_Handler is new Handler with record
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Callback : Typed_Callback;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Typed_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+   begin
+      This.Callback (Node, Msg, Info);
+   end Deliver;
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Typed_Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Typed_Handler'(Support => Support, Callback => Stored);
+   begin
+      This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+   exception
+      when others =>
+         Free (H);
+         raise;
+   end Subscribe;
+
+   procedure Subscribe_Raw
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Callback  : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Data : RCL.DDS.Byte_Array;
+         Info : ROSIDL.Message_Info);
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Raw_Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Raw_Handler'(Callback => Stored);
+   begin
+      This.Add_Subscription (Type_Name, Topic, H, QoS);
+   exception
+      when others =>
+         Free (H);
+         raise;
+   end Subscribe_Raw;
+
+   ------------
+   -- Timers --
+   ------------
+
+   function Timer_Add
+     (This     : in out Node;
+      Period   : Duration;
+      Callback : not null access procedure
+        (Node    : in out RCL.Nodes.Node'Class;
+         Timer   : in out RCL.Timers.Timer;
+         Elapsed : Duration)) return RCL.Timers.Timer
+   is
+      Stored : constant RCL.Timers.Callback with Import, Address => Callback'Address;
+      S : constant RCL.Timers.State_Access :=
+        new RCL.Timers.State (Period_Ns => Positive (Period * 1_000_000_000.0));
+   begin
+      S.Start;
+      This.Entities.Add (Timer_Entry'(S, Stored));
+      return RCL.Timers.To_Timer (S);
+   end Timer_Add;
+
+   procedure Timer_Add
+     (This     : in out Node;
+      Period   : Duration;
+      Callback : not null access procedure
+        (Node    : in out RCL.Nodes.Node'Class;
+         Timer   : in out RCL.Timers.Timer;
+         Elapsed : Duration))
+   is
+      Ignored : constant RCL.Timers.Timer := This.Timer_Add (Period, Callback);
+   begin
+      null;
+   end Timer_Add;
+
+   ----------
+   -- Spin --
+   ----------
+
+   procedure Spin
+     (This   : in out Node;
+      During : Duration := Forever;
+      Once   : Boolean := False)
+   is
+      E : RCL.Executors.Sequential.Executor;
+   begin
+      E.Add (This);
+      E.Spin (During => During, Once => Once);
+   end Spin;
+
+   ---------------------
+   -- Executors' view --
+   ---------------------
+
+   function Version (This : Node) return Natural is (This.Entities.Version);
+   function Subscription_Count (This : Node) return Natural is (This.Entities.Sub_Count);
+   function Get_Subscription (This : Node; Index : Positive) return Subscription_Access is
+     (This.Entities.Sub (Index));
+   function Timer_Count (This : Node) return Natural is (This.Entities.Tim_Count);
+   function Get_Timer (This : Node; Index : Positive) return Timer_Entry is
+     (This.Entities.Tim (Index));
+
+   function Next_Timer_Due (This : Node) return Ada.Real_Time.Time is
+      Result : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
+   begin
+      for I in 1 .. This.Entities.Tim_Count loop
+         declare
+            Due : constant Ada.Real_Time.Time := This.Entities.Tim (I).State.Due_At;
+         begin
+            if Due < Result then
+               Result := Due;
+            end if;
+         end;
+      end loop;
+      return Result;
+   end Next_Timer_Due;
+
+   --------------
+   -- Finalize --
+   --------------
+
+   overriding procedure Finalize (This : in out Node) is
+      Subs   : Subscription_Array;
+      Tims   : Timer_Array;
+      N_Subs : Natural;
+      N_Tims : Natural;
+      procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
+   begin
+      This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
+      for I in 1 .. N_Subs loop
+         Free (Subs (I).Handle);
+         Free_Name (Subs (I).Topic);
+         Free (Subs (I));
+      end loop;
+      --  Timer states are left allocated: Timer handles held by users may
+      --  still designate them (a few bytes per timer, once per node).
+      pragma Unreferenced (Tims);
+   exception
+      when others =>
+         null;
+   end Finalize;
+
+end RCL.Nodes;

@@ -1,0 +1,207 @@
+--  Nodes: named participants of the ROS 2 graph, owning subscriptions and
+--  timers and making publishers. All nodes of a process share the
+--  context's DDS participant (RCL.Contexts).
+--
+--     Node : Nodes.Node := Nodes.Init ("listener", Namespace => "/robot1");
+--     Node.Subscribe
+--       (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
+--        "chatter", Callback'Access);
+--     Node.Spin (During => Forever);  --  until Ctrl-C or Contexts.Shutdown
+--
+--  (RCLAda's slides write Spin (Until => Forever); "until" being an Ada
+--  reserved word, the parameter is named During.)
+with Ada.Finalization;
+with Ada.Real_Time;
+with ROSIDL;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.DDS;
+with RCL.Publishers;
+with RCL.QoS;
+with RCL.Timers;
+
+private with Ada.Strings.Unbounded;
+
+package RCL.Nodes is
+
+   Forever : constant Duration := Duration'Last;
+
+   type Node is new Ada.Finalization.Limited_Controlled with private;
+
+   function Init (Name : String; Namespace : String := "/") return Node;
+   --  Validates Name (RCL.Names.Name_Error naming the offending character)
+   --  and normalizes Namespace ("ns" and "/ns/" become "/ns").
+
+   function Name (This : Node) return String;
+   function Namespace (This : Node) return String;
+   function Fully_Qualified_Name (This : Node) return String;
+
+   function Logger_Name (This : Node) return String;
+   --  As in ROS 2: the namespace without its leading '/', dots for '/',
+   --  then the name ("robot1.listener").
+
+   function Expand (This : Node; Topic : String) return String;
+   --  The fully qualified topic name (relative, "~", substitutions).
+
+   --  Publish / subscribe --------------------------------------------------
+
+   function Publish
+     (This    : in out Node;
+      Support : ROSIDL.Typesupport.Message_Support;
+      Topic   : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher;
+   --  Topic is expanded (relative, "~", substitutions) and validated.
+
+   procedure Subscribe
+     (This     : in out Node;
+      Support  : ROSIDL.Typesupport.Message_Support;
+      Topic    : String;
+      Callback : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Each sample is decoded into a message of Support's type and passed to
+   --  Callback by the executor spinning the node. Bytes that do not decode
+   --  are reported (ROSIDL.Decode_Error with the byte offset, logged with
+   --  the topic) and skipped. Callback may be nested in the main subprogram
+   --  (as in the RCLAda slides): it must stay callable while the node exists.
+
+   --  Raw (serialized) publish / subscribe ---------------------------------
+
+   type Raw_Callback is access procedure
+     (Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+   --  Data: CDR with its encapsulation header, valid during the call only.
+
+   function Publish_Raw
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher;
+   --  Type_Name is the DDS type name ("std_msgs::msg::dds_::String_").
+
+   procedure Subscribe_Raw
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Callback  : not null access procedure
+        (Node : in out Nodes.Node'Class;
+         Data : RCL.DDS.Byte_Array;
+         Info : ROSIDL.Message_Info);
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Callback may be nested in the main subprogram (as in the RCLAda
+   --  slides): it must stay callable as long as the node exists.
+
+   --  Timers ---------------------------------------------------------------
+
+   function Timer_Add
+     (This     : in out Node;
+      Period   : Duration;
+      Callback : not null access procedure
+        (Node    : in out RCL.Nodes.Node'Class;
+         Timer   : in out RCL.Timers.Timer;
+         Elapsed : Duration)) return RCL.Timers.Timer
+     with Pre => Period > 0.0;
+   --  Callback: as for Subscribe_Raw.
+
+   procedure Timer_Add
+     (This     : in out Node;
+      Period   : Duration;
+      Callback : not null access procedure
+        (Node    : in out RCL.Nodes.Node'Class;
+         Timer   : in out RCL.Timers.Timer;
+         Elapsed : Duration))
+     with Pre => Period > 0.0;
+
+   --  Spinning -------------------------------------------------------------
+
+   procedure Spin
+     (This   : in out Node;
+      During : Duration := Forever;
+      Once   : Boolean := False);
+   --  Runs this node's callbacks in the calling task (a sequential
+   --  executor): for During, or until one batch of work has run (Once), or
+   --  until shutdown (Ctrl-C, SIGTERM, Contexts.Shutdown).
+
+   --  Not for users: the executors' view ----------------------------------
+
+   type Handler is abstract tagged limited null record;
+   procedure Deliver
+     (This : in out Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is abstract;
+   type Handler_Access is access all Handler'Class;
+
+   type Name_Access is access String;
+
+   type Subscription is limited record
+      Reader  : RCL.DDS.Reader;
+      Topic   : Name_Access;
+      --  Fully qualified ROS name.
+      Handle  : Handler_Access;
+   end record;
+   type Subscription_Access is access all Subscription;
+
+   type Timer_Entry is record
+      State    : RCL.Timers.State_Access;
+      Callback : RCL.Timers.Callback;
+   end record;
+
+   Max_Subscriptions : constant := 64;
+   Max_Timers        : constant := 64;
+
+   function Version (This : Node) return Natural;
+   --  Changes whenever a subscription or timer is added.
+   function Subscription_Count (This : Node) return Natural;
+   function Get_Subscription (This : Node; Index : Positive) return Subscription_Access;
+   function Timer_Count (This : Node) return Natural;
+   function Get_Timer (This : Node; Index : Positive) return Timer_Entry;
+   function Next_Timer_Due (This : Node) return Ada.Real_Time.Time;
+   --  Time_Last when there is no active timer.
+
+   procedure Add_Subscription
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile);
+   --  Used by Subscribe_Raw and by the typed Subscribe.
+
+   overriding procedure Finalize (This : in out Node);
+
+private
+
+   use Ada.Strings.Unbounded;
+
+   type Subscription_Array is array (1 .. Max_Subscriptions) of Subscription_Access;
+   type Timer_Array is array (1 .. Max_Timers) of Timer_Entry;
+
+   protected type Registry is
+      procedure Add (S : Subscription_Access);
+      procedure Add (T : Timer_Entry);
+      function Version return Natural;
+      function Sub_Count return Natural;
+      function Sub (I : Positive) return Subscription_Access;
+      function Tim_Count return Natural;
+      function Tim (I : Positive) return Timer_Entry;
+      procedure Take_All (Subs : out Subscription_Array; N_Subs : out Natural;
+                          Tims : out Timer_Array; N_Tims : out Natural);
+      --  Empties the registry (finalization).
+   private
+      Ver    : Natural := 0;
+      Subs   : Subscription_Array := [others => null];
+      N_Sub  : Natural := 0;
+      Tims   : Timer_Array := [others => (null, null)];
+      N_Tim  : Natural := 0;
+   end Registry;
+
+   type Node is new Ada.Finalization.Limited_Controlled with record
+      Name      : Unbounded_String;
+      Namespace : Unbounded_String;
+      Entities  : Registry;
+   end record;
+
+end RCL.Nodes;

@@ -1,0 +1,62 @@
+with Ada.Streams;
+with ROSIDL.CDR;
+with ROSIDL.Typesupport;
+with RCL.Contexts;
+
+package body RCL.Publishers is
+
+   use Ada.Strings.Unbounded;
+
+   procedure Publish_Raw (This : Publisher; Data : RCL.DDS.Byte_Array) is
+   begin
+      if RCL.Contexts.Is_Shutdown then
+         raise ROS_Exception with "publishing on " & Topic (This) & ": the context is shut down";
+      end if;
+      RCL.DDS.Write (This.W, Data);
+   end Publish_Raw;
+
+   procedure Publish (This : in out Publisher; Msg : ROSIDL.Dynamic.Message) is
+      use type Ada.Streams.Stream_Element_Offset;
+   begin
+      if not ROSIDL.Dynamic.Is_Initialised (Msg)
+        or else ROSIDL.Typesupport.DDS_Type_Name (ROSIDL.Dynamic.Support (Msg))
+                /= Type_Name (This)
+      then
+         raise ROS_Exception with "publishing on " & Topic (This) & ": a "
+           & ROSIDL.Dynamic.Type_Name (Msg) & " message, the topic has type "
+           & Type_Name (This);
+      end if;
+      declare
+         Size   : constant Ada.Streams.Stream_Element_Count := ROSIDL.CDR.Encoded_Size (Msg);
+         Buffer : Ada.Streams.Stream_Element_Array (1 .. Size);
+         Last   : Ada.Streams.Stream_Element_Offset;
+      begin
+         ROSIDL.CDR.Encode (Msg, Buffer, Last);
+         Publish_Raw (This, Buffer (1 .. Last));
+      end;
+   end Publish;
+
+   function Topic (This : Publisher) return String is (To_String (This.Topic));
+
+   function Type_Name (This : Publisher) return String is (RCL.DDS.Type_Name (This.W));
+
+   function GID (This : Publisher) return RCL.DDS.GUID is (RCL.DDS.Endpoint_GUID (This.W));
+
+   function Matched_Subscriptions (This : Publisher) return Natural is
+     (RCL.DDS.Matched_Readers (This.W));
+
+   procedure Create
+     (This       : in out Publisher;
+      Topic      : String;
+      Type_Name  : String;
+      Profile    : RCL.QoS.Profile;
+      DDS_Topic  : String) is
+   begin
+      RCL.DDS.Create (This.W, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, Profile);
+      This.Topic := To_Unbounded_String (Topic);
+   end Create;
+
+   function Writer (This : Publisher) return access constant RCL.DDS.Writer is
+     (This.W'Unchecked_Access);
+
+end RCL.Publishers;

@@ -1,0 +1,54 @@
+--  Publishers: made by Node.Publish; publish messages on one topic.
+--
+--     Pub : Publishers.Publisher := Node.Publish (Support, "/chatter");
+--     Pub.Publish (Msg);        --  a ROSIDL.Dynamic.Message of that type
+--     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header
+with Ada.Finalization;
+with ROSIDL.Dynamic;
+with RCL.DDS;
+with RCL.QoS;
+
+private with Ada.Strings.Unbounded;
+
+package RCL.Publishers is
+
+   type Publisher is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Publish_Raw (This : Publisher; Data : RCL.DDS.Byte_Array)
+     with Pre => Data'Length >= 4;
+   --  Publishes serialized bytes as they are. Raises ROS_Exception after
+   --  the context has shut down, or on a DDS error.
+
+   procedure Publish (This : in out Publisher; Msg : ROSIDL.Dynamic.Message);
+   --  Serializes Msg (XCDR1, native byte order) and publishes it; raises
+   --  ROS_Exception when Msg's type is not the publisher's, after shutdown,
+   --  or on a DDS error; ROSIDL.Encode_Error when a bound is exceeded.
+
+   function Topic (This : Publisher) return String;
+   --  The fully qualified ROS topic name ("/chatter").
+
+   function Type_Name (This : Publisher) return String;
+   --  The DDS type name ("std_msgs::msg::dds_::String_").
+
+   function GID (This : Publisher) return RCL.DDS.GUID;
+
+   function Matched_Subscriptions (This : Publisher) return Natural;
+
+   --  Not for users:
+   procedure Create
+     (This       : in out Publisher;
+      Topic      : String;
+      Type_Name  : String;
+      Profile    : RCL.QoS.Profile;
+      DDS_Topic  : String);
+
+   function Writer (This : Publisher) return access constant RCL.DDS.Writer;
+
+private
+
+   type Publisher is new Ada.Finalization.Limited_Controlled with record
+      W     : aliased RCL.DDS.Writer;
+      Topic : Ada.Strings.Unbounded.Unbounded_String;
+   end record;
+
+end RCL.Publishers;

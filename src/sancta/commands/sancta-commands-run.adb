@@ -1,0 +1,190 @@
+with Ada.Command_Line;
+with Ada.Exceptions;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with Sancta.Commands.Options;
+with Sancta.Components.All_Standard;
+with Sancta.Logging;
+with Sancta.Runtime.Clocks;
+with Sancta.Runtime.Components;
+with Sancta.Runtime.Configurations;
+with Sancta.Runtime.Databases;
+with Sancta.Runtime.Nodes;
+with Sancta.Runtime.Shutdown;
+
+package body Sancta.Commands.Run is
+
+   pragma Warnings (Off, Sancta.Components.All_Standard);
+   --  Withed for its registrations only.
+
+   use Ada.Command_Line;
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+   package Configurations renames Sancta.Runtime.Configurations;
+   package Shutdown renames Sancta.Runtime.Shutdown;
+
+   Usage_Text : constant String :=
+     "usage: sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]"
+     & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]";
+
+   Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
+
+   type Node_Access is access Sancta.Runtime.Nodes.Node;
+   type Node_Array is array (Positive range <>) of Node_Access;
+
+   procedure Run is
+      File      : Unbounded_String;
+      Agents    : Sancta.Runtime.Databases.Key_Vectors.Vector;
+      All_Of    : Boolean := False;
+      Limit     : Duration := 0.0;
+      Overrides : Sancta.Runtime.Components.String_Maps.Map;
+      Config    : Configurations.Configuration;
+      Stats     : Boolean := False;
+      I         : Positive := 2;
+
+      procedure Set_Level (Text : String) is
+         --  SECTION=LEVEL
+         Equal : Natural := 0;
+      begin
+         for J in Text'Range loop
+            if Text (J) = '=' then
+               Equal := J;
+            end if;
+         end loop;
+         if Equal <= Text'First then
+            raise Options.Usage_Error with "--level expects SECTION=LEVEL, found '" & Text & "'";
+         end if;
+         Sancta.Logging.Set_Level
+           (Text (Text'First .. Equal - 1),
+            Sancta.Logging.Level'Value (Text (Equal + 1 .. Text'Last)));
+      exception
+         when Constraint_Error =>
+            raise Options.Usage_Error with "--level: unknown level '"
+              & Text (Equal + 1 .. Text'Last) & "' (debug, info, warning, error)";
+      end Set_Level;
+
+   begin
+      while I <= Argument_Count loop
+         declare
+            A   : constant String := Argument (I);
+            Has : constant Boolean := I < Argument_Count;
+         begin
+            if A = "--agent" and then Has then
+               Agents.Append (Argument (I + 1));
+               I := I + 1;
+            elsif A = "--all" then
+               All_Of := True;
+            elsif A = "--set" and then Has then
+               Options.Parse_Set (Argument (I + 1), Overrides);
+               I := I + 1;
+            elsif A = "--for" and then Has then
+               begin
+                  Limit := Duration'Value (Argument (I + 1));
+               exception
+                  when Constraint_Error =>
+                     raise Options.Usage_Error with "--for expects seconds, found '"
+                       & Argument (I + 1) & "'";
+               end;
+               I := I + 1;
+            elsif A = "--debug" then
+               Sancta.Logging.Set_Default_Level (Sancta.Logging.Debug);
+            elsif A = "--stats" then
+               Stats := True;
+            elsif A = "--level" and then Has then
+               Set_Level (Argument (I + 1));
+               I := I + 1;
+            elsif A = "--log" and then Has then
+               Sancta.Logging.Open_File (Argument (I + 1));
+               I := I + 1;
+            elsif A in "-h" | "--help" then
+               Put_Line (Usage_Text);
+               return;
+            elsif A'Length > 0 and then A (A'First) /= '-' and then Length (File) = 0 then
+               File := To_Unbounded_String (A);
+            else
+               raise Options.Usage_Error with "unexpected argument '" & A & "'";
+            end if;
+         end;
+         I := I + 1;
+      end loop;
+      if Length (File) = 0 then
+         raise Options.Usage_Error with "missing configuration FILE";
+      elsif All_Of = not Agents.Is_Empty then
+         raise Options.Usage_Error with "give either --agent ID or --all";
+      end if;
+
+      Configurations.Load (To_String (File), Config, Overrides);
+      for D of Config.Diagnostics loop
+         Put_Line (Standard_Error, Configurations.Image (D));
+      end loop;
+      if Configurations.Error_Count (Config) > 0 then
+         Put_Line (Standard_Error, "sancta run: configuration has errors; nothing started");
+         Set_Exit_Status (Failure);
+         return;
+      end if;
+      if All_Of then
+         for A of Config.Agents loop
+            Agents.Append (To_String (A.Id));
+         end loop;
+      end if;
+      for Id of Agents loop
+         if Configurations.Find_Agent (Config, Id) = 0 then
+            Put_Line (Standard_Error, "sancta run: no agent '" & Id & "' in " & To_String (File)
+                      & " (agents: " & Configurations.Agent_Ids (Config) & ")");
+            Set_Exit_Status (Failure);
+            return;
+         end if;
+      end loop;
+
+      declare
+         Nodes    : Node_Array (1 .. Natural (Agents.Length));
+         Created  : Natural := 0;
+         Attached : Boolean;
+         Done     : Boolean;
+      begin
+         Shutdown.Catch_Interrupt (Attached);
+         if not Attached then
+            Sancta.Logging.Log ("run", Sancta.Logging.Warning,
+                                "Ctrl-C cannot be caught (reserved by the Ada runtime)");
+         end if;
+         begin
+            for Index in Nodes'Range loop
+               Nodes (Index) := new Sancta.Runtime.Nodes.Node;
+               Created := Index;
+               Nodes (Index).Create
+                 (Config, Configurations.Find_Agent (Config, Agents (Index)),
+                  Clock'Access);
+            end loop;
+            for N of Nodes loop
+               N.Start;
+            end loop;
+         exception
+            when E : Configuration_Error =>
+               Put_Line (Standard_Error, Ada.Exceptions.Exception_Message (E));
+               Shutdown.Request ("start-up failed", Failure => True);
+         end;
+         if not Shutdown.Requested then
+            Shutdown.Wait ((if Limit > 0.0 then Limit else 1.0E9), Done);
+         end if;
+         Sancta.Logging.Log ("run", Sancta.Logging.Info,
+                             "stopping: " & (if Shutdown.Requested then Shutdown.Reason
+                                             else "time limit reached"));
+         for Index in reverse 1 .. Created loop
+            Nodes (Index).Stop;
+            if Stats then
+               Put_Line ("statistics of agent " & Nodes (Index).Id & ":");
+               Put (Nodes (Index).Statistics);
+            end if;
+         end loop;
+         if Shutdown.Failed then
+            Set_Exit_Status (Failure);
+         end if;
+      end;
+   exception
+      when E : Options.Usage_Error =>
+         Put_Line (Standard_Error, "sancta run: " & Ada.Exceptions.Exception_Message (E));
+         Put_Line (Standard_Error, Usage_Text);
+         Set_Exit_Status (2);
+   end Run;
+
+end Sancta.Commands.Run;

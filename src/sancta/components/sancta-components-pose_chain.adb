@@ -1,0 +1,135 @@
+with Ada.Numerics.Generic_Elementary_Functions;
+with Ada.Real_Time;
+with Ada.Strings.Unbounded;
+with Sancta.Geometry;
+with Sancta.Runtime.Clocks;
+with Sancta.Runtime.Components;
+with Sancta.Runtime.Factory;
+with Sancta.Runtime.Values;
+
+package body Sancta.Components.Pose_Chain is
+
+   use Ada.Strings.Unbounded;
+   use Sancta.Geometry;
+   use Sancta.Runtime;
+   use Sancta.Runtime.Components;
+   use type Port_Vectors.Vector;
+   use type Option_Vectors.Vector;
+   use type Ada.Real_Time.Time;
+
+   package Math is new Ada.Numerics.Generic_Elementary_Functions (Real);
+   use Math;
+
+   --  odometry --
+
+   type Odometry is new Component with record
+      Current : Pose;
+      Period  : Ada.Real_Time.Time_Span;
+      Started : Boolean := False;
+   end record;
+
+   overriding procedure Start (This : in out Odometry);
+   overriding procedure Run (This : in out Odometry; Next : in out Clocks.Time);
+
+   overriding procedure Start (This : in out Odometry) is
+   begin
+      This.Current := (X => Real (This.Option_Real ("x")), Y => Real (This.Option_Real ("y")),
+                       Yaw => Real (This.Option_Real ("yaw")));
+      This.Period := This.Option_Duration ("period");
+   end Start;
+
+   function Speed (This : Odometry'Class; Data : String) return Real is
+     (if This.Has_Value (Data) then Real (Values.Real_Value (This.Input (Data)).Data)
+      else Real (This.Option_Real (Data)));
+
+   overriding procedure Run (This : in out Odometry; Next : in out Clocks.Time) is
+      Dt : constant Real := Real (Ada.Real_Time.To_Duration (This.Period));
+      V  : constant Real := Speed (This, "v");
+      W  : constant Real := Speed (This, "w");
+   begin
+      if This.Started then
+         --  Exact integration of a unicycle over Dt (midpoint heading).
+         This.Current :=
+           (X   => This.Current.X + V * Dt * Cos (This.Current.Yaw + W * Dt / 2.0),
+            Y   => This.Current.Y + V * Dt * Sin (This.Current.Yaw + W * Dt / 2.0),
+            Yaw => Normalize_Angle (This.Current.Yaw + W * Dt));
+      end if;
+      This.Started := True;
+      This.Output ("pose", Values.Pose_Value'(Data => This.Current));
+      Next := Next + This.Period;
+   end Run;
+
+   function Create_Odometry (Ctx : Context) return Component_Access is
+      Result : constant Component_Access := new Odometry;
+   begin
+      Result.Initialize (Ctx);
+      return Result;
+   end Create_Odometry;
+
+   --  scan_matching --
+
+   type Scan_Matching is new Base_Component with record
+      Correction : Pose;
+   end record;
+
+   overriding procedure Start (This : in out Scan_Matching);
+   overriding procedure On_Input
+     (This : in out Scan_Matching; Data : String; Item : Values.Value'Class);
+
+   overriding procedure Start (This : in out Scan_Matching) is
+   begin
+      This.Correction := (X => Real (This.Option_Real ("dx")), Y => Real (This.Option_Real ("dy")),
+                          Yaw => Real (This.Option_Real ("dyaw")));
+      This.Subscribe ("pose");
+   end Start;
+
+   overriding procedure On_Input
+     (This : in out Scan_Matching; Data : String; Item : Values.Value'Class)
+   is
+      pragma Unreferenced (Data);
+   begin
+      This.Output ("pose", Values.Pose_Value'
+                     (Data => Compose (This.Correction, Values.Pose_Value (Item).Data)));
+   end On_Input;
+
+   function Create_Scan_Matching (Ctx : Context) return Component_Access is
+      Result : constant Component_Access := new Scan_Matching;
+   begin
+      Result.Initialize (Ctx);
+      return Result;
+   end Create_Scan_Matching;
+
+begin
+   Factory.Register
+     ((Name       => To_Unbounded_String ("odometry"),
+       Doc        => To_Unbounded_String ("dead-reckoning pose source"),
+       Ports      => Port_Vectors.Empty_Vector
+                       & In_Port ("v", "types.real", Optional => True)
+                       & In_Port ("w", "types.real", Optional => True)
+                       & Out_Port ("pose", "types.pose"),
+       Options    => Option_Vectors.Empty_Vector
+                       & Make_Option ("period", Duration_Option, "0.1")
+                       & Make_Option ("x", Real_Option, "0.0")
+                       & Make_Option ("y", Real_Option, "0.0")
+                       & Make_Option ("yaw", Real_Option, "0.0")
+                       & Make_Option ("v", Real_Option, "0.0")
+                       & Make_Option ("w", Real_Option, "0.0"),
+       Any_Inputs => False,
+       Refine     => null,
+       others     => <>),
+      Create_Odometry'Access);
+   Factory.Register
+     ((Name       => To_Unbounded_String ("scan_matching"),
+       Doc        => To_Unbounded_String ("pose correction (PARTIAL: fixed correction, no MbICP)"),
+       Ports      => Port_Vectors.Empty_Vector
+                       & In_Port ("pose", "types.pose")
+                       & Out_Port ("pose", "types.pose"),
+       Options    => Option_Vectors.Empty_Vector
+                       & Make_Option ("dx", Real_Option, "0.0")
+                       & Make_Option ("dy", Real_Option, "0.0")
+                       & Make_Option ("dyaw", Real_Option, "0.0"),
+       Any_Inputs => False,
+       Refine     => null,
+       others     => <>),
+      Create_Scan_Matching'Access);
+end Sancta.Components.Pose_Chain;

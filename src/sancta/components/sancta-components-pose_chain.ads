@@ -1,0 +1,19 @@
+--  The first links of the pose-correction chain of the paper's Figure 2,
+--  so that its Listing 1.1 runs as written:
+--
+--  "odometry": a dead-reckoning pose source. Every "period" seconds it
+--  integrates a unicycle moving at linear speed v (m/s) and angular speed
+--  w (rad/s) from the initial pose (x, y, yaw), and stores output "pose"
+--  (types.pose). v and w come from the options of the same names, or from
+--  the optional inputs "v" and "w" (types.real) when they hold a value.
+--  Options: period (default 0.1), x, y, yaw, v, w (default 0).
+--
+--  "scan_matching": requires "pose", provides "pose" (types.pose), event
+--  driven. PARTIAL: no laser input and no MbICP matching exist yet; the
+--  component applies the fixed correction given by options dx, dy, dyaw
+--  (the pose of the odometric frame in the corrected frame, identity by
+--  default), which is what a scan matcher's output amounts to when its
+--  estimate of the odometry drift is constant.
+package Sancta.Components.Pose_Chain is
+   pragma Elaborate_Body;
+end Sancta.Components.Pose_Chain;

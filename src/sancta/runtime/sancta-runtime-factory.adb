@@ -1,0 +1,111 @@
+with Ada.Characters.Handling;
+with Ada.Containers.Indefinite_Ordered_Maps;
+with Ada.Strings.Unbounded;
+
+package body Sancta.Runtime.Factory is
+
+   use Ada.Strings.Unbounded;
+
+   type Registration is record
+      Info   : Components.Descriptor;
+      Create : Creator;
+   end record;
+
+   package Registration_Maps is new Ada.Containers.Indefinite_Ordered_Maps
+     (String, Registration);
+
+   protected Registry is
+      procedure Add (Info : Components.Descriptor; Create : Creator; Added : out Boolean);
+      function Find (Name : String) return Registration;
+      function Contains (Name : String) return Boolean;
+      function All_Names return Databases.Key_Vectors.Vector;
+   private
+      Map : Registration_Maps.Map;
+   end Registry;
+
+   protected body Registry is
+      procedure Add (Info : Components.Descriptor; Create : Creator; Added : out Boolean) is
+         Name : constant String := To_String (Info.Name);
+      begin
+         Added := not Map.Contains (Name);
+         if Added then
+            Map.Insert (Name, (Info, Create));
+         end if;
+      end Add;
+
+      function Find (Name : String) return Registration is (Map (Name));
+
+      function Contains (Name : String) return Boolean is (Map.Contains (Name));
+
+      function All_Names return Databases.Key_Vectors.Vector is
+         Result : Databases.Key_Vectors.Vector;
+      begin
+         for Position in Map.Iterate loop
+            Result.Append (Registration_Maps.Key (Position));
+         end loop;
+         return Result;
+      end All_Names;
+   end Registry;
+
+   procedure Register (Info : Components.Descriptor; Create : not null Creator) is
+      Added : Boolean;
+   begin
+      Registry.Add (Info, Create, Added);
+      if not Added then
+         raise Program_Error with "component '" & To_String (Info.Name)
+           & "' registered twice";
+      end if;
+   end Register;
+
+   function Is_Registered (Name : String) return Boolean is (Registry.Contains (Name));
+
+   function Description (Name : String) return Components.Descriptor is
+     (Registry.Find (Name).Info);
+
+   function Create (Name : String; Ctx : Components.Context) return Components.Component_Access
+   is (Registry.Find (Name).Create (Ctx));
+
+   function Names return Databases.Key_Vectors.Vector is (Registry.All_Names);
+
+   function Edit_Distance (A, B : String) return Natural is
+      use Ada.Characters.Handling;
+      type Row is array (0 .. B'Length) of Natural;
+      Previous, Current : Row;
+   begin
+      for J in Previous'Range loop
+         Previous (J) := J;
+      end loop;
+      for I in 1 .. A'Length loop
+         Current (0) := I;
+         for J in 1 .. B'Length loop
+            Current (J) := Natural'Min
+              (Natural'Min (Previous (J) + 1, Current (J - 1) + 1),
+               Previous (J - 1)
+               + (if To_Lower (A (A'First + I - 1)) = To_Lower (B (B'First + J - 1))
+                  then 0 else 1));
+         end loop;
+         Previous := Current;
+      end loop;
+      return Previous (B'Length);
+   end Edit_Distance;
+
+   function Closest (Name : String; Candidates : Databases.Key_Vectors.Vector) return String is
+      Limit  : constant Natural := Natural'Max (2, Name'Length / 3);
+      Result : Unbounded_String;
+      Count  : Natural := 0;
+   begin
+      for D in 0 .. Limit loop
+         for C of Candidates loop
+            if Count < 3 and then Edit_Distance (Name, C) = D then
+               if Count > 0 then
+                  Append (Result, ", ");
+               end if;
+               Append (Result, "'" & C & "'");
+               Count := Count + 1;
+            end if;
+         end loop;
+      end loop;
+      return To_String (Result);
+   end Closest;
+
+end Sancta.Runtime.Factory;

@@ -1,0 +1,266 @@
+with Ada.Exceptions;
+with Ada.Streams;
+with Ada.Strings.Fixed;
+with AUnit.Assertions; use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with RCL.Contexts;
+with RCL.Executors.Concurrent;
+with RCL.Executors.Sequential;
+with RCL.Names;
+
+package body RCL.Nodes.Tests is
+
+   use Ada.Streams;
+   use type ROSIDL.GID;
+   use type ROSIDL.Int64;
+   use type RCL.DDS.Domain_Id;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   Type_Name : constant String := "test_msgs::msg::dds_::Bytes_";
+   --  Any name: the raw layer does not interpret the bytes.
+
+   function Payload (N : Natural) return Stream_Element_Array is
+     ([1 => 0, 2 => 1, 3 => 0, 4 => 0, 5 => Stream_Element (N mod 256), 6 => 16#AB#,
+       7 => 0, 8 => 0]);
+
+   --  Received samples, by callbacks.
+   Count        : Natural := 0 with Atomic;
+   Last_Data    : Stream_Element_Array (1 .. 8) := [others => 0];
+   Last_Info    : ROSIDL.Message_Info;
+   Raise_Next   : Boolean := False;
+
+   procedure On_Data
+     (Node : in out Nodes.Node'Class; Data : RCL.DDS.Byte_Array; Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Node);
+   begin
+      if Raise_Next then
+         Raise_Next := False;
+         raise Constraint_Error with "raised on purpose by a test callback";
+      end if;
+      if Data'Length = Last_Data'Length then
+         Last_Data := Data;
+      end if;
+      Last_Info := Info;
+      Count := Count + 1;
+   end On_Data;
+
+   procedure Spin_Until (N : in out Node; Target : Natural; Pub : RCL.Publishers.Publisher) is
+   begin
+      --  Publishes until the callbacks counted Target samples (bounded).
+      for I in 1 .. 100 loop
+         exit when Count >= Target;
+         Pub.Publish_Raw (Payload (I));
+         N.Spin (During => 0.1);
+      end loop;
+   end Spin_Until;
+
+   procedure Loopback (Unused : in out Fixture) is
+      N   : Node := Init ("loopback_test", Namespace => "tests");
+      Pub : constant RCL.Publishers.Publisher :=
+        N.Publish_Raw (Type_Name, "~/raw");
+   begin
+      Assert (Pub.Topic = "/tests/loopback_test/raw", "expanded: " & Pub.Topic);
+      N.Subscribe_Raw (Type_Name, "/tests/loopback_test/raw", On_Data'Access);
+      Count := 0;
+      Spin_Until (N, 1, Pub);
+      Assert (Count >= 1, "a sample arrived");
+      Assert (Last_Data (1 .. 4) = [0, 1, 0, 0] and then Last_Data (6) = 16#AB#,
+              "bytes unchanged");
+      Assert (Last_Info.Publisher_GID = ROSIDL.GID (Pub.GID), "publisher gid in the info");
+      Assert (Last_Info.Source_Timestamp > 0
+              and then Last_Info.Source_Timestamp <= Last_Info.Received_Timestamp,
+              "source timestamp set, before reception");
+   end Loopback;
+
+   procedure Callback_Exception (Unused : in out Fixture) is
+      N   : Node := Init ("exception_test");
+      Pub : constant RCL.Publishers.Publisher := N.Publish_Raw (Type_Name, "exc");
+   begin
+      N.Subscribe_Raw (Type_Name, "exc", On_Data'Access);
+      Count := 0;
+      Raise_Next := True;
+      Spin_Until (N, 2, Pub);
+      Assert (not Raise_Next, "the raising callback ran");
+      Assert (Count >= 2, "later samples still delivered after a callback raised");
+   end Callback_Exception;
+
+   procedure Two_Nodes (Unused : in out Fixture) is
+      A   : Node := Init ("node_a");
+      B   : Node := Init ("node_b");
+      Pub : constant RCL.Publishers.Publisher := A.Publish_Raw (Type_Name, "/between");
+      E   : RCL.Executors.Sequential.Executor;
+   begin
+      B.Subscribe_Raw (Type_Name, "/between", On_Data'Access);
+      E.Add (A);
+      E.Add (B);
+      Count := 0;
+      for I in 1 .. 100 loop
+         exit when Count >= 3;
+         Pub.Publish_Raw (Payload (I));
+         E.Spin (During => 0.1);
+      end loop;
+      Assert (Count >= 3, "node B receives node A's samples through one executor");
+   end Two_Nodes;
+
+   procedure QoS_Mismatch (Unused : in out Fixture) is
+      N       : Node := Init ("qos_test");
+      Pub     : constant RCL.Publishers.Publisher :=
+        N.Publish_Raw (Type_Name, "mismatch", RCL.QoS.Sensor_Data);
+      Control : Natural := 0;
+      procedure On_Control
+        (Node : in out Nodes.Node'Class; Data : RCL.DDS.Byte_Array;
+         Info : ROSIDL.Message_Info)
+      is
+         pragma Unreferenced (Node, Data, Info);
+      begin
+         Control := Control + 1;
+      end On_Control;
+   begin
+      N.Subscribe_Raw (Type_Name, "mismatch", On_Data'Access, RCL.QoS.Default);
+      N.Subscribe_Raw (Type_Name, "mismatch", On_Control'Access, RCL.QoS.Sensor_Data);
+      Count := 0;
+      for I in 1 .. 100 loop
+         exit when Control >= 5;
+         Pub.Publish_Raw (Payload (I));
+         N.Spin (During => 0.05);
+      end loop;
+      Assert (Control >= 5, "a best-effort reader receives (control)");
+      Assert (Count = 0, "a reliable reader gets nothing from a best-effort writer");
+   end QoS_Mismatch;
+
+   Ticks : Natural := 0 with Atomic;
+
+   procedure Tick (Node : in out Nodes.Node'Class; Timer : in out RCL.Timers.Timer;
+                   Elapsed : Duration)
+   is
+      pragma Unreferenced (Node, Elapsed);
+   begin
+      Ticks := Ticks + 1;
+      if Ticks = 3 then
+         Timer.Cancel;
+      end if;
+   end Tick;
+
+   procedure Timer_Spin (Unused : in out Fixture) is
+      N : Node := Init ("timer_test");
+      T : RCL.Timers.Timer;
+   begin
+      Ticks := 0;
+      T := N.Timer_Add (0.01, Tick'Access);
+      for I in 1 .. 200 loop
+         N.Spin (Once => True, During => 1.0);
+         exit when T.Is_Canceled;
+      end loop;
+      Assert (Ticks = 3, "three ticks then canceled by the callback:" & Ticks'Image);
+      N.Spin (During => 0.05);
+      Assert (Ticks = 3, "no tick once canceled");
+   end Timer_Spin;
+
+   procedure Concurrent (Unused : in out Fixture) is
+      N   : Node := Init ("concurrent_test");
+      Pub : constant RCL.Publishers.Publisher := N.Publish_Raw (Type_Name, "conc");
+      E   : RCL.Executors.Concurrent.Executor (Max_Nodes => 1, Queue_Size => 4, Threads => 3);
+      Seen : Natural := 0;
+      protected Counter is
+         procedure Add;
+         function Value return Natural;
+      private
+         V : Natural := 0;
+      end Counter;
+      protected body Counter is
+         procedure Add is
+         begin
+            V := V + 1;
+         end Add;
+         function Value return Natural is (V);
+      end Counter;
+      procedure On_Conc
+        (Node : in out Nodes.Node'Class; Data : RCL.DDS.Byte_Array;
+         Info : ROSIDL.Message_Info)
+      is
+         pragma Unreferenced (Node, Data, Info);
+      begin
+         Counter.Add;
+      end On_Conc;
+   begin
+      N.Subscribe_Raw (Type_Name, "conc", On_Conc'Access);
+      E.Add (N);
+      for I in 1 .. 100 loop
+         exit when Counter.Value >= 10;
+         Pub.Publish_Raw (Payload (I));
+         E.Spin (During => 0.05);
+      end loop;
+      Seen := Counter.Value;
+      Assert (Seen >= 10, "the task pool ran the callbacks:" & Seen'Image);
+      E.Shutdown;
+      Assert (E.Is_Shut_Down, "shut down deterministically");
+   end Concurrent;
+
+   procedure Errors (Unused : in out Fixture) is
+      N : constant Node := Init ("error_test");
+      pragma Unreferenced (N);
+      function Message_Of_Bad_Name return String is
+      begin
+         declare
+            Ignored : constant Node := Init ("bad-name");
+         begin
+            return "";
+         end;
+      exception
+         when E : RCL.Names.Name_Error =>
+            return Ada.Exceptions.Exception_Message (E);
+      end Message_Of_Bad_Name;
+      function Message_Of_Bad_Type return String is
+      begin
+         declare
+            W : RCL.DDS.Writer;
+         begin
+            RCL.DDS.Create (W, RCL.Contexts.Participant.all, "bad topic name!", Type_Name,
+                            RCL.QoS.Default);
+            return "";
+         end;
+      exception
+         when E : ROS_Exception =>
+            return Ada.Exceptions.Exception_Message (E);
+      end Message_Of_Bad_Type;
+      Bad_Type : constant String := Message_Of_Bad_Type;
+   begin
+      Assert (Ada.Strings.Fixed.Index (Message_Of_Bad_Name, "'-'") > 0,
+              "invalid node name names the character");
+      Assert (Ada.Strings.Fixed.Index (Bad_Type, "creating topic ""bad topic name!""") > 0
+              and then Ada.Strings.Fixed.Index (Bad_Type, "Bad Parameter") > 0,
+              "a DDS error becomes ROS_Exception saying what was attempted: " & Bad_Type);
+      Assert (RCL.Contexts.Parse_Domain_Id ("7") = 7, "domain id");
+      declare
+         Raised : Boolean := False;
+      begin
+         begin
+            Assert (RCL.Contexts.Parse_Domain_Id ("300") = 0, "unreachable");
+         exception
+            when E : ROS_Exception =>
+               Raised := Ada.Strings.Fixed.Index
+                 (Ada.Exceptions.Exception_Message (E), "ROS_DOMAIN_ID") > 0;
+         end;
+         Assert (Raised, "bad ROS_DOMAIN_ID named");
+      end;
+   end Errors;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite :=
+        new AUnit.Test_Suites.Test_Suite;
+   begin
+      Result.Add_Test (Caller.Create ("nodes: raw loopback with info", Loopback'Access));
+      Result.Add_Test (Caller.Create ("nodes: callback exception", Callback_Exception'Access));
+      Result.Add_Test (Caller.Create ("nodes: two nodes, one executor", Two_Nodes'Access));
+      Result.Add_Test (Caller.Create ("nodes: QoS mismatch", QoS_Mismatch'Access));
+      Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
+      Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
+      Result.Add_Test (Caller.Create ("nodes: errors", Errors'Access));
+      return Result;
+   end Suite;
+
+end RCL.Nodes.Tests;
