@@ -11,6 +11,7 @@ with RCL.Nodes.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
+with Sancta.Allocation.Tests;
 
 package body All_Suites is
 
@@ -32,6 +33,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (ROSIDL.CDR.Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (Simulation_Suites.Suite);

@@ -9,6 +9,7 @@ with Ada.Command_Line;
 with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Run;
+with Sancta.Commands.Plan;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -22,6 +23,7 @@ procedure Sancta_CLI is
       Put_Line ("  help             this text");
       Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
       Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
+      Put_Line ("  plan FILE ...    task allocation (sancta plan --help)");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -30,11 +32,12 @@ begin
      or else Command = "-h"
    then
       Usage;
-   --  elsif Command = "plan" then Sancta.Commands.Plan.Run;
    elsif Command = "check" then
       Sancta.Commands.Check.Run;
    elsif Command = "run" then
       Sancta.Commands.Run.Run;
+   elsif Command = "plan" then
+      Sancta.Commands.Plan.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage;

@@ -1,0 +1,1406 @@
+with Ada.Numerics.Long_Elementary_Functions;
+with Ada.Real_Time;
+with Ada.Unchecked_Deallocation;
+with Sancta.Allocation.Random;
+
+package body Sancta.Allocation.Annealers is
+
+   use Ada.Numerics.Long_Elementary_Functions;
+   use type Ada.Real_Time.Time;
+
+   subtype Gen is Sancta.Allocation.Random.Generator;
+
+   type Grid is array (Positive range <>, Natural range <>) of Natural;
+   type Cost_Grid is array (Positive range <>, Natural range <>) of Cost;
+   type Near_Grid is array (Positive range <>, Positive range <>) of Natural;
+
+   ---------------------------------------------------------------------------
+   --  State: the current solution with its cached costs.
+
+   type State (NR, NT, NK, NP, N2 : Positive) is record
+      --  NP = NT + 1 (positions), N2 = 2 NR (tree).
+      Tk   : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  Task at each position (1 .. Len).
+      Lc   : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  Location at each position; 0 = start, Len + 1 = finish.
+      Fw   : Cost_Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  Base cost from the start to each position, forward.
+      Rv   : Cost_Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  Rv (I) = sum over K < I of D (Lc (K + 1), Lc (K)): reversed arcs.
+      PF   : Cost_Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      PR   : Cost_Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  Prefix sums of Fw and Rv over positions 1 .. I.
+      Len  : Count_Array (1 .. NR) := [others => 0];
+      Bad  : Count_Array (1 .. NR) := [others => 0];
+      Own  : Count_Array (1 .. NT) := [others => 0];
+      Pos  : Count_Array (1 .. NT) := [others => 0];
+      Choice : Location_Array (1 .. NT) := [others => 1];
+      RC   : Cost_Array (1 .. NR) := [others => 0];
+      RCm  : Cost_Array (1 .. NR) := [others => 0];
+      Sum, Comp : Cost := 0;
+      Tree : Cost_Array (1 .. N2) := [others => 0];
+      Near : Near_Grid (1 .. NT, 1 .. NK) := [others => [others => 0]];
+      Near_Count : Count_Array (1 .. NT) := [others => 0];
+   end record;
+
+   type State_Access is access State;
+   procedure Free is new Ada.Unchecked_Deallocation (State, State_Access);
+
+   --  Max segment tree: leaves at NR + R - 1 .. 2 NR - 1 (iterative form).
+   procedure Tree_Set (S : in out State; R : Positive; V : Cost) is
+      I : Positive := S.NR + R - 1;
+   begin
+      S.Tree (I) := V;
+      while I > 1 loop
+         I := I / 2;
+         S.Tree (I) := Cost'Max (S.Tree (2 * I), S.Tree (2 * I + 1));
+      end loop;
+   end Tree_Set;
+
+   function Tree_Max (S : State; Lo, Hi : Natural) return Cost is
+      --  Max over robots Lo .. Hi (0 when empty).
+      L : Natural := S.NR + Lo - 1;
+      H : Natural := S.NR + Hi;  --  half-open
+      M : Cost := 0;
+   begin
+      if Lo > Hi or else Lo < 1 then
+         return 0;
+      end if;
+      while L < H loop
+         if L mod 2 = 1 then
+            M := Cost'Max (M, S.Tree (L));
+            L := L + 1;
+         end if;
+         if H mod 2 = 1 then
+            H := H - 1;
+            M := Cost'Max (M, S.Tree (H));
+         end if;
+         L := L / 2;
+         H := H / 2;
+      end loop;
+      return M;
+   end Tree_Max;
+
+   function Max_Except (S : State; A, B : Natural) return Cost is
+      Lo : constant Natural := (if B = 0 then A else Natural'Min (A, B));
+      Hi : constant Natural := (if B = 0 then A else Natural'Max (A, B));
+   begin
+      if S.NR = 1 then
+         return (if A = 0 then S.Tree (1) else 0);
+      end if;
+      return Cost'Max (Tree_Max (S, 1, Lo - 1),
+                       Cost'Max (Tree_Max (S, Lo + 1, Hi - 1), Tree_Max (S, Hi + 1, S.NR)));
+   end Max_Except;
+
+   function Key (S : State; R : Positive) return Cost is (S.RC (R));
+
+   function Current_Max (S : State) return Cost is (S.Tree (1));
+   --  With one robot the single leaf is Tree (1) itself.
+
+   ---------------------------------------------------------------------------
+   --  Rebuild the caches of robot R from position From on (tasks in Tk).
+
+   procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive) is
+      N : constant Natural := S.Len (R);
+      M : constant Cost := Cost (P.Multiplier (R));
+      F : constant Positive := Positive'Min (From, N + 1);
+      Old_RC  : constant Cost := S.RC (R);
+      Old_RCm : constant Cost := S.RCm (R);
+      Bad : Natural := 0;
+   begin
+      S.Lc (R, 0) := P.Start (R);
+      for I in F .. N loop
+         declare
+            T : constant Positive := S.Tk (R, I);
+            L : constant Natural := Location_Of (P, T, S.Choice (T));
+         begin
+            S.Lc (R, I) := L;
+            S.Own (T) := R;
+            S.Pos (T) := I;
+            S.Fw (R, I) := S.Fw (R, I - 1) + P.Distance (S.Lc (R, I - 1), L);
+            S.Rv (R, I) := S.Rv (R, I - 1) + P.Distance (L, S.Lc (R, I - 1));
+            S.PF (R, I) := S.PF (R, I - 1) + S.Fw (R, I);
+            S.PR (R, I) := S.PR (R, I - 1) + S.Rv (R, I);
+         end;
+      end loop;
+      S.Lc (R, N + 1) := P.Finish (R);
+      S.Fw (R, N + 1) := S.Fw (R, N) + P.Distance (S.Lc (R, N), P.Finish (R));
+      S.Rv (R, N + 1) := S.Rv (R, N) + P.Distance (P.Finish (R), S.Lc (R, N));
+      if not P.All_Feasible then
+         for I in 1 .. N loop
+            if not P.Can_Do (R, S.Tk (R, I)) then
+               Bad := Bad + 1;
+            end if;
+         end loop;
+      end if;
+      S.Bad (R) := Bad;
+      S.RC (R) := M * S.Fw (R, N + 1) + Cost (Bad) * Infinity;
+      S.RCm (R) := M * S.PF (R, N) + Cost (Bad) * Infinity;
+      S.Sum := S.Sum - Old_RC + S.RC (R);
+      S.Comp := S.Comp - Old_RCm + S.RCm (R);
+      Tree_Set (S, R, Key (S, R));
+   end Rebuild;
+
+   ---------------------------------------------------------------------------
+   --  Moves as segment lists.
+
+   type Seg_Kind is (Span, Single);
+   type Seg is record
+      Kind     : Seg_Kind := Span;
+      Robot    : Positive := 1;
+      First    : Natural := 1;
+      Last     : Natural := 0;
+      Reversed : Boolean := False;
+      Task_Id  : Natural := 0;   --  Single: this task ...
+      Loc      : Natural := 0;   --  ... at this location
+   end record;
+
+   Max_Segs : constant := 6;
+   type Seg_List is array (1 .. Max_Segs) of Seg;
+
+   type Tour_Plan is record
+      Robot : Natural := 0;      --  0 = unused
+      Segs  : Seg_List;
+      Count : Natural := 0;
+   end record;
+
+   type Move is record
+      A, B        : Tour_Plan;
+      Switch_Task : Natural := 0;   --  OR switch: task and its new choice
+      Switch_To   : Natural := 0;
+      New_A_Cost, New_B_Cost : Cost := 0;
+      New_A_Comp, New_B_Comp : Cost := 0;
+      New_A_Len, New_B_Len   : Natural := 0;
+      New_Max, New_Sum, New_Comp : Cost := 0;
+      Value       : Long_Float := 0.0;
+   end record;
+
+   procedure Add (T : in out Tour_Plan; Robot : Positive; First, Last : Natural;
+                  Reversed : Boolean := False) is
+   begin
+      if First <= Last then
+         T.Count := T.Count + 1;
+         T.Segs (T.Count) := (Kind => Span, Robot => Robot, First => First,
+                              Last => Last, Reversed => Reversed, others => <>);
+      end if;
+   end Add;
+
+   procedure Add_Single (T : in out Tour_Plan; Task_Id, Loc : Positive) is
+   begin
+      T.Count := T.Count + 1;
+      T.Segs (T.Count) := (Kind => Single, Task_Id => Task_Id, Loc => Loc, others => <>);
+   end Add_Single;
+
+   procedure Eval_Tour
+     (P : Problem; S : State; T : Tour_Plan; Length, Completion : out Cost;
+      Count : out Natural)
+   is
+      R    : constant Positive := T.Robot;
+      Here : Natural := P.Start (R);
+      Time : Cost := 0;
+      Sum  : Cost := 0;
+      Bad  : Natural := 0;
+      M    : constant Cost := Cost (P.Multiplier (R));
+   begin
+      Count := 0;
+      for K in 1 .. T.Count loop
+         declare
+            G : Seg renames T.Segs (K);
+         begin
+            if G.Kind = Single then
+               Time := Time + P.Distance (Here, G.Loc);
+               Sum := Sum + Time;
+               Here := G.Loc;
+               Count := Count + 1;
+               if not P.Can_Do (R, G.Task_Id) then
+                  Bad := Bad + 1;
+               end if;
+            else
+               declare
+                  RS : constant Positive := G.Robot;
+                  N  : constant Cost := Cost (G.Last - G.First + 1);
+               begin
+                  if not G.Reversed then
+                     Time := Time + P.Distance (Here, S.Lc (RS, G.First));
+                     Sum := Sum + N * (Time - S.Fw (RS, G.First))
+                       + S.PF (RS, G.Last) - S.PF (RS, G.First - 1);
+                     Time := Time + S.Fw (RS, G.Last) - S.Fw (RS, G.First);
+                     Here := S.Lc (RS, G.Last);
+                  else
+                     Time := Time + P.Distance (Here, S.Lc (RS, G.Last));
+                     Sum := Sum + N * (Time + S.Rv (RS, G.Last))
+                       - (S.PR (RS, G.Last) - S.PR (RS, G.First - 1));
+                     Time := Time + S.Rv (RS, G.Last) - S.Rv (RS, G.First);
+                     Here := S.Lc (RS, G.First);
+                  end if;
+                  Count := Count + Natural (N);
+                  if not P.All_Feasible then
+                     for I in G.First .. G.Last loop
+                        if not P.Can_Do (R, S.Tk (RS, I)) then
+                           Bad := Bad + 1;
+                        end if;
+                     end loop;
+                  end if;
+               end;
+            end if;
+         end;
+      end loop;
+      Time := Time + P.Distance (Here, P.Finish (R));
+      Length := M * Time + Cost (Bad) * Infinity;
+      Completion := M * Sum + Cost (Bad) * Infinity;
+   end Eval_Tour;
+
+   type Weights is record
+      C   : Criterion;
+      Tie : Long_Float := 0.0;  --  weight of Sum added to break MinMax ties
+   end record;
+
+   function Objective (W : Weights; Max, Sum, Comp : Cost; Tasks : Natural)
+     return Long_Float
+   is (Value (W.C, Max, Sum, Comp, Tasks) + W.Tie * Long_Float (Sum));
+
+   function Current_Value (P : Problem; S : State; W : Weights) return Long_Float is
+     (Objective (W, Current_Max (S), S.Sum, S.Comp, P.Tasks));
+
+   procedure Evaluate_Move
+     (P : Problem; S : State; W : Weights; Mv : in out Move; Valid : out Boolean)
+   is
+      A : constant Positive := Mv.A.Robot;
+      B : constant Natural := Mv.B.Robot;
+      Max, Sum, Comp : Cost;
+   begin
+      Eval_Tour (P, S, Mv.A, Mv.New_A_Cost, Mv.New_A_Comp, Mv.New_A_Len);
+      Valid := Mv.New_A_Len >= P.Min_Tasks or else Mv.New_A_Len >= S.Len (A);
+      Sum := S.Sum - S.RC (A) + Mv.New_A_Cost;
+      Comp := S.Comp - S.RCm (A) + Mv.New_A_Comp;
+      Max := Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost);
+      if B /= 0 then
+         Eval_Tour (P, S, Mv.B, Mv.New_B_Cost, Mv.New_B_Comp, Mv.New_B_Len);
+         Valid := Valid and then
+           (Mv.New_B_Len >= P.Min_Tasks or else Mv.New_B_Len >= S.Len (B));
+         Sum := Sum - S.RC (B) + Mv.New_B_Cost;
+         Comp := Comp - S.RCm (B) + Mv.New_B_Comp;
+         Max := Cost'Max (Max, Mv.New_B_Cost);
+      end if;
+      Mv.New_Max := Max;
+      Mv.New_Sum := Sum;
+      Mv.New_Comp := Comp;
+      Mv.Value := Objective (W, Max, Sum, Comp, P.Tasks);
+   end Evaluate_Move;
+
+   --  Writes a planned tour into Buf (tasks), returns the first position
+   --  that differs from the current tour of T.Robot (prefix kept).
+   procedure Render (S : State; T : Tour_Plan; Buf : in out Count_Array; Len : out Natural;
+                     Keep : out Natural) is
+      First_Seg : Positive := 1;
+   begin
+      Len := 0;
+      Keep := 0;
+      if T.Count >= 1 and then T.Segs (1).Kind = Span and then T.Segs (1).Robot = T.Robot
+        and then not T.Segs (1).Reversed and then T.Segs (1).First = 1
+      then
+         Keep := T.Segs (1).Last;
+         Len := Keep;
+         First_Seg := 2;
+      end if;
+      for K in First_Seg .. T.Count loop
+         declare
+            G : Seg renames T.Segs (K);
+         begin
+            if G.Kind = Single then
+               Len := Len + 1;
+               Buf (Len) := G.Task_Id;
+            elsif not G.Reversed then
+               for I in G.First .. G.Last loop
+                  Len := Len + 1;
+                  Buf (Len) := S.Tk (G.Robot, I);
+               end loop;
+            else
+               for I in reverse G.First .. G.Last loop
+                  Len := Len + 1;
+                  Buf (Len) := S.Tk (G.Robot, I);
+               end loop;
+            end if;
+         end;
+      end loop;
+   end Render;
+
+   procedure Apply (P : Problem; S : in out State; Mv : Move) is
+      LA, LB, KA, KB : Natural := 0;
+      Buf_A, Buf_B : Count_Array (1 .. S.NP);
+      A : constant Positive := Mv.A.Robot;
+      B : constant Natural := Mv.B.Robot;
+   begin
+      Render (S, Mv.A, Buf_A, LA, KA);
+      if B /= 0 then
+         Render (S, Mv.B, Buf_B, LB, KB);
+      end if;
+      if Mv.Switch_Task /= 0 then
+         S.Choice (Mv.Switch_Task) := Mv.Switch_To;
+      end if;
+      for I in KA + 1 .. LA loop
+         S.Tk (A, I) := Buf_A (I);
+      end loop;
+      S.Len (A) := LA;
+      if B /= 0 then
+         for I in KB + 1 .. LB loop
+            S.Tk (B, I) := Buf_B (I);
+         end loop;
+         S.Len (B) := LB;
+      end if;
+      Rebuild (P, S, A, KA + 1);
+      if B /= 0 then
+         Rebuild (P, S, B, KB + 1);
+      end if;
+   end Apply;
+
+   ---------------------------------------------------------------------------
+   --  Expensive check.
+
+   procedure Verify (P : Problem; S : State; Mv : Move; Predicted : Boolean) is
+      Sum, Comp, Max : Cost := 0;
+      Seen : Count_Array (1 .. S.NT) := [others => 0];
+
+      procedure Fail (What : String) with No_Return;
+      procedure Fail (What : String) is
+      begin
+         raise Program_Error with "annealer check failed: " & What;
+      end Fail;
+   begin
+      for R in 1 .. S.NR loop
+         declare
+            Here : Natural := P.Start (R);
+            Time, CSum : Cost := 0;
+            Bad : Natural := 0;
+            M : constant Cost := Cost (P.Multiplier (R));
+            RC, RCm : Cost;
+         begin
+            if S.Len (R) < P.Frozen_Length (R) then
+               Fail ("robot" & R'Image & " lost frozen tasks");
+            end if;
+            for I in 1 .. S.Len (R) loop
+               declare
+                  T : constant Positive := S.Tk (R, I);
+                  L : constant Natural := Location_Of (P, T, S.Choice (T));
+               begin
+                  if I <= P.Frozen_Length (R) and then P.Frozen (R, I) /= T then
+                     Fail ("frozen prefix of robot" & R'Image & " changed");
+                  end if;
+                  Seen (T) := Seen (T) + 1;
+                  if S.Own (T) /= R or else S.Pos (T) /= I then
+                     Fail ("position index of task" & T'Image);
+                  end if;
+                  Time := Time + P.Distance (Here, L);
+                  CSum := CSum + Time;
+                  if not P.Can_Do (R, T) then
+                     Bad := Bad + 1;
+                  end if;
+                  Here := L;
+               end;
+            end loop;
+            Time := Time + P.Distance (Here, P.Finish (R));
+            RC := M * Time + Cost (Bad) * Infinity;
+            RCm := M * CSum + Cost (Bad) * Infinity;
+            if RC /= S.RC (R) or else RCm /= S.RCm (R) then
+               Fail ("robot" & R'Image & " cost" & S.RC (R)'Image & " /" & S.RCm (R)'Image
+                     & " recomputed" & RC'Image & " /" & RCm'Image);
+            end if;
+            if Predicted then
+               if R = Mv.A.Robot and then (RC /= Mv.New_A_Cost or else RCm /= Mv.New_A_Comp) then
+                  Fail ("move prediction for robot" & R'Image & ":" & Mv.New_A_Cost'Image
+                        & " /" & Mv.New_A_Comp'Image & " actual" & RC'Image & " /" & RCm'Image);
+               end if;
+               if R = Mv.B.Robot and then (RC /= Mv.New_B_Cost or else RCm /= Mv.New_B_Comp) then
+                  Fail ("move prediction for robot" & R'Image & ":" & Mv.New_B_Cost'Image
+                        & " actual" & RC'Image);
+               end if;
+            end if;
+            Sum := Sum + RC;
+            Comp := Comp + RCm;
+            Max := Cost'Max (Max, RC);
+         end;
+      end loop;
+      for T in 1 .. S.NT loop
+         if Seen (T) /= 1 then
+            Fail ("task" & T'Image & " appears" & Seen (T)'Image & " times");
+         end if;
+      end loop;
+      if Sum /= S.Sum or else Comp /= S.Comp or else Max /= Current_Max (S) then
+         Fail ("totals: sum" & S.Sum'Image & " vs" & Sum'Image & ", max"
+               & Current_Max (S)'Image & " vs" & Max'Image);
+      end if;
+   end Verify;
+
+   ---------------------------------------------------------------------------
+   --  Set-up.
+
+   procedure Compute_Neighbours (P : Problem; S : in out State) is
+      K : constant Positive := S.NK;
+      Dist : Cost_Array (1 .. K) := [others => 0];
+   begin
+      for T in 1 .. S.NT loop
+         declare
+            LT : constant Natural := Location_Of (P, T);
+            N  : Natural := 0;
+         begin
+            for U in 1 .. S.NT loop
+               if U /= T then
+                  declare
+                     LU : constant Natural := Location_Of (P, U);
+                     D  : constant Cost :=
+                       Cost'Min (P.Distance (LT, LU), P.Distance (LU, LT));
+                     I  : Natural;
+                  begin
+                     if N < K or else D < Dist (N) then
+                        if N < K then
+                           N := N + 1;
+                        end if;
+                        I := N;
+                        while I > 1 and then Dist (I - 1) > D loop
+                           Dist (I) := Dist (I - 1);
+                           S.Near (T, I) := S.Near (T, I - 1);
+                           I := I - 1;
+                        end loop;
+                        Dist (I) := D;
+                        S.Near (T, I) := U;
+                     end if;
+                  end;
+               end if;
+            end loop;
+            S.Near_Count (T) := N;
+         end;
+      end loop;
+   end Compute_Neighbours;
+
+   procedure Load (P : Problem; S : in out State; A : Assignment) is
+   begin
+      S.Choice := A.Choice;
+      S.Sum := 0;
+      S.Comp := 0;
+      S.RC := [others => 0];
+      S.RCm := [others => 0];
+      for R in 1 .. S.NR loop
+         S.Len (R) := A.Length (R);
+         for I in 1 .. A.Length (R) loop
+            S.Tk (R, I) := A.Tour (R, I);
+         end loop;
+         Rebuild (P, S, R, 1);
+      end loop;
+   end Load;
+
+   procedure Store (S : State; A : in out Assignment) is
+   begin
+      A.Choice := S.Choice;
+      for R in 1 .. S.NR loop
+         A.Length (R) := S.Len (R);
+         for I in 1 .. S.Len (R) loop
+            A.Tour (R, I) := S.Tk (R, I);
+         end loop;
+      end loop;
+   end Store;
+
+   function Make_Weights (P : Problem; C : Criterion; Scale_Sum : Cost) return Weights is
+   begin
+      if C.Sum_Weight = 0.0 and then C.Ave_Weight = 0.0 and then P.Robots > 1 then
+         --  Pure makespan: plateaus everywhere; a tiny total-cost term
+         --  breaks ties without ever trading a unit of makespan.
+         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)));
+      end if;
+      return (C, 0.0);
+   end Make_Weights;
+
+   --  Insert task T (unassigned) at its best place.
+   procedure Best_Insert (P : Problem; S : in out State; W : Weights; T : Positive;
+                          Only : Natural := 0) is
+      Best : Move;
+      Best_Value : Long_Float := Long_Float'Last;
+      Found : Boolean := False;
+      L : constant Natural := Location_Of (P, T, S.Choice (T));
+   begin
+      for R in 1 .. S.NR loop
+         if (Only = 0 or else R = Only) and then P.Can_Do (R, T) then
+            for After in P.Frozen_Length (R) .. S.Len (R) loop
+               declare
+                  Mv : Move;
+                  Ok : Boolean;
+               begin
+                  Mv.A.Robot := R;
+                  Add (Mv.A, R, 1, After);
+                  Add_Single (Mv.A, T, L);
+                  Add (Mv.A, R, After + 1, S.Len (R));
+                  Evaluate_Move (P, S, W, Mv, Ok);
+                  if Mv.Value < Best_Value then
+                     Best_Value := Mv.Value;
+                     Best := Mv;
+                     Found := True;
+                  end if;
+               end;
+            end loop;
+         end if;
+      end loop;
+      if not Found then
+         raise Program_Error with "no robot can do task" & T'Image;
+      end if;
+      Apply (P, S, Best);
+   end Best_Insert;
+
+   procedure Construct (P : Problem; S : in out State; C : Criterion; G : in out Gen) is
+      Order : Count_Array (1 .. P.Tasks);
+      N     : Natural := 0;
+      Done  : Boolean_Array (1 .. P.Tasks) := [others => False];
+      W     : Weights := (C, 0.0);
+      Empty_A : constant Assignment := Empty (P);
+   begin
+      Load (P, S, Empty_A);
+      for T in 1 .. P.Tasks loop
+         if not P.Is_Frozen (T) then
+            N := N + 1;
+            Order (N) := T;
+         end if;
+      end loop;
+      for I in reverse 2 .. N loop
+         declare
+            J : constant Positive := 1 + Random.Below (G, I);
+            X : constant Positive := Order (I);
+         begin
+            Order (I) := Order (J);
+            Order (J) := X;
+         end;
+      end loop;
+      --  Minimum counts first: the nearest free feasible task to each start.
+      for R in 1 .. P.Robots loop
+         while S.Len (R) < P.Min_Tasks loop
+            declare
+               Best : Natural := 0;
+               BD   : Cost := Cost'Last;
+            begin
+               for K in 1 .. N loop
+                  declare
+                     T : constant Positive := Order (K);
+                  begin
+                     if not Done (T) and then P.Can_Do (R, T)
+                       and then P.Distance (P.Start (R), Location_Of (P, T)) < BD
+                     then
+                        BD := P.Distance (P.Start (R), Location_Of (P, T));
+                        Best := T;
+                     end if;
+                  end;
+               end loop;
+               exit when Best = 0;
+               Done (Best) := True;
+               Best_Insert (P, S, W, Best, Only => R);
+            end;
+         end loop;
+      end loop;
+      W := Make_Weights (P, C, 1 + S.Sum * Cost (P.Tasks));
+      for K in 1 .. N loop
+         if not Done (Order (K)) then
+            Best_Insert (P, S, W, Order (K));
+         end if;
+      end loop;
+   end Construct;
+
+   ---------------------------------------------------------------------------
+   --  Move generators. Each fills Mv and returns Ok = False when the draw
+   --  does not give a legal move.
+
+   type Move_Kind is
+     (Or_Opt_Near, Two_Opt_Near, Cross_Near, Random_Move, Move_Owner,
+      Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse);
+
+   function Movable (P : Problem; S : State; T : Positive) return Boolean is
+     (S.Pos (T) > P.Frozen_Length (S.Own (T)));
+
+   function Random_Task (P : Problem; S : State; G : in out Gen) return Natural is
+   begin
+      for Try in 1 .. 8 loop
+         declare
+            T : constant Positive := 1 + Random.Below (G, S.NT);
+         begin
+            if Movable (P, S, T) then
+               return T;
+            end if;
+         end;
+      end loop;
+      return 0;
+   end Random_Task;
+
+   --  Move the tasks at positions I .. J of robot R1 to after position Q of
+   --  robot R2 (Q in the current numbering of R2), reversed or not.
+   procedure Relocate (S : State; Mv : in out Move; R1 : Positive; I, J : Positive;
+                       R2 : Positive; Q : Natural; Rev : Boolean; Ok : out Boolean;
+                       New_Loc : Natural := 0)
+   is
+      --  With New_Loc /= 0 (I = J), the task moves to its new OR choice there.
+      procedure Moved (T : in out Tour_Plan) is
+      begin
+         if New_Loc /= 0 then
+            Add_Single (T, S.Tk (R1, I), New_Loc);
+         else
+            Add (T, R1, I, J, Rev);
+         end if;
+      end Moved;
+   begin
+      Mv.A := (others => <>);
+      Mv.B := (others => <>);
+      Ok := True;
+      if R1 /= R2 then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
+         Mv.B.Robot := R2;
+         Add (Mv.B, R2, 1, Q);
+         Moved (Mv.B);
+         Add (Mv.B, R2, Q + 1, S.Len (R2));
+      elsif Q + 1 < I then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, Q);
+         Moved (Mv.A);
+         Add (Mv.A, R1, Q + 1, I - 1);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
+      elsif Q > J then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Add (Mv.A, R1, J + 1, Q);
+         Moved (Mv.A);
+         Add (Mv.A, R1, Q + 1, S.Len (R1));
+      elsif New_Loc /= 0 then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Moved (Mv.A);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
+      elsif Rev and then I < J then
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Add (Mv.A, R1, I, J, True);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
+      else
+         Ok := False;
+      end if;
+   end Relocate;
+
+   procedure Gen_Or_Opt
+     (P : Problem; S : State; G : in out Gen; T : Positive; U_Index : Positive;
+      Seg_Len : Positive; Variant : Natural; Mv : in out Move; Ok : out Boolean)
+   is
+      R1 : constant Positive := S.Own (T);
+      I  : constant Positive := S.Pos (T);
+      J  : constant Positive := Positive'Min (I + Seg_Len - 1, S.Len (R1));
+      U  : constant Natural := S.Near (T, U_Index);
+      R2 : Positive;
+      Q  : Natural;
+      Rev : Boolean;
+      pragma Unreferenced (G);
+   begin
+      Ok := False;
+      if U = 0 then
+         return;
+      end if;
+      R2 := S.Own (U);
+      --  0: after U, forward (U -> T); 1: before U, reversed (T -> U);
+      --  2: after U, reversed; 3: before U, forward.
+      case Variant mod 4 is
+         when 0 => Q := S.Pos (U); Rev := False;
+         when 1 => Q := S.Pos (U) - 1; Rev := True;
+         when 2 => Q := S.Pos (U); Rev := True;
+         when others => Q := S.Pos (U) - 1; Rev := False;
+      end case;
+      if Q < P.Frozen_Length (R2) then
+         return;
+      end if;
+      if R2 = R1 and then Q + 1 >= I and then Q <= J then
+         return;
+      end if;
+      Relocate (S, Mv, R1, I, J, R2, Q, Rev, Ok);
+   end Gen_Or_Opt;
+
+   procedure Gen_Two_Opt
+     (P : Problem; S : State; T : Positive; U_Index : Positive; Variant : Natural;
+      Mv : in out Move; Ok : out Boolean)
+   is
+      R1 : constant Positive := S.Own (T);
+      I  : constant Positive := S.Pos (T);
+      U  : constant Natural := S.Near (T, U_Index);
+      R2 : Positive;
+      J  : Positive;
+   begin
+      Ok := False;
+      if U = 0 then
+         return;
+      end if;
+      R2 := S.Own (U);
+      J := S.Pos (U);
+      Mv.A := (others => <>);
+      Mv.B := (others => <>);
+      if R1 = R2 then
+         declare
+            Lo, Hi : Natural;
+         begin
+            if I < J then
+               if Variant mod 2 = 0 then
+                  Lo := I + 1; Hi := J;       --  T, U adjacent after
+               else
+                  Lo := I; Hi := J - 1;
+               end if;
+            else
+               if Variant mod 2 = 0 then
+                  Lo := J + 1; Hi := I;
+               else
+                  Lo := J; Hi := I - 1;
+               end if;
+            end if;
+            if Hi <= Lo or else Lo <= P.Frozen_Length (R1) then
+               return;
+            end if;
+            Mv.A.Robot := R1;
+            Add (Mv.A, R1, 1, Lo - 1);
+            Add (Mv.A, R1, Lo, Hi, True);
+            Add (Mv.A, R1, Hi + 1, S.Len (R1));
+            Ok := True;
+         end;
+      else
+         Mv.A.Robot := R1;
+         Mv.B.Robot := R2;
+         if Variant mod 2 = 0 then
+            --  R1: 1..I then R2's J..; R2: 1..J-1 then R1's I+1..
+            if J - 1 < P.Frozen_Length (R2) then
+               return;
+            end if;
+            Add (Mv.A, R1, 1, I);
+            Add (Mv.A, R2, J, S.Len (R2));
+            Add (Mv.B, R2, 1, J - 1);
+            Add (Mv.B, R1, I + 1, S.Len (R1));
+         else
+            --  R2: 1..J then R1's I..; R1: 1..I-1 then R2's J+1..
+            if J < P.Frozen_Length (R2) then
+               return;
+            end if;
+            Add (Mv.A, R1, 1, I - 1);
+            Add (Mv.A, R2, J + 1, S.Len (R2));
+            Add (Mv.B, R2, 1, J);
+            Add (Mv.B, R1, I, S.Len (R1));
+         end if;
+         Ok := True;
+      end if;
+   end Gen_Two_Opt;
+
+   procedure Gen_Cross
+     (P : Problem; S : State; T : Positive; U_Index : Positive; L1, L2 : Natural;
+      Mv : in out Move; Ok : out Boolean)
+   is
+      R1 : constant Positive := S.Own (T);
+      I  : constant Positive := S.Pos (T);
+      U  : constant Natural := S.Near (T, U_Index);
+      R2 : Positive;
+      J  : Positive;
+      E1, E2 : Natural;
+   begin
+      Ok := False;
+      if U = 0 then
+         return;
+      end if;
+      R2 := S.Own (U);
+      J := S.Pos (U);
+      if R1 = R2 or else J < P.Frozen_Length (R2) then
+         return;
+      end if;
+      E1 := Natural'Min (I + L1 - 1, S.Len (R1));
+      E2 := Natural'Min (J + L2, S.Len (R2));
+      Mv.A := (others => <>);
+      Mv.B := (others => <>);
+      Mv.A.Robot := R1;
+      Add (Mv.A, R1, 1, I - 1);
+      Add (Mv.A, R2, J + 1, E2);
+      Add (Mv.A, R1, E1 + 1, S.Len (R1));
+      Mv.B.Robot := R2;
+      Add (Mv.B, R2, 1, J);
+      Add (Mv.B, R1, I, E1);
+      Add (Mv.B, R2, E2 + 1, S.Len (R2));
+      Ok := True;
+   end Gen_Cross;
+
+   procedure Gen_Swap (P : Problem; S : State; T, U : Positive; Mv : in out Move;
+                       Ok : out Boolean) is
+      R1 : constant Positive := S.Own (T);
+      R2 : constant Positive := S.Own (U);
+      I  : Positive := S.Pos (T);
+      J  : Positive := S.Pos (U);
+      pragma Unreferenced (P);
+   begin
+      Ok := False;
+      if T = U then
+         return;
+      end if;
+      Mv.A := (others => <>);
+      Mv.B := (others => <>);
+      if R1 = R2 then
+         if J < I then
+            declare
+               X : constant Positive := I;
+            begin
+               I := J;
+               J := X;
+            end;
+         end if;
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Add (Mv.A, R1, J, J);
+         Add (Mv.A, R1, I + 1, J - 1);
+         Add (Mv.A, R1, I, I);
+         Add (Mv.A, R1, J + 1, S.Len (R1));
+      else
+         Mv.A.Robot := R1;
+         Add (Mv.A, R1, 1, I - 1);
+         Add (Mv.A, R2, J, J);
+         Add (Mv.A, R1, I + 1, S.Len (R1));
+         Mv.B.Robot := R2;
+         Add (Mv.B, R2, 1, J - 1);
+         Add (Mv.B, R1, I, I);
+         Add (Mv.B, R2, J + 1, S.Len (R2));
+      end if;
+      Ok := True;
+   end Gen_Swap;
+
+   function Random_Robot_Position (P : Problem; S : State; G : in out Gen; R : Positive)
+     return Natural is
+     (P.Frozen_Length (R) + Random.Below (G, S.Len (R) - P.Frozen_Length (R) + 1));
+
+   --  A random re-insertion of task T: robot (other than T's own when
+   --  Other), position; Ok False when illegal.
+   procedure Gen_Insert (P : Problem; S : State; G : in out Gen; T : Positive;
+                         Other : Boolean; Mv : in out Move; Ok : out Boolean) is
+      R1 : constant Positive := S.Own (T);
+      R2 : Positive;
+      Q  : Natural;
+   begin
+      Ok := False;
+      if Other then
+         if S.NR = 1 then
+            return;
+         end if;
+         R2 := 1 + Random.Below (G, S.NR - 1);
+         if R2 >= R1 then
+            R2 := R2 + 1;
+         end if;
+      else
+         R2 := (if Random.Below (G, 2) = 0 then R1 else 1 + Random.Below (G, S.NR));
+      end if;
+      Q := Random_Robot_Position (P, S, G, R2);
+      if R2 = R1 and then (Q = S.Pos (T) or else Q + 1 = S.Pos (T)) then
+         return;
+      end if;
+      Relocate (S, Mv, R1, S.Pos (T), S.Pos (T), R2, Q, False, Ok);
+   end Gen_Insert;
+
+   ---------------------------------------------------------------------------
+
+   function Greedy_Start (P : Problem; C : Criterion; Seed : Interfaces.Unsigned_64)
+     return Assignment
+   is
+      S : State_Access := new State (P.Robots, P.Tasks, 1, P.Tasks + 1, 2 * P.Robots);
+      G : Gen := Random.Seeded (Seed);
+   begin
+      return A : Assignment (P.Robots, P.Tasks) do
+         Construct (P, S.all, C, G);
+         Store (S.all, A);
+         Free (S);
+      end return;
+   end Greedy_Start;
+
+   procedure Solve
+     (P      : Problem;
+      Opts   : Options;
+      Best   : in out Assignment;
+      Stats  : out Progress;
+      Report : Reporter := null)
+   is
+      use Ada.Real_Time;
+      K     : constant Positive := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
+      S     : State_Access := new State (P.Robots, P.Tasks, K, P.Tasks + 1, 2 * P.Robots);
+      G     : Gen := Random.Seeded (Opts.Seed);
+      Start : constant Time := Clock;
+      Next_Report : Time := Start + To_Time_Span (Opts.Report_Every);
+      W, WT : Weights;
+      --  W guides the search, WT is the criterion (with its tie-break).
+      Guide0 : Long_Float := 0.0;
+      --  Pure makespan: W adds Guide * total cost, Guide decaying from
+      --  Guide0 to WT.Tie over the budget (balances all tours early on).
+      Cur, Best_Value : Long_Float;
+      Best_Saved : Boolean := True;
+      --  Best holds the best solution; False while the current solution is
+      --  a better one not yet copied (copied before leaving it).
+      Moves, Accepted, Last_Best_Move : Long_Long_Integer := 0;
+      T0, T1, Temp : Long_Float;
+      Elapsed : Duration := 0.0;
+      Best_Time : Duration := 0.0;
+      type Real_Array is array (Move_Kind) of Long_Float;
+      Weight : Real_Array := [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Cross_Near => 1.5,
+                              Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
+                              Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
+                              Segment_Move => 0.5, Random_Reverse => 0.5];
+      Score, Tries : Real_Array := [others => 0.0];
+      Has_Or : Boolean := False;
+      Log_Tries : constant Positive :=
+        Positive (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
+      Stop : Boolean := False;
+      Reheat_T : Long_Float;
+      Since_Improve : Long_Long_Integer := 0;
+      Cycle_Best : Long_Float;
+
+      function Pick_Kind return Move_Kind is
+         Total : Long_Float := 0.0;
+         X     : Long_Float;
+      begin
+         for M in Move_Kind loop
+            Total := Total + Weight (M);
+         end loop;
+         X := Random.Uniform (G) * Total;
+         for M in Move_Kind loop
+            X := X - Weight (M);
+            if X < 0.0 then
+               return M;
+            end if;
+         end loop;
+         return Or_Opt_Near;
+      end Pick_Kind;
+
+      procedure Propose (Kind : Move_Kind; Mv : in out Move; Ok : out Boolean) is
+         T : constant Natural := Random_Task (P, S.all, G);
+      begin
+         Ok := False;
+         Mv.Switch_Task := 0;
+         if T = 0 then
+            return;
+         end if;
+         case Kind is
+            when Or_Opt_Near =>
+               Gen_Or_Opt (P, S.all, G, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
+                           Random.Below (G, 4), Mv, Ok);
+            when Two_Opt_Near =>
+               Gen_Two_Opt (P, S.all, T, 1 + Random.Below (G, K), Random.Below (G, 2), Mv, Ok);
+            when Cross_Near =>
+               Gen_Cross (P, S.all, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
+                          Random.Below (G, 4), Mv, Ok);
+            when Random_Move =>
+               declare
+                  R : constant Positive := S.Own (T);
+                  Q : constant Natural := Random_Robot_Position (P, S.all, G, R);
+               begin
+                  if Q /= S.Pos (T) and then Q + 1 /= S.Pos (T) then
+                     Relocate (S.all, Mv, R, S.Pos (T), S.Pos (T), R, Q, False, Ok);
+                  end if;
+               end;
+            when Move_Owner =>
+               Gen_Insert (P, S.all, G, T, True, Mv, Ok);
+            when Guided_Move | Log_Auction =>
+               declare
+                  Src : Natural := T;
+                  Best_Mv : Move;
+                  Found : Boolean := False;
+                  Cand : Move;
+                  C_Ok : Boolean;
+               begin
+                  if Kind = Guided_Move then
+                     --  A random movable task of the robot with the worst cost.
+                     declare
+                        Worst : Positive := 1;
+                        R_Len : Natural;
+                     begin
+                        for R in 2 .. S.NR loop
+                           if S.RC (R) > S.RC (Worst) then
+                              Worst := R;
+                           end if;
+                        end loop;
+                        R_Len := S.Len (Worst) - P.Frozen_Length (Worst);
+                        if R_Len = 0 then
+                           return;
+                        end if;
+                        Src := S.Tk (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (G, R_Len));
+                     end;
+                  end if;
+                  for Try in 1 .. Log_Tries loop
+                     Gen_Insert (P, S.all, G, Src, Kind = Guided_Move, Cand, C_Ok);
+                     if C_Ok then
+                        Evaluate_Move (P, S.all, W, Cand, C_Ok);
+                        if C_Ok and then (not Found or else Cand.Value < Best_Mv.Value) then
+                           Best_Mv := Cand;
+                           Found := True;
+                        end if;
+                     end if;
+                  end loop;
+                  if Found then
+                     Mv := Best_Mv;
+                     Ok := True;
+                  end if;
+               end;
+            when Segment_Move =>
+               --  A random segment (any length) of T's tour, moved to a
+               --  random place of a random robot, maybe reversed.
+               declare
+                  R1 : constant Positive := S.Own (T);
+                  I  : constant Positive := S.Pos (T);
+                  J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
+                  R2 : constant Positive := 1 + Random.Below (G, S.NR);
+                  Q  : constant Natural := Random_Robot_Position (P, S.all, G, R2);
+               begin
+                  if R2 /= R1 or else Q + 1 < I or else Q > J then
+                     Relocate (S.all, Mv, R1, I, J, R2, Q, Random.Below (G, 2) = 0, Ok);
+                  end if;
+               end;
+            when Random_Reverse =>
+               declare
+                  R1 : constant Positive := S.Own (T);
+                  I  : constant Positive := S.Pos (T);
+                  J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
+               begin
+                  if J > I then
+                     Mv.A := (others => <>);
+                     Mv.B := (others => <>);
+                     Mv.A.Robot := R1;
+                     Add (Mv.A, R1, 1, I - 1);
+                     Add (Mv.A, R1, I, J, True);
+                     Add (Mv.A, R1, J + 1, S.Len (R1));
+                     Ok := True;
+                  end if;
+               end;
+            when Swap_Any =>
+               declare
+                  U : constant Natural := Random_Task (P, S.all, G);
+               begin
+                  if U /= 0 then
+                     Gen_Swap (P, S.all, T, U, Mv, Ok);
+                  end if;
+               end;
+            when Switch_Or =>
+               --  Another alternative of an OR task, at the best of a few
+               --  random places (its own place among them).
+               if P.Alt_Count (T) > 1 then
+                  declare
+                     C : Positive := 1 + Random.Below (G, P.Alt_Count (T) - 1);
+                     R : constant Positive := S.Own (T);
+                     I : constant Positive := S.Pos (T);
+                     Cand, Best_Mv : Move;
+                     C_Ok : Boolean;
+                  begin
+                     if C >= S.Choice (T) then
+                        C := C + 1;
+                     end if;
+                     Relocate (S.all, Best_Mv, R, I, I, R, I, False, C_Ok,
+                               New_Loc => Location_Of (P, T, C));
+                     Evaluate_Move (P, S.all, W, Best_Mv, C_Ok);
+                     for Try in 1 .. Log_Tries loop
+                        declare
+                           R2 : constant Positive := 1 + Random.Below (G, S.NR);
+                           Q  : constant Natural := Random_Robot_Position (P, S.all, G, R2);
+                        begin
+                           if R2 /= R or else (Q /= I and then Q + 1 /= I) then
+                              Relocate (S.all, Cand, R, I, I, R2, Q, False, C_Ok,
+                                        New_Loc => Location_Of (P, T, C));
+                              if C_Ok then
+                                 Evaluate_Move (P, S.all, W, Cand, C_Ok);
+                                 if C_Ok and then Cand.Value < Best_Mv.Value then
+                                    Best_Mv := Cand;
+                                 end if;
+                              end if;
+                           end if;
+                        end;
+                     end loop;
+                     Mv := Best_Mv;
+                     Mv.Switch_Task := T;
+                     Mv.Switch_To := C;
+                     Ok := True;
+                  end;
+               end if;
+         end case;
+      end Propose;
+
+      procedure Save_Best is
+      begin
+         Store (S.all, Best);
+         Best_Saved := True;
+      end Save_Best;
+
+      procedure Do_Apply (Mv : Move) is
+      begin
+         Apply (P, S.all, Mv);
+         if Opts.Check then
+            Verify (P, S.all, Mv, True);
+         end if;
+      end Do_Apply;
+
+      procedure Send_Report is
+      begin
+         if Report /= null then
+            Report ((Best => Best_Value, Current => Cur, Temperature => Temp, Moves => Moves,
+                     Accepted => Accepted, Elapsed => Elapsed,
+                     Moves_Per_Second => (if Elapsed > 0.0
+                                          then Long_Float (Moves) / Long_Float (Elapsed)
+                                          else 0.0),
+                     Time_To_Best => Best_Time));
+         end if;
+      end Send_Report;
+
+      function True_Value return Long_Float is
+        (Value (Opts.Criterion, Current_Max (S.all), S.Sum, S.Comp, P.Tasks));
+
+      --  Local descent with the neighbour moves until no improvement (or time).
+      procedure Polish is
+         Improved : Boolean := True;
+         Mv : Move;
+         Ok : Boolean;
+         Rounds : Natural := 0;
+      begin
+         while Improved and then Rounds < 50 loop
+            Improved := False;
+            Rounds := Rounds + 1;
+            for T in 1 .. P.Tasks loop
+               if Opts.Time_Limit > 0.0 and then T mod 16 = 0
+                 and then To_Duration (Clock - Start) > Opts.Time_Limit * 1.02
+               then
+                  return;
+               end if;
+               if Movable (P, S.all, T) then
+                  for U in 1 .. K loop
+                     for V in 0 .. 11 loop
+                        if not Movable (P, S.all, T) then
+                           exit;
+                        end if;
+                        if V < 8 then
+                           Gen_Or_Opt (P, S.all, G, T, U, 1 + V / 4 * 2, V mod 4, Mv, Ok);
+                        elsif V < 10 then
+                           Gen_Two_Opt (P, S.all, T, U, V mod 2, Mv, Ok);
+                        else
+                           Gen_Cross (P, S.all, T, U, 1, (V mod 2), Mv, Ok);
+                        end if;
+                        Mv.Switch_Task := 0;
+                        if Ok then
+                           Evaluate_Move (P, S.all, W, Mv, Ok);
+                           if Ok and then Mv.Value < Cur - 1.0E-9 then
+                              Do_Apply (Mv);
+                              Cur := Current_Value (P, S.all, W);
+                              Improved := True;
+                           end if;
+                        end if;
+                     end loop;
+                  end loop;
+               end if;
+            end loop;
+         end loop;
+      end Polish;
+
+   begin
+      if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 and then Opts.Convergence <= 0 then
+         raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
+      end if;
+      Compute_Neighbours (P, S.all);
+      for T in 1 .. P.Tasks loop
+         Has_Or := Has_Or or else P.Alt_Count (T) > 1;
+      end loop;
+      if not Has_Or then
+         Weight (Switch_Or) := 0.0;
+      end if;
+      if P.Robots = 1 then
+         Weight (Move_Owner) := 0.0;
+         Weight (Guided_Move) := 0.0;
+         Weight (Cross_Near) := 0.0;
+      end if;
+      if Opts.Initial then
+         declare
+            V : constant String := Validate (P, Best);
+         begin
+            if V /= "" and then (V'Length < 6 or else V (V'First .. V'First + 5) /= "robot ") then
+               raise Constraint_Error with "annealer: bad initial assignment: " & V;
+            end if;
+         end;
+         Load (P, S.all, Best);
+      else
+         Construct (P, S.all, Opts.Criterion, G);
+      end if;
+      WT := Make_Weights (P, Opts.Criterion, S.Sum);
+      W := WT;
+      if WT.Tie > 0.0 then
+         Guide0 := (if Opts.Balance >= 0.0 then Opts.Balance else 1.0 / Long_Float (P.Robots));
+         W.Tie := Long_Float'Max (WT.Tie, Guide0);
+      end if;
+      if Opts.Check then
+         Verify (P, S.all, (others => <>), False);
+      end if;
+      Cur := Current_Value (P, S.all, W);
+      Best_Value := Current_Value (P, S.all, WT);
+      Save_Best;
+
+      --  Temperatures: from the mean uphill delta of sampled moves.
+      declare
+         Sum_Up : Long_Float := 0.0;
+         N_Up   : Natural := 0;
+         Mv     : Move;
+         Ok     : Boolean;
+      begin
+         for I in 1 .. 300 loop
+            Propose (Pick_Kind, Mv, Ok);
+            if Ok then
+               Evaluate_Move (P, S.all, W, Mv, Ok);
+               if Ok and then Mv.Value > Cur and then Mv.Value - Cur < 0.5 * Long_Float (Infinity)
+               then
+                  Sum_Up := Sum_Up + (Mv.Value - Cur);
+                  N_Up := N_Up + 1;
+               end if;
+            end if;
+         end loop;
+         T0 := (if N_Up > 0 then Opts.Start_Factor * Sum_Up / Long_Float (N_Up) else 1.0);
+         if Opts.Start_Temperature > 0.0 then
+            T0 := Opts.Start_Temperature;
+         end if;
+         T1 := (if Opts.End_Temperature > 0.0 then Opts.End_Temperature else T0 / Opts.End_Ratio);
+         T1 := Long_Float'Min (T1, T0);
+         Temp := T0;
+         Reheat_T := T0;
+      end;
+      Cycle_Best := Cur;
+
+      Main : loop
+         --  Budget and temperature every 128 moves.
+         if Moves mod 128 = 0 then
+            declare
+               Now : constant Time := Clock;
+               X   : Long_Float := 0.0;
+            begin
+               Elapsed := To_Duration (Now - Start);
+               if Opts.Time_Limit > 0.0 then
+                  X := Long_Float (Elapsed) / Long_Float (Opts.Time_Limit);
+                  Stop := Stop or else Elapsed >= Opts.Time_Limit * (if Opts.Polish then 0.97
+                                                                     else 1.0);
+               end if;
+               if Opts.Iterations > 0 then
+                  X := Long_Float'Max (X, Long_Float (Moves) / Long_Float (Opts.Iterations));
+                  Stop := Stop or else Moves >= Opts.Iterations;
+               end if;
+               if Opts.Convergence > 0 then
+                  Stop := Stop or else Moves - Last_Best_Move >= Opts.Convergence;
+                  if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 then
+                     X := Long_Float'Min (0.99, Long_Float (Moves - Last_Best_Move)
+                                          / Long_Float (Opts.Convergence));
+                  end if;
+               end if;
+               exit Main when Stop;
+               X := Long_Float'Min (1.0, X);
+               if Guide0 > WT.Tie and then Opts.Balance_Decay then
+                  W.Tie := Long_Float'Max (WT.Tie, Guide0 * (WT.Tie / Guide0) ** X);
+                  Cur := Current_Value (P, S.all, W);
+               end if;
+               case Opts.Schedule is
+                  when Geometric =>
+                     Temp := T0 * (T1 / T0) ** X;
+                  when Cyclic =>
+                     declare
+                        C : constant Long_Float := X * Long_Float (Opts.Cycles);
+                        F : constant Long_Float := C - Long_Float'Floor (C);
+                     begin
+                        Temp := T0 * (T1 / T0) ** (if X >= 1.0 then 1.0 else F);
+                     end;
+                  when Reheat =>
+                     if Since_Improve > 20_000 then
+                        Reheat_T := Long_Float'Max (T1, Reheat_T / 1.85);
+                        Since_Improve := 0;
+                        Cycle_Best := Cur;
+                     end if;
+                     if Moves - Last_Best_Move > 1_000_000 and then Reheat_T <= T1 then
+                        Reheat_T := T0;
+                        Last_Best_Move := Moves;
+                     end if;
+                     Temp := Reheat_T;
+               end case;
+               if Now >= Next_Report then
+                  Next_Report := Now + To_Time_Span (Opts.Report_Every);
+                  Send_Report;
+               end if;
+               if Opts.Adaptive and then Moves mod 8192 = 0 and then Moves > 0 then
+                  for M in Move_Kind loop
+                     if Tries (M) > 0.0 and then Weight (M) > 0.0 then
+                        Weight (M) := 0.8 * Weight (M) + 0.2 * Long_Float'Max
+                          (0.05, 20.0 * Score (M) / Tries (M));
+                     end if;
+                     Score (M) := 0.0;
+                     Tries (M) := 0.0;
+                  end loop;
+               end if;
+            end;
+         end if;
+         Moves := Moves + 1;
+         declare
+            Kind : constant Move_Kind := Pick_Kind;
+            Mv   : Move;
+            Ok   : Boolean;
+            D, TV : Long_Float;
+         begin
+            Propose (Kind, Mv, Ok);
+            Tries (Kind) := Tries (Kind) + 1.0;
+            if Ok then
+               Evaluate_Move (P, S.all, W, Mv, Ok);
+            end if;
+            if Ok then
+               D := Mv.Value - Cur;
+               if D <= 0.0 or else (D < 30.0 * Temp
+                                     and then Random.Uniform (G) < Exp (-D / Temp))
+               then
+                  TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp, P.Tasks);
+                  if not Best_Saved and then TV > Best_Value then
+                     Save_Best;
+                  end if;
+                  Do_Apply (Mv);
+                  Accepted := Accepted + 1;
+                  Cur := Mv.Value;
+                  if D < 0.0 then
+                     Score (Kind) := Score (Kind) + 1.0;
+                  end if;
+                  if Cur < Cycle_Best then
+                     Cycle_Best := Cur;
+                     Since_Improve := 0;
+                  else
+                     Since_Improve := Since_Improve + 1;
+                  end if;
+                  if TV < Best_Value - 1.0E-9 then
+                     Best_Value := TV;
+                     Best_Saved := False;
+                     Last_Best_Move := Moves;
+                     Best_Time := To_Duration (Clock - Start);
+                     Score (Kind) := Score (Kind) + 2.0;
+                     if Opts.Target > 0.0 and then True_Value <= Opts.Target then
+                        Stop := True;
+                        exit Main;
+                     end if;
+                  end if;
+               else
+                  Since_Improve := Since_Improve + 1;
+               end if;
+            end if;
+         end;
+      end loop Main;
+      if not Best_Saved then
+         Save_Best;
+      end if;
+      W := WT;
+      if Opts.Polish then
+         Load (P, S.all, Best);
+         Cur := Current_Value (P, S.all, W);
+         Polish;
+         if Cur < Best_Value then
+            Best_Value := Cur;
+            Best_Time := To_Duration (Clock - Start);
+            Store (S.all, Best);
+         end if;
+      end if;
+      Load (P, S.all, Best);
+      Elapsed := To_Duration (Clock - Start);
+      Best_Value := True_Value;
+      Cur := Best_Value;
+      Send_Report;
+      Stats := (Best => Best_Value, Current => Cur, Temperature => Temp, Moves => Moves,
+                Accepted => Accepted, Elapsed => Elapsed,
+                Moves_Per_Second => (if Elapsed > 0.0
+                                     then Long_Float (Moves) / Long_Float (Elapsed) else 0.0),
+                Time_To_Best => Best_Time);
+      Free (S);
+   end Solve;
+
+end Sancta.Allocation.Annealers;

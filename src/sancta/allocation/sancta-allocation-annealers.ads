@@ -1,0 +1,95 @@
+--  The simulated annealer. A solution is one tour per robot held in arrays
+--  with prefix sums of forward and reverse arc costs and of arrival times;
+--  every move is described as at most two new tours, each a short list of
+--  segments of the current tours (forward or reversed) and single tasks, so
+--  its exact cost change (length, completion times, infeasibility) is
+--  computed in O(segments) = O(1) without applying it; the makespan comes
+--  from a max segment tree over robot costs (O(log R)).
+--
+--  Moves: relocate / Or-opt (segments of 1..3 tasks, possibly reversed) next
+--  to a candidate neighbour (k nearest), 2-opt within a tour and 2-opt*
+--  between tours, cross-exchange between tours, the old moves (random move,
+--  move to another robot, guided move from the worst robot, swap any, log
+--  auction, switch OR alternative); adaptive move weights; geometric,
+--  cyclic or the old re-heating schedule; budgets by time, iterations and
+--  convergence; a final descent (polish) with the neighbour moves.
+--
+--     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
+--     Solve (P.all, O, Best, Stats);
+with Interfaces;
+with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+
+package Sancta.Allocation.Annealers is
+
+   type Schedule_Kind is (Geometric, Cyclic, Reheat);
+   --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs.
+   --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
+   --  without improvement, back to T0 after a long stretch without a new best.
+
+   type Options is record
+      Criterion    : Allocation.Criterion := Min_Sum;
+      Seed         : Interfaces.Unsigned_64 := 1;
+      Time_Limit   : Duration := 1.0;
+      --  Wall-clock budget; 0.0 = none (then Iterations must be set).
+      Iterations   : Long_Long_Integer := 0;
+      --  Move budget; 0 = none. With only this budget, runs are deterministic.
+      Convergence  : Long_Long_Integer := 0;
+      --  Stop after this many moves without a new best; 0 = never.
+      Schedule     : Schedule_Kind := Geometric;
+      Cycles       : Positive := 3;
+      Start_Temperature : Long_Float := 0.0;
+      End_Temperature   : Long_Float := 0.0;
+      --  0.0 = automatic, from sampled move deltas: T0 = Start_Factor *
+      --  mean uphill delta, T1 = T0 / End_Ratio.
+      Start_Factor : Long_Float := 0.5;
+      End_Ratio    : Long_Float := 2000.0;
+      Neighbours   : Positive := 10;
+      Adaptive     : Boolean := True;
+      Polish       : Boolean := True;
+      Check        : Boolean := False;
+      --  Expensive check: after every applied move, recompute all costs
+      --  from scratch and compare with the incremental ones and with the
+      --  move's predicted costs; Program_Error on any difference.
+      Initial      : Boolean := False;
+      --  Start from Start_From (below) instead of best insertion.
+      Report_Every : Duration := 0.5;
+      Balance      : Long_Float := 0.05;
+      --  Pure makespan only: weight of the total cost in the search
+      --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
+      Balance_Decay : Boolean := False;
+      Target       : Long_Float := 0.0;
+      --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
+   end record;
+
+   type Progress is record
+      Best          : Long_Float := 0.0;
+      Current       : Long_Float := 0.0;
+      Temperature   : Long_Float := 0.0;
+      Moves         : Long_Long_Integer := 0;
+      Accepted      : Long_Long_Integer := 0;
+      Elapsed       : Duration := 0.0;
+      Moves_Per_Second : Long_Float := 0.0;
+      Time_To_Best  : Duration := 0.0;
+   end record;
+
+   type Reporter is access procedure (P : Progress);
+
+   procedure Solve
+     (P      : Problem;
+      Opts   : Options;
+      Best   : in out Assignment;
+      Stats  : out Progress;
+      Report : Reporter := null)
+     with Pre => Best.Robots = P.Robots and then Best.Tasks = P.Tasks
+                 and then Check (P) = "";
+   --  Anneals and returns the best allocation found in Best (read as the
+   --  start when Opts.Initial). Reporter, if given, is called every
+   --  Opts.Report_Every with the progress.
+
+   function Greedy_Start (P : Problem; C : Criterion; Seed : Interfaces.Unsigned_64)
+     return Assignment;
+   --  The annealer's start: tasks in random order, each at its best
+   --  insertion for C (after giving each robot its minimum count).
+
+end Sancta.Allocation.Annealers;

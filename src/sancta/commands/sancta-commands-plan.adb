@@ -1,0 +1,596 @@
+with Ada.Command_Line;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with Interfaces;
+with Sancta.Allocation;             use Sancta.Allocation;
+with Sancta.Allocation.Annealers;
+with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Baselines;
+with Sancta.Allocation.Exact;
+with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+with Sancta.Allocation.TSPLIB;
+with Sancta.Geometry;
+
+package body Sancta.Commands.Plan is
+
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+   package CL renames Ada.Command_Line;
+   package Annealers renames Sancta.Allocation.Annealers;
+
+   Usage_Error : exception;
+
+   procedure Help is
+   begin
+      Put_Line ("usage: sancta plan FILE [options]");
+      Put_Line ("  FILE                 a TSPLIB .tsp/.atsp instance (depot = node 1) or a");
+      Put_Line ("                       SANCTA mission .xml (robots, tasks, OR alternatives)");
+      Put_Line ("options:");
+      Put_Line ("  --robots N           number of robots for TSPLIB files (default 1)");
+      Put_Line ("  --objective NAME     minmax | minsum | minave | minmix | mintim, or");
+      Put_Line ("                       weights MAX,SUM,AVE (default minsum)");
+      Put_Line ("  --time T             wall-clock budget: 10s, 500ms, 2.5 (s); default 10s");
+      Put_Line ("  --iterations N       move budget (with --time 0: deterministic)");
+      Put_Line ("  --converge N         stop after N moves without a new best");
+      Put_Line ("  --seed N             random seed (default 1)");
+      Put_Line ("  --schedule S         geometric | cyclic | reheat (default geometric)");
+      Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
+      Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
+      Put_Line ("  --real SCALE         real Euclidean distances in fixed point, x SCALE");
+      Put_Line ("  --open               open tours (robots do not return)");
+      Put_Line ("  --min-tasks N        each robot visits at least N cities (default 1)");
+      Put_Line ("  --target V           stop as soon as the objective is <= V");
+      Put_Line ("  --balance W          minmax: initial weight of the total cost in the");
+      Put_Line ("                       search objective (default 0.05, 0 = none)");
+      Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
+      Put_Line ("                       end temperature = start / R (2000)");
+      Put_Line ("  --no-polish          skip the final local search");
+      Put_Line ("  --check              expensive self-check after every move (slow)");
+      Put_Line ("  --svg FILE           draw the tours");
+      Put_Line ("  --json FILE|-        write the result as JSON (- = standard output)");
+      Put_Line ("  --quiet              no tours on standard output, no progress line");
+   end Help;
+
+   function Trim (S : String) return String is
+     (Ada.Strings.Fixed.Trim (S, Ada.Strings.Both));
+
+   function Img (X : Long_Long_Integer) return String is (Trim (X'Image));
+   function Img (X : Integer) return String is (Trim (X'Image));
+
+   function Real_Img (X : Long_Float; Decimals : Natural := 2) return String is
+      package F is new Ada.Text_IO.Float_IO (Long_Float);
+      S : String (1 .. 40);
+   begin
+      F.Put (S, X, Aft => Decimals, Exp => 0);
+      return Trim (S);
+   end Real_Img;
+
+   Scale_Factor : Long_Float := 1.0;
+
+   function Cost_Img (C : Cost) return String is
+   begin
+      if Is_Infinite (C) then
+         return "inf";
+      elsif Scale_Factor = 1.0 then
+         return Img (C);
+      else
+         return Real_Img (Long_Float (C) / Scale_Factor, 3);
+      end if;
+   end Cost_Img;
+
+   function Parse_Duration (S : String) return Duration is
+   begin
+      if S'Length > 2 and then S (S'Last - 1 .. S'Last) = "ms" then
+         return Duration (Long_Float'Value (S (S'First .. S'Last - 2)) / 1000.0);
+      elsif S'Length > 1 and then S (S'Last) = 's' then
+         return Duration (Long_Float'Value (S (S'First .. S'Last - 1)));
+      elsif S'Length > 1 and then S (S'Last) = 'm' then
+         return Duration (60.0 * Long_Float'Value (S (S'First .. S'Last - 1)));
+      else
+         return Duration (Long_Float'Value (S));
+      end if;
+   exception
+      when Constraint_Error =>
+         raise Usage_Error with "--time: '" & S & "' is not a duration (e.g. 10s, 500ms)";
+   end Parse_Duration;
+
+   function Parse_Natural (Option, S : String) return Long_Long_Integer is
+   begin
+      return X : constant Long_Long_Integer := Long_Long_Integer'Value (S) do
+         if X < 0 then
+            raise Constraint_Error;
+         end if;
+      end return;
+   exception
+      when Constraint_Error =>
+         raise Usage_Error with Option & ": '" & S & "' is not a non-negative integer";
+   end Parse_Natural;
+
+   function Parse_Criterion (S : String; Name : out Unbounded_String) return Criterion is
+      Found : Boolean;
+      C : constant Criterion := Preset (S, Found);
+   begin
+      Name := To_Unbounded_String (S);
+      if Found then
+         return C;
+      end if;
+      declare
+         C1 : constant Natural := Ada.Strings.Fixed.Index (S, ",");
+         C2 : constant Natural :=
+           (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (S (C1 + 1 .. S'Last), ","));
+      begin
+         if C1 = 0 or else C2 = 0 then
+            raise Usage_Error with "--objective: '" & S
+              & "' is not minmax, minsum, minave, minmix, mintim or MAX,SUM,AVE";
+         end if;
+         return R : constant Criterion :=
+           (Long_Float'Value (S (S'First .. C1 - 1)), Long_Float'Value (S (C1 + 1 .. C2 - 1)),
+            Long_Float'Value (S (C2 + 1 .. S'Last)))
+         do
+            if R.Max_Weight < 0.0 or else R.Sum_Weight < 0.0 or else R.Ave_Weight < 0.0
+              or else R.Max_Weight + R.Sum_Weight + R.Ave_Weight = 0.0
+            then
+               raise Usage_Error with "--objective: weights must be >= 0, not all 0";
+            end if;
+         end return;
+      exception
+         when Constraint_Error =>
+            raise Usage_Error with "--objective: bad weights '" & S & "'";
+      end;
+   end Parse_Criterion;
+
+   --  Progress line on standard error.
+   Quiet : Boolean := False;
+   Has_Progress : Boolean := False;
+
+   procedure Show (Pr : Annealers.Progress) is
+   begin
+      if not Quiet then
+         Put (Standard_Error, ASCII.CR & "plan: " & Real_Img (Long_Float (Pr.Elapsed), 1)
+              & " s  best " & Real_Img (Pr.Best / Scale_Factor, 2)
+              & "  " & Real_Img (Pr.Moves_Per_Second / 1.0E6, 2) & " M moves/s"
+              & "  T " & Real_Img (Pr.Temperature / Scale_Factor, 4) & "   ");
+         Flush (Standard_Error);
+         Has_Progress := True;
+      end if;
+   end Show;
+
+   --  Parallel restarts: one task per run.
+   type Run_Result (R, T : Positive) is record
+      A : Assignment (R, T);
+      Stats : Annealers.Progress;
+      Error : Unbounded_String;
+   end record;
+   type Result_Access is access Run_Result;
+
+   task type Runner is
+      entry Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access;
+                   Report : Boolean);
+      entry Wait;
+   end Runner;
+
+   task body Runner is
+      PA : Problem_Access;
+      Opts : Annealers.Options;
+      Res : Result_Access;
+      Rep : Boolean;
+   begin
+      accept Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access;
+                    Report : Boolean) do
+         PA := P;
+         Opts := O;
+         Res := Out_Result;
+         Rep := Report;
+      end Start;
+      begin
+         Annealers.Solve (PA.all, Opts, Res.A, Res.Stats,
+                          (if Rep then Show'Access else null));
+      exception
+         when E : others =>
+            Res.Error := To_Unbounded_String (Ada.Exceptions.Exception_Message (E));
+      end;
+      accept Wait;
+   end Runner;
+
+   procedure Write_SVG (File : String; P : Problem; A : Assignment) is
+      use Sancta.Geometry;
+      F : File_Type;
+      Min_X, Min_Y : Real := Real'Last;
+      Max_X, Max_Y : Real := Real'First;
+      Size : constant Real := 800.0;
+      Colours : constant array (0 .. 9) of String (1 .. 7) :=
+        ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4",
+         "#42d4f4", "#f032e6", "#9a6324", "#808000", "#000075"];
+
+      function SX (X : Real) return String is
+        (Real_Img (Long_Float (20.0 + (X - Min_X) / Real'Max (1.0E-9, Max_X - Min_X) * Size), 1));
+      function SY (Y : Real) return String is
+        (Real_Img (Long_Float (20.0 + Size - (Y - Min_Y) / Real'Max (1.0E-9, Max_Y - Min_Y)
+                               * Size), 1));
+      function Pt (L : Natural) return String is
+        (SX (P.Coordinates (L).X) & "," & SY (P.Coordinates (L).Y));
+   begin
+      if not P.Has_Coordinates then
+         raise Usage_Error with "--svg: the instance has no coordinates";
+      end if;
+      for L in 1 .. P.Locations loop
+         Min_X := Real'Min (Min_X, P.Coordinates (L).X);
+         Max_X := Real'Max (Max_X, P.Coordinates (L).X);
+         Min_Y := Real'Min (Min_Y, P.Coordinates (L).Y);
+         Max_Y := Real'Max (Max_Y, P.Coordinates (L).Y);
+      end loop;
+      Create (F, Out_File, File);
+      Put_Line (F, "<svg xmlns=""http://www.w3.org/2000/svg"" width=""840"" height=""840"">");
+      Put_Line (F, "<rect width=""100%"" height=""100%"" fill=""white""/>");
+      for R in 1 .. P.Robots loop
+         Put (F, "<polyline fill=""none"" stroke-width=""2"" stroke="""
+              & Colours ((R - 1) mod 10) & """ points=""" & Pt (P.Start (R)));
+         for K in 1 .. A.Length (R) loop
+            Put (F, " " & Pt (Location_Of (P, A.Tour (R, K), A.Choice (A.Tour (R, K)))));
+         end loop;
+         if Is_Closed (P, R) then
+            Put (F, " " & Pt (P.Finish (R)));
+         end if;
+         Put_Line (F, """/>");
+      end loop;
+      for L in 1 .. P.Locations loop
+         Put_Line (F, "<circle r=""3"" fill=""black"" cx=""" & SX (P.Coordinates (L).X)
+                   & """ cy=""" & SY (P.Coordinates (L).Y) & """/>");
+      end loop;
+      for R in 1 .. P.Robots loop
+         Put_Line (F, "<rect width=""10"" height=""10"" fill=""black"" x="""
+                   & Real_Img (Long_Float'Value (SX (P.Coordinates (P.Start (R)).X)) - 5.0, 1)
+                   & """ y="""
+                   & Real_Img (Long_Float'Value (SY (P.Coordinates (P.Start (R)).Y)) - 5.0, 1)
+                   & """/>");
+      end loop;
+      Put_Line (F, "</svg>");
+      Close (F);
+   end Write_SVG;
+
+   procedure Run (First_Argument : Positive := 2) is
+      File       : Unbounded_String;
+      Robots     : Positive := 1;
+      Crit_Name  : Unbounded_String := To_Unbounded_String ("minsum");
+      Crit       : Criterion := Min_Sum;
+      Opts       : Annealers.Options;
+      Restarts   : Positive := 1;
+      Solver     : Unbounded_String := To_Unbounded_String ("anneal");
+      Real_Scale : Long_Float := 0.0;
+      Open_Tours : Boolean := False;
+      Min_Tasks  : Natural := 1;
+      SVG, JSON  : Unbounded_String;
+      I          : Natural := First_Argument;
+      Time_Set   : Boolean := False;
+
+      function Value_Of (Option : String) return String is
+      begin
+         if I + 1 > CL.Argument_Count then
+            raise Usage_Error with Option & " needs a value";
+         end if;
+         I := I + 1;
+         return CL.Argument (I);
+      end Value_Of;
+   begin
+      Opts.Time_Limit := 10.0;
+      while I <= CL.Argument_Count loop
+         declare
+            A : constant String := CL.Argument (I);
+         begin
+            if A = "--help" or else A = "-h" then
+               Help;
+               return;
+            elsif A = "--robots" then
+               declare
+                  N : constant Long_Long_Integer := Parse_Natural (A, Value_Of (A));
+               begin
+                  if N < 1 or else N > 1000 then
+                     raise Usage_Error with "--robots: must be 1 .. 1000";
+                  end if;
+                  Robots := Positive (N);
+               end;
+            elsif A = "--objective" then
+               Crit := Parse_Criterion (Value_Of (A), Crit_Name);
+            elsif A = "--time" then
+               Opts.Time_Limit := Parse_Duration (Value_Of (A));
+               Time_Set := True;
+               if Opts.Time_Limit < 0.0 then
+                  raise Usage_Error with "--time: must not be negative";
+               end if;
+            elsif A = "--iterations" then
+               Opts.Iterations := Parse_Natural (A, Value_Of (A));
+               if not Time_Set then
+                  Opts.Time_Limit := 0.0;
+               end if;
+            elsif A = "--converge" then
+               Opts.Convergence := Parse_Natural (A, Value_Of (A));
+            elsif A = "--seed" then
+               Opts.Seed := Interfaces.Unsigned_64 (Parse_Natural (A, Value_Of (A)));
+            elsif A = "--schedule" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  if S = "geometric" then
+                     Opts.Schedule := Annealers.Geometric;
+                  elsif S = "cyclic" then
+                     Opts.Schedule := Annealers.Cyclic;
+                  elsif S = "reheat" then
+                     Opts.Schedule := Annealers.Reheat;
+                  else
+                     raise Usage_Error with "--schedule: '" & S
+                       & "' is not geometric, cyclic or reheat";
+                  end if;
+               end;
+            elsif A = "--restarts" then
+               declare
+                  N : constant Long_Long_Integer := Parse_Natural (A, Value_Of (A));
+               begin
+                  if N < 1 or else N > 64 then
+                     raise Usage_Error with "--restarts: must be 1 .. 64";
+                  end if;
+                  Restarts := Positive (N);
+               end;
+            elsif A = "--solver" then
+               Solver := To_Unbounded_String (Value_Of (A));
+               if To_String (Solver) not in "anneal" | "greedy" | "makespan" | "auction" | "exact"
+               then
+                  raise Usage_Error with "--solver: '" & To_String (Solver)
+                    & "' is not anneal, greedy, makespan, auction or exact";
+               end if;
+            elsif A = "--real" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Real_Scale := Long_Float'Value (S);
+                  if Real_Scale <= 0.0 or else Real_Scale > 1.0E6 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--real: '" & S & "' is not a scale in (0, 1e6]";
+               end;
+            elsif A = "--open" then
+               Open_Tours := True;
+            elsif A = "--min-tasks" then
+               Min_Tasks := Natural (Long_Long_Integer'Min (1000, Parse_Natural (A, Value_Of (A))));
+            elsif A = "--target" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Target := Long_Float'Value (S);
+                  if Opts.Target <= 0.0 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--target: '" & S & "' is not a positive value";
+               end;
+            elsif A = "--balance" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Balance := Long_Float'Value (S);
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--balance: '" & S & "' is not a number";
+               end;
+            elsif A = "--t0" or else A = "--cool" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  if A = "--t0" then
+                     Opts.Start_Factor := Long_Float'Value (S);
+                  else
+                     Opts.End_Ratio := Long_Float'Value (S);
+                  end if;
+                  if Opts.Start_Factor <= 0.0 or else Opts.End_Ratio < 1.0 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with A & ": '" & S & "' is not a valid factor";
+               end;
+            elsif A = "--no-polish" then
+               Opts.Polish := False;
+            elsif A = "--check" then
+               Opts.Check := True;
+            elsif A = "--quiet" then
+               Quiet := True;
+            elsif A = "--svg" then
+               SVG := To_Unbounded_String (Value_Of (A));
+            elsif A = "--json" then
+               JSON := To_Unbounded_String (Value_Of (A));
+            elsif A'Length > 0 and then A (A'First) = '-' and then A /= "-" then
+               raise Usage_Error with "unknown option '" & A & "' (see sancta plan --help)";
+            elsif File = "" then
+               File := To_Unbounded_String (A);
+            else
+               raise Usage_Error with "more than one FILE ('" & To_String (File) & "', '"
+                 & A & "')";
+            end if;
+         end;
+         I := I + 1;
+      end loop;
+      if File = "" then
+         raise Usage_Error with "no FILE given (see sancta plan --help)";
+      end if;
+      Opts.Criterion := Crit;
+
+      declare
+         Name : constant String := To_String (File);
+         Is_XML : constant Boolean :=
+           Name'Length > 4 and then Name (Name'Last - 3 .. Name'Last) = ".xml";
+         P : constant Problem_Access :=
+           (if Is_XML then Sancta.Allocation.Missions.Read (Name, Real_Scale)
+            else TSPLIB.To_MTSP (TSPLIB.Read (Name, Real_Scale).all, Robots,
+                                 Min_Tasks => Min_Tasks));
+         Result : Assignment (P.Robots, P.Tasks);
+         Stats : Annealers.Progress;
+      begin
+         Scale_Factor := P.Scale;
+         Opts.Target := Opts.Target * Scale_Factor;
+         if Open_Tours then
+            for R in 1 .. P.Robots loop
+               Set_Robot (P.all, R, P.Start (R), Closed => False,
+                          Multiplier => P.Multiplier (R));
+            end loop;
+         end if;
+         if Check (P.all) /= "" then
+            raise Usage_Error with Name & ": " & Check (P.all);
+         end if;
+         declare
+            S : constant String := To_String (Solver);
+         begin
+            if S = "anneal" and then Restarts = 1 then
+               Annealers.Solve (P.all, Opts, Result, Stats, Show'Access);
+            elsif S = "anneal" then
+               declare
+                  Runners : array (1 .. Restarts) of Runner;
+                  Results : array (1 .. Restarts) of Result_Access;
+                  Best_V  : Long_Float := Long_Float'Last;
+                  use type Interfaces.Unsigned_64;
+               begin
+                  for K in 1 .. Restarts loop
+                     Results (K) := new Run_Result (P.Robots, P.Tasks);
+                     declare
+                        O : Annealers.Options := Opts;
+                     begin
+                        O.Seed := Opts.Seed + Interfaces.Unsigned_64 (K - 1) * 7919;
+                        Runners (K).Start (P, O, Results (K), K = 1);
+                     end;
+                  end loop;
+                  for K in 1 .. Restarts loop
+                     Runners (K).Wait;
+                     if Results (K).Error /= "" then
+                        raise Program_Error with To_String (Results (K).Error);
+                     end if;
+                     if Results (K).Stats.Best < Best_V then
+                        Best_V := Results (K).Stats.Best;
+                        Result := Results (K).A;
+                        Stats := Results (K).Stats;
+                     end if;
+                  end loop;
+                  Stats.Moves := 0;
+                  for K in 1 .. Restarts loop
+                     Stats.Moves := Stats.Moves + Results (K).Stats.Moves;
+                  end loop;
+               end;
+            elsif S = "exact" then
+               if not Sancta.Allocation.Exact.Is_Pure (Crit) then
+                  raise Usage_Error with "--solver exact: needs a pure criterion "
+                    & "(minmax, minsum or minave)";
+               end if;
+               Result := Sancta.Allocation.Exact.Solve (P.all, Crit);
+            else
+               Result := Sancta.Allocation.Baselines.Solve
+                 (P.all, (if S = "greedy" then Sancta.Allocation.Baselines.Best_Pair
+                          elsif S = "makespan" then Sancta.Allocation.Baselines.Min_Makespan
+                          else Sancta.Allocation.Baselines.Auction), Crit);
+            end if;
+         end;
+         if Has_Progress then
+            New_Line (Standard_Error);
+         end if;
+
+         declare
+            E : constant Evaluation := Evaluate (P.all, Result, Crit);
+            V : constant String := Validate (P.all, Result);
+            Ave : constant Long_Float :=
+              Long_Float (E.Completion_Sum) / Long_Float (P.Tasks) / Scale_Factor;
+
+            function Tour_Text (R : Positive; Sep : String) return String is
+               T : Unbounded_String := To_Unbounded_String (Img (P.Start (R)));
+            begin
+               for K in 1 .. Result.Length (R) loop
+                  Append (T, Sep & Img (Location_Of (P.all, Result.Tour (R, K),
+                                                     Result.Choice (Result.Tour (R, K)))));
+               end loop;
+               if Is_Closed (P.all, R) then
+                  Append (T, Sep & Img (P.Finish (R)));
+               end if;
+               return To_String (T);
+            end Tour_Text;
+         begin
+            if V /= "" then
+               Put_Line (Standard_Error, "sancta plan: warning: allocation not valid: " & V);
+            end if;
+            if not Quiet then
+               for R in 1 .. P.Robots loop
+                  Put_Line ("robot " & Img (R) & "  cost " & Cost_Img (E.Robot_Cost (R))
+                            & "  tasks " & Img (Result.Length (R)) & "  tour "
+                            & Tour_Text (R, " "));
+               end loop;
+               Put_Line ("objective " & To_String (Crit_Name) & " = "
+                         & Real_Img (E.Value / Scale_Factor, 3)
+                         & "  makespan " & Cost_Img (E.Max) & "  total " & Cost_Img (E.Sum)
+                         & "  mean completion " & Real_Img (Ave, 2));
+               if To_String (Solver) = "anneal" then
+                  Put_Line ("moves " & Img (Stats.Moves) & "  ("
+                            & Real_Img (Stats.Moves_Per_Second / 1.0E6, 2)
+                            & " M/s)  time " & Real_Img (Long_Float (Stats.Elapsed), 2)
+                            & " s  best found at " & Real_Img (Long_Float (Stats.Time_To_Best), 2)
+                            & " s");
+               end if;
+            end if;
+            if SVG /= "" then
+               Write_SVG (To_String (SVG), P.all, Result);
+            end if;
+            if JSON /= "" then
+               declare
+                  J : Unbounded_String;
+               begin
+                  Append (J, "{""instance"": """ & Trim (P.Name) & """, ""file"": """ & Name
+                          & """, ""solver"": """ & To_String (Solver)
+                          & """, ""criterion"": """ & To_String (Crit_Name)
+                          & """, ""weights"": [" & Real_Img (Crit.Max_Weight, 6) & ", "
+                          & Real_Img (Crit.Sum_Weight, 6) & ", " & Real_Img (Crit.Ave_Weight, 6)
+                          & "], ""seed"": " & Trim (Opts.Seed'Image)
+                          & ", ""robots"": " & Img (P.Robots) & ", ""tasks"": " & Img (P.Tasks)
+                          & ", ""objective"": " & Real_Img (E.Value / Scale_Factor, 4)
+                          & ", ""makespan"": " & Cost_Img (E.Max)
+                          & ", ""total"": " & Cost_Img (E.Sum)
+                          & ", ""mean_completion"": " & Real_Img (Ave, 4)
+                          & ", ""valid"": " & (if V = "" then "true" else "false")
+                          & ", ""time_used"": " & Real_Img (Long_Float (Stats.Elapsed), 3)
+                          & ", ""time_to_best"": " & Real_Img (Long_Float (Stats.Time_To_Best), 3)
+                          & ", ""moves"": " & Img (Stats.Moves)
+                          & ", ""moves_per_second"": " & Real_Img (Stats.Moves_Per_Second, 0)
+                          & ", ""tours"": [");
+                  for R in 1 .. P.Robots loop
+                     Append (J, (if R > 1 then ", " else "") & "{""robot"": " & Img (R)
+                             & ", ""cost"": " & Cost_Img (E.Robot_Cost (R))
+                             & ", ""tour"": [" & Tour_Text (R, ", ") & "]}");
+                  end loop;
+                  Append (J, "]}");
+                  if To_String (JSON) = "-" then
+                     Put_Line (To_String (J));
+                  else
+                     declare
+                        F : File_Type;
+                     begin
+                        Create (F, Out_File, To_String (JSON));
+                        Put_Line (F, To_String (J));
+                        Close (F);
+                     end;
+                  end if;
+               end;
+            end if;
+         end;
+      end;
+   exception
+      when E : Usage_Error =>
+         Put_Line (Standard_Error, "sancta plan: " & Ada.Exceptions.Exception_Message (E));
+         CL.Set_Exit_Status (CL.Failure);
+      when E : Format_Error | Sancta.Configuration_Error =>
+         Put_Line (Standard_Error, "sancta plan: " & Ada.Exceptions.Exception_Message (E));
+         CL.Set_Exit_Status (CL.Failure);
+      when E : Ada.Text_IO.Name_Error | Ada.Text_IO.Use_Error =>
+         Put_Line (Standard_Error, "sancta plan: cannot write: "
+                   & Ada.Exceptions.Exception_Message (E));
+         CL.Set_Exit_Status (CL.Failure);
+   end Run;
+
+end Sancta.Commands.Plan;

@@ -1,0 +1,522 @@
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with AUnit.Assertions;        use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with Interfaces;
+with Sancta.Allocation.Annealers;
+with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Baselines;
+with Sancta.Allocation.Exact;
+with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+with Sancta.Allocation.Random;
+with Sancta.Allocation.TSPLIB;
+with Sancta.Geometry;
+
+package body Sancta.Allocation.Tests is
+
+   use type Interfaces.Unsigned_64;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   Data : constant String := "share/tsplib/";
+
+   type Variant is record
+      Closed       : Boolean := True;
+      Asymmetric   : Boolean := False;
+      Heterogeneous : Boolean := False;
+      Infeasible   : Boolean := False;
+      Alternatives : Boolean := False;
+      Frozen       : Boolean := False;
+      Min_Tasks    : Natural := 0;
+   end record;
+
+   --  A random problem: robots start at their own locations, tasks at
+   --  random points (optionally with a second alternative location).
+   function Random_Problem
+     (Tasks, Robots : Positive; V : Variant; Seed : Interfaces.Unsigned_64)
+      return Problem_Access
+   is
+      G : Random.Generator := Random.Seeded (Seed);
+      N_Alt : constant Positive := (if V.Alternatives then 2 * Tasks else Tasks);
+      L : constant Positive := Robots + N_Alt;
+      P : constant Problem_Access := Create (L, Tasks, Robots, N_Alt);
+      Pts : Point_Array (1 .. L);
+   begin
+      for I in Pts'Range loop
+         Pts (I) := (Sancta.Geometry.Real (Random.Below (G, 1000)),
+                     Sancta.Geometry.Real (Random.Below (G, 1000)));
+      end loop;
+      Set_Euclidean (P.all, Pts, 1.0);
+      if V.Asymmetric then
+         for A in 1 .. L loop
+            for B in 1 .. L loop
+               if A /= B then
+                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 300)));
+               end if;
+            end loop;
+         end loop;
+         Update_Symmetry (P.all);
+      end if;
+      for R in 1 .. Robots loop
+         Set_Robot (P.all, R, R, V.Closed,
+                    Multiplier => (if V.Heterogeneous then 1 + (R - 1) mod 3 else 1));
+      end loop;
+      for T in 1 .. Tasks loop
+         if V.Alternatives and then T mod 2 = 0 then
+            Set_Task_Alternatives (P.all, T, [Robots + 2 * T - 1, Robots + 2 * T]);
+         elsif V.Alternatives then
+            Set_Task_Alternatives (P.all, T, [1 => Robots + 2 * T - 1]);
+         else
+            Set_Task (P.all, T, Robots + T);
+         end if;
+      end loop;
+      if V.Infeasible then
+         for T in 1 .. Tasks loop
+            if T mod 3 = 0 then
+               Forbid (P.all, 1 + T mod Robots, T);
+            end if;
+         end loop;
+      end if;
+      if V.Frozen then
+         Freeze (P.all, 1, [1 => 1]);
+         if Robots > 1 and then Tasks > 3 then
+            Freeze (P.all, 2, [2, 4]);
+         end if;
+      end if;
+      P.Min_Tasks := V.Min_Tasks;
+      return P;
+   end Random_Problem;
+
+   function Img (X : Long_Float) return String is (X'Image);
+
+   type Criterion_Array is array (Positive range <>) of Criterion;
+   Pure_Criteria : constant Criterion_Array := [Min_Sum, Min_Max, Min_Ave];
+
+   ---------------------------------------------------------------------------
+
+   procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
+      Criteria : constant Criterion_Array :=
+        [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
+      Variants : constant array (1 .. 8) of Variant :=
+        [Variant'(others => <>),
+         (Closed => False, others => <>),
+         (Asymmetric => True, others => <>),
+         (Heterogeneous => True, Closed => False, others => <>),
+         (Infeasible => True, others => <>),
+         (Alternatives => True, others => <>),
+         (Frozen => True, Min_Tasks => 1, others => <>),
+         (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
+          Alternatives => True, Frozen => True, Min_Tasks => 1)];
+      Seed : Interfaces.Unsigned_64 := 100;
+   begin
+      for V of Variants loop
+         for C of Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Random_Problem (18, 3, V, Seed);
+               A : Assignment (P.Robots, P.Tasks);
+               S : Annealers.Progress;
+               O : Annealers.Options;
+            begin
+               --  A near random walk (huge temperature) so most moves apply,
+               --  with the expensive check after each.
+               O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 3_000,
+                     Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+                     Polish => False, Adaptive => False, others => <>);
+               Annealers.Solve (P.all, O, A, S);
+               Assert (S.Accepted > 1_000, "too few moves applied:" & S.Accepted'Image);
+               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
+               --  Then a real annealing run, still checked.
+               O.Start_Temperature := 0.0;
+               O.End_Temperature := 0.0;
+               O.Polish := True;
+               Annealers.Solve (P.all, O, A, S);
+               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
+               Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6,
+                       "reported best" & Img (S.Best) & " /= recomputed"
+                       & Img (Evaluate (P.all, A, C).Value));
+            end;
+         end loop;
+      end loop;
+   end Incremental_Equals_Recomputed;
+
+   ---------------------------------------------------------------------------
+   --  Brute force: every order of the tasks cut into robot tours, every
+   --  choice of alternatives.
+
+   function Brute_Force (P : Problem; C : Criterion) return Long_Float is
+      N : constant Positive := P.Tasks;
+      Perm : Location_Array (1 .. N);
+      Used : Boolean_Array (1 .. N) := [others => False];
+      Best : Long_Float := Long_Float'Last;
+      A : Assignment (P.Robots, P.Tasks);
+
+      procedure Try_Cuts (Robot : Positive; From : Positive) is
+      begin
+         if Robot = P.Robots then
+            A.Length (Robot) := 0;
+            for K in From .. N loop
+               Append (A, Robot, Perm (K));
+            end loop;
+            if Validate (P, A) = "" then
+               Best := Long_Float'Min (Best, Evaluate (P, A, C).Value);
+            end if;
+            return;
+         end if;
+         for Last in From - 1 .. N loop
+            A.Length (Robot) := 0;
+            for K in From .. Last loop
+               Append (A, Robot, Perm (K));
+            end loop;
+            Try_Cuts (Robot + 1, Last + 1);
+         end loop;
+      end Try_Cuts;
+
+      procedure Try_Choices (T : Positive) is
+      begin
+         if T > N then
+            Try_Cuts (1, 1);
+            return;
+         end if;
+         for Ch in 1 .. P.Alt_Count (T) loop
+            A.Choice (T) := Ch;
+            Try_Choices (T + 1);
+         end loop;
+      end Try_Choices;
+
+      procedure Permute (K : Positive) is
+      begin
+         if K > N then
+            Try_Choices (1);
+            return;
+         end if;
+         for T in 1 .. N loop
+            if not Used (T) then
+               Used (T) := True;
+               Perm (K) := T;
+               Permute (K + 1);
+               Used (T) := False;
+            end if;
+         end loop;
+      end Permute;
+   begin
+      Permute (1);
+      return Best;
+   end Brute_Force;
+
+   procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
+      Variants : constant array (1 .. 4) of Variant :=
+        [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
+         (Alternatives => True, Heterogeneous => True, others => <>),
+         (Infeasible => True, Min_Tasks => 1, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 500;
+   begin
+      for V of Variants loop
+         for C of Pure_Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Random_Problem (5, 2, V, Seed);
+               A : constant Assignment := Exact.Solve (P.all, C);
+               B : constant Long_Float := Brute_Force (P.all, C);
+            begin
+               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
+               Assert (Evaluate (P.all, A, C).Value = B,
+                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force" & Img (B));
+            end;
+         end loop;
+      end loop;
+   end Exact_Equals_Brute_Force;
+
+   procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
+      Variants : constant array (1 .. 4) of Variant :=
+        [Variant'(others => <>), (Closed => False, Heterogeneous => True, others => <>),
+         (Asymmetric => True, Infeasible => True, Min_Tasks => 1, others => <>),
+         (Alternatives => True, Frozen => True, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 900;
+   begin
+      for V of Variants loop
+         for C of Pure_Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Random_Problem (9, 3, V, Seed);
+               E : constant Assignment := Exact.Solve (P.all, C);
+               Opt : constant Long_Float := Evaluate (P.all, E, C).Value;
+               A : Assignment (P.Robots, P.Tasks);
+               S : Annealers.Progress;
+            begin
+               Annealers.Solve (P.all, (Criterion => C, Seed => Seed, Time_Limit => 0.0,
+                                        Iterations => 40_000, others => <>), A, S);
+               Assert (Validate (P.all, A) = "", "annealer invalid: " & Validate (P.all, A));
+               if Evaluate (P.all, A, C).Value /= Opt then
+                  for R in 1 .. P.Robots loop
+                     Ada.Text_IO.Put ("mismatch: robot" & R'Image & " A:");
+                     for K in 1 .. A.Length (R) loop
+                        Ada.Text_IO.Put (A.Tour (R, K)'Image);
+                     end loop;
+                     Ada.Text_IO.Put (" cost" & Tour_Cost (P.all, A, R)'Image & "  E:");
+                     for K in 1 .. E.Length (R) loop
+                        Ada.Text_IO.Put (E.Tour (R, K)'Image);
+                     end loop;
+                     Ada.Text_IO.Put_Line (" cost" & Tour_Cost (P.all, E, R)'Image);
+                  end loop;
+               end if;
+               Assert (Evaluate (P.all, A, C).Value = Opt,
+                       "annealer" & Img (Evaluate (P.all, A, C).Value) & " /= optimum"
+                       & Img (Opt) & " (seed" & Seed'Image & ")");
+               for M in Baselines.Method loop
+                  declare
+                     B : constant Assignment := Baselines.Solve (P.all, M, C);
+                  begin
+                     Assert (Validate (P.all, B) = "", M'Image & " invalid: "
+                             & Validate (P.all, B));
+                     Assert (Evaluate (P.all, B, C).Value >= Opt,
+                             M'Image & " better than the optimum");
+                  end;
+               end loop;
+            end;
+         end loop;
+      end loop;
+   end Annealer_Reaches_Optimum;
+
+   procedure Baselines_Valid_On_Larger (Unused : in out Fixture) is
+      P : constant Problem_Access :=
+        Random_Problem (60, 5, (Infeasible => True, Frozen => True, Min_Tasks => 2,
+                                Closed => False, others => <>), 77);
+   begin
+      for M in Baselines.Method loop
+         declare
+            B : constant Assignment := Baselines.Solve (P.all, M, Min_Max);
+         begin
+            Assert (Validate (P.all, B) = "", M'Image & " invalid: " & Validate (P.all, B));
+         end;
+      end loop;
+   end Baselines_Valid_On_Larger;
+
+   procedure Deterministic (Unused : in out Fixture) is
+      P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil51.tsp").all, 3);
+      O : constant Annealers.Options :=
+        (Criterion => Min_Max, Seed => 42, Time_Limit => 0.0, Iterations => 10_000,
+         others => <>);
+      A, B : Assignment (P.Robots, P.Tasks);
+      S : Annealers.Progress;
+   begin
+      Annealers.Solve (P.all, O, A, S);
+      Annealers.Solve (P.all, O, B, S);
+      Assert (A = B, "two runs with the same seed differ");
+      Assert (Validate (P.all, A) = "", Validate (P.all, A));
+   end Deterministic;
+
+   ---------------------------------------------------------------------------
+
+   procedure Optimal_Tours (Unused : in out Fixture) is
+      type Case_Info is record
+         Name : String (1 .. 8);
+         Opt  : Cost;
+      end record;
+      Cases : constant array (1 .. 5) of Case_Info :=
+        [Case_Info'("eil51   ", 426), ("berlin52", 7542), ("eil76   ", 538), ("kroA100 ", 21282),
+         ("eil101  ", 629)];
+   begin
+      for C of Cases loop
+         declare
+            N : constant String := Ada.Strings.Fixed.Trim (C.Name, Ada.Strings.Right);
+            P : constant Problem_Access := TSPLIB.Read (Data & N & ".tsp");
+            T : constant Location_Array := TSPLIB.Read_Tour (Data & N & ".opt.tour");
+         begin
+            Assert (T'Length = P.Locations, N & ": tour length /= dimension");
+            Assert (TSPLIB.Tour_Length (P.all, T) = C.Opt,
+                    N & ":" & TSPLIB.Tour_Length (P.all, T)'Image & " /=" & C.Opt'Image);
+         end;
+      end loop;
+      --  ATSP explicit full matrix.
+      declare
+         P : constant Problem_Access := TSPLIB.Read (Data & "br17.atsp");
+      begin
+         Assert (P.Locations = 17, "br17 dimension");
+         Assert (P.Distance (1, 2) = 3 and then P.Distance (4, 1) = 48, "br17 matrix");
+      end;
+   end Optimal_Tours;
+
+   procedure Write (Name, Text : String) is
+      F : Ada.Text_IO.File_Type;
+   begin
+      Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, Name);
+      Ada.Text_IO.Put (F, Text);
+      Ada.Text_IO.Close (F);
+   end Write;
+
+   NL : constant String := [ASCII.LF];
+
+   procedure Explicit_Formats (Unused : in out Fixture) is
+      --  The symmetric matrix d(i,j) = 10 i + 10 j for i /= j, 4 nodes.
+      function Header (F : String) return String is
+        ("NAME: t" & NL & "TYPE: TSP" & NL & "DIMENSION: 4" & NL
+         & "EDGE_WEIGHT_TYPE: EXPLICIT" & NL & "EDGE_WEIGHT_FORMAT: " & F & NL
+         & "EDGE_WEIGHT_SECTION" & NL);
+      type Body_Info is record
+         Format : String (1 .. 14);
+         Values : String (1 .. 48);
+      end record;
+      Cases : constant array (1 .. 5) of Body_Info :=
+        [Body_Info'("FULL_MATRIX   ", "0 30 40 50 30 0 50 60 40 50 0 70 50 60 70       "),
+         ("UPPER_ROW     ", "30 40 50 50 60 70                               "),
+         ("LOWER_ROW     ", "30 40 50 50 60 70                               "),
+         ("UPPER_DIAG_ROW", "0 30 40 50 0 50 60 0 70 0                       "),
+         ("LOWER_DIAG_ROW", "0 30 0 40 50 0 50 60 70 0                       ")];
+      File : constant String := "obj/alloc-test-explicit.tsp";
+   begin
+      for C of Cases loop
+         declare
+            F : constant String := Ada.Strings.Fixed.Trim (C.Format, Ada.Strings.Right);
+            Extra : constant String := (if F = "FULL_MATRIX" then " 0" else "");
+         begin
+            Write (File, Header (F) & C.Values & Extra & NL & "EOF" & NL);
+            declare
+               P : constant Problem_Access := TSPLIB.Read (File);
+            begin
+               for I in 1 .. 4 loop
+                  for J in 1 .. 4 loop
+                     Assert (P.Distance (I, J) = (if I = J then 0 else Cost (10 * (I + J))),
+                             F & ": d (" & I'Image & "," & J'Image & ") ="
+                             & P.Distance (I, J)'Image);
+                  end loop;
+               end loop;
+            end;
+         end;
+      end loop;
+   end Explicit_Formats;
+
+   procedure Expect_Error (File, Text, Expect : String) is
+   begin
+      Write (File, Text);
+      declare
+         P : constant Problem_Access := TSPLIB.Read (File);
+         pragma Unreferenced (P);
+      begin
+         Assert (False, "no error for " & Expect);
+      end;
+   exception
+      when E : Format_Error =>
+         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
+                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
+                 & Expect & "'");
+   end Expect_Error;
+
+   procedure Bad_Files (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-bad.tsp";
+   begin
+      Expect_Error (F, "NAME: x" & NL & "DIMENSION: 3" & NL & "EDGE_WEIGHT_TYPE: EUC_2D" & NL
+                    & "NODE_COORD_SECTION" & NL & "1 0 0" & NL & "2 1 x" & NL,
+                    F & ":6: expected a number for y");
+      Expect_Error (F, "NAME: x" & NL & "DIMENSION: 3" & NL & "EDGE_WEIGHT_TYPE: EUC_2D" & NL
+                    & "NODE_COORD_SECTION" & NL & "1 0 0" & NL & "2 1 1" & NL,
+                    "end of file");
+      Expect_Error (F, "DIMENSION: 3" & NL & "BOGUS: 1" & NL, F & ":2: unknown keyword");
+      Expect_Error (F, "DIMENSION: 3" & NL & "EDGE_WEIGHT_TYPE: EUC_2D" & NL
+                    & "NODE_COORD_SECTION" & NL & "1 0 0" & NL & "7 1 1" & NL
+                    & "3 1 1" & NL,
+                    F & ":5: node number 7 outside");
+      if Ada.Directories.Exists ("obj/no-such-file.tsp") then
+         Ada.Directories.Delete_File ("obj/no-such-file.tsp");
+      end if;
+      begin
+         declare
+            P : constant Problem_Access := TSPLIB.Read ("obj/no-such-file.tsp");
+            pragma Unreferenced (P);
+         begin
+            Assert (False, "no error for a missing file");
+         end;
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Exceptions.Exception_Message (E) = "obj/no-such-file.tsp:1: no such file",
+                    Ada.Exceptions.Exception_Message (E));
+      end;
+   exception
+      when Ada.Text_IO.Use_Error | Ada.Text_IO.Name_Error =>
+         null;
+   end Bad_Files;
+
+   procedure Mission_File (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-mission.xml";
+   begin
+      Write (F, "<?xml version=""1.0""?>" & NL
+             & "<mission scale=""10"">" & NL
+             & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL
+             & "  <robot id=""ben"" x=""10"" y=""0"" return=""false"" cost=""2""/>" & NL
+             & "  <task id=""t1"" x=""1"" y=""0""/>" & NL
+             & "  <task id=""t2"" x=""9"" y=""0"" robots=""ben""/>" & NL
+             & "  <or id=""door""><at x=""100"" y=""100""/><at x=""2"" y=""0""/></or>" & NL
+             & "  <done robot=""ari"" tasks=""t1""/>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Assert (P.Robots = 2 and then P.Tasks = 3, "sizes");
+         Assert (P.Alt_Count (3) = 2 and then not P.Can_Do (1, 2), "OR node / restriction");
+         Assert (P.Frozen_Length (1) = 1 and then P.Frozen (1, 1) = 1, "frozen prefix");
+         Assert (P.Distance (1, 3) = 10, "scaled distance:" & P.Distance (1, 3)'Image);
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal on the mission");
+         Assert (A.Choice (3) = 2, "the near door alternative must be chosen");
+      end;
+      Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0""/>" & NL & "</mission>" & NL);
+      begin
+         declare
+            P : constant Problem_Access := Missions.Read (F);
+            pragma Unreferenced (P);
+         begin
+            Assert (False, "missing attribute not reported");
+         end;
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
+                    F & ":2: <robot> needs attribute 'y'") > 0,
+                    "message: " & Ada.Exceptions.Exception_Message (E));
+      end;
+      Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0"" y=""0"">" & NL & "</mission>" & NL);
+      begin
+         declare
+            P : constant Problem_Access := Missions.Read (F);
+            pragma Unreferenced (P);
+         begin
+            Assert (False, "malformed XML not reported");
+         end;
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), F & ":") = 1,
+                    "message: " & Ada.Exceptions.Exception_Message (E));
+      end;
+      Ada.Directories.Delete_File (F);
+   end Mission_File;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
+      procedure Add (Name : String; Proc : Caller.Test_Method) is
+      begin
+         Result.Add_Test (Caller.Create ("allocation: " & Name, Proc));
+      end Add;
+   begin
+      Add ("incremental costs equal recomputed costs", Incremental_Equals_Recomputed'Access);
+      Add ("exact solver equals brute force", Exact_Equals_Brute_Force'Access);
+      Add ("annealer reaches the exact optimum; baselines valid",
+           Annealer_Reaches_Optimum'Access);
+      Add ("baselines valid with constraints", Baselines_Valid_On_Larger'Access);
+      Add ("same seed, same result", Deterministic'Access);
+      Add ("TSPLIB optimal tours give the optimal lengths", Optimal_Tours'Access);
+      Add ("TSPLIB explicit matrix formats", Explicit_Formats'Access);
+      Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
+      Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
+      return Result;
+   end Suite;
+
+end Sancta.Allocation.Tests;
