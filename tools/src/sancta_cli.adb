@@ -10,6 +10,7 @@ with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Run;
 with Sancta.Commands.Plan;
+with Sancta.Commands.Team;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -24,6 +25,7 @@ procedure Sancta_CLI is
       Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
       Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
       Put_Line ("  plan FILE ...    task allocation (sancta plan --help)");
+      Put_Line ("  team [MISSION]   team mission demo over DDS (sancta team --help)");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -38,6 +40,8 @@ begin
       Sancta.Commands.Run.Run;
    elsif Command = "plan" then
       Sancta.Commands.Plan.Run;
+   elsif Command = "team" then
+      Sancta.Commands.Team.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage;

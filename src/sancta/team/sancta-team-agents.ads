@@ -56,11 +56,13 @@ package Sancta.Team.Agents is
 
    type Agent_Config is record
       Id         : Unbounded_String;
+      Team       : Unbounded_String := To_Unbounded_String ("team");
+      --  The team's topics (/sancta/<team>/...).
       Is_Robot   : Boolean := True;
       Lease      : Duration := 1.0;
       How        : Method := Annealing;
-      Iterations : Long_Long_Integer := 50_000;
-      --  Annealer moves per attempt.
+      Budget     : Duration := 0.25;
+      --  Annealer wall-clock time per attempt.
       Rounds     : Natural := 3;
       --  Improvement attempts from the best proposal (annealing).
       Seed       : Interfaces.Unsigned_64 := 1;
@@ -93,8 +95,9 @@ package Sancta.Team.Agents is
       Found   : out Boolean;
       Goal    : out Sancta.Geometry.Point;
       Task_Id : out Unbounded_String);
-   procedure Arrived (This : in out Agent; Task_Id : String);
-   --  At the point Current_Goal gave for Task_Id.
+   procedure Arrived (This : in out Agent; Task_Id : String; Completed : out Boolean);
+   --  At the point Current_Goal gave for Task_Id; Completed when that
+   --  finished the task (now done/<task> = this robot).
 
    --  Observation (every node) ---------------------------------------------------
 
@@ -154,7 +157,7 @@ private
       Current : Progress;
    end Progress_Box;
 
-   task type Worker (Owner : not null access Agent) is
+   task type Worker (Owner : not null access Agent'Class) is
       entry Go;
    end Worker;
    type Worker_Access is access Worker;

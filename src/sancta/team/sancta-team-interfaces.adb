@@ -1,5 +1,6 @@
 with Ada.Directories;
 with Ada.Strings.Fixed;
+with ROSIDL.Definitions;
 with ROSIDL.Interfaces;
 
 package body Sancta.Team.Interfaces is
@@ -26,7 +27,7 @@ package body Sancta.Team.Interfaces is
          return;
       end if;
       declare
-         Path    : constant ROSIDL.Interfaces.String_Vectors.Vector :=
+         Path    : constant ROSIDL.Definitions.String_Vectors.Vector :=
            ROSIDL.Interfaces.Search_Path;
          Bundled : constant String := (if Path.Is_Empty then "" else Path.First_Element);
          Suffix  : constant String := "ros2_interfaces";

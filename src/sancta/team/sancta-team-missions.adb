@@ -98,10 +98,13 @@ package body Sancta.Team.Missions is
          Result.Name := To_Unbounded_String (Tree.Attribute_Value (Root, "name"));
       end if;
       if Tree.Has_Attribute (Root, "world") then
-         Result.World := To_Unbounded_String
-           (Ada.Directories.Compose
-              (Ada.Directories.Containing_Directory (File),
-               Tree.Attribute_Value (Root, "world")));
+         declare
+            W : constant String := Tree.Attribute_Value (Root, "world");
+         begin
+            Result.World := To_Unbounded_String
+              (if W /= "" and then W (W'First) = '/' then W
+               else Ada.Directories.Containing_Directory (File) & "/" & W);
+         end;
       end if;
       for E of Tree.Children (Root) loop
 

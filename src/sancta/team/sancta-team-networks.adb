@@ -13,9 +13,9 @@ package body Sancta.Team.Networks is
 
    use Ada.Real_Time;
 
-   Messages_Topic : constant String := "/sancta/team/messages";
-   Presence_Topic : constant String := "/sancta/team/presence";
-   State_Topic    : constant String := "/sancta/team/state";
+   function Messages_Topic (Team : String) return String is ("/sancta/" & Team & "/messages");
+   function Presence_Topic (Team : String) return String is ("/sancta/" & Team & "/presence");
+   function State_Topic (Team : String) return String is ("/sancta/" & Team & "/state");
 
    Message_QoS  : constant RCL.QoS.Profile := (Depth => 1000, others => <>);
    Presence_QoS : constant RCL.QoS.Profile := (Depth => 50, others => <>);
@@ -272,25 +272,30 @@ package body Sancta.Team.Networks is
    function Create
      (Id     : String;
       Groups : String := "";
-      Lease  : Duration := 2.0) return Network_Access
+      Lease  : Duration := 2.0;
+      Team   : String := "team") return Network_Access
    is
       Net : constant Network_Access := new Network;
    begin
-      if (for some C of Id => not (C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_')) then
+      if (for some C of String'(Id & Team) =>
+            not (C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_'))
+      then
          raise Constraint_Error with
-           "team node id """ & Id & """: only letters, digits and '_' are allowed";
+           "team node id """ & Id & """ or team """ & Team
+           & """: only letters, digits and '_' are allowed";
       end if;
       Net.Id := To_Unbounded_String (Id);
       Net.Groups := To_Unbounded_String (Groups);
       Net.Lease := Lease;
-      Net.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_" & Id));
+      Net.Team := To_Unbounded_String (Team);
+      Net.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_" & Team & "_" & Id));
       Registry.Add (Net.Node.Name, Net);
       Net.Messages := new RCL.Publishers.Publisher'
-        (Net.Node.Publish (Support ("Envelope"), Messages_Topic, Message_QoS));
+        (Net.Node.Publish (Support ("Envelope"), Messages_Topic (Team), Message_QoS));
       Net.Presence := new RCL.Publishers.Publisher'
-        (Net.Node.Publish (Support ("Presence"), Presence_Topic, Presence_QoS));
+        (Net.Node.Publish (Support ("Presence"), Presence_Topic (Team), Presence_QoS));
       Net.State := new RCL.Publishers.Publisher'
-        (Net.Node.Publish (Support ("DbEntry"), State_Topic, State_QoS));
+        (Net.Node.Publish (Support ("DbEntry"), State_Topic (Team), State_QoS));
       return Net;
    end Create;
 
@@ -321,11 +326,12 @@ package body Sancta.Team.Networks is
          return;
       end if;
       This.Started := True;
-      This.Node.Subscribe (Support ("Envelope"), Messages_Topic,
+      This.Node.Subscribe (Support ("Envelope"), Messages_Topic (To_String (This.Team)),
                            On_Envelope'Access, Message_QoS);
-      This.Node.Subscribe (Support ("Presence"), Presence_Topic,
+      This.Node.Subscribe (Support ("Presence"), Presence_Topic (To_String (This.Team)),
                            On_Presence'Access, Presence_QoS);
-      This.Node.Subscribe (Support ("DbEntry"), State_Topic, On_State'Access, State_QoS);
+      This.Node.Subscribe (Support ("DbEntry"), State_Topic (To_String (This.Team)),
+                           On_State'Access, State_QoS);
       This.Worker := new Receiver (This'Unchecked_Access);
       This.Worker.Go;
    end Start;

@@ -1,7 +1,9 @@
 --  The team network: the Network component of SANCTA on DDS topics.
 --
 --  Every node of the team owns one Network (one ROS 2 node named
---  "sancta_<id>" on the context's participant). Messages are sancta_msgs/
+--  "sancta_<team>_<id>" on the context's participant). The topics below are
+--  under /sancta/<team>/ (team "team" by default; several teams, e.g. test
+--  runs, can share a DDS domain). Messages are sancta_msgs/
 --  Envelope samples on the topic /sancta/team/messages: a sender, a
 --  destination (one node, a group or everyone) and a named channel; a
 --  receiver hands a sample to the consumers subscribed to its channel when
@@ -77,8 +79,9 @@ package Sancta.Team.Networks is
    function Create
      (Id     : String;
       Groups : String := "";
-      Lease  : Duration := 2.0) return Network_Access
-     with Pre => Id'Length > 0 and then Lease >= 0.1;
+      Lease  : Duration := 2.0;
+      Team   : String := "team") return Network_Access
+     with Pre => Id'Length > 0 and then Team'Length > 0 and then Lease >= 0.1;
    --  A network for node Id (letters, digits, '_'), member of the comma-
    --  separated Groups. Not started: subscribe first, then Start.
 
@@ -210,6 +213,7 @@ private
       Worker     : Receiver_Access;
       Started    : Boolean := False;
       Next_Beat  : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
+      Team       : Unbounded_String;
    end record;
 
 end Sancta.Team.Networks;

@@ -283,9 +283,10 @@ package body Sancta.Team.Plans is
    function Anneal
      (S          : Snapshot;
       Seed       : Interfaces.Unsigned_64;
-      Iterations : Long_Long_Integer;
+      Budget     : Duration;
       Start_From : Plan;
-      Proposer   : String) return Plan
+      Proposer   : String;
+      Iterations : Long_Long_Integer := 0) return Plan
    is
       use Sancta.Allocation;
       use Sancta.Allocation.Problems;
@@ -358,7 +359,7 @@ package body Sancta.Team.Plans is
             declare
                Best  : Assignment := Empty (P.all);
                Opts  : Annealers.Options :=
-                 (Criterion => Min_Tim, Seed => Seed, Time_Limit => 0.0,
+                 (Criterion => Min_Tim, Seed => Seed, Time_Limit => Budget,
                   Iterations => Iterations, Report_Every => 1000.0, others => <>);
                Stats : Annealers.Progress;
 

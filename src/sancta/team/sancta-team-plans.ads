@@ -84,13 +84,15 @@ package Sancta.Team.Plans is
    function Anneal
      (S          : Snapshot;
       Seed       : Interfaces.Unsigned_64;
-      Iterations : Long_Long_Integer;
+      Budget     : Duration;
       Start_From : Plan;
-      Proposer   : String) return Plan
-     with Pre => not S.Robots.Is_Empty;
-   --  The project's annealer (Sancta.Allocation.Annealers) on this round;
-   --  starts from Start_From when it has tours for S, else from its own
-   --  greedy start.
+      Proposer   : String;
+      Iterations : Long_Long_Integer := 0) return Plan
+     with Pre => not S.Robots.Is_Empty and then (Budget > 0.0 or else Iterations > 0);
+   --  The project's annealer (Sancta.Allocation.Annealers) on this round
+   --  for Budget of wall-clock time (or Iterations moves, whichever ends
+   --  first; 0 = no limit); starts from Start_From when it has tours for S,
+   --  else from its own greedy start.
 
    function Greedy (S : Snapshot; Proposer : String) return Plan
      with Pre => not S.Robots.Is_Empty;
