@@ -130,6 +130,9 @@ package body Sancta.Team.Agents is
 
    procedure Log (This : Agent'Class; Text : String) is
    begin
+      if not This.Config.Verbose then
+         return;
+      end if;
       Ada.Text_IO.Put_Line
         (Ada.Text_IO.Standard_Error, "[" & To_String (This.Config.Id) & "] " & Text);
    end Log;
@@ -335,6 +338,7 @@ package body Sancta.Team.Agents is
             for T of Unassigned loop
                Append (Offer, T & ",");
             end loop;
+            Append (Offer, ASCII.LF & Plans.Encode (S));
             This.Net.Send (Networks.To_Group ("robots"), "auction", To_String (Offer));
             while This.Bids.Count < Natural (S.Robots.Length) and then Clock < Deadline
               and then not This.Stopping
@@ -387,7 +391,7 @@ package body Sancta.Team.Agents is
    is
       pragma Unreferenced (Channel);
       A : Agent renames This.Owner.all;
-      type Line_Array is array (1 .. 5) of Unbounded_String;
+      type Line_Array is array (1 .. 6) of Unbounded_String;
       L : Line_Array;
       N : Natural := 0;
       First : Positive := Payload'First;
@@ -407,7 +411,6 @@ package body Sancta.Team.Agents is
          Kind : constant String := To_String (L (1));
          Gen  : constant Natural := Natural'Value (To_String (L (2)));
          Step : constant Natural := Natural'Value (To_String (L (3)));
-         S    : constant Plans.Snapshot := A.Views.Get.Round;
          Self : constant String := To_String (A.Config.Id);
       begin
          if Kind = "bid" and then N >= 4 then
@@ -437,10 +440,28 @@ package body Sancta.Team.Agents is
             end;
             return;
          end if;
-         if S.Generation /= Gen or else not Round_Robots (S).Contains (Self) then
-            return;  --  not (yet) in this round: no bid (the auctioneer skips us)
+         if Kind = "offer" and then N >= 5 and then A.Bundle_Gen /= Gen then
+            --  The round travels with the offer (no wait for the database).
+            declare
+               Ids : Missions.Task_Vectors.Vector;
+               R   : Plans.Snapshot;
+            begin
+               Plans.Decode (To_String (L (5)), R, Ids);
+               for T of Ids loop
+                  R.Tasks.Append
+                    (Missions.Decode
+                       (To_String (T.Id), A.Db.Get_String ("task/" & To_String (T.Id))));
+               end loop;
+               A.Bid_Round := R;
+               A.Bundle_Gen := Gen;
+               A.Bundle.Clear;
+            end;
+         end if;
+         if A.Bundle_Gen /= Gen or else not Round_Robots (A.Bid_Round).Contains (Self) then
+            return;  --  not in this round: no bid (the auctioneer skips us)
          end if;
          declare
+            S     : Plans.Snapshot renames A.Bid_Round;
             Start : Point;
          begin
             for R of S.Robots loop
@@ -448,10 +469,6 @@ package body Sancta.Team.Agents is
                   Start := R.Where;
                end if;
             end loop;
-            if A.Bundle_Gen /= Gen then
-               A.Bundle_Gen := Gen;
-               A.Bundle.Clear;
-            end if;
             if Kind = "offer" then
                declare
                   Offered : constant Name_Sets.Set := Split (To_String (L (4)), ',');

@@ -66,6 +66,8 @@ package Sancta.Team.Agents is
       Rounds     : Natural := 3;
       --  Improvement attempts from the best proposal (annealing).
       Seed       : Interfaces.Unsigned_64 := 1;
+      Verbose    : Boolean := True;
+      --  Rounds, auctions and annealing results on standard error.
    end record;
 
    type Agent is tagged limited private;
@@ -178,6 +180,7 @@ private
       Bundle   : Plans.Step_Vectors.Vector;
       --  The auction tour (bidder side), of Bundle_Gen.
       Bundle_Gen : Natural := 0;
+      Bid_Round  : Plans.Snapshot;
       Runner   : Worker_Access;
       Stopping : Boolean := False
         with Atomic;

@@ -296,7 +296,7 @@ package body Sancta.Team.Demos is
             Result.Robots.Append (Robot_Summary'(Id => M.Robots (R).Id, others => <>));
             Agent_List (R) := Agents.Create
               ((Id => M.Robots (R).Id, Team => Config.Team, Is_Robot => True,
-                Lease => Config.Lease,
+                Lease => Config.Lease, Verbose => Config.Verbose,
                 How => Config.How, Seed => Interfaces.Unsigned_64 (R), others => <>));
             Agent_List (R).Set_Pose (Position (M.Robots (R).Start));
          end loop;
