@@ -63,7 +63,8 @@ package body RCL.Executors.Concurrent is
       end Wait_Idle;
    end Work_Queue;
 
-   task type Runner (Queue : not null Queue_Access);
+   task type Runner (Queue : not null Queue_Access; Prio : System.Priority)
+     with Priority => Prio;
 
    task body Runner is
       Item : Work;
@@ -95,7 +96,7 @@ package body RCL.Executors.Concurrent is
       if not This.Started then
          This.Queue := new Work_Queue (This.Queue_Size);
          for I in This.Pool'Range loop
-            This.Pool (I) := new Runner (This.Queue);
+            This.Pool (I) := new Runner (This.Queue, This.Priority);
          end loop;
          This.Started := True;
       end if;

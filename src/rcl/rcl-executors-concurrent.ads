@@ -12,9 +12,8 @@
 --     E : Executors.Concurrent.Executor (Threads => 4);
 --     E.Add (Node);
 --     E.Spin (During => Executors.Forever);
+with System;
 with System.Multiprocessors;
-
-private with System;
 
 package RCL.Executors.Concurrent is
 
@@ -23,8 +22,11 @@ package RCL.Executors.Concurrent is
    type Executor
      (Max_Nodes  : Positive := Default_Nodes_Per_Executor;
       Queue_Size : Positive := CPUs * 32;
-      Threads    : Positive := CPUs) is
+      Threads    : Positive := CPUs;
+      Priority   : System.Priority := System.Default_Priority) is
      new Executors.Executor with private;
+   --  Threads pool tasks run the callbacks at Priority; the queue holds
+   --  Queue_Size pending callbacks (then the spinning task waits).
 
    overriding procedure Dispatch_Sample
      (This : in out Executor;
@@ -59,13 +61,12 @@ private
    type Executor
      (Max_Nodes  : Positive := Default_Nodes_Per_Executor;
       Queue_Size : Positive := CPUs * 32;
-      Threads    : Positive := CPUs) is
+      Threads    : Positive := CPUs;
+      Priority   : System.Priority := System.Default_Priority) is
      new Executors.Executor (Max_Nodes) with record
       Queue   : Queue_Access;
       Pool    : Runner_Array (1 .. Threads);
       Started : Boolean := False;
    end record;
-
-   Unused_Priority : constant System.Priority := System.Default_Priority;
 
 end RCL.Executors.Concurrent;

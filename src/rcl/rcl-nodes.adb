@@ -1,14 +1,22 @@
 with Ada.Unchecked_Deallocation;
 
 with ROSIDL.CDR;
+with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
+with RCL.Rosout;
 
 package body RCL.Nodes is
 
    use type Ada.Real_Time.Time;
+
+   type Spinner is record
+      E : RCL.Executors.Sequential.Executor (Max_Nodes => 1);
+   end record;
+
+   procedure Free is new Ada.Unchecked_Deallocation (Spinner, Spinner_Access);
 
    --------------
    -- Registry --
@@ -62,6 +70,8 @@ package body RCL.Nodes is
    ----------
 
    function Init (Name : String; Namespace : String := "/") return Node is
+      Sim_Time : constant Boolean :=
+        RCL.Clocks.Sim_Time_Requested and then not RCL.Clocks.Sim_Time_Enabled;
    begin
       RCL.Names.Validate_Node_Name (Name);
       declare
@@ -71,6 +81,11 @@ package body RCL.Nodes is
          return N : Node do
             N.Name := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
+            RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
+            RCL.Rosout.Enable;
+            if Sim_Time then
+               RCL.Clocks.Enable_Sim_Time (N);
+            end if;
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
@@ -110,7 +125,8 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ));
+         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
+                                This.Graph_Id);
       end return;
    end Publish_Raw;
 
@@ -124,7 +140,11 @@ package body RCL.Nodes is
       Topic   : String;
       QoS     : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
    begin
-      return This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS);
+      return P : RCL.Publishers.Publisher :=
+        This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS)
+      do
+         RCL.Publishers.Set_Support (P, Support);
+      end return;
    end Publish;
 
    ----------------------
@@ -149,6 +169,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS);
       This.Entities.Add (S);
+      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
       when others =>
          Free (S);
@@ -173,9 +194,33 @@ package body RCL.Nodes is
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info);
 
+   --  One decoded message kept per subscription and reused (no allocation
+   --  per sample); a concurrent delivery that finds it taken decodes into a
+   --  fresh one.
+   protected type Cache_Lock is
+      procedure Try (Got : out Boolean);
+      procedure Release;
+   private
+      Taken : Boolean := False;
+   end Cache_Lock;
+
+   protected body Cache_Lock is
+      procedure Try (Got : out Boolean) is
+      begin
+         Got := not Taken;
+         Taken := True;
+      end Try;
+      procedure Release is
+      begin
+         Taken := False;
+      end Release;
+   end Cache_Lock;
+
    type Typed_Handler is new Handler with record
       Support  : ROSIDL.Typesupport.Message_Support;
       Callback : Typed_Callback;
+      Cached   : ROSIDL.Dynamic.Message;
+      Lock     : Cache_Lock;
    end record;
 
    overriding procedure Deliver
@@ -184,9 +229,29 @@ package body RCL.Nodes is
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
    is
-      Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+      Got : Boolean;
    begin
-      This.Callback (Node, Msg, Info);
+      This.Lock.Try (Got);
+      if Got then
+         begin
+            if not ROSIDL.Dynamic.Is_Initialised (This.Cached) then
+               This.Cached := ROSIDL.Dynamic.Init (This.Support);
+            end if;
+            ROSIDL.CDR.Decode (Data, This.Cached);
+            This.Callback (Node, This.Cached, Info);
+         exception
+            when others =>
+               This.Lock.Release;
+               raise;
+         end;
+         This.Lock.Release;
+      else
+         declare
+            Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+         begin
+            This.Callback (Node, Msg, Info);
+         end;
+      end if;
    end Deliver;
 
    procedure Subscribe
@@ -201,13 +266,17 @@ package body RCL.Nodes is
    is
       Stored : constant Typed_Callback with Import, Address => Callback'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      H : Handler_Access := new Typed_Handler'(Support => Support, Callback => Stored);
+      H : Handler_Access := new Typed_Handler;
    begin
-      This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
-   exception
-      when others =>
-         Free (H);
-         raise;
+      Typed_Handler (H.all).Support := Support;
+      Typed_Handler (H.all).Callback := Stored;
+      begin
+         This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+      exception
+         when others =>
+            Free (H);
+            raise;
+      end;
    end Subscribe;
 
    procedure Subscribe_Raw
@@ -274,10 +343,12 @@ package body RCL.Nodes is
       During : Duration := Forever;
       Once   : Boolean := False)
    is
-      E : RCL.Executors.Sequential.Executor;
    begin
-      E.Add (This);
-      E.Spin (During => During, Once => Once);
+      if This.Spin_Exec = null then
+         This.Spin_Exec := new Spinner;
+         This.Spin_Exec.E.Add (This);
+      end if;
+      This.Spin_Exec.E.Spin (During => During, Once => Once);
    end Spin;
 
    ---------------------
@@ -318,6 +389,10 @@ package body RCL.Nodes is
       N_Tims : Natural;
       procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
    begin
+      Free (This.Spin_Exec);
+      --  Before the subscriptions: it detaches their readers.
+      RCL.Graph.Remove_Node (This.Graph_Id);
+      This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop
          Free (Subs (I).Handle);

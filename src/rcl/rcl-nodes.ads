@@ -16,6 +16,7 @@ with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
@@ -198,10 +199,17 @@ private
       N_Tim  : Natural := 0;
    end Registry;
 
+   type Spinner;
+   type Spinner_Access is access Spinner;
+   --  The sequential executor of Node.Spin, made by the first Spin and
+   --  reused (completed in the body).
+
    type Node is new Ada.Finalization.Limited_Controlled with record
+      Spin_Exec : Spinner_Access;
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Entities  : Registry;
+      Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;
 
 end RCL.Nodes;

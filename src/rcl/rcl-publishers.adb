@@ -1,6 +1,5 @@
 with Ada.Streams;
 with ROSIDL.CDR;
-with ROSIDL.Typesupport;
 with RCL.Contexts;
 
 package body RCL.Publishers is
@@ -19,8 +18,11 @@ package body RCL.Publishers is
       use type Ada.Streams.Stream_Element_Offset;
    begin
       if not ROSIDL.Dynamic.Is_Initialised (Msg)
-        or else ROSIDL.Typesupport.DDS_Type_Name (ROSIDL.Dynamic.Support (Msg))
-                /= Type_Name (This)
+        or else not ((This.Typed
+                      and then ROSIDL.Typesupport."=" (ROSIDL.Dynamic.Support (Msg),
+                                                       This.Support))
+                     or else ROSIDL.Typesupport.DDS_Type_Name (ROSIDL.Dynamic.Support (Msg))
+                             = Type_Name (This))
       then
          raise ROS_Exception with "publishing on " & Topic (This) & ": a "
            & ROSIDL.Dynamic.Type_Name (Msg) & " message, the topic has type "
@@ -50,11 +52,32 @@ package body RCL.Publishers is
       Topic      : String;
       Type_Name  : String;
       Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String) is
+      DDS_Topic  : String;
+      Node       : RCL.Graph.Node_Id) is
    begin
       RCL.DDS.Create (This.W, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, Profile);
       This.Topic := To_Unbounded_String (Topic);
+      This.Node := Node;
+      RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
    end Create;
+
+   procedure Set_Support
+     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support) is
+   begin
+      This.Support := Support;
+      This.Typed := True;
+   end Set_Support;
+
+   overriding procedure Finalize (This : in out Publisher) is
+   begin
+      if RCL.DDS.Is_Open (This.W) then
+         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.W));
+      end if;
+      This.Node := RCL.Graph.No_Node;
+   exception
+      when others =>
+         null;
+   end Finalize;
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer is
      (This.W'Unchecked_Access);

@@ -5,7 +5,9 @@
 --     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header
 with Ada.Finalization;
 with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Graph;
 with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
@@ -40,15 +42,25 @@ package RCL.Publishers is
       Topic      : String;
       Type_Name  : String;
       Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String);
+      DDS_Topic  : String;
+      Node       : RCL.Graph.Node_Id);
 
    function Writer (This : Publisher) return access constant RCL.DDS.Writer;
+
+   procedure Set_Support
+     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support);
+   --  The message type of a typed publisher (a cheaper check in Publish).
+
+   overriding procedure Finalize (This : in out Publisher);
 
 private
 
    type Publisher is new Ada.Finalization.Limited_Controlled with record
       W     : aliased RCL.DDS.Writer;
       Topic : Ada.Strings.Unbounded.Unbounded_String;
+      Node  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Typed : Boolean := False;
+      Support : ROSIDL.Typesupport.Message_Support;
    end record;
 
 end RCL.Publishers;

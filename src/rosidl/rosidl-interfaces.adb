@@ -188,18 +188,18 @@ package body ROSIDL.Interfaces is
          return "";
    end Executable_Folder;
 
-   function Bundled_Folder return String is
+   function Bundled_Folder (Name : String := "ros2_interfaces") return String is
       Root_Variable : constant String := "SANCTA_ROOT";
    begin
       if Ada.Environment_Variables.Exists (Root_Variable)
         and then Ada.Environment_Variables.Value (Root_Variable) /= ""
       then
-         return Ada.Environment_Variables.Value (Root_Variable) & "/share/ros2_interfaces";
+         return Ada.Environment_Variables.Value (Root_Variable) & "/share/" & Name;
       end if;
       declare
          Exe : constant String := Executable_Folder;
       begin
-         return (if Exe = "" then "" else Exe & "/../share/ros2_interfaces");
+         return (if Exe = "" then "" else Exe & "/../share/" & Name);
       end;
    end Bundled_Folder;
 
@@ -236,6 +236,7 @@ package body ROSIDL.Interfaces is
 
    begin
       Add (Bundled_Folder);
+      Add (Bundled_Folder ("interfaces"));
       if Ada.Environment_Variables.Exists (Path_Variable) then
          declare
             Value : constant String := Ada.Environment_Variables.Value (Path_Variable);

@@ -2,7 +2,8 @@
 --
 --  A folder on the path holds one sub-folder per interface package, each with
 --  msg/, srv/ and action/ (the layout of a ROS 2 share/ directory). The
---  bundled folder (share/ros2_interfaces of the installation) comes first;
+--  bundled folder (share/ros2_interfaces of the installation) comes first,
+--  then the project's own bundled folder share/interfaces (sancta_msgs);
 --  folders named in the environment variable SANCTA_INTERFACE_PATH
 --  (colon-separated) and through Add_Folder follow. The first folder holding
 --  a package wins. The bundled folder is $SANCTA_ROOT/share/ros2_interfaces

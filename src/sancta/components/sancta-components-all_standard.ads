@@ -4,7 +4,9 @@
 --  itself at elaboration: without this "with", the factory would not know
 --  the standard components.
 pragma Warnings (Off, "unit * is not referenced");
+with Sancta.Components.Localization;
 with Sancta.Components.Logger;
+with Sancta.Components.Navigation;
 with Sancta.Components.Plumbing;
 with Sancta.Components.Pose_Chain;
 with Sancta.Components.ROS2;

@@ -99,7 +99,52 @@ package body Sancta.Components.Pose_Chain is
       return Result;
    end Create_Scan_Matching;
 
+   --  transform --
+
+   type Transform is new Base_Component with null record;
+
+   overriding procedure Start (This : in out Transform);
+   overriding procedure On_Input
+     (This : in out Transform; Data : String; Item : Values.Value'Class);
+
+   overriding procedure Start (This : in out Transform) is
+   begin
+      This.Subscribe ("frame");
+      This.Subscribe ("local");
+   end Start;
+
+   overriding procedure On_Input
+     (This : in out Transform; Data : String; Item : Values.Value'Class)
+   is
+      pragma Unreferenced (Data, Item);
+   begin
+      if This.Has_Value ("frame") and then This.Has_Value ("local") then
+         This.Output ("world", Values.Pose_Value'
+                        (Data => Compose (Values.Pose_Value (This.Input ("frame")).Data,
+                                          Values.Pose_Value (This.Input ("local")).Data)));
+      end if;
+   end On_Input;
+
+   function Create_Transform (Ctx : Context) return Component_Access is
+      Result : constant Component_Access := new Transform;
+   begin
+      Result.Initialize (Ctx);
+      return Result;
+   end Create_Transform;
+
 begin
+   Factory.Register
+     ((Name       => To_Unbounded_String ("transform"),
+       Doc        => To_Unbounded_String ("a pose in robot coordinates into world coordinates"),
+       Ports      => Port_Vectors.Empty_Vector
+                       & In_Port ("frame", "types.pose", Doc => "the robot's pose in the world")
+                       & In_Port ("local", "types.pose", Doc => "a pose relative to the robot")
+                       & Out_Port ("world", "types.pose"),
+       Options    => Option_Vectors.Empty_Vector,
+       Any_Inputs => False,
+       Refine     => null,
+       others     => <>),
+      Create_Transform'Access);
    Factory.Register
      ((Name       => To_Unbounded_String ("odometry"),
        Doc        => To_Unbounded_String ("dead-reckoning pose source"),

@@ -13,7 +13,15 @@
 --  component applies the fixed correction given by options dx, dy, dyaw
 --  (the pose of the odometric frame in the corrected frame, identity by
 --  default), which is what a scan matcher's output amounts to when its
---  estimate of the odometry drift is constant.
+--  estimate of the odometry drift is constant. Real point-to-line ICP
+--  matching on laser scans is the "scan_matcher" component
+--  (Sancta.Components.Localization).
+--
+--  "transform" (the Transformer of the paper's Table 1): a pose given in
+--  robot coordinates (input "local") expressed in world coordinates, given
+--  the robot's pose in the world (input "frame"): output "world" is
+--  Geometry.Compose (frame, local). All types.pose; event driven, once
+--  both inputs hold a value.
 package Sancta.Components.Pose_Chain is
    pragma Elaborate_Body;
 end Sancta.Components.Pose_Chain;

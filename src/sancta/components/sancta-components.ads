@@ -4,7 +4,7 @@
 --     Watchdog    "watchdog"        abort or alarm when a key goes stale
 --     Plumbing    "copy", "merge", "switch"
 --     Sources     "value"           a configured value, once or periodically
---     Pose_Chain  "odometry", "scan_matching" (PARTIAL, see there)
+--     Pose_Chain  "odometry", "scan_matching" (PARTIAL, see there), "transform"
 --     ROS2        "ros2_subscriber", "ros2_publisher" (ROS 2 bridges)
 --  A program gets them all with "with Sancta.Components.All_Standard;".
 package Sancta.Components is

@@ -202,6 +202,13 @@ package body Sancta.Runtime.Components is
 
    function Failures (This : Component'Class) return Natural is (This.Failure_Count);
 
+   function Started (This : Component'Class) return Boolean is (This.Is_Started);
+
+   procedure Set_Started (This : in out Component'Class) is
+   begin
+      This.Is_Started := True;
+   end Set_Started;
+
    procedure Report_Failure
      (This : in out Component'Class; Where : String; E : Ada.Exceptions.Exception_Occurrence) is
    begin

@@ -225,6 +225,10 @@ package Sancta.Runtime.Components is
 
    function Failures (This : Component'Class) return Natural;
 
+   function Started (This : Component'Class) return Boolean;
+   procedure Set_Started (This : in out Component'Class);
+   --  Whether Start completed (for the node and the scheduler).
+
    --  Serialisation of the entry points (used by the scheduler and the base
    --  listener; reentrant for the same task).
 
@@ -269,6 +273,7 @@ private
       Info          : Context;
       Guard         : Reentrant_Lock;
       Failure_Count : Natural := 0;
+      Is_Started    : Boolean := False with Atomic;
       Is_Failed     : Boolean := False with Atomic;
       --  Written under Guard, read without it.
    end record;

@@ -9,6 +9,7 @@ package body Sancta.Runtime.Nodes is
 
    use Ada.Strings.Unbounded;
    use type Components.Port_Direction;
+   use type Ada.Real_Time.Time;
 
    procedure Create
      (This   : in out Node;
@@ -65,6 +66,7 @@ package body Sancta.Runtime.Nodes is
          begin
             C.Lock;
             C.Start;
+            C.Set_Started;
             C.Unlock;
             Logging.Log (This.Id, Logging.Debug, "started " & C.Name);
             This.Sched.Add (C, This.Clock.Now);
@@ -73,8 +75,8 @@ package body Sancta.Runtime.Nodes is
                C.Report_Failure ("Start", E);
                C.Unlock;
                if not C.Failed then
-                  --  Retry policy: Run will be tried (Start is not repeated).
-                  This.Sched.Add (C, This.Clock.Now);
+                  --  Retry policy: the scheduler calls Start again, then Run.
+                  This.Sched.Add (C, This.Clock.Now + C.Ctx.Retry_After);
                end if;
          end;
       end loop;

@@ -33,7 +33,8 @@ package Sancta.Runtime.Nodes is
    --  Calls Start of every component in start order and queues its first
    --  Run at the current time; then starts the scheduler task (tests pass
    --  False and drive This.Scheduler themselves). A component whose Start
-   --  raises is reported per its policy and gets no Run.
+   --  raises is reported; with on_error="retry" the scheduler calls its
+   --  Start again after retry_after (then its Run), with "stop" never.
 
    procedure Stop (This : in out Node);
    --  Stops the scheduler, then every component in reverse start order.

@@ -123,11 +123,16 @@ package body Sancta.Runtime.Schedulers is
       end if;
       Item.Lock;
       begin
+         if not Item.Started then
+            --  Its Start failed earlier (retry policy): try it again first.
+            Item.Start;
+            Item.Set_Started;
+         end if;
          Item.Run (Next);
          Item.Unlock;
       exception
          when E : others =>
-            Item.Report_Failure ("Run", E);
+            Item.Report_Failure ((if Item.Started then "Run" else "Start"), E);
             Item.Unlock;
             M.Stats.Failures := M.Stats.Failures + 1;
             Next := (if Item.Failed then Components.Never

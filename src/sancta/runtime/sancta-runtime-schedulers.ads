@@ -7,7 +7,8 @@
 --  * "cannot keep up": a call started more than Keep_Up_Limit late
 --    (logged at most once per 5 s of clock time);
 --  * exceptions: logged with the component's name, then the component is
---    retried after its retry_after or dropped (on_error="stop").
+--    retried after its retry_after or dropped (on_error="stop"); a
+--    component whose Start failed gets its Start retried before its Run.
 --  Per-component statistics: calls, failures, overruns, run time, lateness.
 --
 --  Time comes from an injectable Clock: with a Manual_Clock a test calls

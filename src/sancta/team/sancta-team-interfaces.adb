@@ -37,6 +37,13 @@ package body Sancta.Team.Interfaces is
            (if Cut = 0 then "share/interfaces"
             else Bundled (Bundled'First .. Cut - 1) & "interfaces");
       begin
+         for P of Path loop
+            if Ada.Directories.Exists (P)
+              and then Ada.Directories.Exists (P & "/sancta_msgs/msg/Envelope.msg")
+            then
+               return;  --  already searched (the project's folder is on the path)
+            end if;
+         end loop;
          if not Ada.Directories.Exists (Folder) then
             raise Program_Error with
               Folder & ": the project's interface folder (sancta_msgs) is missing";

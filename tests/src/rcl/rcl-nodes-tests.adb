@@ -1,4 +1,5 @@
 with Ada.Exceptions;
+with Ada.Task_Identification;
 with Ada.Streams;
 with Ada.Strings.Fixed;
 with AUnit.Assertions; use AUnit.Assertions;
@@ -8,6 +9,7 @@ with RCL.Contexts;
 with RCL.Executors.Concurrent;
 with RCL.Executors.Sequential;
 with RCL.Names;
+with System;
 
 package body RCL.Nodes.Tests is
 
@@ -26,6 +28,11 @@ package body RCL.Nodes.Tests is
      ([1 => 0, 2 => 1, 3 => 0, 4 => 0, 5 => Stream_Element (N mod 256), 6 => 16#AB#,
        7 => 0, 8 => 0]);
 
+   Spinner_Task : Ada.Task_Identification.Task_Id;
+   Wrong_Task   : Boolean := False;
+   --  Sequential executor: callbacks run in the spinning task (never on a
+   --  DDS thread).
+
    --  Received samples, by callbacks.
    Count        : Natural := 0 with Atomic;
    Last_Data    : Stream_Element_Array (1 .. 8) := [others => 0];
@@ -41,6 +48,12 @@ package body RCL.Nodes.Tests is
          Raise_Next := False;
          raise Constraint_Error with "raised on purpose by a test callback";
       end if;
+      declare
+         use type Ada.Task_Identification.Task_Id;
+      begin
+         Wrong_Task := Wrong_Task
+           or else Ada.Task_Identification.Current_Task /= Spinner_Task;
+      end;
       if Data'Length = Last_Data'Length then
          Last_Data := Data;
       end if;
@@ -66,7 +79,10 @@ package body RCL.Nodes.Tests is
       Assert (Pub.Topic = "/tests/loopback_test/raw", "expanded: " & Pub.Topic);
       N.Subscribe_Raw (Type_Name, "/tests/loopback_test/raw", On_Data'Access);
       Count := 0;
+      Spinner_Task := Ada.Task_Identification.Current_Task;
+      Wrong_Task := False;
       Spin_Until (N, 1, Pub);
+      Assert (not Wrong_Task, "the callback ran in the spinning task");
       Assert (Count >= 1, "a sample arrived");
       Assert (Last_Data (1 .. 4) = [0, 1, 0, 0] and then Last_Data (6) = 16#AB#,
               "bytes unchanged");
@@ -163,28 +179,35 @@ package body RCL.Nodes.Tests is
    procedure Concurrent (Unused : in out Fixture) is
       N   : Node := Init ("concurrent_test");
       Pub : constant RCL.Publishers.Publisher := N.Publish_Raw (Type_Name, "conc");
-      E   : RCL.Executors.Concurrent.Executor (Max_Nodes => 1, Queue_Size => 4, Threads => 3);
+      E   : RCL.Executors.Concurrent.Executor
+        (Max_Nodes => 1, Queue_Size => 4, Threads => 3, Priority => System.Default_Priority);
       Seen : Natural := 0;
+      Me   : constant Ada.Task_Identification.Task_Id := Ada.Task_Identification.Current_Task;
       protected Counter is
-         procedure Add;
+         procedure Add (In_Pool : Boolean);
          function Value return Natural;
+         function All_In_Pool return Boolean;
       private
-         V : Natural := 0;
+         V    : Natural := 0;
+         Pool : Boolean := True;
       end Counter;
       protected body Counter is
-         procedure Add is
+         procedure Add (In_Pool : Boolean) is
          begin
             V := V + 1;
+            Pool := Pool and then In_Pool;
          end Add;
          function Value return Natural is (V);
+         function All_In_Pool return Boolean is (Pool);
       end Counter;
       procedure On_Conc
         (Node : in out Nodes.Node'Class; Data : RCL.DDS.Byte_Array;
          Info : ROSIDL.Message_Info)
       is
          pragma Unreferenced (Node, Data, Info);
+         use type Ada.Task_Identification.Task_Id;
       begin
-         Counter.Add;
+         Counter.Add (In_Pool => Ada.Task_Identification.Current_Task /= Me);
       end On_Conc;
    begin
       N.Subscribe_Raw (Type_Name, "conc", On_Conc'Access);
@@ -196,6 +219,7 @@ package body RCL.Nodes.Tests is
       end loop;
       Seen := Counter.Value;
       Assert (Seen >= 10, "the task pool ran the callbacks:" & Seen'Image);
+      Assert (Counter.All_In_Pool, "callbacks ran on pool tasks, not the spinning task");
       E.Shutdown;
       Assert (E.Is_Shut_Down, "shut down deterministically");
    end Concurrent;

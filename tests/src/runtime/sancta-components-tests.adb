@@ -7,6 +7,7 @@ with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Components.All_Standard;
+with Sancta.Geometry;
 with Sancta.Logging;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Components;
@@ -24,6 +25,7 @@ package body Sancta.Components.Tests is
    use Ada.Strings.Unbounded;
    use Sancta.Runtime;
    use type Ada.Real_Time.Time;
+   use type Sancta.Geometry.Real;
    package RC renames Sancta.Runtime.Components;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
@@ -133,6 +135,57 @@ package body Sancta.Components.Tests is
       end loop;
    end Watchdog_Abort;
 
+   procedure Transform (Unused : in out Fixture) is
+      Config : Configurations.Configuration;
+      Clock  : aliased Clocks.Manual_Clock;
+      N      : Nodes.Node;
+   begin
+      Load_Checked ("tests/data/config/good-transform.xml", Config);
+      N.Create (Config, 1, Clock'Unchecked_Access);
+      Logging.Set_Console (False);
+      N.Start (Run_Scheduler_Task => False);
+      N.Scheduler.Step;
+      declare
+         Goal : constant Values.Pose_Value := Values.Pose_Value (N.Database.Get ("goal"));
+      begin
+         N.Stop;
+         Logging.Set_Console (True);
+         Assert (abs (Goal.Data.X - 1.0) < 1.0E-9 and then abs (Goal.Data.Y - 3.0) < 1.0E-9
+                 and then abs (Goal.Data.Yaw - 1.5707963267948966) < 1.0E-9, Goal.Image);
+      end;
+   end Transform;
+
+   --  A failed Start is retried after retry_after (on_error="retry").
+   procedure Start_Retry (Unused : in out Fixture) is
+      Config    : Configurations.Configuration;
+      Clock     : aliased Clocks.Manual_Clock;
+      N         : Nodes.Node;
+      Overrides : RC.String_Maps.Map;
+      Dir       : constant String := "out/test/start-retry";
+      Logger    : RC.Component_Access;
+   begin
+      if Ada.Directories.Exists (Dir) then
+         Ada.Directories.Delete_Tree (Dir);
+      end if;
+      Overrides.Include ("dir", Dir);
+      Load_Checked ("tests/data/config/good-start-retry.xml", Config, Overrides);
+      N.Create (Config, 1, Clock'Unchecked_Access);
+      Logger := N.Find ("logger#2");
+      Logging.Set_Console (False);
+      N.Start (Run_Scheduler_Task => False);
+      Run_Until (N, 0.25);
+      Assert (not Logger.Started and then Logger.Failures = 1, "first Start failed");
+      Ada.Directories.Create_Path (Dir);
+      Run_Until (N, 0.75);
+      N.Stop;
+      Logging.Set_Console (True);
+      Assert (Logger.Started and then Logger.Failures = 1, "Start retried at 0.5 s");
+      --  Logged times count from the logger's (successful) start at 0.5 s;
+      --  it was queued before the value's call due at 0.5 s.
+      Assert (File_Text (Dir & "/x.csv") = "time,key,value|0.0,x,1.5|0.25,x,1.5|",
+              File_Text (Dir & "/x.csv"));
+   end Start_Retry;
+
    --  An asynchronous component whose task dies of an exception.
    type Async is new RC.Component with null record;
 
@@ -188,6 +241,9 @@ package body Sancta.Components.Tests is
       Result.Add_Test (Caller.Create ("components: copy, merge, switch, logger, watchdog alarm",
                                       Plumbing_And_Logs'Access));
       Result.Add_Test (Caller.Create ("components: watchdog abort", Watchdog_Abort'Access));
+      Result.Add_Test (Caller.Create ("components: transform", Transform'Access));
+      Result.Add_Test (Caller.Create ("components: a failed Start is retried",
+                                      Start_Retry'Access));
       Result.Add_Test (Caller.Create ("components: asynchronous task death reported",
                                       Task_Death'Access));
       return Result;

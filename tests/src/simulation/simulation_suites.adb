@@ -1,3 +1,4 @@
+with Sancta.Components.Navigation.Tests;
 with Sancta.Robot.Tests;
 with Sancta.Simulation.Map_Files.Tests;
 with Sancta.Simulation.Rendering.Tests;
@@ -13,6 +14,7 @@ package body Simulation_Suites is
       Result.Add_Test (Sancta.Simulation.Map_Files.Tests.Suite);
       Result.Add_Test (Sancta.Simulation.Rendering.Tests.Suite);
       Result.Add_Test (Sancta.Robot.Tests.Suite);
+      Result.Add_Test (Sancta.Components.Navigation.Tests.Suite);
       return Result;
    end Suite;
 

@@ -1,0 +1,106 @@
+with Ada.Command_Line;
+with Ada.Real_Time;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.DDS;
+with RCL.Nodes;
+with RCL.QoS;
+
+package body RCL.Clocks is
+
+   protected Sim is
+      procedure Enable (Was : out Boolean);
+      function Enabled return Boolean;
+      procedure Set (T : Nanoseconds);
+      function Get return Nanoseconds;
+   private
+      On   : Boolean := False;
+      Time : Nanoseconds := 0;
+   end Sim;
+
+   protected body Sim is
+      procedure Enable (Was : out Boolean) is
+      begin
+         Was := On;
+         On := True;
+      end Enable;
+      function Enabled return Boolean is (On);
+      procedure Set (T : Nanoseconds) is
+      begin
+         Time := T;
+      end Set;
+      function Get return Nanoseconds is (Time);
+   end Sim;
+
+   function Now (Kind : Clock_Kind := ROS) return Nanoseconds is
+   begin
+      case Kind is
+         when Steady =>
+            declare
+               use Ada.Real_Time;
+               S  : Seconds_Count;
+               TS : Time_Span;
+            begin
+               Split (Clock, S, TS);
+               return Nanoseconds (S) * 1_000_000_000
+                 + Nanoseconds (To_Duration (TS) * 1_000_000_000.0);
+            end;
+         when System =>
+            return Nanoseconds (RCL.DDS.Now);
+         when ROS =>
+            return (if Sim.Enabled then Sim.Get else Nanoseconds (RCL.DDS.Now));
+      end case;
+   end Now;
+
+   function To_Duration (Span : Nanoseconds) return Duration is
+     (Duration (Span / 1_000_000_000) + Duration (Span rem 1_000_000_000) / 1_000_000_000);
+
+   procedure Set_Sim_Time (Time : Nanoseconds) is
+   begin
+      Sim.Set (Time);
+   end Set_Sim_Time;
+
+   function Sim_Time_Enabled return Boolean is (Sim.Enabled);
+
+   procedure On_Clock
+     (Node : in out RCL.Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Node, Info);
+   begin
+      Set_Sim_Time
+        (Nanoseconds (ROSIDL.Int32'(Msg ("clock") ("sec").As_Int32)) * 1_000_000_000
+         + Nanoseconds (ROSIDL.UInt32'(Msg ("clock") ("nanosec").As_UInt32)));
+   end On_Clock;
+
+   procedure Enable_Sim_Time (Node : in out RCL.Nodes.Node'Class) is
+      Was : Boolean;
+   begin
+      Sim.Enable (Was);
+      if not Was then
+         Node.Subscribe
+           (ROSIDL.Typesupport.Get_Message_Support ("rosgraph_msgs", "Clock"),
+            "/clock", On_Clock'Access, RCL.QoS.Clock);
+      end if;
+   end Enable_Sim_Time;
+
+   function Sim_Time_Requested return Boolean is
+      use Ada.Command_Line;
+      In_Ros_Args : Boolean := False;
+   begin
+      for I in 1 .. Argument_Count loop
+         if Argument (I) = "--ros-args" then
+            In_Ros_Args := True;
+         elsif Argument (I) = "--" then
+            In_Ros_Args := False;
+         elsif In_Ros_Args and then I > 1 and then Argument (I - 1) in "-p" | "--param"
+           and then Argument (I) in "use_sim_time:=true" | "use_sim_time:=True"
+         then
+            return True;
+         end if;
+      end loop;
+      return False;
+   end Sim_Time_Requested;
+
+end RCL.Clocks;

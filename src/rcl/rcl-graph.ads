@@ -1,0 +1,35 @@
+--  Graph presence: the process's nodes and their endpoints, published on
+--  "ros_discovery_info" (rmw_dds_common/msg/ParticipantEntitiesInfo,
+--  reliable, transient local, keep last 1) as rmw_cyclonedds does, so that
+--  ROS 2 tools (ros2 node list, ros2 node info) see our nodes. The message
+--  is republished whole on every node or endpoint creation / destruction.
+--
+--  Gids are 24 bytes (the 16-byte DDS GUID then zeros) as in Humble, or 16
+--  bytes as in Jazzy: Set_Layout, or ROS_DISTRO (jazzy, kilted, rolling
+--  select 16; anything else 24), before the first node is created.
+with RCL.DDS;
+
+package RCL.Graph is
+
+   type GID_Layout is (Humble_24, Jazzy_16);
+
+   procedure Set_Layout (Layout : GID_Layout);
+   function Layout return GID_Layout;
+
+   Topic_Name : constant String := "ros_discovery_info";
+   Type_Name  : constant String := "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_";
+
+   --  Not for users: called by RCL.Nodes and RCL.Publishers.
+
+   type Node_Id is new Natural;
+   No_Node : constant Node_Id := 0;
+
+   procedure Add_Node (Namespace, Name : String; Id : out Node_Id);
+   procedure Remove_Node (Id : Node_Id);
+   procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
+   procedure Remove_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
+   procedure Add_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID);
+   --  Each change republishes the participant's entities. Errors while
+   --  publishing are logged, never raised (graph presence is best effort).
+
+end RCL.Graph;

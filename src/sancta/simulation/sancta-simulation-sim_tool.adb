@@ -1,0 +1,632 @@
+with Ada.Command_Line;
+with Ada.Containers.Vectors;
+with Ada.Directories;
+with Ada.Environment_Variables;
+with Ada.Exceptions;
+with Ada.Numerics.Long_Elementary_Functions;
+with Ada.Real_Time;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with GNAT.OS_Lib;
+with Interfaces;
+with RCL.Contexts;
+with RCL.DDS;
+with RCL.Nodes;
+with RCL.Publishers;
+with RCL.QoS;
+with ROSIDL;
+with ROSIDL.CDR;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with Sancta.Geometry;               use Sancta.Geometry;
+with Sancta.Robot.Sensors;
+with Sancta.Components.Robot_Messages;
+with Sancta.Simulation.Map_Files;
+with Sancta.Simulation.Robot_Lists;
+with Sancta.Simulation.Simulators;
+with Sancta.Simulation.Worlds;
+
+package body Sancta.Simulation.Sim_Tool is
+
+   use Ada.Command_Line;
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+   use ROSIDL.Dynamic;
+
+   package Math renames Ada.Numerics.Long_Elementary_Functions;
+   package Robot_Messages renames Sancta.Components.Robot_Messages;
+
+   Usage_Error : exception;
+
+   procedure Usage is
+   begin
+      Put_Line ("usage: sancta-sim WORLD [options]");
+      Put_Line ("  WORLD                   a bundled world (arena, office), a map-server YAML");
+      Put_Line ("                          file or a wall world (.walls)");
+      Put_Line ("  --robot ""NAME X Y YAW [KEY=VALUE ...]""   a robot (repeatable; keys: see");
+      Put_Line ("                          Sancta.Simulation.Robot_Lists)");
+      Put_Line ("  --robots FILE           robots, one per line in that format");
+      Put_Line ("  --rate R | Rx           simulated seconds per wall second (default 1)");
+      Put_Line ("  --as-fast-as-possible   no pacing");
+      Put_Line ("  --seed N                noise seed (default 0)");
+      Put_Line ("  --duration S            stop after S simulated seconds (default: never)");
+      Put_Line ("  --step S                simulated seconds per step (default 0.02)");
+      Put_Line ("  --truth-period S        ground-truth period (default 0.1)");
+      Put_Line ("  --quiet                 do not print events");
+   end Usage;
+
+   function To_Real (Option, Text : String) return Real is
+      Value : Real;
+   begin
+      Value := Real'Value
+        (if Ada.Strings.Fixed.Index (Text, ".") = 0 then Text & ".0" else Text);
+      if not Value'Valid then
+         raise Constraint_Error;
+      end if;
+      return Value;
+   exception
+      when Constraint_Error =>
+         raise Usage_Error with Option & ": expected a number, found """ & Text & """";
+   end To_Real;
+
+   function Executable_Folder return String is
+      use type GNAT.OS_Lib.String_Access;
+      Found : GNAT.OS_Lib.String_Access :=
+        GNAT.OS_Lib.Locate_Exec_On_Path (Command_Name);
+   begin
+      if Found = null then
+         return "";
+      end if;
+      declare
+         Result : constant String :=
+           Ada.Directories.Containing_Directory (Ada.Directories.Full_Name (Found.all));
+      begin
+         GNAT.OS_Lib.Free (Found);
+         return Result;
+      end;
+   exception
+      when others =>
+         return "";
+   end Executable_Folder;
+
+   function World_File (Name : String) return String is
+      function Share return String is
+      begin
+         if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
+           and then Ada.Environment_Variables.Value ("SANCTA_ROOT") /= ""
+         then
+            return Ada.Environment_Variables.Value ("SANCTA_ROOT") & "/share/worlds/";
+         end if;
+         return Executable_Folder & "/../share/worlds/";
+      end Share;
+   begin
+      if Name = "" then
+         return "";
+      elsif Ada.Directories.Exists (Name) then
+         return Name;
+      elsif Ada.Strings.Fixed.Index (Name, "/") = 0 then
+         if Ada.Directories.Exists (Share & Name & ".yaml") then
+            return Share & Name & ".yaml";
+         elsif Ada.Directories.Exists (Share & Name & ".walls") then
+            return Share & Name & ".walls";
+         end if;
+      end if;
+      return "";
+   end World_File;
+
+   --  ROS 2 side of one robot --
+
+   type Node_Access is access RCL.Nodes.Node;
+   type Publisher_Access is access RCL.Publishers.Publisher;
+
+   type Robot_IO is record
+      Id        : Simulators.Robot_Id := 1;
+      Name      : Unbounded_String;
+      Start     : Pose;
+      Node      : Node_Access;
+      Odom      : Publisher_Access;
+      Scan      : Publisher_Access;
+      Truth     : Publisher_Access;
+      GPS       : Publisher_Access;
+      Cmd       : RCL.Nodes.Subscription_Access;
+      Last_Odom : Natural := 0;
+      Last_Scan : Natural := 0;
+      Last_GPS  : Natural := 0;
+   end record;
+
+   package IO_Vectors is new Ada.Containers.Vectors (Positive, Robot_IO);
+
+   procedure Ignore_Sample
+     (Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is null;
+   --  The cmd_vel subscription's callback: never called (no executor spins
+   --  the robot nodes; the stepping loop takes the samples itself).
+
+   function Image (X : Real) return String is
+      Hundredths : constant Long_Long_Integer := Long_Long_Integer (X * 100.0);
+      Whole      : constant String := Long_Long_Integer'Image (abs Hundredths / 100);
+      Cents      : constant String :=
+        Long_Long_Integer'Image (100 + abs Hundredths mod 100);
+   begin
+      return (if Hundredths < 0 then "-" else "") & Whole (Whole'First + 1 .. Whole'Last)
+        & "." & Cents (Cents'Last - 1 .. Cents'Last);
+   end Image;
+   --  X with two decimals ("-1.05").
+
+   procedure Set_Time (Stamp : Field_Ref; T : Real) is
+      Seconds : constant Real := Real'Floor (T);
+      Nanos   : constant Real := Real'Floor ((T - Seconds) * 1.0E9);
+   begin
+      Stamp ("sec").As_Int32 := ROSIDL.Int32 (Seconds);
+      Stamp ("nanosec").As_UInt32 := ROSIDL.UInt32 (Real'Min (Nanos, 999_999_999.0));
+   end Set_Time;
+
+   procedure Set_Stamp (Header : Field_Ref; T : Real; Frame : String) is
+   begin
+      Set_Time (Header ("stamp"), T);
+      Header ("frame_id").Set_String (Frame);
+   end Set_Stamp;
+
+   function Is_Sane (P : Pose) return Boolean is
+     (P.X'Valid and then P.Y'Valid and then P.Yaw'Valid
+      and then abs P.X < 1.0E6 and then abs P.Y < 1.0E6 and then abs P.Yaw < 1.0E6);
+   --  Finite coordinates of a sensible size.
+
+   procedure Set_Pose (Target : Field_Ref; P : Pose) is
+   begin
+      Target ("position")("x").As_Float64 := ROSIDL.Float64 (P.X);
+      Target ("position")("y").As_Float64 := ROSIDL.Float64 (P.Y);
+      Target ("position")("z").As_Float64 := 0.0;
+      Target ("orientation")("x").As_Float64 := 0.0;
+      Target ("orientation")("y").As_Float64 := 0.0;
+      Target ("orientation")("z").As_Float64 :=
+        ROSIDL.Float64 (Math.Sin (Long_Float (P.Yaw) / 2.0));
+      Target ("orientation")("w").As_Float64 :=
+        ROSIDL.Float64 (Math.Cos (Long_Float (P.Yaw) / 2.0));
+   end Set_Pose;
+
+
+
+   procedure Simulate
+     (World       : Worlds.World;
+      Robots      : Robot_Lists.Robot_List;
+      Rate        : Real;
+      As_Fast     : Boolean;
+      Seed        : Interfaces.Unsigned_64;
+      Duration_S  : Real;
+      Step        : Real;
+      Truth_Every : Real;
+      Quiet       : Boolean)
+   is
+      use ROSIDL.Typesupport;
+      use type Ada.Real_Time.Time;
+
+      Sim   : Simulators.Simulator;
+      IO    : IO_Vectors.Vector;
+      Main  : RCL.Nodes.Node := RCL.Nodes.Init ("sancta_sim", Namespace => "/");
+
+      Twist_Support : constant Message_Support := Get_Message_Support ("geometry_msgs", "Twist");
+      Odom_Support  : constant Message_Support := Get_Message_Support ("nav_msgs", "Odometry");
+      Scan_Support  : constant Message_Support :=
+        Get_Message_Support ("sensor_msgs", "LaserScan");
+      Truth_Support : constant Message_Support :=
+        Get_Message_Support ("geometry_msgs", "PoseStamped");
+      GPS_Support   : constant Message_Support :=
+        Get_Message_Support ("geometry_msgs", "PoseWithCovarianceStamped");
+      Clock_Support : constant Message_Support := Get_Message_Support ("rosgraph_msgs", "Clock");
+      Text_Support  : constant Message_Support := Get_Message_Support ("std_msgs", "String");
+      Control       : constant Service_Support :=
+        Get_Service_Support ("sancta_msgs", "SimControl");
+
+      Twist_Msg : Message := Init (Twist_Support);
+      Odom_Msg  : constant Message := Init (Odom_Support);
+      Truth_Msg : constant Message := Init (Truth_Support);
+      Clock_Msg : constant Message := Init (Clock_Support);
+      Text_Msg  : constant Message := Init (Text_Support);
+      Request   : Message := Init (Request_Support (Control));
+      Response  : constant Message := Init (Response_Support (Control));
+
+      Clock_Pub  : RCL.Publishers.Publisher :=
+        Main.Publish (Clock_Support, "/clock", RCL.QoS.Clock);
+      Events_Pub : RCL.Publishers.Publisher :=
+        Main.Publish (Text_Support, "/sancta_sim/events");
+
+      Service_Id   : constant String :=
+        "serviceid=" & RCL.DDS.Image (RCL.Contexts.Participant.Instance_GUID) & ";";
+      Request_Rd   : RCL.DDS.Reader;
+      Reply_Wr     : RCL.DDS.Writer;
+      Template     : Simulators.Robot_Config := Simulators.Default_Robot;
+
+      procedure Say (Text : String) is
+      begin
+         if not Quiet then
+            Put_Line ("[sancta-sim t=" & Image (Sim.Clock) & "] " & Text);
+         end if;
+         Text_Msg ("data").Set_String (Text);
+         Events_Pub.Publish (Text_Msg);
+      end Say;
+
+      function Find (Name : String) return Natural is
+      begin
+         for I in 1 .. Natural (IO.Length) loop
+            if To_String (IO (I).Name) = Name then
+               return I;
+            end if;
+         end loop;
+         return 0;
+      end Find;
+
+      procedure Add (Name : String; Config : Simulators.Robot_Config; Start : Pose) is
+         R : Robot_IO;
+         NS : constant String := "/" & Name;
+      begin
+         Sim.Add_Robot (Config, Start, R.Id, Name);
+         R.Name := To_Unbounded_String (Name);
+         R.Start := Start;
+         R.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_sim", Namespace => NS));
+         R.Odom := new RCL.Publishers.Publisher'(R.Node.Publish (Odom_Support, "odom"));
+         R.Scan := new RCL.Publishers.Publisher'
+           (R.Node.Publish (Scan_Support, "scan", RCL.QoS.Sensor_Data));
+         R.Truth := new RCL.Publishers.Publisher'
+           (R.Node.Publish (Truth_Support, "ground_truth"));
+         if Config.GPS.Enabled then
+            R.GPS := new RCL.Publishers.Publisher'(R.Node.Publish (GPS_Support, "gps"));
+         end if;
+         R.Node.Subscribe_Raw (DDS_Type_Name (Twist_Support), "cmd_vel", Ignore_Sample'Access);
+         R.Cmd := R.Node.Get_Subscription (R.Node.Subscription_Count);
+         IO.Append (R);
+      end Add;
+
+      procedure Publish_Readings (R : in out Robot_IO; With_Truth : Boolean) is
+         Count : Natural;
+      begin
+         if not Sim.Is_Alive (R.Id) then
+            return;
+         end if;
+         Count := Sim.Odometry_Count (R.Id);
+         if Count /= R.Last_Odom then
+            R.Last_Odom := Count;
+            declare
+               O   : constant Sancta.Robot.Sensors.Odometry := Sim.Latest_Odometry (R.Id);
+               Rel : constant Pose := Relative (R.Start, O.Pose);
+               Cov : ROSIDL.Dynamic.Float64_Array (1 .. 36) := [others => 0.0];
+            begin
+               Set_Stamp (Odom_Msg ("header"), O.Stamp, To_String (R.Name) & "/odom");
+               Odom_Msg ("child_frame_id").Set_String (To_String (R.Name) & "/base_link");
+               Set_Pose (Odom_Msg ("pose")("pose"), Rel);
+               Cov (1) := ROSIDL.Float64 (O.Pose_Variance);
+               Cov (8) := ROSIDL.Float64 (O.Pose_Variance);
+               Cov (36) := ROSIDL.Float64 (O.Yaw_Variance);
+               Odom_Msg ("pose")("covariance").Set_Float64_Array (Cov);
+               Odom_Msg ("twist")("twist")("linear")("x").As_Float64 :=
+                 ROSIDL.Float64 (O.Velocity.Linear_X);
+               Odom_Msg ("twist")("twist")("angular")("z").As_Float64 :=
+                 ROSIDL.Float64 (O.Velocity.Angular_Z);
+               R.Odom.Publish (Odom_Msg);
+            end;
+         end if;
+         Count := Sim.Scan_Count (R.Id);
+         if Count /= R.Last_Scan then
+            R.Last_Scan := Count;
+            R.Scan.Publish
+              (Robot_Messages.Scan_Message
+                 (Sim.Latest_Scan (R.Id), To_String (R.Name) & "/base_link"));
+         end if;
+         if R.GPS /= null then
+            Count := Sim.GPS_Count (R.Id);
+            if Count /= R.Last_GPS then
+               R.Last_GPS := Count;
+               R.GPS.Publish (Robot_Messages.Fix_Message (Sim.Latest_GPS (R.Id)));
+            end if;
+         end if;
+         if With_Truth then
+            declare
+               T : constant Sancta.Robot.Sensors.Pose_Stamped := Sim.Ground_Truth (R.Id);
+            begin
+               Set_Stamp (Truth_Msg ("header"), T.Stamp, "map");
+               Set_Pose (Truth_Msg ("pose"), T.Pose);
+               R.Truth.Publish (Truth_Msg);
+            end;
+         end if;
+      end Publish_Readings;
+
+      procedure Take_Commands (R : in out Robot_IO) is
+         Info : RCL.DDS.Sample_Info;
+      begin
+         loop
+            declare
+               Data : constant RCL.DDS.Byte_Array := R.Cmd.Reader.Take (Info);
+            begin
+               exit when Data'Length = 0;
+               ROSIDL.CDR.Decode (Data, Twist_Msg);
+               Sim.Set_Command
+                 (R.Id,
+                  (Linear_X  => Real (ROSIDL.Float64'(Twist_Msg ("linear")("x").As_Float64)),
+                   Angular_Z => Real (ROSIDL.Float64'(Twist_Msg ("angular")("z").As_Float64))));
+            exception
+               when E : ROSIDL.Decode_Error =>
+                  Say ("bad cmd_vel sample for " & To_String (R.Name) & ": "
+                       & Ada.Exceptions.Exception_Message (E));
+            end;
+         end loop;
+      end Take_Commands;
+
+      procedure Answer (Header : ROSIDL.CDR.Request_Header) is
+         Command : constant String := Request ("command").Get_String;
+         Name    : constant String := Request ("name").Get_String;
+         Where   : constant Pose :=
+           (Real (ROSIDL.Float64'(Request ("x").As_Float64)),
+            Real (ROSIDL.Float64'(Request ("y").As_Float64)),
+            Real (ROSIDL.Float64'(Request ("yaw").As_Float64)));
+         Index   : constant Natural := Find (Name);
+         Ok      : Boolean := True;
+         Text    : Unbounded_String;
+      begin
+         if Command = "list" then
+            for R of IO loop
+               Append (Text, R.Name & (if Sim.Is_Alive (R.Id) then "" else "(dead)") & " ");
+            end loop;
+         elsif Command = "add" then
+            if not Robot_Lists.Is_Valid_Name (Name) then
+               Ok := False;
+               Text := To_Unbounded_String ("add: invalid robot name """ & Name & """");
+            elsif Index /= 0 then
+               Ok := False;
+               Text := To_Unbounded_String ("add: robot " & Name & " exists already");
+            elsif not Is_Sane (Where) then
+               Ok := False;
+               Text := To_Unbounded_String ("add: invalid start pose");
+            else
+               Add (Name, Template, Where);
+               Text := To_Unbounded_String ("added " & Name);
+            end if;
+         elsif Command in "kill" | "revive" | "teleport" then
+            if Index = 0 then
+               Ok := False;
+               Text := To_Unbounded_String (Command & ": no robot named """ & Name & """");
+            elsif Command = "kill" then
+               Sim.Kill (IO (Index).Id);
+               Text := To_Unbounded_String ("killed " & Name);
+            elsif Command = "revive" then
+               Sim.Revive (IO (Index).Id);
+               Text := To_Unbounded_String ("revived " & Name);
+            elsif not Is_Sane (Where) then
+               Ok := False;
+               Text := To_Unbounded_String ("teleport: invalid pose");
+            else
+               Sim.Teleport (IO (Index).Id, Where);
+               Text := To_Unbounded_String ("teleported " & Name);
+            end if;
+         else
+            Ok := False;
+            Text := To_Unbounded_String
+              ("unknown command """ & Command & """ (add, kill, revive, teleport, list)");
+         end if;
+         Response ("success").As_Bool := Ok;
+         Response ("message").Set_String (To_String (Text));
+         Reply_Wr.Write (ROSIDL.CDR.Encode (Response, Header));
+         if not Quiet then
+            Put_Line ("[sancta-sim t=" & Image (Sim.Clock) & "] control " & Command & " "
+                      & Name & ": " & To_String (Text));
+         end if;
+      end Answer;
+
+      procedure Take_Requests is
+         Info   : RCL.DDS.Sample_Info;
+         Header : ROSIDL.CDR.Request_Header;
+      begin
+         loop
+            declare
+               Data : constant RCL.DDS.Byte_Array := Request_Rd.Take (Info);
+            begin
+               exit when Data'Length = 0;
+               ROSIDL.CDR.Decode (Data, Request, Header);
+               Answer (Header);
+            exception
+               when E : ROSIDL.Decode_Error =>
+                  Say ("bad control request: " & Ada.Exceptions.Exception_Message (E));
+            end;
+         end loop;
+      end Take_Requests;
+
+      procedure Report_Events is
+         Events : Simulators.Event_Vectors.Vector;
+      begin
+         Sim.Take_Events (Events);
+         for E of Events loop
+            declare
+               Who : constant String := Sim.Name (E.Robot);
+               At_Text : constant String :=
+                 " at (" & Image (E.Where.X) & ", " & Image (E.Where.Y) & ")";
+            begin
+               case E.Kind is
+                  when Simulators.Wall_Collision =>
+                     Say ("collision " & Who & " wall" & At_Text);
+                  when Simulators.Robot_Collision =>
+                     Say ("collision " & Who & " " & Sim.Name (E.Other) & At_Text);
+                  when Simulators.Robot_Added =>
+                     Say ("added " & Who & At_Text);
+                  when Simulators.Robot_Killed =>
+                     Say ("killed " & Who & At_Text);
+                  when Simulators.Robot_Revived =>
+                     Say ("revived " & Who & At_Text);
+               end case;
+            end;
+         end loop;
+      end Report_Events;
+
+      Started    : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      Next_Truth : Real := 0.0;
+   begin
+      Sim.Initialize (World, Seed);
+      Request_Rd.Create
+        (RCL.Contexts.Participant.all, "rq/sancta_sim/controlRequest",
+         DDS_Type_Name (Request_Support (Control)), RCL.QoS.Services_Default,
+         User_Data => Service_Id);
+      Reply_Wr.Create
+        (RCL.Contexts.Participant.all, "rr/sancta_sim/controlReply",
+         DDS_Type_Name (Response_Support (Control)), RCL.QoS.Services_Default,
+         User_Data => Service_Id);
+      if not Robots.Is_Empty then
+         Template := Robots.First_Element.Config;
+      end if;
+      for R of Robots loop
+         Add (To_String (R.Name), R.Config, R.Start);
+      end loop;
+      Put_Line ("sancta-sim: " & Natural'Image (Natural (IO.Length)) & " robot(s), domain"
+                & RCL.DDS.Domain_Id'Image (RCL.Contexts.Domain) & ", "
+                & (if As_Fast then "as fast as possible" else "rate " & Image (Rate) & "x"));
+      while not RCL.Contexts.Is_Shutdown
+        and then Sim.Clock < Duration_S - Step / 2.0
+      loop
+         for R of IO loop
+            Take_Commands (R);
+         end loop;
+         Take_Requests;
+         Sim.Step (Step);
+         Report_Events;
+         declare
+            Truth_Due : constant Boolean := Sim.Clock >= Next_Truth - 1.0E-9;
+         begin
+            if Truth_Due then
+               Next_Truth := Next_Truth + Truth_Every;
+            end if;
+            for R of IO loop
+               Publish_Readings (R, Truth_Due);
+            end loop;
+         end;
+         Set_Time (Clock_Msg ("clock"), Sim.Clock);
+         Clock_Pub.Publish (Clock_Msg);
+         if not As_Fast then
+            delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
+         end if;
+      end loop;
+      Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock));
+   exception
+      when RCL.ROS_Exception =>
+         if not RCL.Contexts.Is_Shutdown then
+            raise;
+         end if;
+   end Simulate;
+
+   procedure Run is
+      World_Name  : Unbounded_String;
+      Robots      : Robot_Lists.Robot_List;
+      Rate        : Real := 1.0;
+      As_Fast     : Boolean := False;
+      Seed        : Interfaces.Unsigned_64 := 0;
+      Duration_S  : Real := Real'Last;
+      Step        : Real := 0.02;
+      Truth_Every : Real := 0.1;
+      Quiet       : Boolean := False;
+      K           : Positive := 1;
+
+      function Value return String is
+      begin
+         if K + 1 > Argument_Count then
+            raise Usage_Error with Argument (K) & ": missing value";
+         end if;
+         return Argument (K + 1);
+      end Value;
+   begin
+      if Argument_Count = 0 then
+         Usage;
+         Set_Exit_Status (Failure);
+         return;
+      end if;
+      while K <= Argument_Count loop
+         declare
+            A : constant String := Argument (K);
+         begin
+            if A = "--help" or else A = "-h" then
+               Usage;
+               return;
+            elsif A = "--robot" then
+               Robot_Lists.Parse_Line (Value, "--robot", 1, Robots);
+               K := K + 1;
+            elsif A = "--robots" then
+               Robot_Lists.Load (Value, Robots);
+               K := K + 1;
+            elsif A = "--rate" then
+               declare
+                  V : constant String := Value;
+                  T : constant String :=
+                    (if V'Length > 1 and then V (V'Last) = 'x'
+                     then V (V'First .. V'Last - 1) else V);
+               begin
+                  Rate := To_Real ("--rate", T);
+                  if Rate <= 0.0 or else Rate > 1.0E6 then
+                     raise Usage_Error with "--rate: expected a positive factor, found " & V;
+                  end if;
+               end;
+               K := K + 1;
+            elsif A = "--as-fast-as-possible" then
+               As_Fast := True;
+            elsif A = "--seed" then
+               begin
+                  Seed := Interfaces.Unsigned_64'Value (Value);
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--seed: expected a whole number, found """
+                       & Value & """";
+               end;
+               K := K + 1;
+            elsif A = "--duration" then
+               Duration_S := To_Real ("--duration", Value);
+               if Duration_S <= 0.0 then
+                  raise Usage_Error with "--duration: expected a positive time";
+               end if;
+               K := K + 1;
+            elsif A = "--step" then
+               Step := To_Real ("--step", Value);
+               if Step not in 0.001 .. 0.05 then
+                  raise Usage_Error with "--step: expected 0.001 .. 0.05 s, found " & Value;
+               end if;
+               K := K + 1;
+            elsif A = "--truth-period" then
+               Truth_Every := To_Real ("--truth-period", Value);
+               if Truth_Every <= 0.0 then
+                  raise Usage_Error with "--truth-period: expected a positive time";
+               end if;
+               K := K + 1;
+            elsif A = "--quiet" then
+               Quiet := True;
+            elsif A'Length > 0 and then A (A'First) = '-' then
+               raise Usage_Error with A & ": unknown option (see --help)";
+            elsif Length (World_Name) = 0 then
+               World_Name := To_Unbounded_String (A);
+            else
+               raise Usage_Error with A & ": only one world may be given";
+            end if;
+         end;
+         K := K + 1;
+      end loop;
+      if Length (World_Name) = 0 then
+         raise Usage_Error with "no world given (a bundled name, a .yaml or a .walls file)";
+      end if;
+      declare
+         File : constant String := World_File (To_String (World_Name));
+      begin
+         if File = "" then
+            raise Usage_Error with To_String (World_Name)
+              & ": no such file and no bundled world of that name (arena, office)";
+         end if;
+         declare
+            World : constant Worlds.World := Map_Files.Load_World (File);
+         begin
+            Simulate (World, Robots, Rate, As_Fast, Seed, Duration_S, Step, Truth_Every,
+                      Quiet);
+         end;
+      end;
+   exception
+      when E : Usage_Error | Robot_Lists.List_Error =>
+         Put_Line (Standard_Error, "sancta-sim: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+      when E : Format_Error =>
+         Put_Line (Standard_Error, "sancta-sim: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+   end Run;
+
+end Sancta.Simulation.Sim_Tool;
