@@ -219,21 +219,41 @@ package body Sancta.Team.Plans is
       Position  : out Positive;
       Choice    : out Positive)
    is
-      T : constant Missions.Mission_Task := Task_Of (S, Task_Id);
+      T     : constant Missions.Mission_Task := Task_Of (S, Task_Id);
+      L     : constant Natural := Natural (Tour.Length);
+      Entry_P, Exit_P : array (0 .. L) of Point;
+      Base  : Long_Float := 0.0;
    begin
+      --  Exit point of step K (0: the start) and entry point of step K.
+      Exit_P (0) := Start;
+      Entry_P (0) := Start;
+      for K in 1 .. L loop
+         declare
+            U : constant Missions.Mission_Task := Task_Of (S, To_String (Tour (K).Task_Id));
+         begin
+            Entry_P (K) := Missions.Entry_Point (U, Tour (K).Choice);
+            Exit_P (K) := Missions.Exit_Point (U, Tour (K).Choice);
+            Base := Base + Long_Float (Distance (Exit_P (K - 1), Entry_P (K)))
+              + Missions.Inner_Length (U, Tour (K).Choice);
+         end;
+      end loop;
       New_Cost := Long_Float'Last;
       Position := 1;
       Choice := 1;
-      for Pos in 1 .. Natural (Tour.Length) + 1 loop
+      for Pos in 1 .. L + 1 loop
          for C in 1 .. Missions.Alternatives (T) loop
             declare
-               Trial : Step_Vectors.Vector := Tour;
-               Cost  : Long_Float;
+               In_P  : constant Point := Missions.Entry_Point (T, C);
+               Out_P : constant Point := Missions.Exit_Point (T, C);
+               Delta_Cost : Long_Float :=
+                 Long_Float (Distance (Exit_P (Pos - 1), In_P)) + Missions.Inner_Length (T, C);
             begin
-               Trial.Insert (Pos, Step'(To_Unbounded_String (Task_Id), C));
-               Cost := Tour_Cost (S, Start, Trial);
-               if Cost < New_Cost then
-                  New_Cost := Cost;
+               if Pos <= L then
+                  Delta_Cost := Delta_Cost + Long_Float (Distance (Out_P, Entry_P (Pos)))
+                    - Long_Float (Distance (Exit_P (Pos - 1), Entry_P (Pos)));
+               end if;
+               if Base + Delta_Cost < New_Cost - 1.0E-9 then
+                  New_Cost := Base + Delta_Cost;
                   Position := Pos;
                   Choice := C;
                end if;
@@ -279,6 +299,48 @@ package body Sancta.Team.Plans is
       Dummy := Evaluate (S, Result);
       return Result;
    end Greedy;
+
+   function Auction (S : Snapshot; Proposer : String) return Plan is
+      Result : Plan := (Generation => S.Generation, Proposer => To_Unbounded_String (Proposer),
+                        others => <>);
+      Left   : array (1 .. Natural (S.Tasks.Length)) of Boolean := [others => True];
+      Dummy  : Long_Float;
+   begin
+      for R in 1 .. Natural (S.Robots.Length) loop
+         Result.Tours.Append (Step_Vectors.Empty_Vector);
+      end loop;
+      for Round in 1 .. Natural (S.Tasks.Length) loop
+         declare
+            Best_R, Best_T, Best_Pos, Best_C : Positive := 1;
+            Best : Long_Float := Long_Float'Last;
+         begin
+            for R in 1 .. Natural (S.Robots.Length) loop
+               for T in Left'Range loop
+                  if Left (T) then
+                     declare
+                        Cost   : Long_Float;
+                        Pos, C : Positive;
+                     begin
+                        Best_Insertion (S, S.Robots (R).Where, Result.Tours (R),
+                                        To_String (S.Tasks (T).Id), Cost, Pos, C);
+                        if Cost < Best then
+                           Best := Cost;
+                           Best_R := R;
+                           Best_T := T;
+                           Best_Pos := Pos;
+                           Best_C := C;
+                        end if;
+                     end;
+                  end if;
+               end loop;
+            end loop;
+            Result.Tours (Best_R).Insert (Best_Pos, Step'(S.Tasks (Best_T).Id, Best_C));
+            Left (Best_T) := False;
+         end;
+      end loop;
+      Dummy := Evaluate (S, Result);
+      return Result;
+   end Auction;
 
    function Anneal
      (S          : Snapshot;

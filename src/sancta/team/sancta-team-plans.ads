@@ -96,6 +96,15 @@ package Sancta.Team.Plans is
 
    function Greedy (S : Snapshot; Proposer : String) return Plan
      with Pre => not S.Robots.Is_Empty;
-   --  Best-insertion greedy (the min-makespan baseline).
+   --  Best-insertion greedy (the min-makespan baseline): tasks in mission
+   --  order, each to the robot whose tour stays the shortest.
+
+   function Auction (S : Snapshot; Proposer : String) return Plan
+     with Pre => not S.Robots.Is_Empty;
+   --  The outcome of the team's sequential single-item auctions computed in
+   --  one place (same bids and winner rule as Sancta.Team.Agents' auctions:
+   --  each step, every robot bids its cheapest task at the tour cost after
+   --  its best insertion; the lowest bid wins, ties to the first robot).
+   --  For benchmarks.
 
 end Sancta.Team.Plans;
