@@ -11,7 +11,9 @@
 # keep-all so that no sample is lost. Prints a table and the Ada/C ratios
 # (targets: median RTT <= 1.25x C, throughput >= 0.8x C) and writes
 # out/bench/messaging.csv and .json.
-# Environment: BENCH_QUICK=1 for a short run; BENCH_SECONDS (default 2).
+# Throughput is the best of BENCH_REPEAT runs (default 3) of BENCH_SECONDS
+# (default 1) each: the machine is shared, the best run is the least
+# disturbed. BENCH_QUICK=1: fewer round trips, one throughput run.
 set -uo pipefail
 source "$(dirname "$0")/../scripts/env.sh"
 cd "$repo_root"
@@ -20,8 +22,9 @@ build=$out/messaging_c
 mkdir -p "$out" "$build"
 
 quick=${BENCH_QUICK:-0}
-seconds=${BENCH_SECONDS:-2}
-[ "$quick" = 1 ] && seconds=1
+seconds=${BENCH_SECONDS:-1}
+repeat=${BENCH_REPEAT:-3}
+[ "$quick" = 1 ] && repeat=1
 sizes=(64 4096 262144)
 
 echo "bench-messaging: building (Ada release mode, C with idlc)"
@@ -62,14 +65,23 @@ for impl in C Ada Ada-raw Python; do
       rtt=$(timeout 120 $cmd ping "$size" "$(count_for $impl "$size")" 2>/dev/null | grep '^rtt_us')
       sleep 0.3
       kill "$pong" 2>/dev/null; wait "$pong" 2>/dev/null
-      # Throughput.
-      $cmd sub >"$out/sub.txt" 2>/dev/null &
-      sub=$!
-      sleep 0.5
-      timeout 120 $cmd pub "$size" "$seconds" >/dev/null 2>&1
-      for _ in $(seq 50); do kill -0 "$sub" 2>/dev/null || break; sleep 0.2; done
-      kill "$sub" 2>/dev/null; wait "$sub" 2>/dev/null
-      thr=$(grep '^throughput' "$out/sub.txt")
+      # Throughput: best of $repeat runs.
+      thr=""
+      for _ in $(seq "$repeat"); do
+         $cmd sub >"$out/sub.txt" 2>/dev/null &
+         sub=$!
+         sleep 0.5
+         timeout 120 $cmd pub "$size" "$seconds" >/dev/null 2>&1
+         for _ in $(seq 50); do kill -0 "$sub" 2>/dev/null || break; sleep 0.2; done
+         kill "$sub" 2>/dev/null; wait "$sub" 2>/dev/null
+         run=$(grep '^throughput' "$out/sub.txt")
+         if [ -n "$run" ]; then
+            if [ -z "$thr" ] || awk -v a="$run" -v b="$thr" \
+                  'BEGIN { split(a, x, " "); split(b, y, " "); exit !(x[2] > y[2]) }'; then
+               thr=$run
+            fi
+         fi
+      done
       read -r _ median p99 <<<"${rtt:-rtt_us nan nan}"
       read -r _ msgs mbs <<<"${thr:-throughput nan nan}"
       echo "$impl,$size,$median,$p99,$msgs,$mbs" >> "$csv"

@@ -107,6 +107,8 @@ static struct ddsi_serdata *raw_serdata_from_ser (const struct ddsi_sertype *typ
     }
     fragchain = fragchain->nextfrag;
   }
+  if (off < size)
+    memset (d->data + off, 0, size - off); /* never expose stale heap bytes */
   return &d->c;
 }
 
@@ -127,6 +129,8 @@ static struct ddsi_serdata *raw_serdata_from_ser_iov (const struct ddsi_sertype 
     memcpy (d->data + off, iov[i].iov_base, n);
     off += n;
   }
+  if (off < size)
+    memset (d->data + off, 0, size - off);
   return &d->c;
 }
 
@@ -481,4 +485,84 @@ dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config
   result = dds_create_domain (domain, config);
   pthread_sigmask (SIG_SETMASK, &old, NULL);
   return result;
+}
+
+/* ------------------------------------------------------------------ */
+/* Graph queries: the endpoints DDS discovery knows (built-in topics). */
+
+char *sancta_dds_endpoint_list (dds_entity_t participant, int publications)
+{
+  dds_entity_t rd = dds_create_reader (participant,
+                                       publications ? DDS_BUILTIN_TOPIC_DCPSPUBLICATION
+                                                    : DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION,
+                                       NULL, NULL);
+  size_t len = 0, cap = 256;
+  char *out;
+  if (rd < 0)
+    return NULL;
+  out = ddsrt_malloc_s (cap);
+  if (out == NULL) {
+    dds_delete (rd);
+    return NULL;
+  }
+  out[0] = 0;
+  for (;;) {
+    void *buf[32] = { NULL };
+    dds_sample_info_t si[32];
+    dds_return_t n = dds_take (rd, buf, si, 32, 32);
+    if (n <= 0)
+      break;
+    for (int i = 0; i < n; i++) {
+      const dds_builtintopic_endpoint_t *ep = buf[i];
+      if (!si[i].valid_data || si[i].instance_state != DDS_IST_ALIVE)
+        continue;
+      size_t need = strlen (ep->topic_name) + strlen (ep->type_name) + 3;
+      if (len + need >= cap) {
+        char *bigger;
+        while (len + need >= cap)
+          cap *= 2;
+        bigger = ddsrt_realloc (out, cap);
+        if (bigger == NULL)
+          break;
+        out = bigger;
+      }
+      len += (size_t) snprintf (out + len, cap - len, "%s\t%s\n", ep->topic_name, ep->type_name);
+    }
+    dds_return_loan (rd, buf, n);
+  }
+  dds_delete (rd);
+  return out;
+}
+
+void sancta_dds_free (void *p)
+{
+  ddsrt_free (p);
+}
+
+/* ------------------------------------------------------------------ */
+/* Writing without an intermediate buffer: the caller serializes straight
+   into a new serdata's storage. */
+
+void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **buffer)
+{
+  struct raw_serdata *d = raw_serdata_new (sertype, SDK_DATA, size);
+  if (d == NULL) {
+    *buffer = NULL;
+    return NULL;
+  }
+  *buffer = d->data;
+  return d;
+}
+
+dds_return_t sancta_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
+                                       dds_time_t timestamp)
+{
+  struct raw_serdata *d = serdata;
+  if (used < d->size) {
+    /* Shrink: keep the bytes up to the next multiple of 4 zeroed. */
+    memset (d->data + used, 0, align4 (d->size) - used);
+    d->size = (uint32_t) used;
+  }
+  d->c.timestamp.v = timestamp;
+  return dds_writecdr (writer, &d->c); /* consumes the reference */
 }

@@ -52,4 +52,16 @@ dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config
    may take them. */
 void sancta_block_stop_signals (void);
 
+/* A serdata of "size" bytes for the topic's sertype; *buffer receives its
+   storage, to be filled before sancta_dds_write_serdata (which takes the
+   serdata, "used" <= size bytes of it) or sancta_dds_serdata_release. */
+void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **buffer);
+dds_return_t sancta_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
+                                       dds_time_t timestamp);
+
+/* The endpoints DDS discovery knows (publications or subscriptions), one
+   "topic<TAB>type<LF>" line each; NULL on error; free with sancta_dds_free. */
+char *sancta_dds_endpoint_list (dds_entity_t participant, int publications);
+void sancta_dds_free (void *p);
+
 #endif

@@ -76,8 +76,9 @@ procedure Bench_Messaging is
       delay 0.3;
    end Wait_Match;
 
-   Got       : Boolean := False;
-   Stopped   : Boolean := False;
+   Got       : Boolean := False with Atomic;
+   Stopped   : Boolean := False with Atomic;
+   --  Set by callbacks (through the executor): read afresh in the loops.
    Count     : Natural := 0;
    Bytes     : Long_Float := 0.0;
    T_First   : Time := Time_First;

@@ -105,7 +105,7 @@ begin
       declare
          Out_Topic : constant String := Argument (5);
          Pub       : RCL.Publishers.Publisher := Node.Publish (Support, Out_Topic, Profile);
-         Echoed    : Natural := 0;
+         Echoed    : Natural := 0 with Atomic;
 
          procedure Echo
            (Node : in out RCL.Nodes.Node'Class;

@@ -22,8 +22,9 @@ procedure Raw_Chatter is
    Type_Name : constant String := "std_msgs::msg::dds_::String_";
    Mode      : constant String := Ada.Command_Line.Argument (1);
    Count     : constant Positive := Positive'Value (Ada.Command_Line.Argument (2));
-   Heard     : Natural := 0;
-   Sent      : Natural := 0;
+   Heard     : Natural := 0 with Atomic;
+   Sent      : Natural := 0 with Atomic;
+   --  Set by callbacks (through the executor): read afresh in the loops.
 
    function Encode (Text : String) return Stream_Element_Array is
       Len    : constant Interfaces.Unsigned_32 := Text'Length + 1;

@@ -4,6 +4,7 @@ pragma Unreserve_All_Interrupts;
 with Ada.Environment_Variables;
 with Ada.Interrupts.Names;
 with Ada.Real_Time;
+with Ada.Unchecked_Deallocation;
 with GNAT.OS_Lib;
 
 package body RCL.Contexts is
@@ -11,18 +12,32 @@ package body RCL.Contexts is
    package Env renames Ada.Environment_Variables;
 
    type Participant_Access is access RCL.DDS.Participant;
+   procedure Free is new Ada.Unchecked_Deallocation (RCL.DDS.Participant, Participant_Access);
 
    Max_Wakers : constant := 64;
    type Waker_Array is array (1 .. Max_Wakers) of Waitset_Access;
 
+   function Env_Domain return RCL.DDS.Domain_Id is
+     (Parse_Domain_Id (Env.Value ("ROS_DOMAIN_ID", "")));
+
+   function Env_Localhost_Only return Boolean is
+     (Env.Value ("ROS_LOCALHOST_ONLY", "0") = "1"
+      or else Env.Value ("ROS_AUTOMATIC_DISCOVERY_RANGE", "") = "LOCALHOST");
+
    protected State is
       procedure Init (P : out Participant_Access);
+      procedure Init (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean);
+      function Initialized return Boolean;
+      function Domain return RCL.DDS.Domain_Id;
+      function Localhost_Only return Boolean;
       procedure Set_Shutdown (Wakers : out Waker_Array);
       function Down return Boolean;
       procedure Register (Hook : Waitset_Access; Key : out Positive);
       procedure Unregister (Key : Positive);
    private
       Part    : Participant_Access;
+      Dom_Id  : RCL.DDS.Domain_Id := 0;
+      Local   : Boolean := False;
       Is_Down : Boolean := False;
       Hooks   : Waker_Array := [others => null];
    end State;
@@ -40,21 +55,40 @@ package body RCL.Contexts is
    end Parse_Domain_Id;
 
    function Domain return RCL.DDS.Domain_Id is
-     (Parse_Domain_Id (Env.Value ("ROS_DOMAIN_ID", "")));
+     (if State.Initialized then State.Domain else Env_Domain);
 
    function Localhost_Only return Boolean is
-     (Env.Value ("ROS_LOCALHOST_ONLY", "0") = "1"
-      or else Env.Value ("ROS_AUTOMATIC_DISCOVERY_RANGE", "") = "LOCALHOST");
+     (if State.Initialized then State.Localhost_Only else Env_Localhost_Only);
+
+   function Is_Initialized return Boolean is (State.Initialized);
 
    protected body State is
       procedure Init (P : out Participant_Access) is
       begin
          if Part = null then
-            Part := new RCL.DDS.Participant;
-            RCL.DDS.Create (Part.all, Domain, Localhost_Only);
+            Init (P, Env_Domain, Env_Localhost_Only);
          end if;
          P := Part;
       end Init;
+
+      procedure Init (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean)
+      is
+         New_Part : Participant_Access := new RCL.DDS.Participant;
+      begin
+         if Part = null then
+            RCL.DDS.Create (New_Part.all, Dom, Local);
+            Part := New_Part;
+            Dom_Id := Dom;
+            State.Local := Local;
+         else
+            Free (New_Part);
+         end if;
+         P := Part;
+      end Init;
+
+      function Initialized return Boolean is (Part /= null);
+      function Domain return RCL.DDS.Domain_Id is (Dom_Id);
+      function Localhost_Only return Boolean is (Local);
 
       procedure Set_Shutdown (Wakers : out Waker_Array) is
       begin
@@ -89,6 +123,13 @@ package body RCL.Contexts is
    begin
       Install_Signal_Handlers;
       State.Init (P);
+   end Init;
+
+   procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean) is
+      P : Participant_Access;
+   begin
+      Install_Signal_Handlers;
+      State.Init (P, Domain, Localhost_Only);
    end Init;
 
    function Participant return not null access RCL.DDS.Participant is

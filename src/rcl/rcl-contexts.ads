@@ -18,8 +18,15 @@ package RCL.Contexts is
    --  Creates the participant if not done yet; raises ROS_Exception on a
    --  bad ROS_DOMAIN_ID (naming the variable and its value) or a DDS error.
 
+   procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean)
+     with Pre => not Is_Initialized;
+   --  The same with an explicit domain and discovery range instead of the
+   --  environment's (before the first node).
+
+   function Is_Initialized return Boolean;
+
    function Domain return RCL.DDS.Domain_Id;
-   --  ROS_DOMAIN_ID (default 0).
+   --  The context's domain: ROS_DOMAIN_ID (default 0) unless Init said.
 
    function Localhost_Only return Boolean;
 

@@ -40,6 +40,10 @@ package body RCL.Executors is
    begin
       Sub.Handle.Deliver (Node.all, Data, Info);
    exception
+      when E : ROSIDL.Decode_Error =>
+         RCL.Logging.Error
+           ("dropped a malformed sample on " & Sub.Topic.all & ": "
+            & Ada.Exceptions.Exception_Message (E), Logger => Node.Logger_Name);
       when E : others =>
          RCL.Logging.Error
            ("exception in the callback of subscription " & Sub.Topic.all & ": "

@@ -1,7 +1,6 @@
 with Ada.Containers.Vectors;
 with Ada.Environment_Variables;
 with Ada.Exceptions;
-with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
@@ -251,5 +250,124 @@ package body RCL.Graph is
    begin
       Update (Change'Access);
    end Add_Reader;
+
+   -------------
+   -- Queries --
+   -------------
+
+   function ROS_Type_Name (DDS_Type_Name : String) return String is
+      Marker : constant String := "::dds_::";
+      Result : Unbounded_String;
+      I      : Natural := DDS_Type_Name'First;
+   begin
+      if DDS_Type_Name'Length < Marker'Length + 2
+        or else DDS_Type_Name (DDS_Type_Name'Last) /= '_'
+      then
+         return DDS_Type_Name;
+      end if;
+      while I <= DDS_Type_Name'Last - 1 loop
+         if I + Marker'Length - 1 <= DDS_Type_Name'Last
+           and then DDS_Type_Name (I .. I + Marker'Length - 1) = Marker
+         then
+            Append (Result, '/');
+            I := I + Marker'Length;
+         elsif I + 1 <= DDS_Type_Name'Last and then DDS_Type_Name (I .. I + 1) = "::" then
+            Append (Result, '/');
+            I := I + 2;
+         else
+            Append (Result, DDS_Type_Name (I));
+            I := I + 1;
+         end if;
+      end loop;
+      return To_String (Result);
+   end ROS_Type_Name;
+
+   package Info_Vectors is new Ada.Containers.Vectors (Positive, Topic_Info);
+
+   procedure Count
+     (List : in out Info_Vectors.Vector; Lines : String; Publications : Boolean)
+   is
+      Start : Positive := Lines'First;
+   begin
+      for I in Lines'Range loop
+         if Lines (I) = ASCII.LF then
+            declare
+               Line : constant String := Lines (Start .. I - 1);
+               Tab  : Natural := 0;
+            begin
+               for J in Line'Range loop
+                  if Line (J) = ASCII.HT then
+                     Tab := J;
+                     exit;
+                  end if;
+               end loop;
+               if Tab > Line'First + 2 and then Line (Line'First .. Line'First + 2) = "rt/" then
+                  declare
+                     Name  : constant String := Line (Line'First + 2 .. Tab - 1);
+                     Typ   : constant String := ROS_Type_Name (Line (Tab + 1 .. Line'Last));
+                     Found : Boolean := False;
+                  begin
+                     for E of List loop
+                        if E.Name = Name and then E.Type_Name = Typ then
+                           if Publications then
+                              E.Publishers := E.Publishers + 1;
+                           else
+                              E.Subscribers := E.Subscribers + 1;
+                           end if;
+                           Found := True;
+                        end if;
+                     end loop;
+                     if not Found then
+                        List.Append
+                          (Topic_Info'(To_Unbounded_String (Name), To_Unbounded_String (Typ),
+                                       (if Publications then 1 else 0),
+                                       (if Publications then 0 else 1)));
+                     end if;
+                  end;
+               end if;
+            end;
+            Start := I + 1;
+         end if;
+      end loop;
+   end Count;
+
+   function Topics return Topic_Info_Array is
+      function "<" (L, R : Topic_Info) return Boolean is
+        (L.Name < R.Name or else (L.Name = R.Name and then L.Type_Name < R.Type_Name));
+      package Sorting is new Info_Vectors.Generic_Sorting;
+      List : Info_Vectors.Vector;
+      P    : constant access RCL.DDS.Participant := RCL.Contexts.Participant;
+   begin
+      Count (List, RCL.DDS.Endpoints (P.all, Publications => True), True);
+      Count (List, RCL.DDS.Endpoints (P.all, Publications => False), False);
+      Sorting.Sort (List);
+      return Result : Topic_Info_Array (1 .. Natural (List.Length)) do
+         for I in Result'Range loop
+            Result (I) := List (I);
+         end loop;
+      end return;
+   end Topics;
+
+   function Count_Publishers (Topic : String) return Natural is
+      N : Natural := 0;
+   begin
+      for T of Topics loop
+         if T.Name = Topic then
+            N := N + T.Publishers;
+         end if;
+      end loop;
+      return N;
+   end Count_Publishers;
+
+   function Count_Subscribers (Topic : String) return Natural is
+      N : Natural := 0;
+   begin
+      for T of Topics loop
+         if T.Name = Topic then
+            N := N + T.Subscribers;
+         end if;
+      end loop;
+      return N;
+   end Count_Subscribers;
 
 end RCL.Graph;

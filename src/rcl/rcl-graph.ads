@@ -7,6 +7,7 @@
 --  Gids are 24 bytes (the 16-byte DDS GUID then zeros) as in Humble, or 16
 --  bytes as in Jazzy: Set_Layout, or ROS_DISTRO (jazzy, kilted, rolling
 --  select 16; anything else 24), before the first node is created.
+with Ada.Strings.Unbounded;
 with RCL.DDS;
 
 package RCL.Graph is
@@ -18,6 +19,31 @@ package RCL.Graph is
 
    Topic_Name : constant String := "ros_discovery_info";
    Type_Name  : constant String := "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_";
+
+   --  Queries (from DDS discovery: every ROS 2 participant on the domain,
+   --  this process included) -------------------------------------------------
+
+   type Topic_Info is record
+      Name        : Ada.Strings.Unbounded.Unbounded_String;
+      --  ROS name ("/chatter").
+      Type_Name   : Ada.Strings.Unbounded.Unbounded_String;
+      --  ROS type ("std_msgs/msg/String").
+      Publishers  : Natural := 0;
+      Subscribers : Natural := 0;
+   end record;
+
+   type Topic_Info_Array is array (Positive range <>) of Topic_Info;
+
+   function Topics return Topic_Info_Array;
+   --  The ROS topics ("rt/..." DDS topics), sorted by name then type.
+
+   function Count_Publishers (Topic : String) return Natural;
+   function Count_Subscribers (Topic : String) return Natural;
+   --  Topic: fully qualified ROS name.
+
+   function ROS_Type_Name (DDS_Type_Name : String) return String;
+   --  "std_msgs::msg::dds_::String_" -> "std_msgs/msg/String"; other names
+   --  unchanged.
 
    --  Not for users: called by RCL.Nodes and RCL.Publishers.
 

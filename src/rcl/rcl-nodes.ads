@@ -31,7 +31,10 @@ package RCL.Nodes is
 
    function Init (Name : String; Namespace : String := "/") return Node;
    --  Validates Name (RCL.Names.Name_Error naming the offending character)
-   --  and normalizes Namespace ("ns" and "/ns/" become "/ns").
+   --  and normalizes Namespace ("ns" and "/ns/" become "/ns"). The first
+   --  node creates the context (RCL.Contexts) and starts /rosout and
+   --  ros_discovery_info; with --ros-args -p use_sim_time:=true it also
+   --  subscribes to /clock (RCL.Clocks).
 
    function Name (This : Node) return String;
    function Namespace (This : Node) return String;
@@ -123,8 +126,10 @@ package RCL.Nodes is
       During : Duration := Forever;
       Once   : Boolean := False);
    --  Runs this node's callbacks in the calling task (a sequential
-   --  executor): for During, or until one batch of work has run (Once), or
-   --  until shutdown (Ctrl-C, SIGTERM, Contexts.Shutdown).
+   --  executor, made by the first Spin and reused): for During, or until one
+   --  batch of work has run (Once), or until shutdown (Ctrl-C, SIGTERM,
+   --  Contexts.Shutdown). Spin a node from one task at a time; to run
+   --  several nodes, or callbacks in parallel, use RCL.Executors.
 
    --  Not for users: the executors' view ----------------------------------
 

@@ -15,7 +15,6 @@ package body RCL.Publishers is
    end Publish_Raw;
 
    procedure Publish (This : in out Publisher; Msg : ROSIDL.Dynamic.Message) is
-      use type Ada.Streams.Stream_Element_Offset;
    begin
       if not ROSIDL.Dynamic.Is_Initialised (Msg)
         or else not ((This.Typed
@@ -28,13 +27,19 @@ package body RCL.Publishers is
            & ROSIDL.Dynamic.Type_Name (Msg) & " message, the topic has type "
            & Type_Name (This);
       end if;
+      if RCL.Contexts.Is_Shutdown then
+         raise ROS_Exception with "publishing on " & Topic (This) & ": the context is shut down";
+      end if;
       declare
-         Size   : constant Ada.Streams.Stream_Element_Count := ROSIDL.CDR.Encoded_Size (Msg);
-         Buffer : Ada.Streams.Stream_Element_Array (1 .. Size);
-         Last   : Ada.Streams.Stream_Element_Offset;
+         procedure Fill
+           (Buffer : out Ada.Streams.Stream_Element_Array;
+            Last   : out Ada.Streams.Stream_Element_Offset) is
+         begin
+            ROSIDL.CDR.Encode (Msg, Buffer, Last);
+         end Fill;
       begin
-         ROSIDL.CDR.Encode (Msg, Buffer, Last);
-         Publish_Raw (This, Buffer (1 .. Last));
+         --  Encoded straight into the DDS sample (no copy, no stack buffer).
+         RCL.DDS.Write_Filled (This.W, ROSIDL.CDR.Encoded_Size (Msg), Fill'Access);
       end;
    end Publish;
 

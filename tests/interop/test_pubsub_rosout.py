@@ -61,3 +61,20 @@ def test_listener_logs_to_rosout_and_stops_on_sigint():
     assert record.level == 20  # INFO
     assert abs(record.stamp.sec - start) < 60
     assert "[INFO] [" in out and "[listener]: Got chatter: 'rosout test'" in out
+
+
+def test_talker_to_python_and_sigterm():
+    """The slides' talker publishes "Hello World: N" (1 Hz) that a Python
+    subscriber decodes; SIGTERM stops it cleanly (exit 0)."""
+    dp = ps.participant()
+    rd = ps.reader(dp, "rt/chatter", String_)
+    talker = ps.start("talker")
+    got = ps.take_until(rd, 2, timeout=15)
+    talker.send_signal(signal.SIGTERM)
+    out = ps.finish(talker, timeout=10)
+    assert talker.returncode == 0, f"talker exit {talker.returncode}:\n{out}"
+    texts = [s.data for s in got]
+    assert len(texts) >= 2, f"nothing from the talker:\n{out}"
+    numbers = [int(t[len("Hello World: "):]) for t in texts]
+    assert all(t.startswith("Hello World: ") for t in texts)
+    assert numbers == list(range(numbers[0], numbers[0] + len(numbers)))

@@ -109,3 +109,41 @@ def test_agent_drives_simulated_robot_through_its_goals():
     corridor = [m.data[row * 300 + i] for i in range(30, 150)]
     assert sum(1 for v in corridor if 0 <= v < 50) > 100, corridor
     assert "all 3 goals done" in agent_out, context
+
+
+TEAM = ps.REPO / "share" / "config" / "sim-team.xml"
+
+
+def test_two_agents_swap_ends_of_the_corridor_without_collision():
+    dp = ps.participant()
+    status = {n: ps.reader(dp, f"rt/{n}/sancta/status", ss.String_, depth=100)
+              for n in ("Ari", "Ben")}
+    truth = {n: ps.reader(dp, f"rt/{n}/ground_truth", ss.PoseStamped_) for n in ("Ari", "Ben")}
+    events = ps.reader(dp, "rt/sancta_sim/events", ss.String_, depth=100)
+    sim = ps.start("sancta-sim", "office", "--robot", "Ari 2 10 0",
+                   "--robot", "Ben 18 10 3.14159265", "--rate", "4x", "--duration", "1000")
+    agents = ps.start("sancta", "run", TEAM, "--all", "--for", "120")
+    sim_out = agents_out = ""
+    try:
+        try:
+            for name in ("Ari", "Ben"):
+                wait_status(status[name], "done 2 / 2", timeout=90)
+        except TimeoutError as e:
+            raise AssertionError(str(e)) from None
+        final = {n: ss.latest(truth[n]) for n in ("Ari", "Ben")}
+        texts = [e.data for e in ps.take(events)]
+    finally:
+        agents.terminate()
+        agents_out = ps.finish(agents)
+        sim.terminate()
+        sim_out = ps.finish(sim)
+    context = f"\nagents said:\n{agents_out}\nsimulator said:\n{sim_out}"
+    assert not [t for t in texts if t.startswith("collision")], f"{texts}{context}"
+    assert "collision" not in sim_out, context
+    for name, home in (("Ari", (2.0, 10.0)), ("Ben", (18.0, 10.0))):
+        p = final[name].pose.position
+        assert abs(p.x - home[0]) < 0.35 and abs(p.y - home[1]) < 0.35, f"{name} at {p}{context}"
+    # Both went to the far end first (they met on the way).
+    for name, far in (("Ari", "18.0,10.0"), ("Ben", "2.0,10.0")):
+        assert f"[{name}/executor#8] goal 2 / 2" in agents_out, context
+        assert agents_out.find(f"[{name}/executor#8] goal 1 / 2 ({far})") >= 0, context

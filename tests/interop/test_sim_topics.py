@@ -152,3 +152,52 @@ def test_bad_command_lines_fail_with_positions():
         out = ps.finish(proc, timeout=10)
         assert proc.returncode == 1, (args, out)
         assert expected in out, (args, out)
+
+
+def test_robot_list_file_errors_name_file_line_column(tmp_path):
+    robots = tmp_path / "robots.txt"
+    robots.write_text("# two robots\nr1 1 1 0 beams=90\nr2 2 2 0 odom_bias=fast\n")
+    proc = ps.start("sancta-sim", "arena", "--robots", robots)
+    out = ps.finish(proc, timeout=10)
+    assert proc.returncode == 1, out
+    assert f"{robots}:3:20: expected a value of odom_bias (a number), found \"fast\"" in out, out
+
+
+def test_sigint_stops_cleanly():
+    import signal
+    dp = ps.participant()
+    clock = ps.reader(dp, "rt/clock", ss.Clock_, reliable=False, depth=1)
+    sim = ps.start("sancta-sim", "arena", "--robot", "r1 5 5 0", "--rate", "10x")
+    try:
+        assert ps.wait_matched(clock, 15)
+        first = ss.latest(clock)
+        time.sleep(0.5)
+        last = ss.latest(clock)
+    finally:
+        sim.send_signal(signal.SIGINT)
+        out = ps.finish(sim)
+    assert sim.returncode == 0 and "stopped at" in out, out
+    assert first is not None and last is not None, out
+    assert (last.clock.sec, last.clock.nanosec) > (first.clock.sec, first.clock.nanosec)
+
+
+def test_cmd_timeout_stops_a_robot_left_without_commands():
+    dp = ps.participant()
+    truth = ps.reader(dp, "rt/r1/ground_truth", ss.PoseStamped_)
+    cmd = ps.writer(dp, "rt/r1/cmd_vel", ss.Twist_)
+    sim = ps.start("sancta-sim", "arena", "--robot", "r1 5 5 0", "--rate", "4x",
+                   "--cmd-timeout", "0.5")
+    try:
+        assert ps.wait_matched(cmd, 15) and ps.wait_matched(truth, 15)
+        start = ss.latest(truth)
+        cmd.write(ss.Twist_(linear=ss.Vector3_(0.5, 0, 0)))  # once, then silence
+        time.sleep(2.0)  # 8 simulated seconds
+        a = ss.latest(truth)
+        time.sleep(0.5)
+        b = ss.latest(truth)
+    finally:
+        stop(sim)
+    moved = a.pose.position.x - start.pose.position.x
+    # It moved (at most 0.5 s at 0.5 m/s, with acceleration), then stopped.
+    assert 0.02 < moved < 0.3, moved
+    assert b.pose.position.x == a.pose.position.x and ss.stamp_of(b.header) > ss.stamp_of(a.header)

@@ -7,6 +7,7 @@ with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
 with RCL.Clocks.Tests;
+with RCL.Graph.Tests;
 with RCL.Logging.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
@@ -38,6 +39,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
       Result.Add_Test (RCL.QoS.Tests.Suite);
+      Result.Add_Test (RCL.Graph.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);

@@ -196,6 +196,16 @@ package RCL.DDS.Thin is
       Size : C.size_t; Timestamp : Time_T) return Return_T
      with Import, Convention => C, External_Name => "sancta_dds_write_raw";
 
+   function Serdata_New
+     (Sertype : System.Address; Size : C.size_t; Buffer : out System.Address)
+      return System.Address
+     with Import, Convention => C, External_Name => "sancta_dds_serdata_new";
+
+   function Write_Serdata
+     (Writer : Entity_T; Serdata : System.Address; Used : C.size_t; Timestamp : Time_T)
+      return Return_T
+     with Import, Convention => C, External_Name => "sancta_dds_write_serdata";
+
    function Take_Raw
      (Reader : Entity_T; Serdata : out System.Address; Info : out Raw_Info)
       return Integer_32
@@ -217,5 +227,12 @@ package RCL.DDS.Thin is
 
    function Entity_Guid (Entity : Entity_T; Guid : out Guid_Bytes) return Return_T
      with Import, Convention => C, External_Name => "sancta_dds_entity_guid";
+
+   function Endpoint_List
+     (Participant : Entity_T; Publications : C.int) return C.Strings.chars_ptr
+     with Import, Convention => C, External_Name => "sancta_dds_endpoint_list";
+
+   procedure Free (P : C.Strings.chars_ptr)
+     with Import, Convention => C, External_Name => "sancta_dds_free";
 
 end RCL.DDS.Thin;

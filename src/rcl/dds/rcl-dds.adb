@@ -237,6 +237,20 @@ package body RCL.DDS is
       return GUID (G);
    end Instance_GUID;
 
+   function Endpoints (This : Participant; Publications : Boolean) return String is
+      use type CS.chars_ptr;
+      List : constant CS.chars_ptr :=
+        Thin.Endpoint_List (C.int (This.Handle), (if Publications then 1 else 0));
+   begin
+      if List = CS.Null_Ptr then
+         raise ROS_Exception with "reading the DDS built-in "
+           & (if Publications then "publication" else "subscription") & " topic";
+      end if;
+      return Result : constant String := CS.Value (List) do
+         Thin.Free (List);
+      end return;
+   end Endpoints;
+
    overriding procedure Finalize (This : in out Participant) is
       To_Delete : Entity_Id;
    begin
@@ -316,6 +330,41 @@ package body RCL.DDS is
                                       Data'Length, Thin.Time_T (Stamp))),
              "publishing on """ & This.Topic_Name.all & """");
    end Write;
+
+   procedure Write_Filled
+     (This      : Writer;
+      Size      : Ada.Streams.Stream_Element_Count;
+      Fill      : not null access procedure
+        (Buffer : out Byte_Array; Last : out Ada.Streams.Stream_Element_Offset);
+      Timestamp : Time_Ns := Invalid_Time)
+   is
+      Stamp   : constant Time_Ns := (if Timestamp = Invalid_Time then Now else Timestamp);
+      Storage : System.Address;
+      Serdata : constant System.Address :=
+        Thin.Serdata_New (This.Sertype, C.size_t (Size), Storage);
+      Last    : Ada.Streams.Stream_Element_Offset;
+   begin
+      if Serdata = System.Null_Address then
+         raise ROS_Exception with "publishing on """ & This.Topic_Name.all
+           & """: no memory for" & Size'Image & " bytes";
+      end if;
+      declare
+         Buffer : Byte_Array (1 .. Size) with Import, Address => Storage;
+      begin
+         Fill (Buffer, Last);
+      exception
+         when others =>
+            Thin.Serdata_Release (Serdata);
+            raise;
+      end;
+      if Last < 4 or else Last > Size then
+         Thin.Serdata_Release (Serdata);
+         raise Program_Error with "Write_Filled: Last out of 4 .." & Size'Image;
+      end if;
+      Check (Integer (Thin.Write_Serdata (C.int (This.Handle), Serdata, C.size_t (Last),
+                                          Thin.Time_T (Stamp))),
+             "publishing on """ & This.Topic_Name.all & """");
+   end Write_Filled;
 
    function Endpoint_GUID (This : Writer) return GUID is
       G : Thin.Guid_Bytes;

@@ -17,6 +17,8 @@ private with System;
 
 package RCL.DDS is
 
+   use type Ada.Streams.Stream_Element_Offset;
+
    subtype Byte_Array is Ada.Streams.Stream_Element_Array;
 
    type GUID is array (1 .. 16) of Interfaces.Unsigned_8;
@@ -67,6 +69,11 @@ package RCL.DDS is
    function Instance_GUID (This : Participant) return GUID
      with Pre => Is_Open (This);
 
+   function Endpoints (This : Participant; Publications : Boolean) return String
+     with Pre => Is_Open (This);
+   --  What discovery knows (DCPSPublication or DCPSSubscription, alive
+   --  endpoints, ours included): one "topic" & HT & "type" & LF line each.
+
    overriding procedure Finalize (This : in out Participant);
 
    ------------
@@ -94,6 +101,17 @@ package RCL.DDS is
      with Pre => Is_Open (This) and then Data'Length >= 4;
    --  Data is CDR with its encapsulation header. A reliable writer blocks
    --  while the history of a reader is full. Invalid_Time stamps now.
+
+   procedure Write_Filled
+     (This      : Writer;
+      Size      : Ada.Streams.Stream_Element_Count;
+      Fill      : not null access procedure
+        (Buffer : out Byte_Array; Last : out Ada.Streams.Stream_Element_Offset);
+      Timestamp : Time_Ns := Invalid_Time)
+     with Pre => Is_Open (This) and then Size >= 4;
+   --  Fill writes the CDR straight into the sample's storage (Buffer is
+   --  1 .. Size; Buffer (1 .. Last) is published): no intermediate copy, no
+   --  stack buffer. An exception in Fill publishes nothing and propagates.
 
    function Endpoint_GUID (This : Writer) return GUID
      with Pre => Is_Open (This);

@@ -5,6 +5,8 @@
 --  robot in its odometry frame), optional "origin" (types.pose, the
 --  odometry frame in the world; else options x, y, yaw); provides "pose"
 --  (types.pose, the robot in the world frame: origin composed with pose).
+--  (The runtime's "transform" is the paper's Table 1 Transformer: a local
+--  pose to the world given the robot's world pose.)
 --
 --  "executor" (event-driven on "pose" and "tasks"): the robot's task list
 --  as successive goals (Sancta.Robot.Executors). Requires "pose"

@@ -168,6 +168,10 @@ package body Sancta.Simulation.Robot_Lists is
                   C.Odometry.Angular_Bias := Value;
                elsif Key = "odom_noise" then
                   C.Odometry.Linear_Noise := Value;
+               elsif Key = "odom_angular_scale" then
+                  C.Odometry.Angular_Scale_Error := Value;
+               elsif Key = "odom_angular_noise" then
+                  C.Odometry.Angular_Noise := Value;
                elsif Key = "gps" then
                   if Text = "on" or else Text = "true" then
                      C.GPS.Enabled := True;
@@ -183,8 +187,8 @@ package body Sancta.Simulation.Robot_Lists is
                else
                   Fail (First, "unknown key """ & Key & """ (radius, max_linear, "
                         & "max_angular, beams, fov, range, laser_noise, laser_rate, "
-                        & "odom_rate, odom_scale, odom_bias, odom_noise, gps, gps_rate, "
-                        & "gps_std)");
+                        & "odom_rate, odom_scale, odom_bias, odom_noise, odom_angular_scale, "
+                        & "odom_angular_noise, gps, gps_rate, gps_std)");
                end if;
             end;
          end;

@@ -9,7 +9,9 @@
 --     radius, max_linear, max_angular         the base (m, m/s, rad/s)
 --     beams, fov (degrees), range, laser_noise (m), laser_rate (Hz, 0: none)
 --     odom_rate (Hz), odom_scale (relative distance error), odom_bias
---     (heading drift, rad/s), odom_noise (m per metre travelled)
+--     (heading drift, rad/s), odom_noise (m per metre travelled),
+--     odom_angular_scale (relative turn error), odom_angular_noise (rad
+--     per radian turned)
 --     gps (on | off), gps_rate (Hz), gps_std (m)
 --
 --     L : Robot_List;

@@ -53,6 +53,8 @@ package body Sancta.Simulation.Sim_Tool is
       Put_Line ("  --duration S            stop after S simulated seconds (default: never)");
       Put_Line ("  --step S                simulated seconds per step (default 0.02)");
       Put_Line ("  --truth-period S        ground-truth period (default 0.1)");
+      Put_Line ("  --cmd-timeout S         stop a robot S simulated seconds after its last");
+      Put_Line ("                          cmd_vel (default 0: never)");
       Put_Line ("  --quiet                 do not print events");
    end Usage;
 
@@ -133,6 +135,8 @@ package body Sancta.Simulation.Sim_Tool is
       Last_Odom : Natural := 0;
       Last_Scan : Natural := 0;
       Last_GPS  : Natural := 0;
+      Last_Cmd  : Real := 0.0;
+      --  Simulated time of the last cmd_vel.
    end record;
 
    package IO_Vectors is new Ada.Containers.Vectors (Positive, Robot_IO);
@@ -198,6 +202,7 @@ package body Sancta.Simulation.Sim_Tool is
       Duration_S  : Real;
       Step        : Real;
       Truth_Every : Real;
+      Cmd_Timeout : Real;
       Quiet       : Boolean)
    is
       use ROSIDL.Typesupport;
@@ -265,6 +270,7 @@ package body Sancta.Simulation.Sim_Tool is
          Sim.Add_Robot (Config, Start, R.Id, Name);
          R.Name := To_Unbounded_String (Name);
          R.Start := Start;
+         R.Last_Cmd := Sim.Clock;
          R.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_sim", Namespace => NS));
          R.Odom := new RCL.Publishers.Publisher'(R.Node.Publish (Odom_Support, "odom"));
          R.Scan := new RCL.Publishers.Publisher'
@@ -341,6 +347,7 @@ package body Sancta.Simulation.Sim_Tool is
             begin
                exit when Data'Length = 0;
                ROSIDL.CDR.Decode (Data, Twist_Msg);
+               R.Last_Cmd := Sim.Clock;
                Sim.Set_Command
                  (R.Id,
                   (Linear_X  => Real (ROSIDL.Float64'(Twist_Msg ("linear")("x").As_Float64)),
@@ -351,6 +358,9 @@ package body Sancta.Simulation.Sim_Tool is
                        & Ada.Exceptions.Exception_Message (E));
             end;
          end loop;
+         if Cmd_Timeout > 0.0 and then Sim.Clock - R.Last_Cmd > Cmd_Timeout then
+            Sim.Set_Command (R.Id, (0.0, 0.0));
+         end if;
       end Take_Commands;
 
       procedure Answer (Header : ROSIDL.CDR.Request_Header) is
@@ -457,7 +467,7 @@ package body Sancta.Simulation.Sim_Tool is
          end loop;
       end Report_Events;
 
-      Started    : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      Started    : Ada.Real_Time.Time := Ada.Real_Time.Clock;
       Next_Truth : Real := 0.0;
    begin
       Sim.Initialize (World, Seed);
@@ -475,6 +485,8 @@ package body Sancta.Simulation.Sim_Tool is
       for R of Robots loop
          Add (To_String (R.Name), R.Config, R.Start);
       end loop;
+      Started := Ada.Real_Time.Clock;
+      --  Wall time and pacing count from here (robots made).
       Put_Line ("sancta-sim: " & Natural'Image (Natural (IO.Length)) & " robot(s), domain"
                 & RCL.DDS.Domain_Id'Image (RCL.Contexts.Domain) & ", "
                 & (if As_Fast then "as fast as possible" else "rate " & Image (Rate) & "x"));
@@ -503,7 +515,13 @@ package body Sancta.Simulation.Sim_Tool is
             delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
          end if;
       end loop;
-      Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock));
+      declare
+         Wall : constant Real := Real (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started));
+      begin
+         Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock) & " after " & Image (Wall)
+                   & " s of wall time (real-time factor "
+                   & Image (Sim.Clock / Real'Max (Wall, 1.0E-3)) & ")");
+      end;
    exception
       when RCL.ROS_Exception =>
          if not RCL.Contexts.Is_Shutdown then
@@ -520,6 +538,7 @@ package body Sancta.Simulation.Sim_Tool is
       Duration_S  : Real := Real'Last;
       Step        : Real := 0.02;
       Truth_Every : Real := 0.1;
+      Cmd_Timeout : Real := 0.0;
       Quiet       : Boolean := False;
       K           : Positive := 1;
 
@@ -591,6 +610,12 @@ package body Sancta.Simulation.Sim_Tool is
                   raise Usage_Error with "--truth-period: expected a positive time";
                end if;
                K := K + 1;
+            elsif A = "--cmd-timeout" then
+               Cmd_Timeout := To_Real ("--cmd-timeout", Value);
+               if Cmd_Timeout < 0.0 then
+                  raise Usage_Error with "--cmd-timeout: expected a time >= 0";
+               end if;
+               K := K + 1;
             elsif A = "--quiet" then
                Quiet := True;
             elsif A'Length > 0 and then A (A'First) = '-' then
@@ -617,7 +642,7 @@ package body Sancta.Simulation.Sim_Tool is
             World : constant Worlds.World := Map_Files.Load_World (File);
          begin
             Simulate (World, Robots, Rate, As_Fast, Seed, Duration_S, Step, Truth_Every,
-                      Quiet);
+                      Cmd_Timeout, Quiet);
          end;
       end;
    exception

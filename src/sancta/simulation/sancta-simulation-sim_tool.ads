@@ -10,7 +10,9 @@
 --  Globally: /clock (rosgraph_msgs/msg/Clock, clock QoS) every step,
 --  /sancta_sim/events (std_msgs/msg/String: collisions, added / killed /
 --  revived robots; also printed) and the service /sancta_sim/control
---  (sancta_msgs/srv/SimControl: add, kill, revive, teleport, list).
+--  (sancta_msgs/srv/SimControl: add, kill, revive, teleport, list; an
+--  added robot gets the configuration of the first robot listed at start,
+--  or the default one).
 --  Each robot is an RCL node "sancta_sim" in its namespace; its cmd_vel
 --  subscription is read by the stepping loop itself (no executor), so the
 --  loop stays single-threaded and the run deterministic for a seed given
@@ -18,6 +20,7 @@
 --
 --     sancta-sim office --robot "robot1 2 10 0" --rate 10x --seed 3
 --     sancta-sim share/worlds/arena.yaml --robots team.txt --as-fast-as-possible
+--     sancta-sim arena --robot "r1 5 5 0" --cmd-timeout 0.5   # stops without commands
 package Sancta.Simulation.Sim_Tool is
 
    procedure Run;

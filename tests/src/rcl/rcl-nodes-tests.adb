@@ -9,6 +9,8 @@ with RCL.Contexts;
 with RCL.Executors.Concurrent;
 with RCL.Executors.Sequential;
 with RCL.Names;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
 with System;
 
 package body RCL.Nodes.Tests is
@@ -224,6 +226,93 @@ package body RCL.Nodes.Tests is
       Assert (E.Is_Shut_Down, "shut down deterministically");
    end Concurrent;
 
+   Typed_Count : Natural := 0;
+   Typed_Text  : access String;
+
+   procedure On_String
+     (Node : in out Nodes.Node'Class; Msg : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Node, Info);
+   begin
+      Typed_Count := Typed_Count + 1;
+      Typed_Text := new String'(Msg ("data").Get_String);
+   end On_String;
+
+   procedure Malformed_Bytes (Unused : in out Fixture) is
+      Support : constant ROSIDL.Typesupport.Message_Support :=
+        ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String");
+      N   : Node := Init ("malformed_test");
+      Pub : RCL.Publishers.Publisher := N.Publish (Support, "malformed");
+      Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
+      Bad : constant Stream_Element_Array :=
+        [0, 1, 0, 0, 16#E8#, 16#03#, 0, 0, Character'Pos ('h'), 0, 0, 0];
+      --  A string of length 1000 in 4 bytes: must be rejected, not over-read.
+   begin
+      N.Subscribe (Support, "malformed", On_String'Access);
+      Msg ("data").Set_String ("valid");
+      Typed_Count := 0;
+      for I in 1 .. 100 loop
+         exit when Typed_Count > 0;
+         Pub.Publish_Raw (Bad);
+         Pub.Publish (Msg);
+         N.Spin (During => 0.05);
+      end loop;
+      Assert (Typed_Count > 0 and then Typed_Text.all = "valid",
+              "malformed samples are skipped (logged), valid ones delivered");
+   end Malformed_Bytes;
+
+   Big_Length : Natural := 0 with Atomic;
+
+   procedure On_Big
+     (Node : in out Nodes.Node'Class; Msg : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Node, Info);
+   begin
+      Big_Length := Msg ("data").As_Array.Length;
+   end On_Big;
+
+   procedure Big_Message (Unused : in out Fixture) is
+      Support : constant ROSIDL.Typesupport.Message_Support :=
+        ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "UInt8MultiArray");
+      Size    : constant := 3_000_000;
+      N       : Node := Init ("big_message_test");
+      Pub     : RCL.Publishers.Publisher :=
+        N.Publish (Support, "big", (RCL.QoS.Default with delta Depth => 2));
+      Msg     : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
+      Failed  : Boolean := False with Atomic;
+
+      task Small_Stack with Storage_Size => 256 * 1024;
+      --  Publishes a 3 MB message: must not need a stack buffer of that size.
+      task body Small_Stack is
+      begin
+         Pub.Publish (Msg);
+      exception
+         when others =>
+            Failed := True;
+      end Small_Stack;
+   begin
+      Msg ("data").As_Array.Resize (Size);
+      N.Subscribe (Support, "big", On_Big'Access);
+      Big_Length := 0;
+      for I in 1 .. 200 loop
+         exit when Pub.Matched_Subscriptions > 0;
+         delay 0.01;
+      end loop;
+      --  The task starts at the "begin" above: publish again from here if
+      --  it ran before the subscription matched.
+      for I in 1 .. 100 loop
+         exit when Big_Length > 0 or else Failed;
+         if I mod 20 = 0 then
+            Pub.Publish (Msg);
+         end if;
+         N.Spin (During => 0.05);
+      end loop;
+      Assert (not Failed, "publishing 3 MB from a task with a 256 KiB stack");
+      Assert (Big_Length = Size, "3 MB received:" & Big_Length'Image);
+   end Big_Message;
+
    procedure Errors (Unused : in out Fixture) is
       N : constant Node := Init ("error_test");
       pragma Unreferenced (N);
@@ -284,6 +373,8 @@ package body RCL.Nodes.Tests is
       Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
       Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
       Result.Add_Test (Caller.Create ("nodes: errors", Errors'Access));
+      Result.Add_Test (Caller.Create ("nodes: malformed bytes", Malformed_Bytes'Access));
+      Result.Add_Test (Caller.Create ("nodes: 3 MB message", Big_Message'Access));
       return Result;
    end Suite;
 

@@ -357,8 +357,8 @@ package body Sancta.Components.Navigation.Tests is
             return Ada.Exceptions.Exception_Message (E);
       end Error_Of;
    begin
-      Parse_Line ("robot1 1 2.5 -0.5 beams=180 fov=180 gps=on gps_std=0.2 odom_bias=0.01",
-                  "robots.txt", 1, L);
+      Parse_Line ("robot1 1 2.5 -0.5 beams=180 fov=180 gps=on gps_std=0.2 odom_bias=0.01"
+                  & " odom_angular_scale=0.02", "robots.txt", 1, L);
       Parse_Line ("   # a comment", "robots.txt", 2, L);
       Parse_Line ("", "robots.txt", 3, L);
       Assert (Natural (L.Length) = 1, "one robot");
@@ -366,7 +366,8 @@ package body Sancta.Components.Navigation.Tests is
       Assert (L (1).Config.Laser.Beams = 180 and then abs (L (1).Config.Laser.Field_Of_View - Pi)
               < 1.0E-12, "laser keys");
       Assert (L (1).Config.GPS.Enabled and then L (1).Config.GPS.Std_Dev = 0.2, "gps keys");
-      Assert (L (1).Config.Odometry.Angular_Bias = 0.01, "odometry keys");
+      Assert (L (1).Config.Odometry.Angular_Bias = 0.01
+              and then L (1).Config.Odometry.Angular_Scale_Error = 0.02, "odometry keys");
       Assert (Find (L, "robot1") = 1 and then Find (L, "robot2") = 0, "Find");
       Assert (Error_Of ("robot1 0 0 0") = "robots.txt:7:1: robot ""robot1"" is listed twice",
               Error_Of ("robot1 0 0 0"));
