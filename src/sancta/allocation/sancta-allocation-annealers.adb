@@ -273,14 +273,18 @@ package body Sancta.Allocation.Annealers is
       Valid := Mv.New_A_Len >= P.Min_Tasks or else Mv.New_A_Len >= S.Len (A);
       Sum := S.Sum - S.RC (A) + Mv.New_A_Cost;
       Comp := S.Comp - S.RCm (A) + Mv.New_A_Comp;
-      Max := Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost);
+      Max := (if W.C.Max_Weight = 0.0 then 0
+              else Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost));
+      --  The makespan only when the criterion uses it (saves O (log R)).
       if B /= 0 then
          Eval_Tour (P, S, Mv.B, Mv.New_B_Cost, Mv.New_B_Comp, Mv.New_B_Len);
          Valid := Valid and then
            (Mv.New_B_Len >= P.Min_Tasks or else Mv.New_B_Len >= S.Len (B));
          Sum := Sum - S.RC (B) + Mv.New_B_Cost;
          Comp := Comp - S.RCm (B) + Mv.New_B_Comp;
-         Max := Cost'Max (Max, Mv.New_B_Cost);
+         if W.C.Max_Weight /= 0.0 then
+            Max := Cost'Max (Max, Mv.New_B_Cost);
+         end if;
       end if;
       Mv.New_Max := Max;
       Mv.New_Sum := Sum;
@@ -894,6 +898,19 @@ package body Sancta.Allocation.Annealers is
 
    ---------------------------------------------------------------------------
 
+   protected body Best_Box is
+      procedure Post (A : Assignment; V : Long_Float) is
+      begin
+         Current := A;
+         Current_Value := V;
+         Posted := True;
+      end Post;
+
+      function Has_Value return Boolean is (Posted);
+      function Value return Long_Float is (Current_Value);
+      function Best return Assignment is (Current);
+   end Best_Box;
+
    function Greedy_Start (P : Problem; C : Criterion; Seed : Interfaces.Unsigned_64)
      return Assignment
    is
@@ -946,6 +963,7 @@ package body Sancta.Allocation.Annealers is
       Reheat_T : Long_Float;
       Since_Improve : Long_Long_Integer := 0;
       Cycle_Best : Long_Float;
+      Cycle : Natural := 0;
 
       function Pick_Kind return Move_Kind is
          Total : Long_Float := 0.0;
@@ -1130,6 +1148,12 @@ package body Sancta.Allocation.Annealers is
 
       procedure Send_Report is
       begin
+         if Opts.Box /= null then
+            if not Best_Saved then
+               Save_Best;
+            end if;
+            Opts.Box.Post (Best, Best_Value);
+         end if;
          if Report /= null then
             Report ((Best => Best_Value, Current => Cur, Temperature => Temp, Moves => Moves,
                      Accepted => Accepted, Elapsed => Elapsed,
@@ -1276,10 +1300,14 @@ package body Sancta.Allocation.Annealers is
                   Stop := Stop or else Moves >= Opts.Iterations;
                end if;
                if Opts.Convergence > 0 then
-                  Stop := Stop or else Moves - Last_Best_Move >= Opts.Convergence;
+                  Stop := Stop or else
+                    (Moves - Last_Best_Move >= Opts.Convergence
+                     and then (Opts.Time_Limit > 0.0 or else Opts.Iterations > 0
+                               or else Moves >= 10 * Opts.Convergence));
+                  --  Alone, it applies once the schedule is half way down.
                   if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 then
-                     X := Long_Float'Min (0.99, Long_Float (Moves - Last_Best_Move)
-                                          / Long_Float (Opts.Convergence));
+                     --  Convergence only: cool over 20 stagnation windows.
+                     X := Long_Float (Moves) / (20.0 * Long_Float (Opts.Convergence));
                   end if;
                end if;
                exit Main when Stop;
@@ -1292,11 +1320,27 @@ package body Sancta.Allocation.Annealers is
                   when Geometric =>
                      Temp := T0 * (T1 / T0) ** X;
                   when Cyclic =>
+                     --  Cycles of geometric cooling; each new cycle restarts
+                     --  from the best so far, at a start temperature divided
+                     --  by Cycle_Drop per cycle.
                      declare
                         C : constant Long_Float := X * Long_Float (Opts.Cycles);
-                        F : constant Long_Float := C - Long_Float'Floor (C);
+                        K : constant Natural :=
+                          Natural (Long_Float'Min (Long_Float (Opts.Cycles - 1),
+                                                   Long_Float'Floor (C)));
+                        F : constant Long_Float := Long_Float'Min (1.0, C - Long_Float (K));
+                        T0K : constant Long_Float :=
+                          Long_Float'Max (T1, T0 / Opts.Cycle_Drop ** K);
                      begin
-                        Temp := T0 * (T1 / T0) ** (if X >= 1.0 then 1.0 else F);
+                        if K /= Cycle then
+                           Cycle := K;
+                           if not Best_Saved then
+                              Save_Best;
+                           end if;
+                           Load (P, S.all, Best);
+                           Cur := Current_Value (P, S.all, W);
+                        end if;
+                        Temp := T0K * (T1 / T0K) ** F;
                      end;
                   when Reheat =>
                      if Since_Improve > 20_000 then

@@ -23,9 +23,23 @@ with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 package Sancta.Allocation.Annealers is
 
    type Schedule_Kind is (Geometric, Cyclic, Reheat);
-   --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs.
+   --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs,
+   --  each from the best so far at a lower start temperature.
    --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
    --  without improvement, back to T0 after a long stretch without a new best.
+
+   protected type Best_Box (Robots : Positive; Tasks : Positive) is
+      --  Anytime access to a running annealer's best allocation: it posts
+      --  it here at every progress report (Opts.Report_Every) and at the end.
+      procedure Post (A : Assignment; V : Long_Float);
+      function Has_Value return Boolean;
+      function Value return Long_Float;
+      function Best return Assignment;
+   private
+      Current : Assignment (Robots, Tasks);
+      Current_Value : Long_Float := Long_Float'Last;
+      Posted : Boolean := False;
+   end Best_Box;
 
    type Options is record
       Criterion    : Allocation.Criterion := Min_Sum;
@@ -38,6 +52,8 @@ package Sancta.Allocation.Annealers is
       --  Stop after this many moves without a new best; 0 = never.
       Schedule     : Schedule_Kind := Geometric;
       Cycles       : Positive := 3;
+      Cycle_Drop   : Long_Float := 3.0;
+      --  Cyclic: each cycle restarts from the best at T0 / Cycle_Drop ** k.
       Start_Temperature : Long_Float := 0.0;
       End_Temperature   : Long_Float := 0.0;
       --  0.0 = automatic, from sampled move deltas: T0 = Start_Factor *
@@ -59,6 +75,8 @@ package Sancta.Allocation.Annealers is
       --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
       Balance_Decay : Boolean := False;
       Target       : Long_Float := 0.0;
+      Box          : access Best_Box := null;
+      --  When set, the best so far is posted there (anytime use).
       --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
    end record;
 

@@ -13,6 +13,13 @@
 --
 --  Problems are built once and read-only afterwards; they live on the heap
 --  because their matrix can be large (1000 locations: 8 MB).
+--
+--  Partial (known limits): heterogeneous robots differ by an integer cost
+--  multiplier (speed) and by what they can do, not by whole cost functions
+--  of their own (the annealer's O(1) segment costs rely on one matrix);
+--  plans are one level deep: a task is an OR node over alternative single
+--  locations; nested AND/OR plans and compound tasks with distinct entry and
+--  exit points are not modelled yet.
 with Sancta.Geometry;
 
 package Sancta.Allocation.Problems is

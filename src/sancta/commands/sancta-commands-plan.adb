@@ -37,6 +37,7 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --converge N         stop after N moves without a new best");
       Put_Line ("  --seed N             random seed (default 1)");
       Put_Line ("  --schedule S         geometric | cyclic | reheat (default geometric)");
+      Put_Line ("  --cycles N           cyclic schedule: cycles, each from the best (3)");
       Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
       Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
       Put_Line ("  --real SCALE         real Euclidean distances in fixed point, x SCALE");
@@ -324,6 +325,15 @@ package body Sancta.Commands.Plan is
                        & "' is not geometric, cyclic or reheat";
                   end if;
                end;
+            elsif A = "--cycles" then
+               declare
+                  N : constant Long_Long_Integer := Parse_Natural (A, Value_Of (A));
+               begin
+                  if N < 1 or else N > 1000 then
+                     raise Usage_Error with "--cycles: must be 1 .. 1000";
+                  end if;
+                  Opts.Cycles := Positive (N);
+               end;
             elsif A = "--restarts" then
                declare
                   N : constant Long_Long_Integer := Parse_Natural (A, Value_Of (A));
@@ -483,6 +493,20 @@ package body Sancta.Commands.Plan is
                   raise Usage_Error with "--solver exact: needs a pure criterion "
                     & "(minmax, minsum or minave)";
                end if;
+               declare
+                  Free_Tasks : Natural := 0;
+               begin
+                  for T in 1 .. P.Tasks loop
+                     if not P.Is_Frozen (T) then
+                        Free_Tasks := Free_Tasks + 1;
+                     end if;
+                  end loop;
+                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks then
+                     raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
+                       & " tasks; the exact solver takes at most"
+                       & Sancta.Allocation.Exact.Max_Tasks'Image;
+                  end if;
+               end;
                Result := Sancta.Allocation.Exact.Solve (P.all, Crit);
             else
                Result := Sancta.Allocation.Baselines.Solve
@@ -590,6 +614,9 @@ package body Sancta.Commands.Plan is
       when E : Ada.Text_IO.Name_Error | Ada.Text_IO.Use_Error =>
          Put_Line (Standard_Error, "sancta plan: cannot write: "
                    & Ada.Exceptions.Exception_Message (E));
+         CL.Set_Exit_Status (CL.Failure);
+      when E : Constraint_Error =>
+         Put_Line (Standard_Error, "sancta plan: " & Ada.Exceptions.Exception_Message (E));
          CL.Set_Exit_Status (CL.Failure);
    end Run;
 

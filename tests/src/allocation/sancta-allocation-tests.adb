@@ -297,6 +297,19 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Baselines_Valid_On_Larger;
 
+   procedure Anytime_Box (Unused : in out Fixture) is
+      P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil51.tsp").all, 2);
+      Box : aliased Annealers.Best_Box (P.Robots, P.Tasks);
+      A : Assignment (P.Robots, P.Tasks);
+      S : Annealers.Progress;
+   begin
+      Assert (not Box.Has_Value, "box filled before the run");
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 5_000,
+                               Box => Box'Unchecked_Access, others => <>), A, S);
+      Assert (Box.Has_Value and then Box.Best = A and then Box.Value = S.Best,
+              "the box does not hold the final best");
+   end Anytime_Box;
+
    procedure Deterministic (Unused : in out Fixture) is
       P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil51.tsp").all, 3);
       O : constant Annealers.Options :=
@@ -390,6 +403,31 @@ package body Sancta.Allocation.Tests is
          end;
       end loop;
    end Explicit_Formats;
+
+   procedure Pseudo_Euclidean_And_Geo (Unused : in out Fixture) is
+      File : constant String := "obj/alloc-test-att.tsp";
+   begin
+      --  ATT: r = sqrt ((dx^2 + dy^2) / 10), rounded up when nint (r) < r.
+      Write (File, "NAME: a" & NL & "TYPE: TSP" & NL & "DIMENSION: 3" & NL
+             & "EDGE_WEIGHT_TYPE: ATT" & NL & "NODE_COORD_SECTION" & NL
+             & "1 0 0" & NL & "2 10 0" & NL & "3 0 40" & NL & "EOF" & NL);
+      declare
+         P : constant Problem_Access := TSPLIB.Read (File);
+      begin
+         Assert (P.Distance (1, 2) = 4, "ATT sqrt (10) -> 4:" & P.Distance (1, 2)'Image);
+         Assert (P.Distance (1, 3) = 13, "ATT sqrt (160) -> 13:" & P.Distance (1, 3)'Image);
+      end;
+      --  GEO: DDD.MM coordinates; one degree of latitude along a meridian
+      --  is 111.3 km on TSPLIB's sphere (int (6378.388 * pi / 180 + 1) = 112).
+      Write (File, "NAME: g" & NL & "TYPE: TSP" & NL & "DIMENSION: 2" & NL
+             & "EDGE_WEIGHT_TYPE: GEO" & NL & "NODE_COORD_SECTION" & NL
+             & "1 10.00 20.00" & NL & "2 11.00 20.00" & NL & "EOF" & NL);
+      declare
+         P : constant Problem_Access := TSPLIB.Read (File);
+      begin
+         Assert (P.Distance (1, 2) = 112, "GEO one degree:" & P.Distance (1, 2)'Image);
+      end;
+   end Pseudo_Euclidean_And_Geo;
 
    procedure Expect_Error (File, Text, Expect : String) is
    begin
@@ -512,8 +550,10 @@ package body Sancta.Allocation.Tests is
            Annealer_Reaches_Optimum'Access);
       Add ("baselines valid with constraints", Baselines_Valid_On_Larger'Access);
       Add ("same seed, same result", Deterministic'Access);
+      Add ("anytime best box", Anytime_Box'Access);
       Add ("TSPLIB optimal tours give the optimal lengths", Optimal_Tours'Access);
       Add ("TSPLIB explicit matrix formats", Explicit_Formats'Access);
+      Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
       return Result;
