@@ -6,6 +6,7 @@ with Ada.Text_IO;
 with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
+with Sancta.Geometry;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
@@ -26,6 +27,7 @@ package body Sancta.Team.Tests is
    package Caller is new AUnit.Test_Caller (Fixture);
 
    Lease : constant Duration := 0.5;
+   subtype Real is Sancta.Geometry.Real;
 
    function Wait_Until
      (Condition : not null access function return Boolean;
@@ -383,6 +385,80 @@ package body Sancta.Team.Tests is
       end;
    end Test_Plans;
 
+   --  A robot joining gets tasks; tasks done stay done ---------------------------------
+
+   procedure Test_Join (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Agents;
+      Team : constant Unbounded_String := To_Unbounded_String ("t_join");
+      function Robot (Id : String; X : Real) return Agent_Access is
+         A : constant Agent_Access :=
+           Create ((Id => To_Unbounded_String (Id), Team => Team, Lease => Lease,
+                    Verbose => False, others => <>));
+      begin
+         A.Set_Pose ((X, 0.0));
+         return A;
+      end Robot;
+      M  : Missions.Mission;
+      R1 : constant Agent_Access := Robot ("r1", 0.0);
+      R2 : constant Agent_Access := Robot ("r2", 10.0);
+      R3 : Agent_Access;
+      Op : constant Agent_Access :=
+        Create ((Id => To_Unbounded_String ("operator"), Team => Team, Is_Robot => False,
+                 Lease => Lease, Verbose => False, others => <>));
+      First_Task : Unbounded_String;
+      function Planned return Boolean is
+        (R1.Adopted.Generation > 0 and then R1.Adopted.Generation = R1.Round.Generation);
+      function Joined return Boolean is
+        (R3.Adopted.Generation > 0 and then R3.Adopted.Generation = R3.Round.Generation
+         and then R3.Round.Robots.Length = 3);
+   begin
+      for K in 1 .. 9 loop
+         declare
+            Task_Def : Missions.Mission_Task;
+         begin
+            Task_Def.Id := To_Unbounded_String ("j" & Ada.Strings.Fixed.Trim (K'Image,
+                                                Ada.Strings.Left));
+            Task_Def.Points.Append (Missions.Point'(Real (K * 2), 5.0));
+            M.Tasks.Append (Task_Def);
+         end;
+      end loop;
+      Op.Publish_Mission (M);
+      Assert (Wait_Until (Planned'Access), "no plan for two robots");
+      --  r1 does its first task.
+      declare
+         Found : Boolean;
+         Goal  : Missions.Point;
+         Done  : Boolean;
+      begin
+         R1.Current_Goal (Found, Goal, First_Task);
+         Assert (Found, "r1 has nothing to do");
+         R1.Arrived (To_String (First_Task), Done);
+         Assert (Done, "arriving did not complete the task");
+      end;
+      R3 := Robot ("r3", 20.0);
+      Assert (Wait_Until (Joined'Access), "no round with the new robot");
+      declare
+         S : constant Plans.Snapshot := R3.Round;
+         P : constant Plans.Plan := R3.Adopted;
+         Count : Natural := 0;
+      begin
+         Assert ((for all X of S.Tasks => X.Id /= First_Task), "a task done was re-planned");
+         Assert (Natural (S.Tasks.Length) = 8, "round has" & S.Tasks.Length'Image & " tasks");
+         for K in 1 .. Natural (S.Robots.Length) loop
+            if To_String (S.Robots (K).Id) = "r3" then
+               Assert (not P.Tours (K).Is_Empty, "the new robot got no task");
+            end if;
+            Count := Count + Natural (P.Tours (K).Length);
+         end loop;
+         Assert (Count = 8, "the plan allocates" & Count'Image & " tasks");
+      end;
+      R1.Stop;
+      R2.Stop;
+      R3.Stop;
+      Op.Stop;
+   end Test_Join;
+
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
@@ -446,6 +522,7 @@ package body Sancta.Team.Tests is
       Add ("cut-off node catches up after rejoining", Test_Cut_And_Rejoin'Access);
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
+      Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
       return Result;
