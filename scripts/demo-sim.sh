@@ -9,7 +9,7 @@ set -uo pipefail
 source "$(dirname "$0")/env.sh"
 cd "$repo_root"
 method="${METHOD:-annealer}"
-rate="${RATE:-2}"
+rate="${RATE:-2}"  # at 4x and more the wall-clock control loops lag (robots may stall)
 out=out/demo-sim
 mkdir -p "$out"
 pids=()
