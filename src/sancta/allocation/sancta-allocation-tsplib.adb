@@ -335,8 +335,9 @@ package body Sancta.Allocation.TSPLIB is
                   when Constraint_Error =>
                      Fail (S, "DIMENSION '" & V & "' is not a count");
                end;
-               if Dimension < 2 or else Dimension > 20_000 then
-                  Fail (S, "DIMENSION" & Dimension'Image & " outside 2 .. 20000");
+               if Dimension < 2 or else Dimension > Max_Dimension then
+                  Fail (S, "DIMENSION" & Dimension'Image & " outside 2 .." & Max_Dimension'Image
+                        & " (full distance matrices are held in memory)");
                end if;
             elsif K = "EDGE_WEIGHT_TYPE" then
                Weight_Type := new String'(Upper (V));
