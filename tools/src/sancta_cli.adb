@@ -10,6 +10,8 @@ with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Run;
 with Sancta.Commands.Plan;
+with Sancta.Commands.Team;
+with Sancta.Commands.Team_Agent;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -24,6 +26,8 @@ procedure Sancta_CLI is
       Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
       Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
       Put_Line ("  plan FILE ...    task allocation (sancta plan --help)");
+      Put_Line ("  team [MISSION]   team mission demo over DDS (sancta team --help)");
+      Put_Line ("  team-agent ...   one team node per process (sancta team-agent --help)");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -38,6 +42,10 @@ begin
       Sancta.Commands.Run.Run;
    elsif Command = "plan" then
       Sancta.Commands.Plan.Run;
+   elsif Command = "team" then
+      Sancta.Commands.Team.Run;
+   elsif Command = "team-agent" then
+      Sancta.Commands.Team_Agent.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage;

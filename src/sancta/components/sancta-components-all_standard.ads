@@ -12,6 +12,7 @@ with Sancta.Components.Pose_Chain;
 with Sancta.Components.ROS2;
 with Sancta.Components.Sources;
 with Sancta.Components.Watchdog;
+with Sancta.Team.Components;
 pragma Warnings (On, "unit * is not referenced");
 
 package Sancta.Components.All_Standard is

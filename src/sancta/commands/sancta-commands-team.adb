@@ -1,0 +1,118 @@
+with Ada.Command_Line;
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with Sancta.Team.Agents;
+with Sancta.Team.Demos;
+with Sancta.Team.Missions;
+
+package body Sancta.Commands.Team is
+
+   use Ada.Command_Line;
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+
+   procedure Usage is
+   begin
+      Put_Line ("usage: sancta team [MISSION.xml] [--method annealer|auctions] [--rate X]");
+      Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--lease SECONDS]");
+      Put_Line ("          [--max SECONDS] [--world FILE] [--out DIR] [--quiet] [--check]");
+   end Usage;
+
+   function Default_Mission return String is
+      Exe : constant String := Ada.Directories.Containing_Directory (Command_Name);
+   begin
+      return Exe & "/../share/missions/office-team.xml";
+   exception
+      when others =>
+         return "share/missions/office-team.xml";
+   end Default_Mission;
+
+   procedure Run is
+      Config : Sancta.Team.Demos.Demo_Config;
+      Check  : Boolean := False;
+      I      : Positive := 2;
+      Result : Sancta.Team.Demos.Demo_Result;
+
+      function Value return String is
+      begin
+         if I + 1 > Argument_Count then
+            raise Constraint_Error with "option " & Argument (I) & " needs a value";
+         end if;
+         I := I + 1;
+         return Argument (I);
+      end Value;
+
+      function Number (Text : String; Name : String) return Long_Float is
+      begin
+         return Long_Float'Value (Text);
+      exception
+         when Constraint_Error =>
+            raise Constraint_Error with "option " & Name & ": """ & Text & """ is not a number";
+      end Number;
+   begin
+      Config.Mission_File := To_Unbounded_String (Default_Mission);
+      while I <= Argument_Count loop
+         declare
+            A : constant String := Argument (I);
+         begin
+            if A = "--help" or else A = "-h" then
+               Usage;
+               return;
+            elsif A = "--method" then
+               Config.How := Sancta.Team.Agents.Parse_Method (Value);
+            elsif A = "--rate" then
+               Config.Rate := Number (Value, A);
+               if Config.Rate <= 0.0 then
+                  raise Constraint_Error with "option --rate must be positive";
+               end if;
+            elsif A = "--kill" then
+               Config.Kill_Robot := To_Unbounded_String (Value);
+            elsif A = "--no-kill" then
+               Config.Kill := False;
+            elsif A = "--kill-at" then
+               Config.Kill_Fraction := Number (Value, A);
+            elsif A = "--lease" then
+               Config.Lease := Duration (Number (Value, A));
+               if Config.Lease < 0.1 then
+                  raise Constraint_Error with "option --lease must be at least 0.1 s";
+               end if;
+            elsif A = "--max" then
+               Config.Max_Seconds := Number (Value, A);
+            elsif A = "--world" then
+               Config.World_File := To_Unbounded_String (Value);
+            elsif A = "--out" then
+               Config.Out_Dir := To_Unbounded_String (Value);
+            elsif A = "--quiet" then
+               Config.Verbose := False;
+            elsif A = "--check" then
+               Check := True;
+            elsif A'Length > 0 and then A (A'First) = '-' then
+               raise Constraint_Error with "unknown option " & A;
+            else
+               Config.Mission_File := To_Unbounded_String (A);
+            end if;
+         end;
+         I := I + 1;
+      end loop;
+      Sancta.Team.Demos.Run (Config, Result);
+      Sancta.Team.Demos.Print_Summary (Result);
+      if Check then
+         if Result.All_Done and then Result.Duplicates = 0
+           and then (Result.Killed = Null_Unbounded_String or else Result.Replanned)
+         then
+            Put_Line ("check: passed (every task done exactly once)");
+         else
+            Put_Line ("check: FAILED");
+            Set_Exit_Status (Failure);
+         end if;
+      end if;
+   exception
+      when E : Constraint_Error | Sancta.Team.Missions.Format_Error =>
+         Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
+         Usage;
+         Set_Exit_Status (2);
+   end Run;
+
+end Sancta.Commands.Team;

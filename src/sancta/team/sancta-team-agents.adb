@@ -1,0 +1,668 @@
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with Sancta.Runtime.Values;
+
+package body Sancta.Team.Agents is
+
+   use Ada.Real_Time;
+   use Sancta.Geometry;
+   use type Interfaces.Unsigned_64;
+   use type Missions.Task_Kind;
+
+   Tick          : constant Duration := 0.02;
+   Settle_Time   : constant Time_Span := Milliseconds (300);
+   Bid_Deadline  : constant Time_Span := Milliseconds (1000);
+
+   function Trim (N : Integer) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
+   function Parse_Method (Text : String) return Method is
+   begin
+      if Text in "annealer" | "annealing" then
+         return Annealing;
+      elsif Text in "auction" | "auctions" then
+         return Auctions;
+      end if;
+      raise Constraint_Error with
+        "allocation method """ & Text & """: expected annealer or auctions";
+   end Parse_Method;
+
+   --  Protected boxes -------------------------------------------------------------
+
+   protected body Bid_Box is
+      procedure Open (Generation, Step : Natural) is
+      begin
+         Gen := Generation;
+         Item := Step;
+         N := 0;
+         Winner := (others => <>);
+      end Open;
+
+      procedure Add (Generation, Step : Natural; B : Bid) is
+      begin
+         if Generation /= Gen or else Step /= Item then
+            return;
+         end if;
+         N := N + 1;
+         if B.Cost < Winner.Cost
+           or else (B.Cost = Winner.Cost and then B.Robot < Winner.Robot)
+         then
+            Winner := B;
+         end if;
+      end Add;
+
+      function Count return Natural is (N);
+      function Best return Bid is (Winner);
+   end Bid_Box;
+
+   protected body View_Box is
+      procedure Set (V : View) is
+      begin
+         Current := V;
+      end Set;
+      function Get return View is (Current);
+   end View_Box;
+
+   protected body Progress_Box is
+      procedure Set (P : Progress) is
+      begin
+         Current := P;
+      end Set;
+      function Get return Progress is (Current);
+   end Progress_Box;
+
+   --  Helpers ---------------------------------------------------------------------
+
+   function Split (Text : String; Sep : Character) return Name_Sets.Set is
+      Result : Name_Sets.Set;
+      First  : Positive := Text'First;
+   begin
+      for I in Text'First .. Text'Last + 1 loop
+         if I > Text'Last or else Text (I) = Sep then
+            if I > First then
+               Result.Include (Text (First .. I - 1));
+            end if;
+            First := I + 1;
+         end if;
+      end loop;
+      return Result;
+   end Split;
+
+   function Parse_Point (Text : String) return Point is
+      Comma : constant Natural := Ada.Strings.Fixed.Index (Text, ",");
+   begin
+      return (Real'Value (Text (Text'First .. Comma - 1)),
+              Real'Value (Text (Comma + 1 .. Text'Last)));
+   end Parse_Point;
+
+   function Img (X : Real) return String is (Runtime.Values.Real_Image (Long_Float (X)));
+
+   function Is_Done (This : Agent'Class; Task_Id : String) return Boolean is
+     (This.Db.Contains ("done/" & Task_Id) or else This.Steps.Get.Done.Contains (Task_Id));
+
+   function Mission_Set (This : Agent'Class) return Name_Sets.Set is
+     (Split (This.Db.Get_String ("mission"), ','));
+
+   function Alive_Robots (This : Agent'Class) return Name_Sets.Set is
+      Result : Name_Sets.Set;
+   begin
+      for M of This.Net.Members loop
+         declare
+            Id : constant String := To_String (M);
+         begin
+            if This.Db.Contains ("robot/" & Id) and then This.Db.Contains ("pose/" & Id) then
+               Result.Include (Id);
+            end if;
+         end;
+      end loop;
+      return Result;
+   end Alive_Robots;
+
+   function Round_Robots (S : Plans.Snapshot) return Name_Sets.Set is
+      Result : Name_Sets.Set;
+   begin
+      for R of S.Robots loop
+         Result.Include (To_String (R.Id));
+      end loop;
+      return Result;
+   end Round_Robots;
+
+   procedure Log (This : Agent'Class; Text : String) is
+   begin
+      if not This.Config.Verbose then
+         return;
+      end if;
+      Ada.Text_IO.Put_Line
+        (Ada.Text_IO.Standard_Error, "[" & To_String (This.Config.Id) & "] " & Text);
+   end Log;
+
+   --  Reading the round and the proposals ------------------------------------------
+
+   function Read_Round (This : Agent'Class) return Plans.Snapshot is
+      S   : Plans.Snapshot;
+      Ids : Missions.Task_Vectors.Vector;
+   begin
+      if not This.Db.Contains ("round") then
+         return S;
+      end if;
+      Plans.Decode (This.Db.Get_String ("round"), S, Ids);
+      for T of Ids loop
+         S.Tasks.Append
+           (Missions.Decode (To_String (T.Id), This.Db.Get_String ("task/" & To_String (T.Id))));
+      end loop;
+      return S;
+   end Read_Round;
+
+   function Best_Proposal (This : Agent'Class; S : Plans.Snapshot) return Plans.Plan is
+      Best : Plans.Plan;
+   begin
+      for K of This.Db.Keys_With_Prefix ("proposal/") loop
+         begin
+            declare
+               P : constant Plans.Plan := Plans.Decode (This.Db.Get_String (K), S);
+            begin
+               if P.Generation = S.Generation
+                 and then (Best.Generation = 0
+                           or else P.Value < Best.Value
+                           or else (P.Value = Best.Value and then P.Proposer < Best.Proposer))
+               then
+                  Best := P;
+               end if;
+            end;
+         exception
+            when Plans.Format_Error =>
+               null;  --  a proposal for another round
+         end;
+      end loop;
+      return Best;
+   end Best_Proposal;
+
+   procedure Refresh_View (This : in out Agent'Class) is
+      Text : constant String := This.Db.Get_String ("round");
+      V    : View := This.Views.Get;
+   begin
+      if Text = "" then
+         return;
+      end if;
+      if Text /= To_String (This.Last_Round_Text) then
+         V.Round := Read_Round (This);
+         This.Last_Round_Text := To_Unbounded_String (Text);
+         This.Improved_Rounds := 0;
+         V.Adopted := (others => <>);
+      end if;
+      declare
+         Best : constant Plans.Plan := Best_Proposal (This, V.Round);
+      begin
+         if Best.Generation = V.Round.Generation then
+            V.Adopted := Best;
+         end if;
+      end;
+      This.Views.Set (V);
+   end Refresh_View;
+
+   --  Coordination -------------------------------------------------------------------
+
+   procedure Run_Auctions (This : in out Agent'Class; S : Plans.Snapshot);
+
+   procedure Coordinate (This : in out Agent'Class) is
+      Alive    : constant Name_Sets.Set := Alive_Robots (This);
+      Tasks    : constant Name_Sets.Set := Mission_Set (This);
+      Current  : constant Plans.Snapshot := This.Views.Get.Round;
+      In_Round : Name_Sets.Set;
+      Needed   : Boolean;
+   begin
+      if Tasks.Is_Empty or else Alive.Is_Empty
+        or else Alive.First_Element /= To_String (This.Config.Id)
+      then
+         This.Mismatch_Since := Time_Last;
+         return;
+      end if;
+      for T of Current.Tasks loop
+         In_Round.Include (To_String (T.Id));
+      end loop;
+      Needed := Current.Generation = 0
+        or else not Name_Sets."=" (Round_Robots (Current), Alive);
+      if not Needed then
+         for T of Tasks loop
+            if not In_Round.Contains (T) and then not Is_Done (This, T) then
+               Needed := True;
+            end if;
+         end loop;
+      end if;
+      if not Needed then
+         This.Mismatch_Since := Time_Last;
+         return;
+      end if;
+      if This.Mismatch_Since = Time_Last then
+         This.Mismatch_Since := Clock;
+         return;
+      elsif Clock - This.Mismatch_Since < Settle_Time then
+         return;
+      end if;
+      This.Mismatch_Since := Time_Last;
+      declare
+         S : Plans.Snapshot;
+         Gen : constant Natural :=
+           Natural'Max (Current.Generation,
+                        Natural (This.Db.Revision ("round"))) + 1;
+      begin
+         S.Generation := Gen;
+         for R of Alive loop
+            S.Robots.Append
+              (Plans.Robot_Position'(To_Unbounded_String (R),
+                                     Parse_Point (This.Db.Get_String ("pose/" & R))));
+         end loop;
+         for T of Tasks loop
+            if not Is_Done (This, T) then
+               S.Tasks.Append (Missions.Decode (T, This.Db.Get_String ("task/" & T)));
+            end if;
+         end loop;
+         Log (This, "round" & Gen'Image & ":" & S.Robots.Length'Image & " robots,"
+              & S.Tasks.Length'Image & " tasks to allocate");
+         This.Db.Put ("round", Plans.Encode (S));
+         Refresh_View (This);
+         if This.Config.How = Auctions then
+            Run_Auctions (This, S);
+         end if;
+      end;
+   end Coordinate;
+
+   procedure Propose (This : in out Agent'Class) is
+      V : constant View := This.Views.Get;
+      S : Plans.Snapshot renames V.Round;
+   begin
+      if This.Config.How /= Annealing or else S.Generation = 0
+        or else not Round_Robots (S).Contains (To_String (This.Config.Id))
+        or else This.Improved_Rounds > This.Config.Rounds
+      then
+         return;
+      end if;
+      declare
+         Seed  : constant Interfaces.Unsigned_64 :=
+           This.Config.Seed * 1_000_003 + Interfaces.Unsigned_64 (S.Generation) * 7919
+           + Interfaces.Unsigned_64 (This.Improved_Rounds);
+         Start : constant Plans.Plan :=
+           (if This.Improved_Rounds = 0 then (others => <>) else V.Adopted);
+         T0    : constant Time := Clock;
+         Mine  : constant Plans.Plan :=
+           Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id));
+      begin
+         Log (This, "annealed round" & S.Generation'Image & " in"
+              & Duration'Image (To_Duration (Clock - T0)) & " s: "
+              & Runtime.Values.Real_Image (Mine.Value));
+         This.Improved_Rounds := This.Improved_Rounds + 1;
+         if V.Adopted.Generation /= S.Generation or else Mine.Value < V.Adopted.Value - 1.0E-6
+         then
+            This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Mine, S));
+         end if;
+      end;
+   end Propose;
+
+   --  Auctions (coordinator side) -------------------------------------------------------
+
+   procedure Run_Auctions (This : in out Agent'Class; S : Plans.Snapshot) is
+      Result     : Plans.Plan := (Generation => S.Generation,
+                                  Proposer => This.Config.Id, others => <>);
+      Unassigned : Name_Sets.Set;
+      Step       : Natural := 0;
+      Failures   : Natural := 0;
+      Dummy      : Long_Float;
+
+      function Index_Of (Robot : String) return Natural is
+      begin
+         for R in 1 .. Natural (S.Robots.Length) loop
+            if To_String (S.Robots (R).Id) = Robot then
+               return R;
+            end if;
+         end loop;
+         return 0;
+      end Index_Of;
+   begin
+      for R in 1 .. Natural (S.Robots.Length) loop
+         Result.Tours.Append (Plans.Step_Vectors.Empty_Vector);
+      end loop;
+      for T of S.Tasks loop
+         Unassigned.Include (To_String (T.Id));
+      end loop;
+      while not Unassigned.Is_Empty loop
+         exit when This.Stopping;
+         Step := Step + 1;
+         This.Bids.Open (S.Generation, Step);
+         declare
+            Offer : Unbounded_String :=
+              To_Unbounded_String ("offer" & ASCII.LF & Trim (S.Generation) & ASCII.LF
+                                   & Trim (Step) & ASCII.LF);
+            Deadline : constant Time := Clock + Bid_Deadline;
+         begin
+            for T of Unassigned loop
+               Append (Offer, T & ",");
+            end loop;
+            Append (Offer, ASCII.LF & Plans.Encode (S));
+            This.Net.Send (Networks.To_Group ("robots"), "auction", To_String (Offer));
+            while This.Bids.Count < Natural (S.Robots.Length) and then Clock < Deadline
+              and then not This.Stopping
+            loop
+               delay 0.002;
+            end loop;
+         end;
+         declare
+            B : constant Bid := This.Bids.Best;
+            R : constant Natural := Index_Of (To_String (B.Robot));
+         begin
+            if This.Bids.Count = 0 or else R = 0
+              or else not Unassigned.Contains (To_String (B.Task_Id))
+            then
+               Failures := Failures + 1;
+               if Failures >= 3 then
+                  Log (This, "auctions of round" & S.Generation'Image & " abandoned (no bids)");
+                  return;
+               end if;
+            else
+               if B.Pos > Natural (Result.Tours (R).Length) + 1 then
+                  Result.Tours (R).Append (Plans.Step'(B.Task_Id, B.Choice));
+               else
+                  Result.Tours (R).Insert (B.Pos, Plans.Step'(B.Task_Id, B.Choice));
+               end if;
+               Unassigned.Delete (To_String (B.Task_Id));
+               declare
+                  Tour : Unbounded_String;
+               begin
+                  for St of Result.Tours (R) loop
+                     Append (Tour, St.Task_Id & "." & Trim (St.Choice) & ",");
+                  end loop;
+                  This.Net.Send
+                    (Networks.To_Group ("robots"), "auction",
+                     "award" & ASCII.LF & Trim (S.Generation) & ASCII.LF & Trim (Step) & ASCII.LF
+                     & To_String (B.Robot) & ASCII.LF & To_String (Tour));
+               end;
+            end if;
+         end;
+      end loop;
+      Dummy := Plans.Evaluate (S, Result);
+      This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Result, S));
+      Log (This, "auctions of round" & S.Generation'Image & " done in" & Step'Image & " steps");
+   end Run_Auctions;
+
+   --  Auctions (bidder side, in the network's task) -------------------------------------
+
+   overriding procedure On_Message
+     (This : in out Auction_Consumer; Sender, Channel, Payload : String)
+   is
+      pragma Unreferenced (Channel);
+      A : Agent renames This.Owner.all;
+      type Line_Array is array (1 .. 6) of Unbounded_String;
+      L : Line_Array;
+      N : Natural := 0;
+      First : Positive := Payload'First;
+   begin
+      for I in Payload'First .. Payload'Last + 1 loop
+         if I > Payload'Last or else Payload (I) = ASCII.LF then
+            exit when N = L'Last;
+            N := N + 1;
+            L (N) := To_Unbounded_String (Payload (First .. I - 1));
+            First := I + 1;
+         end if;
+      end loop;
+      if N < 4 then
+         return;
+      end if;
+      declare
+         Kind : constant String := To_String (L (1));
+         Gen  : constant Natural := Natural'Value (To_String (L (2)));
+         Step : constant Natural := Natural'Value (To_String (L (3)));
+         Self : constant String := To_String (A.Config.Id);
+      begin
+         if Kind = "bid" and then N >= 4 then
+            --  "bid / gen / step / robot task cost pos choice"
+            declare
+               Text  : constant String := To_String (L (4));
+               Parts : array (1 .. 5) of Unbounded_String;
+               K     : Natural := 0;
+               Start : Positive := Text'First;
+            begin
+               for I in Text'First .. Text'Last + 1 loop
+                  if I > Text'Last or else Text (I) = ' ' then
+                     exit when K = Parts'Last;
+                     K := K + 1;
+                     Parts (K) := To_Unbounded_String (Text (Start .. I - 1));
+                     Start := I + 1;
+                  end if;
+               end loop;
+               if K = 5 then
+                  A.Bids.Add (Gen, Step,
+                              (Robot   => Parts (1),
+                               Task_Id => Parts (2),
+                               Cost    => Long_Float'Value (To_String (Parts (3))),
+                               Pos     => Positive'Value (To_String (Parts (4))),
+                               Choice  => Positive'Value (To_String (Parts (5)))));
+               end if;
+            end;
+            return;
+         end if;
+         if Kind = "offer" and then N >= 5 and then A.Bundle_Gen /= Gen then
+            --  The round travels with the offer (no wait for the database).
+            declare
+               Ids : Missions.Task_Vectors.Vector;
+               R   : Plans.Snapshot;
+            begin
+               Plans.Decode (To_String (L (5)), R, Ids);
+               for T of Ids loop
+                  R.Tasks.Append
+                    (Missions.Decode
+                       (To_String (T.Id), A.Db.Get_String ("task/" & To_String (T.Id))));
+               end loop;
+               A.Bid_Round := R;
+               A.Bundle_Gen := Gen;
+               A.Bundle.Clear;
+            end;
+         end if;
+         if A.Bundle_Gen /= Gen or else not Round_Robots (A.Bid_Round).Contains (Self) then
+            return;  --  not in this round: no bid (the auctioneer skips us)
+         end if;
+         declare
+            S     : Plans.Snapshot renames A.Bid_Round;
+            Start : Point;
+         begin
+            for R of S.Robots loop
+               if To_String (R.Id) = Self then
+                  Start := R.Where;
+               end if;
+            end loop;
+            if Kind = "offer" then
+               declare
+                  Offered : constant Name_Sets.Set := Split (To_String (L (4)), ',');
+                  Best    : Bid := (Robot => A.Config.Id, others => <>);
+               begin
+                  for T of Offered loop
+                     declare
+                        Cost : Long_Float;
+                        Pos, C : Positive;
+                     begin
+                        Plans.Best_Insertion (S, Start, A.Bundle, T, Cost, Pos, C);
+                        if Cost < Best.Cost then
+                           Best := (A.Config.Id, To_Unbounded_String (T), Cost, Pos, C);
+                        end if;
+                     end;
+                  end loop;
+                  if Best.Cost < Long_Float'Last then
+                     A.Net.Send
+                       (Networks.To_Node (Sender), "auction",
+                        "bid" & ASCII.LF & Trim (Gen) & ASCII.LF & Trim (Step) & ASCII.LF
+                        & Self & " " & To_String (Best.Task_Id) & " "
+                        & Runtime.Values.Real_Image (Best.Cost) & " " & Trim (Best.Pos)
+                        & " " & Trim (Best.Choice));
+                  end if;
+               end;
+            elsif Kind = "award" and then N >= 5 and then To_String (L (4)) = Self then
+               A.Bundle.Clear;
+               for St of Split (To_String (L (5)), ',') loop
+                  declare
+                     Dot : constant Natural :=
+                       Ada.Strings.Fixed.Index (St, ".", Going => Ada.Strings.Backward);
+                  begin
+                     A.Bundle.Append
+                       (Plans.Step'(To_Unbounded_String (St (St'First .. Dot - 1)),
+                                    Positive'Value (St (Dot + 1 .. St'Last))));
+                  end;
+               end loop;
+            end if;
+         end;
+      end;
+   exception
+      when Constraint_Error | Plans.Format_Error =>
+         Log (A, "malformed auction message from " & Sender);
+   end On_Message;
+
+   --  The agent -----------------------------------------------------------------------
+
+   function Create (Config : Agent_Config) return Agent_Access is
+      A : constant Agent_Access := new Agent;
+   begin
+      A.Config := Config;
+      A.Net := Networks.Create
+        (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
+         Lease => Config.Lease, Team => To_String (Config.Team));
+      A.Db := new Databases.Team_Database (A.Net);
+      A.Db.Attach;
+      A.Net.Subscribe ("auction", A.Auction'Unchecked_Access);
+      A.Net.Start;
+      if Config.Is_Robot then
+         A.Db.Put ("robot/" & To_String (Config.Id), "robot");
+      end if;
+      A.Runner := new Worker (A);
+      A.Runner.Go;
+      return A;
+   end Create;
+
+   function Id (This : Agent) return String is (To_String (This.Config.Id));
+   function Database (This : Agent) return Databases.Team_Database_Access is (This.Db);
+   function Network (This : Agent) return Networks.Network_Access is (This.Net);
+
+   procedure Stop (This : in out Agent) is
+   begin
+      This.Stopping := True;
+      This.Net.Stop;
+   end Stop;
+
+   procedure Publish_Mission (This : in out Agent; M : Missions.Mission) is
+      Ids : Unbounded_String;
+   begin
+      for T of M.Tasks loop
+         This.Db.Put ("task/" & To_String (T.Id), Missions.Encode (T));
+         Append (Ids, (if Ids = Null_Unbounded_String then "" else ",") & T.Id);
+      end loop;
+      This.Db.Put ("mission", To_String (Ids));
+   end Publish_Mission;
+
+   procedure Set_Pose (This : in out Agent; Where : Point) is
+   begin
+      This.Db.Put ("pose/" & To_String (This.Config.Id), Img (Where.X) & "," & Img (Where.Y));
+   end Set_Pose;
+
+   procedure Current_Goal
+     (This    : in out Agent;
+      Found   : out Boolean;
+      Goal    : out Point;
+      Task_Id : out Unbounded_String)
+   is
+      V    : constant View := This.Views.Get;
+      P    : Progress := This.Steps.Get;
+      Self : constant String := To_String (This.Config.Id);
+   begin
+      Found := False;
+      Goal := (0.0, 0.0);
+      Task_Id := Null_Unbounded_String;
+      if V.Adopted.Generation = 0 then
+         return;
+      end if;
+      for R in 1 .. Natural (V.Round.Robots.Length) loop
+         if To_String (V.Round.Robots (R).Id) = Self
+           and then R <= Natural (V.Adopted.Tours.Length)
+         then
+            for St of V.Adopted.Tours (R) loop
+               if not Is_Done (This, To_String (St.Task_Id)) then
+                  declare
+                     T : constant Missions.Mission_Task :=
+                       Plans.Task_Of (V.Round, To_String (St.Task_Id));
+                  begin
+                     if P.Active /= St.Task_Id then
+                        P.Active := St.Task_Id;
+                        P.Phase := 1;
+                        This.Steps.Set (P);
+                     end if;
+                     Found := True;
+                     Task_Id := St.Task_Id;
+                     Goal := (if P.Phase = 1 then Missions.Entry_Point (T, St.Choice)
+                              else Missions.Exit_Point (T, St.Choice));
+                     return;
+                  end;
+               end if;
+            end loop;
+         end if;
+      end loop;
+   end Current_Goal;
+
+   procedure Arrived (This : in out Agent; Task_Id : String; Completed : out Boolean) is
+      V : constant View := This.Views.Get;
+      P : Progress := This.Steps.Get;
+   begin
+      Completed := False;
+      if To_String (P.Active) /= Task_Id then
+         return;
+      end if;
+      declare
+         T : constant Missions.Mission_Task := Plans.Task_Of (V.Round, Task_Id);
+      begin
+         if P.Phase = 1 and then T.Kind = Missions.Explore_Segment then
+            P.Phase := 2;
+         else
+            P.Done.Include (Task_Id);
+            P.Active := Null_Unbounded_String;
+            P.Phase := 0;
+            Completed := True;
+            This.Db.Put ("done/" & Task_Id, To_String (This.Config.Id));
+         end if;
+         This.Steps.Set (P);
+      end;
+   end Arrived;
+
+   function Round (This : Agent) return Plans.Snapshot is (This.Views.Get.Round);
+   function Adopted (This : Agent) return Plans.Plan is (This.Views.Get.Adopted);
+
+   function Mission_Tasks (This : Agent) return Natural is
+     (Natural (Mission_Set (This).Length));
+
+   function Done_Tasks (This : Agent) return Natural is
+      N : Natural := 0;
+   begin
+      for T of Mission_Set (This) loop
+         if This.Db.Contains ("done/" & T) then
+            N := N + 1;
+         end if;
+      end loop;
+      return N;
+   end Done_Tasks;
+
+   function All_Done (This : Agent) return Boolean is
+     (This.Mission_Tasks > 0 and then This.Done_Tasks = This.Mission_Tasks);
+
+   task body Worker is
+   begin
+      accept Go;
+      while not Owner.Stopping loop
+         begin
+            Refresh_View (Owner.all);
+            if Owner.Config.Is_Robot then
+               Coordinate (Owner.all);
+               Propose (Owner.all);
+            end if;
+         exception
+            when E : others =>
+               Log (Owner.all, "agent task: " & Ada.Exceptions.Exception_Information (E));
+         end;
+         delay Tick;
+      end loop;
+   end Worker;
+
+end Sancta.Team.Agents;

@@ -1,0 +1,192 @@
+--  Team agents: a node of the team (a robot or the operator) with its team
+--  network, its replica of the team database and its part of the
+--  distributed allocation.
+--
+--  Team database keys:
+--     task/<id>          the task (Missions.Encode)
+--     mission            comma-separated ids of every mission task
+--     robot/<id>         "robot": the node is a robot of the team
+--     pose/<id>          "x,y": the robot's latest position
+--     done/<task>        id of the robot that did the task
+--     round              the current re-planning round (Plans.Snapshot)
+--     proposal/<node>    a plan for a round (Plans.Plan)
+--
+--  Rounds. The coordinator (the alive robot with the smallest id) opens a
+--  new round when the alive robots differ from the current round's, or a
+--  mission task is neither done nor in the round: the round holds every
+--  alive robot's position and every task not done. A robot lost (silent
+--  for its lease) thus returns its unfinished tasks to the plan, a robot
+--  joining gets tasks, and tasks done stay done.
+--
+--  Allocation of a round, as configured:
+--  * Annealing: every robot anneals the round (its own seed) and publishes
+--    its proposal; then, a few times, it anneals again from the best
+--    proposal known and publishes only when it found a better one.
+--  * Auctions: the coordinator runs sequential single-item auctions on the
+--    "auction" channel (offer the unallocated tasks to the group "robots";
+--    each robot bids the cost of its tour with its best insertion of its
+--    cheapest task; the lowest bid wins; award with the winner's new
+--    tour); a bidder silent for 1 s is skipped; the result is the
+--    coordinator's proposal.
+--  Every node adopts the same plan: among the proposals for the current
+--  round, the lowest Value (ties: the smallest proposer id).
+--
+--  Execution (robots): Current_Goal gives the next point of the first task
+--  of the robot's tour in the adopted plan that is not done; Arrived marks
+--  progress (an explore segment has two points) and finally done/<task>.
+with Ada.Containers.Indefinite_Ordered_Sets;
+with Ada.Real_Time;
+with Ada.Strings.Unbounded;
+with Interfaces;
+with Sancta.Geometry;
+with Sancta.Team.Databases;
+with Sancta.Team.Missions;
+with Sancta.Team.Networks;
+with Sancta.Team.Plans;
+
+package Sancta.Team.Agents is
+
+   use Ada.Strings.Unbounded;
+
+   type Method is (Annealing, Auctions);
+
+   function Parse_Method (Text : String) return Method;
+   --  "annealer"/"annealing" or "auction"/"auctions"; Constraint_Error
+   --  naming the text otherwise.
+
+   type Agent_Config is record
+      Id         : Unbounded_String;
+      Team       : Unbounded_String := To_Unbounded_String ("team");
+      --  The team's topics (/sancta/<team>/...).
+      Is_Robot   : Boolean := True;
+      Lease      : Duration := 1.0;
+      How        : Method := Annealing;
+      Budget     : Duration := 0.25;
+      --  Annealer wall-clock time per attempt.
+      Rounds     : Natural := 3;
+      --  Improvement attempts from the best proposal (annealing).
+      Seed       : Interfaces.Unsigned_64 := 1;
+      Verbose    : Boolean := True;
+      --  Rounds, auctions and annealing results on standard error.
+   end record;
+
+   type Agent is tagged limited private;
+   type Agent_Access is access all Agent'Class;
+
+   function Create (Config : Agent_Config) return Agent_Access;
+   --  Makes and starts the agent (its network, database and task).
+
+   function Id (This : Agent) return String;
+   function Database (This : Agent) return Databases.Team_Database_Access;
+   function Network (This : Agent) return Networks.Network_Access;
+
+   procedure Stop (This : in out Agent);
+   --  Stops everything (the team sees the node lost after its lease).
+
+   --  Operator ------------------------------------------------------------------
+
+   procedure Publish_Mission (This : in out Agent; M : Missions.Mission);
+   --  Writes every task, then the mission key.
+
+   --  Robots ----------------------------------------------------------------------
+
+   procedure Set_Pose (This : in out Agent; Where : Sancta.Geometry.Point);
+
+   procedure Current_Goal
+     (This    : in out Agent;
+      Found   : out Boolean;
+      Goal    : out Sancta.Geometry.Point;
+      Task_Id : out Unbounded_String);
+   procedure Arrived (This : in out Agent; Task_Id : String; Completed : out Boolean);
+   --  At the point Current_Goal gave for Task_Id; Completed when that
+   --  finished the task (now done/<task> = this robot).
+
+   --  Observation (every node) ---------------------------------------------------
+
+   function Round (This : Agent) return Plans.Snapshot;
+   function Adopted (This : Agent) return Plans.Plan;
+   --  The adopted plan of the current round (Generation 0: none yet).
+   function Mission_Tasks (This : Agent) return Natural;
+   function Done_Tasks (This : Agent) return Natural;
+   function All_Done (This : Agent) return Boolean;
+   --  The mission is known and every task is done.
+
+private
+
+   package Name_Sets is new Ada.Containers.Indefinite_Ordered_Sets (String);
+
+   type Bid is record
+      Robot  : Unbounded_String;
+      Task_Id : Unbounded_String;
+      Cost   : Long_Float := Long_Float'Last;
+      Pos    : Positive := 1;
+      Choice : Positive := 1;
+   end record;
+
+   protected type Bid_Box is
+      procedure Open (Generation, Step : Natural);
+      procedure Add (Generation, Step : Natural; B : Bid);
+      function Count return Natural;
+      function Best return Bid;
+   private
+      Gen, Item : Natural := 0;
+      N         : Natural := 0;
+      Winner    : Bid;
+   end Bid_Box;
+
+   type View is record
+      Round   : Plans.Snapshot;
+      Adopted : Plans.Plan;
+   end record;
+
+   protected type View_Box is
+      procedure Set (V : View);
+      function Get return View;
+   private
+      Current : View;
+   end View_Box;
+
+   type Progress is record
+      Active : Unbounded_String;
+      Phase  : Natural := 0;
+      Done   : Name_Sets.Set;
+   end record;
+
+   protected type Progress_Box is
+      procedure Set (P : Progress);
+      function Get return Progress;
+   private
+      Current : Progress;
+   end Progress_Box;
+
+   task type Worker (Owner : not null access Agent'Class) is
+      entry Go;
+   end Worker;
+   type Worker_Access is access Worker;
+
+   type Auction_Consumer (Owner : not null access Agent) is
+     limited new Networks.Consumer with null record;
+   overriding procedure On_Message
+     (This : in out Auction_Consumer; Sender, Channel, Payload : String);
+
+   type Agent is tagged limited record
+      Config   : Agent_Config;
+      Net      : Networks.Network_Access;
+      Db       : Databases.Team_Database_Access;
+      Bids     : Bid_Box;
+      Views    : View_Box;
+      Steps    : Progress_Box;
+      Auction  : aliased Auction_Consumer (Agent'Access);
+      Bundle   : Plans.Step_Vectors.Vector;
+      --  The auction tour (bidder side), of Bundle_Gen.
+      Bundle_Gen : Natural := 0;
+      Bid_Round  : Plans.Snapshot;
+      Runner   : Worker_Access;
+      Stopping : Boolean := False
+        with Atomic;
+      Mismatch_Since : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
+      Last_Round_Text : Unbounded_String;
+      Improved_Rounds : Natural := 0;
+   end record;
+
+end Sancta.Team.Agents;

@@ -1,0 +1,467 @@
+with Ada.Containers.Indefinite_Hashed_Maps;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Strings.Hash;
+with Ada.Text_IO;
+with ROSIDL;
+with ROSIDL.Dynamic;
+with ROSIDL.Typesupport;
+with RCL.QoS;
+with Sancta.Team.Interfaces;
+
+package body Sancta.Team.Networks is
+
+   use Ada.Real_Time;
+
+   function Messages_Topic (Team : String) return String is ("/sancta/" & Team & "/messages");
+   function Presence_Topic (Team : String) return String is ("/sancta/" & Team & "/presence");
+   function State_Topic (Team : String) return String is ("/sancta/" & Team & "/state");
+
+   Message_QoS  : constant RCL.QoS.Profile := (Depth => 1000, others => <>);
+   Presence_QoS : constant RCL.QoS.Profile := (Depth => 50, others => <>);
+   State_QoS    : constant RCL.QoS.Profile :=
+     (Depth => 1000, Durability => RCL.QoS.Transient_Local, others => <>);
+
+   --  Which network a node's callback belongs to ------------------------------
+
+   package Owner_Maps is new Ada.Containers.Indefinite_Hashed_Maps
+     (String, Network_Access, Ada.Strings.Hash, "=");
+
+   protected Registry is
+      procedure Add (Node_Name : String; Net : Network_Access);
+      function Find (Node_Name : String) return Network_Access;
+   private
+      Map : Owner_Maps.Map;
+   end Registry;
+
+   protected body Registry is
+      procedure Add (Node_Name : String; Net : Network_Access) is
+      begin
+         Map.Include (Node_Name, Net);
+      end Add;
+      function Find (Node_Name : String) return Network_Access is
+        (if Map.Contains (Node_Name) then Map.Element (Node_Name) else null);
+   end Registry;
+
+   function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
+   begin
+      Sancta.Team.Interfaces.Ensure;
+      return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
+   end Support;
+
+   --  Destinations ------------------------------------------------------------
+
+   function To_Node (Id : String) return Destination is ((Text => To_Unbounded_String (Id)));
+   function To_Group (Name : String) return Destination is
+     ((Text => To_Unbounded_String ("@" & Name)));
+   function To_All return Destination is ((Text => Null_Unbounded_String));
+
+   function In_Groups (Groups, Name : String) return Boolean is
+      Padded : constant String := "," & Groups & ",";
+   begin
+      return Name /= "" and then Ada.Strings.Fixed.Index (Padded, "," & Name & ",") > 0;
+   end In_Groups;
+
+   function Accepts (This : Network'Class; Dest : String) return Boolean is
+     (Dest = ""
+      or else Dest = To_String (This.Id)
+      or else (Dest (Dest'First) = '@'
+               and then In_Groups (To_String (This.Groups), Dest (Dest'First + 1 .. Dest'Last))));
+
+   --  Protected helpers ---------------------------------------------------------
+
+   protected body Roster is
+      procedure Heard (Member : String; Lease : Duration; New_Member : out Boolean) is
+      begin
+         New_Member := not Last.Contains (Member);
+         Last.Include (Member, Clock);
+         Leases.Include (Member, Lease);
+      end Heard;
+
+      procedure Expire (Now : Time; Lost : out Name_Vectors.Vector) is
+         use Time_Maps;
+         C : Cursor := Last.First;
+      begin
+         Lost.Clear;
+         while Has_Element (C) loop
+            if Now - Element (C) > To_Time_Span (Leases.Element (Key (C))) then
+               Lost.Append (To_Unbounded_String (Key (C)));
+            end if;
+            Next (C);
+         end loop;
+         for M of Lost loop
+            Last.Delete (To_String (M));
+            Leases.Delete (To_String (M));
+         end loop;
+      end Expire;
+
+      procedure Clear is
+      begin
+         Last.Clear;
+         Leases.Clear;
+      end Clear;
+
+      function List return Name_Vectors.Vector is
+      begin
+         return Result : Name_Vectors.Vector do
+            for C in Last.Iterate loop
+               Result.Append (To_Unbounded_String (Time_Maps.Key (C)));
+            end loop;
+         end return;
+      end List;
+
+      function Contains (Member : String) return Boolean is (Last.Contains (Member));
+   end Roster;
+
+   protected body Mutex is
+      entry Seize when not Held is
+      begin
+         Held := True;
+      end Seize;
+      procedure Release is
+      begin
+         Held := False;
+      end Release;
+   end Mutex;
+
+   protected body Flag_Box is
+      procedure Set_Isolated (Value : Boolean) is
+      begin
+         F.Isolated := Value;
+      end Set_Isolated;
+      procedure Set_Stopping is
+      begin
+         F.Stopping := True;
+      end Set_Stopping;
+      function Get return Flags is (F);
+   end Flag_Box;
+
+   protected body Counter_Box is
+      procedure Add_Sent is
+      begin
+         S := S + 1;
+      end Add_Sent;
+      procedure Add_Received is
+      begin
+         R := R + 1;
+      end Add_Received;
+      function Next_Sequence return Long_Long_Integer is (Seq + 1);
+      procedure Bump_Sequence is
+      begin
+         Seq := Seq + 1;
+      end Bump_Sequence;
+      function Sent return Long_Long_Integer is (S);
+      function Received return Long_Long_Integer is (R);
+   end Counter_Box;
+
+   --  Membership events ---------------------------------------------------------
+
+   procedure Notify_Joined (This : in out Network'Class; Member : String) is
+   begin
+      for L of This.Listeners loop
+         L.On_Joined (Member);
+      end loop;
+   end Notify_Joined;
+
+   procedure Notify_Lost (This : in out Network'Class; Member : String) is
+   begin
+      for L of This.Listeners loop
+         L.On_Lost (Member);
+      end loop;
+   end Notify_Lost;
+
+   procedure Heard (This : in out Network'Class; Member : String; Lease : Duration) is
+      New_Member : Boolean;
+   begin
+      This.Alive.Heard (Member, Lease, New_Member);
+      if New_Member then
+         Notify_Joined (This, Member);
+      end if;
+   end Heard;
+
+   --  Callbacks (run by the receiving task in Node.Spin) ------------------------
+
+   procedure Log_Failure
+     (This : Network'Class; What : String; E : Ada.Exceptions.Exception_Occurrence) is
+   begin
+      Ada.Text_IO.Put_Line
+        (Ada.Text_IO.Standard_Error,
+         "team network " & To_String (This.Id) & ": " & What & ": "
+         & Ada.Exceptions.Exception_Information (E));
+   end Log_Failure;
+
+   procedure On_Envelope
+     (Node : in out RCL.Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+      Net : constant Network_Access := Registry.Find (Node.Name);
+   begin
+      if Net = null or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping then
+         return;
+      end if;
+      declare
+         Dest    : constant String := Msg ("destination").Get_String;
+         Channel : constant String := Msg ("channel").Get_String;
+      begin
+         if not Accepts (Net.all, Dest) then
+            return;
+         end if;
+         Net.Counts.Add_Received;
+         for S of Net.Subs loop
+            if To_String (S.Channel) = Channel then
+               begin
+                  S.Who.On_Message (Msg ("sender").Get_String, Channel,
+                                    Msg ("payload").Get_String);
+               exception
+                  when E : others =>
+                     Log_Failure (Net.all, "consumer of channel " & Channel, E);
+               end;
+            end if;
+         end loop;
+      end;
+   end On_Envelope;
+
+   procedure On_Presence
+     (Node : in out RCL.Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+      Net : constant Network_Access := Registry.Find (Node.Name);
+   begin
+      if Net = null or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping then
+         return;
+      end if;
+      declare
+         Lease : constant Long_Float := Long_Float (Msg ("lease").As_Float64.Element.all);
+      begin
+         if Lease >= 0.01 and then Lease <= 3600.0 then
+            Heard (Net.all, Msg ("node").Get_String, Duration (Lease));
+         end if;
+      end;
+   end On_Presence;
+
+   procedure On_State
+     (Node : in out RCL.Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+      Net : constant Network_Access := Registry.Find (Node.Name);
+   begin
+      if Net = null or else Net.States = null
+        or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping
+      then
+         return;
+      end if;
+      Net.States.On_State
+        (Key        => Msg ("key").Get_String,
+         Value_Type => Msg ("value_type").Get_String,
+         Value      => Msg ("value").Get_String,
+         Revision   => Long_Long_Integer (Msg ("revision").As_UInt64.Element.all),
+         Writer     => Msg ("writer").Get_String);
+   exception
+      when E : others =>
+         Log_Failure (Net.all, "state consumer", E);
+   end On_State;
+
+   --  The network ---------------------------------------------------------------
+
+   function Create
+     (Id     : String;
+      Groups : String := "";
+      Lease  : Duration := 2.0;
+      Team   : String := "team") return Network_Access
+   is
+      Net : constant Network_Access := new Network;
+   begin
+      if (for some C of String'(Id & Team) =>
+            not (C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_'))
+      then
+         raise Constraint_Error with
+           "team node id """ & Id & """ or team """ & Team
+           & """: only letters, digits and '_' are allowed";
+      end if;
+      Net.Id := To_Unbounded_String (Id);
+      Net.Groups := To_Unbounded_String (Groups);
+      Net.Lease := Lease;
+      Net.Team := To_Unbounded_String (Team);
+      Net.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_" & Team & "_" & Id));
+      Registry.Add (Net.Node.Name, Net);
+      Net.Messages := new RCL.Publishers.Publisher'
+        (Net.Node.Publish (Support ("Envelope"), Messages_Topic (Team), Message_QoS));
+      Net.Presence := new RCL.Publishers.Publisher'
+        (Net.Node.Publish (Support ("Presence"), Presence_Topic (Team), Presence_QoS));
+      Net.State := new RCL.Publishers.Publisher'
+        (Net.Node.Publish (Support ("DbEntry"), State_Topic (Team), State_QoS));
+      return Net;
+   end Create;
+
+   function Id (This : Network) return String is (To_String (This.Id));
+   function Lease (This : Network) return Duration is (This.Lease);
+
+   procedure Subscribe
+     (This : in out Network; Channel : String; Who : not null Consumer_Access) is
+   begin
+      This.Subs.Append (Subscriber'(To_Unbounded_String (Channel), Who));
+   end Subscribe;
+
+   procedure Add_Membership_Listener
+     (This : in out Network; Who : not null Membership_Listener_Access) is
+   begin
+      This.Listeners.Append (Who);
+   end Add_Membership_Listener;
+
+   procedure Set_State_Consumer
+     (This : in out Network; Who : not null State_Consumer_Access) is
+   begin
+      This.States := Who;
+   end Set_State_Consumer;
+
+   procedure Start (This : in out Network) is
+   begin
+      if This.Started then
+         return;
+      end if;
+      This.Started := True;
+      This.Node.Subscribe (Support ("Envelope"), Messages_Topic (To_String (This.Team)),
+                           On_Envelope'Access, Message_QoS);
+      This.Node.Subscribe (Support ("Presence"), Presence_Topic (To_String (This.Team)),
+                           On_Presence'Access, Presence_QoS);
+      This.Node.Subscribe (Support ("DbEntry"), State_Topic (To_String (This.Team)),
+                           On_State'Access, State_QoS);
+      This.Worker := new Receiver (This'Unchecked_Access);
+      This.Worker.Go;
+   end Start;
+
+   procedure Stop (This : in out Network) is
+   begin
+      This.Status.Set_Stopping;
+   end Stop;
+
+   procedure Send
+     (This    : in out Network;
+      To      : Destination;
+      Channel : String;
+      Payload : String)
+   is
+      Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("Envelope"));
+   begin
+      if This.Status.Get.Isolated or else This.Status.Get.Stopping then
+         return;
+      end if;
+      Msg ("sender").Set_String (To_String (This.Id));
+      Msg ("destination").Set_String (To_String (To.Text));
+      Msg ("channel").Set_String (Channel);
+      Msg ("payload").Set_String (Payload);
+      This.Send_Lock.Seize;
+      begin
+         This.Counts.Bump_Sequence;
+         Msg ("sequence").As_UInt64.Element.all :=
+           ROSIDL.UInt64 (This.Counts.Next_Sequence - 1);
+         This.Messages.Publish (Msg);
+         This.Counts.Add_Sent;
+      exception
+         when others =>
+            This.Send_Lock.Release;
+            raise;
+      end;
+      This.Send_Lock.Release;
+   end Send;
+
+   procedure Publish_State
+     (This       : in out Network;
+      Key        : String;
+      Value_Type : String;
+      Value      : String;
+      Revision   : Long_Long_Integer;
+      Writer     : String)
+   is
+      Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("DbEntry"));
+   begin
+      if This.Status.Get.Isolated or else This.Status.Get.Stopping then
+         return;
+      end if;
+      Msg ("key").Set_String (Key);
+      Msg ("value_type").Set_String (Value_Type);
+      Msg ("value").Set_String (Value);
+      Msg ("revision").As_UInt64.Element.all := ROSIDL.UInt64 (Revision);
+      Msg ("writer").Set_String (Writer);
+      This.Send_Lock.Seize;
+      begin
+         This.State.Publish (Msg);
+      exception
+         when others =>
+            This.Send_Lock.Release;
+            raise;
+      end;
+      This.Send_Lock.Release;
+   end Publish_State;
+
+   procedure Beat (This : in out Network'Class) is
+      Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("Presence"));
+   begin
+      Heard (This, To_String (This.Id), This.Lease);
+      if This.Status.Get.Isolated then
+         return;
+      end if;
+      Msg ("node").Set_String (To_String (This.Id));
+      Msg ("groups").Set_String (To_String (This.Groups));
+      Msg ("lease").As_Float64.Element.all := ROSIDL.Float64 (This.Lease);
+      This.Send_Lock.Seize;
+      begin
+         This.Presence.Publish (Msg);
+      exception
+         when others =>
+            This.Send_Lock.Release;
+            raise;
+      end;
+      This.Send_Lock.Release;
+   end Beat;
+
+   procedure Isolate (This : in out Network; Cut : Boolean) is
+   begin
+      This.Status.Set_Isolated (Cut);
+   end Isolate;
+
+   function Is_Isolated (This : Network) return Boolean is (This.Status.Get.Isolated);
+
+   function Members (This : Network) return Name_Vectors.Vector is (This.Alive.List);
+   function Is_Member (This : Network; Id : String) return Boolean is
+     (This.Alive.Contains (Id));
+
+   function Sent_Count (This : Network) return Long_Long_Integer is (This.Counts.Sent);
+   function Received_Count (This : Network) return Long_Long_Integer is
+     (This.Counts.Received);
+
+   task body Receiver is
+      Period : constant Time_Span := To_Time_Span (Owner.Lease / 4);
+      Lost   : Name_Vectors.Vector;
+   begin
+      accept Go;
+      loop
+         exit when Owner.Status.Get.Stopping;
+         begin
+            if Clock >= Owner.Next_Beat then
+               Beat (Owner.all);
+               Owner.Next_Beat := Clock + Period;
+            end if;
+            Owner.Alive.Expire (Clock, Lost);
+            for M of Lost loop
+               if To_String (M) /= To_String (Owner.Id) then
+                  Notify_Lost (Owner.all, To_String (M));
+               end if;
+            end loop;
+            Owner.Node.Spin (During => 0.02);
+         exception
+            when E : others =>
+               Log_Failure (Owner.all, "receiving task", E);
+               delay 0.1;
+         end;
+      end loop;
+      Owner.Alive.Clear;
+   end Receiver;
+
+end Sancta.Team.Networks;

@@ -1,0 +1,531 @@
+with Ada.Containers;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;  use Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with AUnit.Assertions;        use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with Sancta.Geometry;
+with Sancta.Runtime.Databases;
+with Sancta.Runtime.Values;
+with Sancta.Team.Agents;
+with Sancta.Team.Databases;
+with Sancta.Team.Demos;
+with Sancta.Team.Missions;
+with Sancta.Team.Networks;
+with Sancta.Team.Plans;
+
+package body Sancta.Team.Tests is
+
+   use Sancta.Team.Networks;
+   use Sancta.Team.Databases;
+   use type Ada.Containers.Count_Type;
+   use type Plans.Tour_Vectors.Vector;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   Lease : constant Duration := 0.5;
+   subtype Real is Sancta.Geometry.Real;
+
+   function Wait_Until
+     (Condition : not null access function return Boolean;
+      Limit     : Duration := 15.0) return Boolean
+   is
+      Waited : Duration := 0.0;
+   begin
+      while not Condition.all loop
+         if Waited >= Limit then
+            return False;
+         end if;
+         delay 0.05;
+         Waited := Waited + 0.05;
+      end loop;
+      return True;
+   end Wait_Until;
+
+   type Node is record
+      Net : Network_Access;
+      Db  : Team_Database_Access;
+   end record;
+
+   function Make (Team, Id : String; Groups : String := "robots") return Node is
+      N : Node;
+   begin
+      N.Net := Create (Id, Groups => Groups, Lease => Lease, Team => Team);
+      N.Db := new Team_Database (N.Net);
+      N.Db.Attach;
+      return N;
+   end Make;
+
+   --  Network ---------------------------------------------------------------------
+
+   type Recorder is new Consumer with record
+      Log : Unbounded_String;
+   end record;
+   overriding procedure On_Message
+     (This : in out Recorder; Sender, Channel, Payload : String);
+
+   protected Record_Lock is
+      procedure Add (To : in out Unbounded_String; Text : String);
+   end Record_Lock;
+   protected body Record_Lock is
+      procedure Add (To : in out Unbounded_String; Text : String) is
+      begin
+         Append (To, Text);
+      end Add;
+   end Record_Lock;
+
+   overriding procedure On_Message
+     (This : in out Recorder; Sender, Channel, Payload : String) is
+   begin
+      Record_Lock.Add (This.Log, "[" & Sender & ":" & Channel & ":" & Payload & "]");
+   end On_Message;
+
+   procedure Test_Destinations (T : in out Fixture) is
+      pragma Unreferenced (T);
+      A  : constant Node := Make ("t_dest", "a");
+      B  : constant Node := Make ("t_dest", "b");
+      C  : constant Node := Make ("t_dest", "c", Groups => "operators");
+      RA, RB, RC : aliased Recorder;
+      RX : aliased Recorder;
+
+      function All_Met return Boolean is
+        (A.Net.Members.Length = 3 and then B.Net.Members.Length = 3
+         and then C.Net.Members.Length = 3);
+      function Delivered return Boolean is
+        (Ada.Strings.Fixed.Index (To_String (RA.Log), "last") > 0
+         and then Ada.Strings.Fixed.Index (To_String (RB.Log), "last") > 0
+         and then Ada.Strings.Fixed.Index (To_String (RC.Log), "last") > 0);
+      function Has (R : Recorder; Text : String) return Boolean is
+        (Ada.Strings.Fixed.Index (To_String (R.Log), Text) > 0);
+   begin
+      A.Net.Subscribe ("chat", RA'Unchecked_Access);
+      B.Net.Subscribe ("chat", RB'Unchecked_Access);
+      C.Net.Subscribe ("chat", RC'Unchecked_Access);
+      A.Net.Subscribe ("other", RX'Unchecked_Access);
+      A.Net.Start;
+      B.Net.Start;
+      C.Net.Start;
+      Assert (Wait_Until (All_Met'Access), "the three nodes never saw each other");
+      C.Net.Send (To_Group ("robots"), "chat", "to-robots");
+      A.Net.Send (To_Node ("b"), "chat", "to-b");
+      B.Net.Send (To_All, "chat", "to-all");
+      B.Net.Send (To_All, "other", "elsewhere");
+      delay 0.3;
+      C.Net.Send (To_All, "chat", "last");
+      Assert (Wait_Until (Delivered'Access), "messages not delivered");
+      Assert (Has (RA, "[c:chat:to-robots]") and then Has (RB, "[c:chat:to-robots]"),
+              "group message missing: " & To_String (RA.Log) & " / " & To_String (RB.Log));
+      Assert (not Has (RC, "to-robots"), "group message reached a non-member");
+      Assert (Has (RB, "[a:chat:to-b]") and then not Has (RA, "to-b")
+              and then not Has (RC, "to-b"), "node message went astray");
+      Assert (Has (RA, "to-all") and then Has (RB, "to-all") and then Has (RC, "to-all"),
+              "broadcast missing");
+      Assert (not Has (RA, "elsewhere") and then Has (RX, "[b:other:elsewhere]"),
+              "channels mixed up: " & To_String (RA.Log));
+      A.Net.Stop;
+      B.Net.Stop;
+      C.Net.Stop;
+   end Test_Destinations;
+
+   type Watcher is new Membership_Listener with record
+      Lost, Joined : Unbounded_String;
+   end record;
+   overriding procedure On_Joined (This : in out Watcher; Member : String);
+   overriding procedure On_Lost (This : in out Watcher; Member : String);
+   overriding procedure On_Joined (This : in out Watcher; Member : String) is
+   begin
+      Record_Lock.Add (This.Joined, Member & ";");
+   end On_Joined;
+   overriding procedure On_Lost (This : in out Watcher; Member : String) is
+   begin
+      Record_Lock.Add (This.Lost, Member & ";");
+   end On_Lost;
+
+   procedure Test_Presence (T : in out Fixture) is
+      pragma Unreferenced (T);
+      A : constant Node := Make ("t_pres", "a");
+      B : constant Node := Make ("t_pres", "b");
+      W : aliased Watcher;
+      function Met return Boolean is (A.Net.Is_Member ("b"));
+      function Gone return Boolean is (Ada.Strings.Fixed.Index (To_String (W.Lost), "b;") > 0);
+   begin
+      A.Net.Add_Membership_Listener (W'Unchecked_Access);
+      A.Net.Start;
+      B.Net.Start;
+      Assert (Wait_Until (Met'Access), "a never saw b");
+      Assert (Ada.Strings.Fixed.Index (To_String (W.Joined), "b;") > 0, "no join event");
+      B.Net.Stop;
+      Assert (Wait_Until (Gone'Access), "the loss of b was not reported");
+      Assert (not A.Net.Is_Member ("b"), "b still a member after its lease");
+      A.Net.Stop;
+   end Test_Presence;
+
+   --  Replicated database -------------------------------------------------------------
+
+   type Counter is new Runtime.Databases.Listener with record
+      Calls : Natural := 0;
+      Last  : Unbounded_String;
+   end record;
+   overriding procedure On_Key_Stored
+     (This : in out Counter; Key : String; Value : Runtime.Values.Value'Class);
+   overriding function Listener_Name (This : Counter) return String is ("counter");
+   overriding procedure On_Key_Stored
+     (This : in out Counter; Key : String; Value : Runtime.Values.Value'Class)
+   is
+      pragma Unreferenced (Key);
+   begin
+      This.Calls := This.Calls + 1;
+      This.Last := To_Unbounded_String (Value.Image);
+   end On_Key_Stored;
+
+   procedure Test_Convergence (T : in out Fixture) is
+      pragma Unreferenced (T);
+      Nodes : constant array (1 .. 3) of Node :=
+        [Make ("t_conv", "n1"), Make ("t_conv", "n2"), Make ("t_conv", "n3")];
+      L : aliased Counter;
+
+      function All_Met return Boolean is
+        (for all N of Nodes => N.Net.Members.Length = 3);
+      function Same return Boolean is
+        (Nodes (1).Db.Digest = Nodes (2).Db.Digest
+         and then Nodes (2).Db.Digest = Nodes (3).Db.Digest
+         and then Nodes (1).Db.Keys.Length = 40);
+
+      task type Writer (Me : Positive);
+      task body Writer is
+      begin
+         for Round in 1 .. 10 loop
+            for K in 1 .. 20 loop
+               Nodes (Me).Db.Put ("shared/" & Ada.Strings.Fixed.Trim (K'Image, Ada.Strings.Left),
+                                  "n" & Me'Image & " r" & Round'Image);
+            end loop;
+         end loop;
+         for K in 1 .. 20 loop
+            if (K - 1) mod 3 + 1 = Me then
+               Nodes (Me).Db.Put ("own/" & Ada.Strings.Fixed.Trim (K'Image, Ada.Strings.Left),
+                                  Runtime.Values.Integer_Value'(Data => Long_Long_Integer (K)));
+            end if;
+         end loop;
+      exception
+         when E : others =>
+            Ada.Text_IO.Put_Line (Ada.Exceptions.Exception_Information (E));
+      end Writer;
+   begin
+      Nodes (2).Db.Listen ("own/1", L'Unchecked_Access);
+      for N of Nodes loop
+         N.Net.Start;
+      end loop;
+      Assert (Wait_Until (All_Met'Access), "the nodes never met");
+      declare
+         W1 : Writer (1);
+         W2 : Writer (2);
+         W3 : Writer (3);
+      begin
+         null;
+      end;
+      Assert (Wait_Until (Same'Access), "replicas differ:" & ASCII.LF & Nodes (1).Db.Digest
+              & "--" & ASCII.LF & Nodes (3).Db.Digest);
+      for K in 1 .. 20 loop
+         declare
+            Key : constant String := "own/" & Ada.Strings.Fixed.Trim (K'Image, Ada.Strings.Left);
+         begin
+            for N of Nodes loop
+               Assert (N.Db.Contains (Key)
+                       and then N.Db.Get (Key).Image = K'Image (2 .. K'Image'Last),
+                       Key & " lost or wrong on " & N.Net.Id);
+            end loop;
+         end;
+      end loop;
+      --  Every node wrote every shared key 10 times: the winner is the
+      --  highest (revision, writer).
+      for K in 1 .. 20 loop
+         declare
+            Key : constant String :=
+              "shared/" & Ada.Strings.Fixed.Trim (K'Image, Ada.Strings.Left);
+         begin
+            Assert (Nodes (1).Db.Revision (Key) >= 10, Key & ": revision below 10");
+         end;
+      end loop;
+      Assert (L.Calls >= 1 and then To_String (L.Last) = "1",
+              "listener on own/1 called" & L.Calls'Image & " times, last " & To_String (L.Last));
+      for N of Nodes loop
+         N.Net.Stop;
+      end loop;
+   end Test_Convergence;
+
+   procedure Test_Late_Joiner (T : in out Fixture) is
+      pragma Unreferenced (T);
+      A : constant Node := Make ("t_late", "a");
+      B : constant Node := Make ("t_late", "b");
+      C : Node;
+      function Met return Boolean is (A.Net.Members.Length = 2);
+      function Caught_Up return Boolean is (C.Db.Digest = A.Db.Digest);
+   begin
+      A.Net.Start;
+      B.Net.Start;
+      Assert (Wait_Until (Met'Access), "a and b never met");
+      for K in 1 .. 30 loop
+         A.Db.Put ("a/" & K'Image, "value" & K'Image);
+         B.Db.Put ("b/" & K'Image, "value" & K'Image);
+      end loop;
+      A.Db.Put ("a/ 1", "rewritten");
+      delay 0.5;
+      C := Make ("t_late", "c");
+      C.Net.Start;
+      Assert (Wait_Until (Caught_Up'Access), "the late joiner did not get the state:"
+              & C.Db.Keys.Length'Image & " keys");
+      Assert (C.Db.Get_String ("a/ 1") = "rewritten", "late joiner has an old value");
+      Assert (C.Db.Keys.Length = 60, "late joiner has" & C.Db.Keys.Length'Image & " keys");
+      A.Net.Stop;
+      B.Net.Stop;
+      C.Net.Stop;
+   end Test_Late_Joiner;
+
+   procedure Test_Cut_And_Rejoin (T : in out Fixture) is
+      pragma Unreferenced (T);
+      A : constant Node := Make ("t_cut", "a");
+      B : constant Node := Make ("t_cut", "b");
+      C : constant Node := Make ("t_cut", "c");
+      function All_Met return Boolean is
+        (A.Net.Members.Length = 3 and then C.Net.Members.Length = 3);
+      function Cut_Seen return Boolean is
+        (not A.Net.Is_Member ("c") and then not C.Net.Is_Member ("a"));
+      function Same return Boolean is
+        (A.Db.Digest = C.Db.Digest and then B.Db.Digest = C.Db.Digest
+         and then C.Db.Contains ("while/a") and then A.Db.Contains ("while/c"));
+   begin
+      A.Net.Start;
+      B.Net.Start;
+      C.Net.Start;
+      Assert (Wait_Until (All_Met'Access), "never met");
+      A.Db.Put ("before", "1");
+      C.Net.Isolate (True);
+      Assert (Wait_Until (Cut_Seen'Access), "the cut was not noticed");
+      A.Db.Put ("while/a", "from a");
+      B.Db.Put ("before", "2");
+      C.Db.Put ("while/c", "from c");
+      delay 0.3;
+      Assert (not C.Db.Contains ("while/a"), "the cut node received data");
+      C.Net.Isolate (False);
+      Assert (Wait_Until (Same'Access), "no catch-up after rejoin:" & ASCII.LF & A.Db.Digest
+              & "--" & ASCII.LF & C.Db.Digest);
+      Assert (C.Db.Get_String ("before") = "2", "old value after rejoin");
+      Assert (A.Db.Get_String ("while/c") = "from c", "the cut node's write was lost");
+      A.Net.Stop;
+      B.Net.Stop;
+      C.Net.Stop;
+   end Test_Cut_And_Rejoin;
+
+   --  Missions and plans ---------------------------------------------------------------
+
+   procedure Test_Mission_Errors (T : in out Fixture) is
+      pragma Unreferenced (T);
+      File : constant String := "out/test-team-bad-mission.xml";
+      F    : Ada.Text_IO.File_Type;
+   begin
+      Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, File);
+      Ada.Text_IO.Put_Line (F, "<mission>");
+      Ada.Text_IO.Put_Line (F, "  <goto id=""t1"" x=""1"" y=""2""/>");
+      Ada.Text_IO.Put_Line (F, "  <goto id=""t2"" x=""oops"" y=""2""/>");
+      Ada.Text_IO.Put_Line (F, "</mission>");
+      Ada.Text_IO.Close (F);
+      begin
+         declare
+            M : constant Missions.Mission := Missions.Read (File);
+            pragma Unreferenced (M);
+         begin
+            Assert (False, "a bad number was accepted");
+         end;
+      exception
+         when E : Missions.Format_Error =>
+            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
+                                             File & ":3:") > 0,
+                    "error not positioned: " & Ada.Exceptions.Exception_Message (E));
+      end;
+      declare
+         M : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
+         use Missions;
+      begin
+         Assert (M.Tasks.Length >= 20 and then M.Robots.Length >= 4, "demo mission too small");
+         Assert ((for some T of M.Tasks => T.Kind = Explore_Segment)
+                 and then (for some T of M.Tasks => T.Kind = Choose_Entry),
+                 "demo mission lacks OR tasks");
+         for T of M.Tasks loop
+            Assert (Decode (To_String (T.Id), Encode (T)) = T, "encode/decode differ");
+         end loop;
+      end;
+   end Test_Mission_Errors;
+
+   procedure Test_Plans (T : in out Fixture) is
+      pragma Unreferenced (T);
+      M : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
+      S : Plans.Snapshot;
+   begin
+      S.Generation := 3;
+      for R of M.Robots loop
+         S.Robots.Append (Plans.Robot_Position'(R.Id, (R.Start.X, R.Start.Y)));
+      end loop;
+      S.Tasks := M.Tasks;
+      declare
+         G : constant Plans.Plan := Plans.Greedy (S, "g");
+         A : constant Plans.Plan := Plans.Anneal (S, 7, 0.5, G, "a");
+         D : constant Plans.Plan := Plans.Decode (Plans.Encode (A, S), S);
+         N : Natural := 0;
+      begin
+         for Tour of A.Tours loop
+            N := N + Natural (Tour.Length);
+         end loop;
+         Assert (N = Natural (M.Tasks.Length), "annealed plan has" & N'Image & " steps");
+         Assert (A.Value <= G.Value + 1.0E-6, "annealing from greedy made it worse");
+         Assert (D.Tours = A.Tours and then abs (D.Value - A.Value) < 1.0E-6,
+                 "plan text does not round-trip");
+      end;
+   end Test_Plans;
+
+   --  A robot joining gets tasks; tasks done stay done ---------------------------------
+
+   procedure Test_Join (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Agents;
+      Team : constant Unbounded_String := To_Unbounded_String ("t_join");
+      function Robot (Id : String; X : Real) return Agent_Access is
+         A : constant Agent_Access :=
+           Create ((Id => To_Unbounded_String (Id), Team => Team, Lease => Lease,
+                    Verbose => False, others => <>));
+      begin
+         A.Set_Pose ((X, 0.0));
+         return A;
+      end Robot;
+      M  : Missions.Mission;
+      R1 : constant Agent_Access := Robot ("r1", 0.0);
+      R2 : constant Agent_Access := Robot ("r2", 10.0);
+      R3 : Agent_Access;
+      Op : constant Agent_Access :=
+        Create ((Id => To_Unbounded_String ("operator"), Team => Team, Is_Robot => False,
+                 Lease => Lease, Verbose => False, others => <>));
+      First_Task : Unbounded_String;
+      function Planned return Boolean is
+        (R1.Adopted.Generation > 0 and then R1.Adopted.Generation = R1.Round.Generation);
+      function Joined return Boolean is
+        (R3.Adopted.Generation > 0 and then R3.Adopted.Generation = R3.Round.Generation
+         and then R3.Round.Robots.Length = 3);
+   begin
+      for K in 1 .. 9 loop
+         declare
+            Task_Def : Missions.Mission_Task;
+         begin
+            Task_Def.Id := To_Unbounded_String ("j" & Ada.Strings.Fixed.Trim (K'Image,
+                                                Ada.Strings.Left));
+            Task_Def.Points.Append (Missions.Point'(Real (K * 2), 5.0));
+            M.Tasks.Append (Task_Def);
+         end;
+      end loop;
+      Op.Publish_Mission (M);
+      Assert (Wait_Until (Planned'Access), "no plan for two robots");
+      --  r1 does its first task.
+      declare
+         Found : Boolean;
+         Goal  : Missions.Point;
+         Done  : Boolean;
+      begin
+         R1.Current_Goal (Found, Goal, First_Task);
+         Assert (Found, "r1 has nothing to do");
+         R1.Arrived (To_String (First_Task), Done);
+         Assert (Done, "arriving did not complete the task");
+      end;
+      R3 := Robot ("r3", 20.0);
+      Assert (Wait_Until (Joined'Access), "no round with the new robot");
+      declare
+         S : constant Plans.Snapshot := R3.Round;
+         P : constant Plans.Plan := R3.Adopted;
+         Count : Natural := 0;
+      begin
+         Assert ((for all X of S.Tasks => X.Id /= First_Task), "a task done was re-planned");
+         Assert (Natural (S.Tasks.Length) = 8, "round has" & S.Tasks.Length'Image & " tasks");
+         for K in 1 .. Natural (S.Robots.Length) loop
+            if To_String (S.Robots (K).Id) = "r3" then
+               Assert (not P.Tours (K).Is_Empty, "the new robot got no task");
+            end if;
+            Count := Count + Natural (P.Tours (K).Length);
+         end loop;
+         Assert (Count = 8, "the plan allocates" & Count'Image & " tasks");
+      end;
+      R1.Stop;
+      R2.Stop;
+      R3.Stop;
+      Op.Stop;
+   end Test_Join;
+
+   --  The demo end to end -----------------------------------------------------------------
+
+   procedure Check_Demo (How : Agents.Method; Team : String) is
+      Config : Demos.Demo_Config;
+      Result : Demos.Demo_Result;
+      M      : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
+   begin
+      Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
+      Config.How := How;
+      Config.Rate := 40.0;
+      Config.Verbose := False;
+      Config.Team := To_Unbounded_String (Team);
+      Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
+      Demos.Run (Config, Result);
+      Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
+      Assert (Result.Replanned, "the survivors did not re-plan");
+      Assert (Result.All_Done, "not all tasks done:" & Result.Tasks_Done'Image);
+      for T of M.Tasks loop
+         declare
+            Count : Natural := 0;
+         begin
+            for C of Result.Completions loop
+               if C.Task_Id = T.Id then
+                  Count := Count + 1;
+                  Assert (C.Robot /= Result.Killed or else C.Time <= Result.Kill_Time,
+                          "task " & To_String (T.Id) & " done by the dead robot");
+               end if;
+            end loop;
+            Assert (Count = 1, "task " & To_String (T.Id) & " done" & Count'Image & " times");
+         end;
+      end loop;
+      Assert (Natural (Result.Completions.Length) = Natural (M.Tasks.Length),
+              "completions:" & Result.Completions.Length'Image);
+      Assert ((for all R of Result.Round_After.Robots => R.Id /= Result.Killed),
+              "the dead robot is still in the new round");
+   end Check_Demo;
+
+   procedure Test_Demo_Annealer (T : in out Fixture) is
+      pragma Unreferenced (T);
+   begin
+      Check_Demo (Agents.Annealing, "t_demo_ann");
+   end Test_Demo_Annealer;
+
+   procedure Test_Demo_Auctions (T : in out Fixture) is
+      pragma Unreferenced (T);
+   begin
+      Check_Demo (Agents.Auctions, "t_demo_auc");
+   end Test_Demo_Auctions;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
+      procedure Add (Name : String; Proc : Caller.Test_Method) is
+      begin
+         Result.Add_Test (Caller.Create ("team: " & Name, Proc));
+      end Add;
+   begin
+      Add ("network destinations and channels", Test_Destinations'Access);
+      Add ("presence and loss after the lease", Test_Presence'Access);
+      Add ("replicated database converges under concurrent writes", Test_Convergence'Access);
+      Add ("late joiner gets the state", Test_Late_Joiner'Access);
+      Add ("cut-off node catches up after rejoining", Test_Cut_And_Rejoin'Access);
+      Add ("mission files", Test_Mission_Errors'Access);
+      Add ("plans: greedy, annealer, text", Test_Plans'Access);
+      Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
+      Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
+      Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
+      return Result;
+   end Suite;
+
+end Sancta.Team.Tests;
