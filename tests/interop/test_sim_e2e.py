@@ -111,7 +111,7 @@ def test_agent_drives_simulated_robot_through_its_goals():
     assert "all 3 goals done" in agent_out, context
 
 
-TEAM = ps.REPO / "share" / "config" / "sim-team.xml"
+TEAM = ps.REPO / "share" / "config" / "sim-corridor.xml"
 
 
 def test_two_agents_swap_ends_of_the_corridor_without_collision():
