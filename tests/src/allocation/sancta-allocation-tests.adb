@@ -537,6 +537,79 @@ package body Sancta.Allocation.Tests is
       Ada.Directories.Delete_File (F);
    end Mission_File;
 
+   procedure Expect_Mission_Error (F, Text, Expect : String) is
+   begin
+      Write (F, Text);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         pragma Unreferenced (P);
+      begin
+         Assert (False, "no error, expected '" & Expect & "'");
+      end;
+   exception
+      when E : Format_Error =>
+         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
+                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
+                 & Expect & "'");
+   end Expect_Mission_Error;
+
+   procedure Nested_Plans (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-plan.xml";
+      Head : constant String := "<mission scale=""10"">" & NL
+        & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL;
+   begin
+      Write (F, Head
+             & "  <plan>" & NL
+             & "    <task id=""t1"" x=""1"" y=""0""/>" & NL
+             & "    <and>" & NL
+             & "      <or id=""door"" robots=""ari"">" & NL
+             & "        <or><at x=""100"" y=""100""/><task x=""50"" y=""50""/></or>" & NL
+             & "        <and><task x=""2"" y=""0""/></and>" & NL
+             & "      </or>" & NL
+             & "      <and><task id=""t3"" x=""5"" y=""0""/></and>" & NL
+             & "    </and>" & NL
+             & "  </plan>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Assert (P.Robots = 1 and then P.Tasks = 3, "sizes:" & P.Tasks'Image);
+         Assert (P.Alt_Count (1) = 1 and then P.Alt_Count (2) = 3
+                 and then P.Alt_Count (3) = 1, "nested OR alternatives flattened");
+         Assert (P.Distance (1, Location_Of (P.all, 2, 3)) = 20, "third alternative at (2, 0)");
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal on the nested plan");
+         Assert (A.Choice (2) = 3 and then E.Choice (2) = 3, "the near door must be chosen");
+      end;
+      Expect_Mission_Error
+        (F, Head & "  <or id=""x"">" & NL & "    <and>" & NL
+         & "      <task x=""1"" y=""1""/>" & NL & "      <task x=""2"" y=""1""/>" & NL
+         & "    </and>" & NL & "  </or>" & NL & "</mission>" & NL,
+         F & ":6: <and> (line 4) inside <or id=""x""> has more than one task");
+      Expect_Mission_Error
+        (F, Head & "  <and>" & NL & "    <robot id=""b"" x=""1"" y=""1""/>" & NL
+         & "  </and>" & NL & "</mission>" & NL,
+         F & ":4: <robot> must be a child of <mission>");
+      Expect_Mission_Error
+        (F, Head & "  <task id=""t"" x=""1"" y=""1"">" & NL & "    <and/>" & NL
+         & "  </task>" & NL & "</mission>" & NL,
+         F & ":4: <and> must be inside <mission>, <and> or <or>");
+      Expect_Mission_Error
+        (F, Head & "  <or id=""e"">" & NL & "    <and/>" & NL & "  </or>" & NL
+         & "</mission>" & NL,
+         "<or id=""e""> has no alternative");
+      Expect_Mission_Error
+        (F, Head & "  <or id=""r""><task x=""1"" y=""1"" robots=""ari""/></or>" & NL
+         & "</mission>" & NL,
+         F & ":3: <task> inside <or>: put 'robots' on the outermost <or>");
+      Ada.Directories.Delete_File (F);
+   end Nested_Plans;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -556,6 +629,7 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
+      Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
       return Result;
    end Suite;
 
