@@ -33,6 +33,7 @@ package body Sancta.Allocation.Tests is
       Alternatives : Boolean := False;
       Frozen       : Boolean := False;
       Min_Tasks    : Natural := 0;
+      End_Depot    : Boolean := False;
    end record;
 
    --  A random problem: robots start at their own locations, tasks at
@@ -88,6 +89,12 @@ package body Sancta.Allocation.Tests is
             Freeze (P.all, 2, [2, 4]);
          end if;
       end if;
+      if V.End_Depot then
+         --  Each robot ends at the next robot's start (the last one: open).
+         for R in 1 .. Robots loop
+            Set_Robot_End (P.all, R, (if R = Robots then Nowhere else R + 1));
+         end loop;
+      end if;
       P.Min_Tasks := V.Min_Tasks;
       return P;
    end Random_Problem;
@@ -102,8 +109,8 @@ package body Sancta.Allocation.Tests is
    procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
       Criteria : constant Criterion_Array :=
         [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
-      Variants : constant array (1 .. 8) of Variant :=
-        [Variant'(others => <>),
+      Variants : constant array (1 .. 9) of Variant :=
+        [Variant'(others => <>), (End_Depot => True, Asymmetric => True, others => <>),
          (Closed => False, others => <>),
          (Asymmetric => True, others => <>),
          (Heterogeneous => True, Closed => False, others => <>),
@@ -111,7 +118,7 @@ package body Sancta.Allocation.Tests is
          (Alternatives => True, others => <>),
          (Frozen => True, Min_Tasks => 1, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
-          Alternatives => True, Frozen => True, Min_Tasks => 1)];
+          Alternatives => True, Frozen => True, Min_Tasks => 1, End_Depot => False)];
       Seed : Interfaces.Unsigned_64 := 100;
    begin
       for V of Variants loop
@@ -210,8 +217,9 @@ package body Sancta.Allocation.Tests is
    end Brute_Force;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant array (1 .. 5) of Variant :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
+         (End_Depot => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Heterogeneous => True, others => <>),
          (Infeasible => True, Min_Tasks => 1, others => <>)];
       Seed : Interfaces.Unsigned_64 := 500;
@@ -233,8 +241,9 @@ package body Sancta.Allocation.Tests is
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant array (1 .. 5) of Variant :=
         [Variant'(others => <>), (Closed => False, Heterogeneous => True, others => <>),
+         (End_Depot => True, Infeasible => True, others => <>),
          (Asymmetric => True, Infeasible => True, Min_Tasks => 1, others => <>),
          (Alternatives => True, Frozen => True, others => <>)];
       Seed : Interfaces.Unsigned_64 := 900;
@@ -610,6 +619,29 @@ package body Sancta.Allocation.Tests is
       Ada.Directories.Delete_File (F);
    end Nested_Plans;
 
+   procedure End_Depots (Unused : in out Fixture) is
+      P : constant Problem_Access := Create (Locations => 3, Tasks => 1, Robots => 1);
+      A : Assignment (1, 1);
+      S : Annealers.Progress;
+   begin
+      --  Start (0, 0), end depot (10, 0), task (0, 5): 5 + nint (11.18) = 16;
+      --  a closed tour would cost 10.
+      Set_Euclidean (P.all, [1 => (0.0, 0.0), 2 => (10.0, 0.0), 3 => (0.0, 5.0)]);
+      Set_Robot (P.all, 1, Start => 1, Closed => True);
+      Set_Task (P.all, 1, Location => 3);
+      Set_Robot_End (P.all, 1, 2);
+      Assert (Is_Closed (P.all, 1), "an end depot is a closed tour");
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 100,
+                               Check => True, others => <>), A, S);
+      Assert (Evaluate (P.all, A, Min_Sum).Max = 16, "evaluated"
+              & Evaluate (P.all, A, Min_Sum).Max'Image);
+      Assert (S.Best = 16.0, "annealer's best" & Img (S.Best));
+      Assert (Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Max = 16, "exact");
+      Set_Robot_End (P.all, 1, Nowhere);
+      Assert (not Is_Closed (P.all, 1)
+              and then Evaluate (P.all, A, Min_Sum).Max = 5, "open tour");
+   end End_Depots;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -629,6 +661,7 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
+      Add ("robots ending at their own depots", End_Depots'Access);
       Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
       return Result;
    end Suite;
