@@ -20,6 +20,9 @@ package body Sancta.Allocation.Missions is
       At_Pos : Sancta.Geometry.Point;
       Closed : Boolean := True;
       Mult   : Positive := 1;
+      Has_End : Boolean := False;
+      End_Pos : Sancta.Geometry.Point;
+      --  A depot of its own where the closed tour ends (end_x, end_y).
    end record;
 
    type Task_Info is record
@@ -210,6 +213,15 @@ package body Sancta.Allocation.Missions is
                Fail (H, "<robot> return='" & Ret & "' is not true or false");
             end if;
             R.Closed := Ret = "true";
+            if Sax.Attributes.Get_Index (Atts, "end_x") >= 0
+              or else Sax.Attributes.Get_Index (Atts, "end_y") >= 0
+            then
+               if not R.Closed then
+                  Fail (H, "<robot> end_x/end_y with return='false': an open tour has no end");
+               end if;
+               R.Has_End := True;
+               R.End_Pos := (Real_Attr (H, Atts, "end_x", E), Real_Attr (H, Atts, "end_y", E));
+            end if;
             begin
                R.Mult := Positive'Value (C);
             exception
@@ -327,7 +339,19 @@ package body Sancta.Allocation.Missions is
       declare
          NR : constant Positive := Natural (H.Robots.Length);
          NT : constant Positive := Natural (H.Tasks.Length);
-         NL : constant Positive := NR + Natural (H.Points.Length);
+         function Ends return Natural;
+         function Ends return Natural is
+            N : Natural := 0;
+         begin
+            for X of H.Robots loop
+               if X.Has_End then
+                  N := N + 1;
+               end if;
+            end loop;
+            return N;
+         end Ends;
+         NE : constant Natural := Ends;
+         NL : constant Positive := NR + Natural (H.Points.Length) + NE;
          P  : constant Problem_Access := Create (NL, NT, NR, Natural (H.Points.Length));
          Pts : Point_Array (1 .. NL);
 
@@ -359,10 +383,28 @@ package body Sancta.Allocation.Missions is
          for K in 1 .. Natural (H.Points.Length) loop
             Pts (NR + K) := H.Points (K);
          end loop;
+         declare
+            Next : Positive := NR + Natural (H.Points.Length) + 1;
+         begin
+            for R in 1 .. NR loop
+               if H.Robots (R).Has_End then
+                  Pts (Next) := H.Robots (R).End_Pos;
+                  Next := Next + 1;
+               end if;
+            end loop;
+         end;
          Set_Euclidean (P.all, Pts, H.Scale, Round => True);
-         for R in 1 .. NR loop
-            Set_Robot (P.all, R, R, H.Robots (R).Closed, H.Robots (R).Mult);
-         end loop;
+         declare
+            Next : Positive := NR + Natural (H.Points.Length) + 1;
+         begin
+            for R in 1 .. NR loop
+               Set_Robot (P.all, R, R, H.Robots (R).Closed, H.Robots (R).Mult);
+               if H.Robots (R).Has_End then
+                  Set_Robot_End (P.all, R, Next);
+                  Next := Next + 1;
+               end if;
+            end loop;
+         end;
          for T in 1 .. NT loop
             declare
                Info : constant Task_Info := H.Tasks (T);

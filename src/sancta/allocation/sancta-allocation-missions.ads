@@ -3,6 +3,7 @@
 --
 --     <mission scale="100">
 --       <robot id="ari" x="0" y="0" return="true" cost="1"/>
+--       <robot id="bo" x="5" y="0" end_x="9" end_y="9"/>  <!-- own end depot -->
 --       <task id="t1" x="10" y="5"/>
 --       <task id="t2" x="3" y="7" robots="ari"/>   <!-- only these robots -->
 --       <or id="door">                             <!-- done at one of -->

@@ -595,6 +595,26 @@ package body Sancta.Allocation.Tests is
                  "annealer not optimal on the nested plan");
          Assert (A.Choice (2) = 3 and then E.Choice (2) = 3, "the near door must be chosen");
       end;
+      Write (F, Head
+             & "  <robot id=""bo"" x=""0"" y=""0"" end_x=""10"" end_y=""0""/>" & NL
+             & "  <task id=""t"" x=""0"" y=""5"" robots=""bo""/>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+      begin
+         --  bo: (0, 0) -> (0, 5) -> its end depot (10, 0): 50 + nint (111.8).
+         Assert (P.Finish (1) = 1 and then P.Finish (2) = P.Locations, "end depot location");
+         Assert (Evaluate (P.all, E, Min_Sum).Sum = 162,
+                 "cost with the end depot" & Evaluate (P.all, E, Min_Sum).Sum'Image);
+      end;
+      Expect_Mission_Error
+        (F, Head & "  <robot id=""b"" x=""1"" y=""1"" end_x=""2""/>" & NL & "</mission>" & NL,
+         F & ":3: <robot> needs attribute 'end_y'");
+      Expect_Mission_Error
+        (F, Head & "  <robot id=""b"" x=""1"" y=""1"" return=""false"" end_x=""2"" end_y=""2""/>"
+         & NL & "</mission>" & NL,
+         F & ":3: <robot> end_x/end_y with return='false'");
       Expect_Mission_Error
         (F, Head & "  <or id=""x"">" & NL & "    <and>" & NL
          & "      <task x=""1"" y=""1""/>" & NL & "      <task x=""2"" y=""1""/>" & NL
