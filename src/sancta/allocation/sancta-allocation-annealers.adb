@@ -958,7 +958,7 @@ package body Sancta.Allocation.Annealers is
       Score, Tries : Real_Array := [others => 0.0];
       Has_Or : Boolean := False;
       Log_Tries : constant Positive :=
-        Positive (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
+        Natural (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
       Stop : Boolean := False;
       Reheat_T : Long_Float;
       Since_Improve : Long_Long_Integer := 0;

@@ -20,6 +20,9 @@ package body Sancta.Allocation.Missions is
       At_Pos : Sancta.Geometry.Point;
       Closed : Boolean := True;
       Mult   : Positive := 1;
+      Has_End : Boolean := False;
+      End_Pos : Sancta.Geometry.Point;
+      --  A depot of its own where the closed tour ends (end_x, end_y).
    end record;
 
    type Task_Info is record
@@ -43,6 +46,21 @@ package body Sancta.Allocation.Missions is
    package Done_Vectors is new Ada.Containers.Vectors (Positive, Done_Info);
    package String_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
 
+   type Frame_Kind is (Other, Root, Group, Top_Or, Inner_Or, Inner_And);
+   --  Group: an <and> (or <plan>) outside any <or>: its children are all
+   --  done, so it only groups. Top_Or: the outermost <or> of a subtree, one
+   --  task of the problem. Inner_Or: an <or> nested in it (its alternatives
+   --  join the outer ones). Inner_And: an <and> inside an <or>.
+
+   type Frame is record
+      Kind   : Frame_Kind := Other;
+      Line   : Positive := 1;
+      Leaves : Natural := 0;
+      --  Inner_And: alternatives (leaves) seen below it so far.
+   end record;
+
+   package Frame_Vectors is new Ada.Containers.Vectors (Positive, Frame);
+
    type Handler is new Sax.Readers.Reader with record
       File   : Unbounded_String;
       Scale  : Long_Float := 100.0;
@@ -50,7 +68,8 @@ package body Sancta.Allocation.Missions is
       Tasks  : Task_Vectors.Vector;
       Points : Point_Vectors.Vector;
       Done   : Done_Vectors.Vector;
-      In_Or  : Boolean := False;
+      Stack  : Frame_Vectors.Vector;
+      --  One frame per open element (the <mission> root included).
       Root_Seen : Boolean := False;
    end record;
 
@@ -91,6 +110,44 @@ package body Sancta.Allocation.Missions is
       return Sax.Attributes.Get_Value (Atts, I);
    end Attr;
 
+   function In_Or (H : Handler'Class) return Boolean is
+     (for some F of H.Stack => F.Kind = Top_Or);
+
+   function Line_Image (L : Positive) return String is
+     (Ada.Strings.Fixed.Trim (L'Image, Ada.Strings.Left));
+
+   procedure Add_Alternative (H : in out Handler'Class; At_Pos : Sancta.Geometry.Point);
+   --  One more alternative for the enclosing top <or>; refused when an
+   --  enclosing <and> inside that <or> already has one (a compound
+   --  alternative, not modelled yet).
+
+   procedure Add_Alternative (H : in out Handler'Class; At_Pos : Sancta.Geometry.Point) is
+   begin
+      for I in H.Stack.First_Index .. H.Stack.Last_Index loop
+         if H.Stack (I).Kind = Inner_And then
+            if H.Stack (I).Leaves > 0 then
+               Fail (H, "<and> (line " & Line_Image (H.Stack (I).Line)
+                     & ") inside <or id=""" & To_String (H.Tasks.Last_Element.Id)
+                     & """> has more than one task: an alternative made of several"
+                     & " tasks is not supported yet");
+            end if;
+            declare
+               F : Frame := H.Stack (I);
+            begin
+               F.Leaves := F.Leaves + 1;
+               H.Stack.Replace_Element (I, F);
+            end;
+         end if;
+      end loop;
+      H.Points.Append (At_Pos);
+      declare
+         T : Task_Info := H.Tasks.Last_Element;
+      begin
+         T.Count := T.Count + 1;
+         H.Tasks.Replace_Element (H.Tasks.Last_Index, T);
+      end;
+   end Add_Alternative;
+
    function Real_Attr (H : Handler'Class; Atts : Sax.Attributes.Attributes'Class; Name : String;
                        Element : String) return Sancta.Geometry.Real
    is
@@ -111,12 +168,23 @@ package body Sancta.Allocation.Missions is
    is
       pragma Unreferenced (Namespace_URI, Qname);
       E : constant String := Local_Name;
+      Parent : constant Frame_Kind :=
+        (if H.Stack.Is_Empty then Other else H.Stack.Last_Element.Kind);
+      Pushed : Frame := (Other, Line (H), 0);
    begin
+      if H.Root_Seen and then E in "robot" | "done" and then Parent /= Root then
+         Fail (H, "<" & E & "> must be a child of <mission>");
+      elsif H.Root_Seen and then E in "task" | "or" | "and" | "plan" | "at"
+        and then Parent = Other
+      then
+         Fail (H, "<" & E & "> must be inside <mission>, <and> or <or>");
+      end if;
       if not H.Root_Seen then
          if E /= "mission" then
             Fail (H, "root element is <" & E & ">, expected <mission>");
          end if;
          H.Root_Seen := True;
+         Pushed.Kind := Root;
          declare
             S : constant String := Attr (H, Atts, "scale", E, "");
          begin
@@ -145,6 +213,15 @@ package body Sancta.Allocation.Missions is
                Fail (H, "<robot> return='" & Ret & "' is not true or false");
             end if;
             R.Closed := Ret = "true";
+            if Sax.Attributes.Get_Index (Atts, "end_x") >= 0
+              or else Sax.Attributes.Get_Index (Atts, "end_y") >= 0
+            then
+               if not R.Closed then
+                  Fail (H, "<robot> end_x/end_y with return='false': an open tour has no end");
+               end if;
+               R.Has_End := True;
+               R.End_Pos := (Real_Attr (H, Atts, "end_x", E), Real_Attr (H, Atts, "end_y", E));
+            end if;
             begin
                R.Mult := Positive'Value (C);
             exception
@@ -158,10 +235,16 @@ package body Sancta.Allocation.Missions is
             end loop;
             H.Robots.Append (R);
          end;
-      elsif E = "task" or else E = "or" then
-         if H.In_Or then
-            Fail (H, "<" & E & "> inside <or>: only <at> is allowed there");
+      elsif E in "and" | "plan" then
+         Pushed.Kind := (if In_Or (H) then Inner_And else Group);
+      elsif In_Or (H) and then E = "or" then
+         Pushed.Kind := Inner_Or;
+      elsif In_Or (H) and then E in "task" | "at" then
+         if Sax.Attributes.Get_Index (Atts, "robots") >= 0 then
+            Fail (H, "<" & E & "> inside <or>: put 'robots' on the outermost <or>");
          end if;
+         Add_Alternative (H, (Real_Attr (H, Atts, "x", E), Real_Attr (H, Atts, "y", E)));
+      elsif E = "task" or else E = "or" then
          declare
             T : Task_Info;
          begin
@@ -179,28 +262,20 @@ package body Sancta.Allocation.Missions is
                                                        Real_Attr (H, Atts, "y", E)));
                T.Count := 1;
             else
-               H.In_Or := True;
+               Pushed.Kind := Top_Or;
             end if;
             H.Tasks.Append (T);
          end;
       elsif E = "at" then
-         if not H.In_Or then
-            Fail (H, "<at> outside <or>");
-         end if;
-         H.Points.Append (Sancta.Geometry.Point'(Real_Attr (H, Atts, "x", E),
-                                                 Real_Attr (H, Atts, "y", E)));
-         declare
-            T : Task_Info := H.Tasks.Last_Element;
-         begin
-            T.Count := T.Count + 1;
-            H.Tasks.Replace_Element (H.Tasks.Last_Index, T);
-         end;
+         Fail (H, "<at> outside <or>");
       elsif E = "done" then
          H.Done.Append (Done_Info'(To_Unbounded_String (Attr (H, Atts, "robot", E)),
                          To_Unbounded_String (Attr (H, Atts, "tasks", E)), Line (H)));
       else
-         Fail (H, "unknown element <" & E & "> (expected robot, task, or, at, done)");
+         Fail (H, "unknown element <" & E
+               & "> (expected robot, task, or, and, plan, at, done)");
       end if;
+      H.Stack.Append (Pushed);
    end Start_Element;
 
    overriding procedure End_Element
@@ -209,14 +284,13 @@ package body Sancta.Allocation.Missions is
       Local_Name    : Unicode.CES.Byte_Sequence := "";
       Qname         : Unicode.CES.Byte_Sequence := "")
    is
-      pragma Unreferenced (Namespace_URI, Qname);
+      pragma Unreferenced (Namespace_URI, Qname, Local_Name);
+      Closing : constant Frame_Kind := H.Stack.Last_Element.Kind;
    begin
-      if Local_Name = "or" then
-         H.In_Or := False;
-         if H.Tasks.Last_Element.Count = 0 then
-            Fail (H, "<or id=""" & To_String (H.Tasks.Last_Element.Id)
-                  & """> has no <at> alternative");
-         end if;
+      H.Stack.Delete_Last;
+      if Closing = Top_Or and then H.Tasks.Last_Element.Count = 0 then
+         Fail (H, "<or id=""" & To_String (H.Tasks.Last_Element.Id)
+               & """> has no alternative (<at>, <task>)");
       end if;
    end End_Element;
 
@@ -265,7 +339,19 @@ package body Sancta.Allocation.Missions is
       declare
          NR : constant Positive := Natural (H.Robots.Length);
          NT : constant Positive := Natural (H.Tasks.Length);
-         NL : constant Positive := NR + Natural (H.Points.Length);
+         function Ends return Natural;
+         function Ends return Natural is
+            N : Natural := 0;
+         begin
+            for X of H.Robots loop
+               if X.Has_End then
+                  N := N + 1;
+               end if;
+            end loop;
+            return N;
+         end Ends;
+         NE : constant Natural := Ends;
+         NL : constant Positive := NR + Natural (H.Points.Length) + NE;
          P  : constant Problem_Access := Create (NL, NT, NR, Natural (H.Points.Length));
          Pts : Point_Array (1 .. NL);
 
@@ -297,10 +383,28 @@ package body Sancta.Allocation.Missions is
          for K in 1 .. Natural (H.Points.Length) loop
             Pts (NR + K) := H.Points (K);
          end loop;
+         declare
+            Next : Positive := NR + Natural (H.Points.Length) + 1;
+         begin
+            for R in 1 .. NR loop
+               if H.Robots (R).Has_End then
+                  Pts (Next) := H.Robots (R).End_Pos;
+                  Next := Next + 1;
+               end if;
+            end loop;
+         end;
          Set_Euclidean (P.all, Pts, H.Scale, Round => True);
-         for R in 1 .. NR loop
-            Set_Robot (P.all, R, R, H.Robots (R).Closed, H.Robots (R).Mult);
-         end loop;
+         declare
+            Next : Positive := NR + Natural (H.Points.Length) + 1;
+         begin
+            for R in 1 .. NR loop
+               Set_Robot (P.all, R, R, H.Robots (R).Closed, H.Robots (R).Mult);
+               if H.Robots (R).Has_End then
+                  Set_Robot_End (P.all, R, Next);
+                  Next := Next + 1;
+               end if;
+            end loop;
+         end;
          for T in 1 .. NT loop
             declare
                Info : constant Task_Info := H.Tasks (T);

@@ -111,6 +111,11 @@ package body Sancta.Allocation.Problems is
       This.Multiplier (R) := Multiplier;
    end Set_Robot;
 
+   procedure Set_Robot_End (This : in out Problem; R : Positive; Finish : Natural) is
+   begin
+      This.Finish (R) := Finish;
+   end Set_Robot_End;
+
    procedure Forbid (This : in out Problem; R, T : Positive) is
    begin
       This.Can_Do (R, T) := False;

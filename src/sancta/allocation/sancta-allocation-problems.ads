@@ -15,11 +15,14 @@
 --  because their matrix can be large (1000 locations: 8 MB).
 --
 --  Partial (known limits): heterogeneous robots differ by an integer cost
---  multiplier (speed) and by what they can do, not by whole cost functions
+--  multiplier (speed), by what they can do (Forbid) and by their start and
+--  end depots (Set_Robot, Set_Robot_End), not by whole cost functions
 --  of their own (the annealer's O(1) segment costs rely on one matrix);
 --  plans are one level deep: a task is an OR node over alternative single
---  locations; nested AND/OR plans and compound tasks with distinct entry and
---  exit points are not modelled yet.
+--  locations (the mission reader normalises nested <and>/<or> trees to this
+--  form when they have no compound alternative); OR nodes over sets of
+--  tasks and compound tasks with distinct entry and exit points are not
+--  modelled yet.
 with Sancta.Geometry;
 
 package Sancta.Allocation.Problems is
@@ -105,6 +108,12 @@ package Sancta.Allocation.Problems is
    procedure Set_Robot
      (This : in out Problem; R : Positive; Start : Positive; Closed : Boolean;
       Multiplier : Positive := 1);
+
+   procedure Set_Robot_End (This : in out Problem; R : Positive; Finish : Natural)
+     with Pre => Finish <= This.Locations;
+   --  Robot R's tour ends at Finish, a depot of its own that may differ from
+   --  its start (heterogeneous teams: e.g. a robot that must end at its
+   --  charger); Nowhere makes its tour open. Call after Set_Robot.
 
    procedure Forbid (This : in out Problem; R, T : Positive);
    --  Robot R cannot do task T (infinite cost).

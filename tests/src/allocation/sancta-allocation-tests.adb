@@ -33,6 +33,7 @@ package body Sancta.Allocation.Tests is
       Alternatives : Boolean := False;
       Frozen       : Boolean := False;
       Min_Tasks    : Natural := 0;
+      End_Depot    : Boolean := False;
    end record;
 
    --  A random problem: robots start at their own locations, tasks at
@@ -88,6 +89,12 @@ package body Sancta.Allocation.Tests is
             Freeze (P.all, 2, [2, 4]);
          end if;
       end if;
+      if V.End_Depot then
+         --  Each robot ends at the next robot's start (the last one: open).
+         for R in 1 .. Robots loop
+            Set_Robot_End (P.all, R, (if R = Robots then Nowhere else R + 1));
+         end loop;
+      end if;
       P.Min_Tasks := V.Min_Tasks;
       return P;
    end Random_Problem;
@@ -102,8 +109,8 @@ package body Sancta.Allocation.Tests is
    procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
       Criteria : constant Criterion_Array :=
         [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
-      Variants : constant array (1 .. 8) of Variant :=
-        [Variant'(others => <>),
+      Variants : constant array (1 .. 9) of Variant :=
+        [Variant'(others => <>), (End_Depot => True, Asymmetric => True, others => <>),
          (Closed => False, others => <>),
          (Asymmetric => True, others => <>),
          (Heterogeneous => True, Closed => False, others => <>),
@@ -111,7 +118,7 @@ package body Sancta.Allocation.Tests is
          (Alternatives => True, others => <>),
          (Frozen => True, Min_Tasks => 1, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
-          Alternatives => True, Frozen => True, Min_Tasks => 1)];
+          Alternatives => True, Frozen => True, Min_Tasks => 1, End_Depot => False)];
       Seed : Interfaces.Unsigned_64 := 100;
    begin
       for V of Variants loop
@@ -210,8 +217,9 @@ package body Sancta.Allocation.Tests is
    end Brute_Force;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant array (1 .. 5) of Variant :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
+         (End_Depot => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Heterogeneous => True, others => <>),
          (Infeasible => True, Min_Tasks => 1, others => <>)];
       Seed : Interfaces.Unsigned_64 := 500;
@@ -233,8 +241,9 @@ package body Sancta.Allocation.Tests is
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant array (1 .. 5) of Variant :=
         [Variant'(others => <>), (Closed => False, Heterogeneous => True, others => <>),
+         (End_Depot => True, Infeasible => True, others => <>),
          (Asymmetric => True, Infeasible => True, Min_Tasks => 1, others => <>),
          (Alternatives => True, Frozen => True, others => <>)];
       Seed : Interfaces.Unsigned_64 := 900;
@@ -537,6 +546,122 @@ package body Sancta.Allocation.Tests is
       Ada.Directories.Delete_File (F);
    end Mission_File;
 
+   procedure Expect_Mission_Error (F, Text, Expect : String) is
+   begin
+      Write (F, Text);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         pragma Unreferenced (P);
+      begin
+         Assert (False, "no error, expected '" & Expect & "'");
+      end;
+   exception
+      when E : Format_Error =>
+         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
+                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
+                 & Expect & "'");
+   end Expect_Mission_Error;
+
+   procedure Nested_Plans (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-plan.xml";
+      Head : constant String := "<mission scale=""10"">" & NL
+        & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL;
+   begin
+      Write (F, Head
+             & "  <plan>" & NL
+             & "    <task id=""t1"" x=""1"" y=""0""/>" & NL
+             & "    <and>" & NL
+             & "      <or id=""door"" robots=""ari"">" & NL
+             & "        <or><at x=""100"" y=""100""/><task x=""50"" y=""50""/></or>" & NL
+             & "        <and><task x=""2"" y=""0""/></and>" & NL
+             & "      </or>" & NL
+             & "      <and><task id=""t3"" x=""5"" y=""0""/></and>" & NL
+             & "    </and>" & NL
+             & "  </plan>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Assert (P.Robots = 1 and then P.Tasks = 3, "sizes:" & P.Tasks'Image);
+         Assert (P.Alt_Count (1) = 1 and then P.Alt_Count (2) = 3
+                 and then P.Alt_Count (3) = 1, "nested OR alternatives flattened");
+         Assert (P.Distance (1, Location_Of (P.all, 2, 3)) = 20, "third alternative at (2, 0)");
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal on the nested plan");
+         Assert (A.Choice (2) = 3 and then E.Choice (2) = 3, "the near door must be chosen");
+      end;
+      Write (F, Head
+             & "  <robot id=""bo"" x=""0"" y=""0"" end_x=""10"" end_y=""0""/>" & NL
+             & "  <task id=""t"" x=""0"" y=""5"" robots=""bo""/>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+      begin
+         --  bo: (0, 0) -> (0, 5) -> its end depot (10, 0): 50 + nint (111.8).
+         Assert (P.Finish (1) = 1 and then P.Finish (2) = P.Locations, "end depot location");
+         Assert (Evaluate (P.all, E, Min_Sum).Sum = 162,
+                 "cost with the end depot" & Evaluate (P.all, E, Min_Sum).Sum'Image);
+      end;
+      Expect_Mission_Error
+        (F, Head & "  <robot id=""b"" x=""1"" y=""1"" end_x=""2""/>" & NL & "</mission>" & NL,
+         F & ":3: <robot> needs attribute 'end_y'");
+      Expect_Mission_Error
+        (F, Head & "  <robot id=""b"" x=""1"" y=""1"" return=""false"" end_x=""2"" end_y=""2""/>"
+         & NL & "</mission>" & NL,
+         F & ":3: <robot> end_x/end_y with return='false'");
+      Expect_Mission_Error
+        (F, Head & "  <or id=""x"">" & NL & "    <and>" & NL
+         & "      <task x=""1"" y=""1""/>" & NL & "      <task x=""2"" y=""1""/>" & NL
+         & "    </and>" & NL & "  </or>" & NL & "</mission>" & NL,
+         F & ":6: <and> (line 4) inside <or id=""x""> has more than one task");
+      Expect_Mission_Error
+        (F, Head & "  <and>" & NL & "    <robot id=""b"" x=""1"" y=""1""/>" & NL
+         & "  </and>" & NL & "</mission>" & NL,
+         F & ":4: <robot> must be a child of <mission>");
+      Expect_Mission_Error
+        (F, Head & "  <task id=""t"" x=""1"" y=""1"">" & NL & "    <and/>" & NL
+         & "  </task>" & NL & "</mission>" & NL,
+         F & ":4: <and> must be inside <mission>, <and> or <or>");
+      Expect_Mission_Error
+        (F, Head & "  <or id=""e"">" & NL & "    <and/>" & NL & "  </or>" & NL
+         & "</mission>" & NL,
+         "<or id=""e""> has no alternative");
+      Expect_Mission_Error
+        (F, Head & "  <or id=""r""><task x=""1"" y=""1"" robots=""ari""/></or>" & NL
+         & "</mission>" & NL,
+         F & ":3: <task> inside <or>: put 'robots' on the outermost <or>");
+      Ada.Directories.Delete_File (F);
+   end Nested_Plans;
+
+   procedure End_Depots (Unused : in out Fixture) is
+      P : constant Problem_Access := Create (Locations => 3, Tasks => 1, Robots => 1);
+      A : Assignment (1, 1);
+      S : Annealers.Progress;
+   begin
+      --  Start (0, 0), end depot (10, 0), task (0, 5): 5 + nint (11.18) = 16;
+      --  a closed tour would cost 10.
+      Set_Euclidean (P.all, [1 => (0.0, 0.0), 2 => (10.0, 0.0), 3 => (0.0, 5.0)]);
+      Set_Robot (P.all, 1, Start => 1, Closed => True);
+      Set_Task (P.all, 1, Location => 3);
+      Set_Robot_End (P.all, 1, 2);
+      Assert (Is_Closed (P.all, 1), "an end depot is a closed tour");
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 100,
+                               Check => True, others => <>), A, S);
+      Assert (Evaluate (P.all, A, Min_Sum).Max = 16, "evaluated"
+              & Evaluate (P.all, A, Min_Sum).Max'Image);
+      Assert (S.Best = 16.0, "annealer's best" & Img (S.Best));
+      Assert (Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Max = 16, "exact");
+      Set_Robot_End (P.all, 1, Nowhere);
+      Assert (not Is_Closed (P.all, 1)
+              and then Evaluate (P.all, A, Min_Sum).Max = 5, "open tour");
+   end End_Depots;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -556,6 +681,8 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
+      Add ("robots ending at their own depots", End_Depots'Access);
+      Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
       return Result;
    end Suite;
 
