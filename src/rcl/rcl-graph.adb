@@ -1,6 +1,7 @@
 with Ada.Containers.Vectors;
 with Ada.Environment_Variables;
 with Ada.Exceptions;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
@@ -61,6 +62,7 @@ package body RCL.Graph is
    The_Layout : GID_Layout := Humble_24;
    type Bytes_Access is access RCL.DDS.Byte_Array;
    Last_Sample : Bytes_Access;
+   procedure Free is new Ada.Unchecked_Deallocation (RCL.DDS.Byte_Array, Bytes_Access);
 
    function Default_Layout return GID_Layout is
       Distro : constant String := Ada.Environment_Variables.Value ("ROS_DISTRO", "humble");
@@ -158,9 +160,8 @@ package body RCL.Graph is
          Sample : constant RCL.DDS.Byte_Array := ROSIDL.CDR.Encode (Msg);
       begin
          RCL.DDS.Write (Writer.all, Sample);
+         Free (Last_Sample);
          Last_Sample := new RCL.DDS.Byte_Array'(Sample);
-         --  (The previous one is not freed: a few hundred bytes per graph
-         --  change.)
       end;
    end Publish;
 
