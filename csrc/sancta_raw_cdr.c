@@ -488,58 +488,6 @@ dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config
 }
 
 /* ------------------------------------------------------------------ */
-/* Graph queries: the endpoints DDS discovery knows (built-in topics). */
-
-char *sancta_dds_endpoint_list (dds_entity_t participant, int publications)
-{
-  dds_entity_t rd = dds_create_reader (participant,
-                                       publications ? DDS_BUILTIN_TOPIC_DCPSPUBLICATION
-                                                    : DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION,
-                                       NULL, NULL);
-  size_t len = 0, cap = 256;
-  char *out;
-  if (rd < 0)
-    return NULL;
-  out = ddsrt_malloc_s (cap);
-  if (out == NULL) {
-    dds_delete (rd);
-    return NULL;
-  }
-  out[0] = 0;
-  for (;;) {
-    void *buf[32] = { NULL };
-    dds_sample_info_t si[32];
-    dds_return_t n = dds_take (rd, buf, si, 32, 32);
-    if (n <= 0)
-      break;
-    for (int i = 0; i < n; i++) {
-      const dds_builtintopic_endpoint_t *ep = buf[i];
-      if (!si[i].valid_data || si[i].instance_state != DDS_IST_ALIVE)
-        continue;
-      size_t need = strlen (ep->topic_name) + strlen (ep->type_name) + 3;
-      if (len + need >= cap) {
-        char *bigger;
-        while (len + need >= cap)
-          cap *= 2;
-        bigger = ddsrt_realloc (out, cap);
-        if (bigger == NULL)
-          break;
-        out = bigger;
-      }
-      len += (size_t) snprintf (out + len, cap - len, "%s\t%s\n", ep->topic_name, ep->type_name);
-    }
-    dds_return_loan (rd, buf, n);
-  }
-  dds_delete (rd);
-  return out;
-}
-
-void sancta_dds_free (void *p)
-{
-  ddsrt_free (p);
-}
-
-/* ------------------------------------------------------------------ */
 /* Writing without an intermediate buffer: the caller serializes straight
    into a new serdata's storage. */
 

@@ -59,9 +59,4 @@ void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **
 dds_return_t sancta_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
                                        dds_time_t timestamp);
 
-/* The endpoints DDS discovery knows (publications or subscriptions), one
-   "topic<TAB>type<LF>" line each; NULL on error; free with sancta_dds_free. */
-char *sancta_dds_endpoint_list (dds_entity_t participant, int publications);
-void sancta_dds_free (void *p);
-
 #endif

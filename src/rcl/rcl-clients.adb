@@ -52,11 +52,12 @@ package body RCL.Clients is
       This.Name := To_Unbounded_String (FQ);
       This.Support := Support;
       RCL.DDS.Create (This.Requests, P.all, RCL.Services.Request_Topic (FQ),
-                      DDS_Type_Name (Request_Support (Support)), QoS, User_Data => Id);
+                      DDS_Type_Name (Request_Support (Support)), QoS,
+                      User_Data => RCL.Graph.Endpoint_User_Data (Id));
       RCL.DDS.Create (This.Replies, P.all, RCL.Services.Reply_Topic (FQ),
                       DDS_Type_Name (Response_Support (Support)),
                       (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
-                      User_Data => Id);
+                      User_Data => RCL.Graph.Endpoint_User_Data (Id));
       RCL.DDS.Create (This.Waiting, P.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);
@@ -321,8 +322,7 @@ package body RCL.Clients is
       end if;
       if This.Open then
          RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
-         --  (RCL.Graph has no Remove_Reader: the reply reader stays listed
-         --  until the node goes.)
+         RCL.Graph.Remove_Reader (This.Node, RCL.DDS.Endpoint_GUID (This.Replies));
       end if;
       This.Open := False;
    exception

@@ -16,7 +16,14 @@
 --  (pairing by sequence number, RCL.Pending_Calls). Call waits for the
 --  service to be available before sending (a request sent to nobody would
 --  be lost), all within its Timeout. Asynchronous callbacks run in a task
---  of the client that lives while asynchronous calls are pending.
+--  of the client that lives while asynchronous calls are pending, NOT in
+--  the node's executor: replies are read by the client itself because
+--  synchronous Call must work from any task without the node spinning, and
+--  one reply reader serves both kinds of call. So an asynchronous callback
+--  may run at the same time as the node's subscription and timer
+--  callbacks: state shared with them needs a protected object. (Moving
+--  them to the executor would need the reply reader registered with the
+--  node and Call to wait on the executor: not done.)
 with Ada.Finalization;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;

@@ -4,6 +4,7 @@ with Ada.Containers.Ordered_Sets;
 with Ada.Exceptions;
 with Ada.Streams;
 with Ada.Strings.Fixed;
+with Ada.Unchecked_Deallocation;
 with Interfaces;
 with RCL.Contexts;
 with RCL.DDS.Matching;
@@ -227,6 +228,7 @@ package body RCL.Graph.Queries is
    ---------------------
 
    type Info_Access is access Participant_Info;
+   procedure Free is new Ada.Unchecked_Deallocation (Participant_Info, Info_Access);
 
    package Info_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Info_Access);
    --  Participant GUID prefix image -> its latest announcement.
@@ -269,6 +271,13 @@ package body RCL.Graph.Queries is
                   P : constant Participant_Info := Decode_Participant_Info (Data);
                   K : constant String := Prefix_Image (P.Participant);
                begin
+                  if Infos.Contains (K) then
+                     declare
+                        Old : Info_Access := Infos.Element (K);
+                     begin
+                        Free (Old);  --  (A peer re-announces on every change.)
+                     end;
+                  end if;
                   Infos.Include (K, new Participant_Info'(P));
                end;
             exception

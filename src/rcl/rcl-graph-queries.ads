@@ -1,9 +1,9 @@
 --  Graph queries: the nodes, topics and services of the ROS 2 network as
 --  this process's participant has discovered them, with endpoint details
---  (node, GID, QoS). RCL.Graph, the parent, publishes this process's own
---  presence and answers the basic topic queries (Topics, counts); this
---  child adds nodes, services, per-endpoint information and the rclada
---  tool's needs.
+--  (node, GID, QoS). This is the graph query API, and the one place that
+--  reads DDS discovery and demangles names; RCL.Graph, the parent,
+--  publishes this process's own presence, and its Topics and counts are
+--  summaries computed from here.
 --
 --  Nodes come from the "ros_discovery_info" topic of every participant
 --  (rmw_dds_common/ParticipantEntitiesInfo, Humble 24-byte or Jazzy 16-byte

@@ -1,6 +1,7 @@
 with Ada.Containers.Vectors;
 with Ada.Environment_Variables;
 with Ada.Exceptions;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
@@ -8,6 +9,8 @@ with ROSIDL.Interfaces;
 with ROSIDL.Parser;
 with ROSIDL.Typesupport;
 with RCL.Contexts;
+with RCL.DDS.Matching;
+with RCL.Graph.Queries;
 with RCL.Logging;
 with RCL.QoS;
 
@@ -15,6 +18,7 @@ package body RCL.Graph is
 
    use Ada.Strings.Unbounded;
    use type RCL.DDS.GUID;
+   use type Queries.Endpoint_Kind;
 
    package GUID_Vectors is new Ada.Containers.Vectors (Positive, RCL.DDS.GUID);
 
@@ -56,6 +60,9 @@ package body RCL.Graph is
    Support    : ROSIDL.Typesupport.Message_Support;
    Layout_Set : Boolean := False;
    The_Layout : GID_Layout := Humble_24;
+   type Bytes_Access is access RCL.DDS.Byte_Array;
+   Last_Sample : Bytes_Access;
+   procedure Free is new Ada.Unchecked_Deallocation (RCL.DDS.Byte_Array, Bytes_Access);
 
    function Default_Layout return GID_Layout is
       Distro : constant String := Ada.Environment_Variables.Value ("ROS_DISTRO", "humble");
@@ -149,7 +156,13 @@ package body RCL.Graph is
             Put ("writer_gid_seq", N.Writers);
          end;
       end loop;
-      RCL.DDS.Write (Writer.all, ROSIDL.CDR.Encode (Msg));
+      declare
+         Sample : constant RCL.DDS.Byte_Array := ROSIDL.CDR.Encode (Msg);
+      begin
+         RCL.DDS.Write (Writer.all, Sample);
+         Free (Last_Sample);
+         Last_Sample := new RCL.DDS.Byte_Array'(Sample);
+      end;
    end Publish;
 
    --  Runs Change then republishes, under Lock; never raises.
@@ -207,139 +220,129 @@ package body RCL.Graph is
       end if;
    end Remove_Node;
 
-   procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
-      procedure Change is
-         I : constant Natural := Index (Id);
-      begin
-         if I > 0 then
-            Nodes (I).Writers.Append (Endpoint);
-         end if;
-      end Change;
-   begin
-      Update (Change'Access);
-   end Add_Writer;
+   type Endpoint_Side is (Readers, Writers);
 
-   procedure Remove_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   procedure Add (Id : Node_Id; Side : Endpoint_Side; Endpoint : RCL.DDS.GUID) is
       procedure Change is
          I : constant Natural := Index (Id);
       begin
          if I > 0 then
-            declare
-               Pos : constant Natural := Nodes (I).Writers.Find_Index (Endpoint);
-            begin
-               if Pos > 0 then
-                  Nodes (I).Writers.Delete (Pos);
-               end if;
-            end;
+            case Side is
+               when Readers => Nodes (I).Readers.Append (Endpoint);
+               when Writers => Nodes (I).Writers.Append (Endpoint);
+            end case;
          end if;
       end Change;
    begin
       if Id /= No_Node then
          Update (Change'Access);
       end if;
-   end Remove_Writer;
+   end Add;
 
-   procedure Add_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   procedure Remove (Id : Node_Id; Side : Endpoint_Side; Endpoint : RCL.DDS.GUID) is
+      procedure Delete (List : in out GUID_Vectors.Vector) is
+         Pos : constant Natural := List.Find_Index (Endpoint);
+      begin
+         if Pos > 0 then
+            List.Delete (Pos);
+         end if;
+      end Delete;
       procedure Change is
          I : constant Natural := Index (Id);
       begin
          if I > 0 then
-            Nodes (I).Readers.Append (Endpoint);
+            case Side is
+               when Readers => Delete (Nodes (I).Readers);
+               when Writers => Delete (Nodes (I).Writers);
+            end case;
          end if;
       end Change;
    begin
-      Update (Change'Access);
+      if Id /= No_Node then
+         Update (Change'Access);
+      end if;
+   end Remove;
+
+   procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   begin
+      Add (Id, Writers, Endpoint);
+   end Add_Writer;
+
+   procedure Remove_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   begin
+      Remove (Id, Writers, Endpoint);
+   end Remove_Writer;
+
+   procedure Add_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   begin
+      Add (Id, Readers, Endpoint);
    end Add_Reader;
+
+   procedure Remove_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID) is
+   begin
+      Remove (Id, Readers, Endpoint);
+   end Remove_Reader;
+
+   function Announcement return RCL.DDS.Byte_Array is
+   begin
+      Lock.Seize;
+      return Result : constant RCL.DDS.Byte_Array :=
+        (if Last_Sample = null then [1 .. 0 => 0] else Last_Sample.all)
+      do
+         Lock.Release;
+      end return;
+   end Announcement;
+
+   -----------------------
+   -- Endpoint USER_DATA --
+   -----------------------
+
+   function Endpoint_User_Data (Layout : GID_Layout; Extra : String := "") return String is
+     (Extra & (if Layout = Jazzy_16 then "typehash=" & Zero_Type_Hash & ";" else ""));
+
+   function Type_Hash (User_Data : String) return String is
+      Value : constant String := RCL.DDS.Matching.User_Data_Value (User_Data, "typehash");
+   begin
+      return (if Value = "" then Zero_Type_Hash else Value);
+   end Type_Hash;
 
    -------------
    -- Queries --
    -------------
 
    function ROS_Type_Name (DDS_Type_Name : String) return String is
-      Marker : constant String := "::dds_::";
-      Result : Unbounded_String;
-      I      : Natural := DDS_Type_Name'First;
-   begin
-      if DDS_Type_Name'Length < Marker'Length + 2
-        or else DDS_Type_Name (DDS_Type_Name'Last) /= '_'
-      then
-         return DDS_Type_Name;
-      end if;
-      while I <= DDS_Type_Name'Last - 1 loop
-         if I + Marker'Length - 1 <= DDS_Type_Name'Last
-           and then DDS_Type_Name (I .. I + Marker'Length - 1) = Marker
-         then
-            Append (Result, '/');
-            I := I + Marker'Length;
-         elsif I + 1 <= DDS_Type_Name'Last and then DDS_Type_Name (I .. I + 1) = "::" then
-            Append (Result, '/');
-            I := I + 2;
-         else
-            Append (Result, DDS_Type_Name (I));
-            I := I + 1;
-         end if;
-      end loop;
-      return To_String (Result);
-   end ROS_Type_Name;
+     (Queries.Demangle_Type (DDS_Type_Name));
 
    package Info_Vectors is new Ada.Containers.Vectors (Positive, Topic_Info);
-
-   procedure Count
-     (List : in out Info_Vectors.Vector; Lines : String; Publications : Boolean)
-   is
-      Start : Positive := Lines'First;
-   begin
-      for I in Lines'Range loop
-         if Lines (I) = ASCII.LF then
-            declare
-               Line : constant String := Lines (Start .. I - 1);
-               Tab  : Natural := 0;
-            begin
-               for J in Line'Range loop
-                  if Line (J) = ASCII.HT then
-                     Tab := J;
-                     exit;
-                  end if;
-               end loop;
-               if Tab > Line'First + 2 and then Line (Line'First .. Line'First + 2) = "rt/" then
-                  declare
-                     Name  : constant String := Line (Line'First + 2 .. Tab - 1);
-                     Typ   : constant String := ROS_Type_Name (Line (Tab + 1 .. Line'Last));
-                     Found : Boolean := False;
-                  begin
-                     for E of List loop
-                        if E.Name = Name and then E.Type_Name = Typ then
-                           if Publications then
-                              E.Publishers := E.Publishers + 1;
-                           else
-                              E.Subscribers := E.Subscribers + 1;
-                           end if;
-                           Found := True;
-                        end if;
-                     end loop;
-                     if not Found then
-                        List.Append
-                          (Topic_Info'(To_Unbounded_String (Name), To_Unbounded_String (Typ),
-                                       (if Publications then 1 else 0),
-                                       (if Publications then 0 else 1)));
-                     end if;
-                  end;
-               end if;
-            end;
-            Start := I + 1;
-         end if;
-      end loop;
-   end Count;
 
    function Topics return Topic_Info_Array is
       function "<" (L, R : Topic_Info) return Boolean is
         (L.Name < R.Name or else (L.Name = R.Name and then L.Type_Name < R.Type_Name));
       package Sorting is new Info_Vectors.Generic_Sorting;
       List : Info_Vectors.Vector;
-      P    : constant access RCL.DDS.Participant := RCL.Contexts.Participant;
    begin
-      Count (List, RCL.DDS.Endpoints (P.all, Publications => True), True);
-      Count (List, RCL.DDS.Endpoints (P.all, Publications => False), False);
+      for E of Queries.Topic_Endpoints loop
+         declare
+            Found : Boolean := False;
+         begin
+            for T of List loop
+               if T.Name = E.Topic_Name and then T.Type_Name = E.Type_Name then
+                  case E.Kind is
+                     when Queries.Publisher => T.Publishers := T.Publishers + 1;
+                     when Queries.Subscription => T.Subscribers := T.Subscribers + 1;
+                  end case;
+                  Found := True;
+                  exit;
+               end if;
+            end loop;
+            if not Found then
+               List.Append
+                 (Topic_Info'(E.Topic_Name, E.Type_Name,
+                              (if E.Kind = Queries.Publisher then 1 else 0),
+                              (if E.Kind = Queries.Subscription then 1 else 0)));
+            end if;
+         end;
+      end loop;
       Sorting.Sort (List);
       return Result : Topic_Info_Array (1 .. Natural (List.Length)) do
          for I in Result'Range loop
@@ -349,25 +352,9 @@ package body RCL.Graph is
    end Topics;
 
    function Count_Publishers (Topic : String) return Natural is
-      N : Natural := 0;
-   begin
-      for T of Topics loop
-         if T.Name = Topic then
-            N := N + T.Publishers;
-         end if;
-      end loop;
-      return N;
-   end Count_Publishers;
+     (Queries.Count_Publishers (Topic));
 
    function Count_Subscribers (Topic : String) return Natural is
-      N : Natural := 0;
-   begin
-      for T of Topics loop
-         if T.Name = Topic then
-            N := N + T.Subscribers;
-         end if;
-      end loop;
-      return N;
-   end Count_Subscribers;
+     (Queries.Count_Subscribers (Topic));
 
 end RCL.Graph;

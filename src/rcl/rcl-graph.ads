@@ -20,8 +20,9 @@ package RCL.Graph is
    Topic_Name : constant String := "ros_discovery_info";
    Type_Name  : constant String := "rmw_dds_common::msg::dds_::ParticipantEntitiesInfo_";
 
-   --  Queries (from DDS discovery: every ROS 2 participant on the domain,
-   --  this process included) -------------------------------------------------
+   --  Basic topic queries. They are computed by RCL.Graph.Queries (the one
+   --  place that reads DDS discovery and demangles names); use that child
+   --  for nodes, services, endpoint details and QoS. ----------------------
 
    type Topic_Info is record
       Name        : Ada.Strings.Unbounded.Unbounded_String;
@@ -35,15 +36,39 @@ package RCL.Graph is
    type Topic_Info_Array is array (Positive range <>) of Topic_Info;
 
    function Topics return Topic_Info_Array;
-   --  The ROS topics ("rt/..." DDS topics), sorted by name then type.
+   --  The ROS topics ("rt/..." DDS topics) of every ROS 2 participant on
+   --  the domain, this process included, sorted by name then type, with
+   --  their publisher and subscription counts (from
+   --  RCL.Graph.Queries.Topic_Endpoints).
 
    function Count_Publishers (Topic : String) return Natural;
    function Count_Subscribers (Topic : String) return Natural;
-   --  Topic: fully qualified ROS name.
+   --  Topic: fully qualified ROS name. The same as
+   --  RCL.Graph.Queries.Count_Publishers / Count_Subscribers.
 
    function ROS_Type_Name (DDS_Type_Name : String) return String;
-   --  "std_msgs::msg::dds_::String_" -> "std_msgs/msg/String"; other names
-   --  unchanged.
+   --  RCL.Graph.Queries.Demangle_Type: "std_msgs::msg::dds_::String_" ->
+   --  "std_msgs/msg/String"; other names unchanged.
+
+   --  Endpoint USER_DATA -------------------------------------------------
+
+   Zero_Type_Hash : constant String :=
+     "RIHS01_0000000000000000000000000000000000000000000000000000000000000000";
+   --  The type hash this library announces (Jazzy layout): computing the
+   --  real RIHS01 hash (SHA-256 of the type description) is not done; a
+   --  zero hash means "unknown" to Jazzy, which then matches by name.
+
+   function Endpoint_User_Data (Layout : GID_Layout; Extra : String := "") return String;
+   --  The USER_DATA of an endpoint: Extra ("clientid=...;" or "") then, in
+   --  the Jazzy layout, "typehash=<Zero_Type_Hash>;".
+
+   function Endpoint_User_Data (Extra : String := "") return String is
+     (Endpoint_User_Data (Layout, Extra));
+   --  The same in the current layout.
+
+   function Type_Hash (User_Data : String) return String;
+   --  The "typehash=" value of an endpoint's USER_DATA; Zero_Type_Hash
+   --  when absent (Humble peers), as Jazzy does.
 
    --  Not for users: called by RCL.Nodes and RCL.Publishers.
 
@@ -55,7 +80,12 @@ package RCL.Graph is
    procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
    procedure Remove_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
    procedure Add_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID);
+   procedure Remove_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID);
    --  Each change republishes the participant's entities. Errors while
    --  publishing are logged, never raised (graph presence is best effort).
+
+   function Announcement return RCL.DDS.Byte_Array;
+   --  The ParticipantEntitiesInfo sample last published (CDR), empty before
+   --  the first node (for tests and diagnostics).
 
 end RCL.Graph;

@@ -74,7 +74,15 @@ package body RCL.Parameters is
       return Trim (Buffer);
    end Double_Image;
 
-   function Image (V : Value) return String is
+   --  The one formatter behind Image and YAML_Image: scalars and arrays
+   --  ("[a, b]") with the element images given.
+   function Format
+     (V          : Value;
+      Unset      : String;
+      Bool_Image : not null access function (B : Boolean) return String;
+      Real_Image : not null access function (D : Long_Float) return String;
+      Text_Image : not null access function (S : String) return String) return String
+   is
       R : Unbounded_String;
       procedure Add (S : String) is
       begin
@@ -82,11 +90,11 @@ package body RCL.Parameters is
       end Add;
    begin
       case V.Kind is
-         when Not_Set => return "";
-         when Bool_Type => return (if V.Bool then "True" else "False");
+         when Not_Set => return Unset;
+         when Bool_Type => return Bool_Image (V.Bool);
          when Integer_Type => return Trim (V.Int'Image);
-         when Double_Type => return Double_Image (V.Double);
-         when String_Type => return To_String (V.Text);
+         when Double_Type => return Real_Image (V.Double);
+         when String_Type => return Text_Image (To_String (V.Text));
          when others => null;
       end case;
       R := To_Unbounded_String ("[");
@@ -97,7 +105,7 @@ package body RCL.Parameters is
             end loop;
          when Bool_Array_Type =>
             for B of V.Bools loop
-               Add (if B then "True" else "False");
+               Add (Bool_Image (B));
             end loop;
          when Integer_Array_Type =>
             for I of V.Ints loop
@@ -105,16 +113,25 @@ package body RCL.Parameters is
             end loop;
          when Double_Array_Type =>
             for D of V.Doubles loop
-               Add (Double_Image (D));
+               Add (Real_Image (D));
             end loop;
          when String_Array_Type =>
             for T of V.Texts loop
-               Add ("'" & To_String (T) & "'");
+               Add (Text_Image (To_String (T)));
             end loop;
          when others => null;
       end case;
       Append (R, "]");
       return To_String (R);
+   end Format;
+
+   function Image (V : Value) return String is
+      function Bool (B : Boolean) return String is (if B then "True" else "False");
+      function Text (S : String) return String is
+        (if V.Kind = String_Type then S else "'" & S & "'");
+      --  Strings bare, string array elements quoted.
+   begin
+      return Format (V, "", Bool'Access, Double_Image'Access, Text'Access);
    end Image;
 
    ----------------
@@ -140,46 +157,9 @@ package body RCL.Parameters is
                  then S & ".0" else S);
       end Real;
 
-      R : Unbounded_String;
-      procedure Add (S : String) is
-      begin
-         Append (R, (if Length (R) = 1 then "" else ", ") & S);
-      end Add;
+      function Bool (B : Boolean) return String is (if B then "true" else "false");
    begin
-      case V.Kind is
-         when Not_Set => return "~";
-         when Bool_Type => return (if V.Bool then "true" else "false");
-         when Integer_Type => return Trim (V.Int'Image);
-         when Double_Type => return Real (V.Double);
-         when String_Type => return Quote (To_String (V.Text));
-         when others => null;
-      end case;
-      R := To_Unbounded_String ("[");
-      case V.Kind is
-         when Byte_Array_Type =>
-            for B of V.Bytes loop
-               Add (Trim (B'Image));
-            end loop;
-         when Bool_Array_Type =>
-            for B of V.Bools loop
-               Add (if B then "true" else "false");
-            end loop;
-         when Integer_Array_Type =>
-            for I of V.Ints loop
-               Add (Trim (I'Image));
-            end loop;
-         when Double_Array_Type =>
-            for D of V.Doubles loop
-               Add (Real (D));
-            end loop;
-         when String_Array_Type =>
-            for T of V.Texts loop
-               Add (Quote (To_String (T)));
-            end loop;
-         when others => null;
-      end case;
-      Append (R, "]");
-      return To_String (R);
+      return Format (V, "~", Bool'Access, Real'Access, Quote'Access);
    end YAML_Image;
 
    ---------------

@@ -4,6 +4,7 @@ with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Contexts;
+with RCL.Graph;
 with RCL.DDS;
 with RCL.Logging;
 with RCL.QoS;
@@ -86,7 +87,8 @@ package body RCL.Rosout is
       Support := ROSIDL.Typesupport.Get_Message_Support ("rcl_interfaces", "Log");
       Writer := new RCL.DDS.Writer;
       RCL.DDS.Create (Writer.all, RCL.Contexts.Participant.all, "rt/rosout",
-                      ROSIDL.Typesupport.DDS_Type_Name (Support), RCL.QoS.Rosout);
+                      ROSIDL.Typesupport.DDS_Type_Name (Support), RCL.QoS.Rosout,
+                      User_Data => RCL.Graph.Endpoint_User_Data);
       RCL.Logging.Set_Sink (Sink'Access);
    exception
       when E : others =>

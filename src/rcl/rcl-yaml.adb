@@ -337,6 +337,9 @@ package body RCL.YAML is
                   E     : constant Character := Peek (1);
                   Width : Natural := 0;
                begin
+                  if Pos + 1 > T'Last or else E = L1.LF then
+                     Fail ("unterminated double-quoted string (a '\' ends its line)", L, C);
+                  end if;
                   Advance;
                   Advance;
                   case E is

@@ -1,4 +1,4 @@
-with Ada.Characters.Conversions;
+with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
 with Ada.Unchecked_Conversion;
 with Ada.Unchecked_Deallocation;
 with ROSIDL.Dynamic.Images;
@@ -10,7 +10,6 @@ package body ROSIDL.Dynamic is
 
    use System.Storage_Elements;
    use type System.Address;
-   use type Interfaces.IEEE_Float_64;
    use type Text_Vectors.Vector;
    use type Wide_Text_Vectors.Vector;
 
@@ -180,21 +179,33 @@ package body ROSIDL.Dynamic is
    function Is_Integer_Text (S : String) return Boolean is
      (for all C of S => C in '0' .. '9' | '-' | '+');
 
-   function Bits_To_Float is new Ada.Unchecked_Conversion (UInt64, Float64);
+   function Is_NaN_Text (S : String) return Boolean is
+     (S = "nan" or else S = "+nan" or else S = "-nan");
+
+   function Is_Non_Finite_Text (S : String) return Boolean is
+     (Is_NaN_Text (S) or else S = "inf" or else S = "+inf" or else S = "-inf");
+   --  The parser's normalised nan and infinities. Such values cannot flow
+   --  through Ada code built with validity checks (-gnatVa): they are
+   --  stored as IEEE bits, read with Is_NaN / Image.
 
    function To_Float64 (S : String) return Float64 is
       T : constant String := Float_Text (S);
    begin
-      if T = "inf" or else T = "+inf" then
-         return Bits_To_Float (16#7FF0_0000_0000_0000#);
-      elsif T = "-inf" then
-         return Bits_To_Float (16#FFF0_0000_0000_0000#);
+      if Is_Non_Finite_Text (T) then
+         raise Constraint_Error with "not a finite number";
       elsif Is_Integer_Text (T) then
          return Float64 (Long_Long_Integer'Value (T));
       else
          return Float64'Value (T);
       end if;
    end To_Float64;
+
+   function From_UTF_8 (Text : String) return Wide_Wide_String is
+     (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (Text));
+   --  Interface files are UTF-8 (as rosidl reads them): wstring texts are
+   --  decoded, not taken byte by byte as Latin-1.
+
+   Encoding_Error : exception renames Ada.Strings.UTF_Encoding.Encoding_Error;
 
    procedure Set_Primitive_Text
      (Cell : Field_Cell; Index : Positive; Text : String)
@@ -213,8 +224,23 @@ package body ROSIDL.Dynamic is
          when UInt32_Kind => To_UInt32 (A).all := UInt32'Value (Text);
          when Int64_Kind  => To_Int64 (A).all := Int64'Value (Text);
          when UInt64_Kind => To_UInt64 (A).all := UInt64'Value (Text);
-         when Float32_Kind => To_Float32 (A).all := Float32 (To_Float64 (Text));
-         when Float64_Kind => To_Float64 (A).all := To_Float64 (Text);
+         when Float32_Kind =>
+            if Is_NaN_Text (Text) then
+               To_UInt32 (A).all := 16#7FC0_0000#;  --  Quiet NaN.
+            elsif Is_Non_Finite_Text (Text) then
+               To_UInt32 (A).all := (if Text = "-inf" then 16#FF80_0000# else 16#7F80_0000#);
+            else
+               To_Float32 (A).all := Float32 (To_Float64 (Text));
+            end if;
+         when Float64_Kind =>
+            if Is_NaN_Text (Text) then
+               To_UInt64 (A).all := 16#7FF8_0000_0000_0000#;
+            elsif Is_Non_Finite_Text (Text) then
+               To_UInt64 (A).all :=
+                 (if Text = "-inf" then 16#FFF0_0000_0000_0000# else 16#7FF0_0000_0000_0000#);
+            else
+               To_Float64 (A).all := To_Float64 (Text);
+            end if;
       end case;
    end Set_Primitive_Text;
 
@@ -251,8 +277,8 @@ package body ROSIDL.Dynamic is
                      when String_Kind =>
                         Cell.Extra.Texts (E) := To_Unbounded_String (Text);
                      when WString_Kind =>
-                        Cell.Extra.WTexts (E) := To_Unbounded_Wide_Wide_String
-                          (Ada.Characters.Conversions.To_Wide_Wide_String (Text));
+                        Cell.Extra.WTexts (E) :=
+                          To_Unbounded_Wide_Wide_String (From_UTF_8 (Text));
                      when Message_Kind =>
                         null;
                   end case;
@@ -958,12 +984,26 @@ package body ROSIDL.Dynamic is
    function Constant_Float64 (This : Message; Name : String) return Float64 is
       V : constant String := Constant_Value (This, Name);
    begin
+      if Is_Non_Finite_Text (V) then
+         raise Field_Error with Type_Name (This) & " constant """ & Name
+           & """ is " & V & ", not a finite number (Constant_Value gives its text)";
+      end if;
       return To_Float64 (V);
    exception
       when Constraint_Error =>
          raise Field_Error with Type_Name (This) & " constant """ & Name
            & """ = " & V & " is not a number";
    end Constant_Float64;
+
+   function Constant_WString (This : Message; Name : String) return Wide_Wide_String is
+      V : constant String := Constant_Value (This, Name);
+   begin
+      return From_UTF_8 (V);
+   exception
+      when Encoding_Error =>
+         raise Field_Error with Type_Name (This) & " constant """ & Name
+           & """ is not valid UTF-8";
+   end Constant_WString;
 
    function Image (This : Message; Truncate_Length : Natural := 0) return String
    is

@@ -256,6 +256,11 @@ package ROSIDL.Dynamic is
 
    function Constant_Int64 (This : Message; Name : String) return Int64;
    function Constant_Float64 (This : Message; Name : String) return Float64;
+   --  Field_Error for a nan or an infinite constant (Constant_Value gives
+   --  "nan", "inf", "-inf"): such values do not pass validity checks.
+   function Constant_WString (This : Message; Name : String) return Wide_Wide_String;
+   --  A (w)string constant's text decoded from UTF-8; Field_Error when it
+   --  is not valid UTF-8.
 
    function Image (This : Message; Truncate_Length : Natural := 0) return String;
    --  YAML as "ros2 topic echo" prints it (without the "---" separator),

@@ -1,4 +1,5 @@
 with Ada.Characters.Handling;
+with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
 with Interfaces;
 
 package body ROSIDL.Parser.Values is
@@ -307,6 +308,14 @@ package body ROSIDL.Parser.Values is
       return N;
    end Character_Count;
 
+   function Is_UTF_8 (S : String) return Boolean is
+   begin
+      return Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (S)'Length = Character_Count (S);
+   exception
+      when Ada.Strings.UTF_Encoding.Encoding_Error =>
+         return False;
+   end Is_UTF_8;
+
    function Check_String
      (Kind : Text_Kind; Bound : Natural; Text : String) return Check_Result
    is
@@ -352,6 +361,13 @@ package body ROSIDL.Parser.Values is
          end;
       else
          Result := To_Unbounded_String (Text);
+      end if;
+      if Kind = WString_Kind then
+         --  A wstring's text becomes characters (UTF-8 decoded): it must be
+         --  valid UTF-8.
+         if not Is_UTF_8 (To_String (Result)) then
+            return Failure ("a " & Name & " in valid UTF-8");
+         end if;
       end if;
       if Bound > 0 and then Character_Count (To_String (Result)) > Bound then
          return Failure

@@ -242,3 +242,10 @@ def test_errors_and_help():
     assert rc == 1 and "<argument>:1:10" in err, err
     rc, _, err = rclada("topic", "pub", "/x", "std_msgs/msg/Nope", "{}", "--once")
     assert rc == 1 and "unknown message type" in err, err
+    # Invalid names are rejected at once (echo and hz used to wait forever).
+    for verb in ("echo", "hz", "info"):
+        rc, _, err = rclada("topic", verb, "bad name!", timeout=10)
+        assert rc == 1 and "invalid name 'bad name!'" in err, (verb, err)
+    rc, _, err = rclada("service", "call", "/a//b", "example_interfaces/srv/AddTwoInts",
+                        "{a: 1, b: 2}", timeout=10)
+    assert rc == 1 and "invalid name '/a//b'" in err, err

@@ -228,11 +228,4 @@ package RCL.DDS.Thin is
    function Entity_Guid (Entity : Entity_T; Guid : out Guid_Bytes) return Return_T
      with Import, Convention => C, External_Name => "sancta_dds_entity_guid";
 
-   function Endpoint_List
-     (Participant : Entity_T; Publications : C.int) return C.Strings.chars_ptr
-     with Import, Convention => C, External_Name => "sancta_dds_endpoint_list";
-
-   procedure Free (P : C.Strings.chars_ptr)
-     with Import, Convention => C, External_Name => "sancta_dds_free";
-
 end RCL.DDS.Thin;

@@ -237,20 +237,6 @@ package body RCL.DDS is
       return GUID (G);
    end Instance_GUID;
 
-   function Endpoints (This : Participant; Publications : Boolean) return String is
-      use type CS.chars_ptr;
-      List : constant CS.chars_ptr :=
-        Thin.Endpoint_List (C.int (This.Handle), (if Publications then 1 else 0));
-   begin
-      if List = CS.Null_Ptr then
-         raise ROS_Exception with "reading the DDS built-in "
-           & (if Publications then "publication" else "subscription") & " topic";
-      end if;
-      return Result : constant String := CS.Value (List) do
-         Thin.Free (List);
-      end return;
-   end Endpoints;
-
    overriding procedure Finalize (This : in out Participant) is
       To_Delete : Entity_Id;
    begin

@@ -69,11 +69,6 @@ package RCL.DDS is
    function Instance_GUID (This : Participant) return GUID
      with Pre => Is_Open (This);
 
-   function Endpoints (This : Participant; Publications : Boolean) return String
-     with Pre => Is_Open (This);
-   --  What discovery knows (DCPSPublication or DCPSSubscription, alive
-   --  endpoints, ours included): one "topic" & HT & "type" & LF line each.
-
    overriding procedure Finalize (This : in out Participant);
 
    ------------

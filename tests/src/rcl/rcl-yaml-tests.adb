@@ -128,6 +128,10 @@ package body RCL.YAML.Tests is
       Expect ("a: 1" & LF & "- b", "t.yaml:2:1: expected a 'key: value'");
       Expect ("[1, 2] x", "t.yaml:1:8: unexpected text after a flow collection");
       Expect ("a: 1" & LF & "---" & LF & "b: 2", "only one document");
+      Expect ("a: ""x\", "t.yaml:1:4: unterminated double-quoted string");
+      --  A backslash as the very last byte (read past the end before).
+      Expect ("- ""\", "t.yaml:1:3: unterminated double-quoted string");
+      Expect ("a: ""x\" & LF & "b: 1", "t.yaml:1:4: unterminated double-quoted string");
       Assert (Error_Of ("a: http://x.y/z") = "", "':' inside a plain scalar is fine");
    end Errors;
 

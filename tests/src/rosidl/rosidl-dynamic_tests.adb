@@ -97,6 +97,72 @@ package body ROSIDL.Dynamic_Tests is
       end;
    end Defaults_And_Constants;
 
+   procedure Non_Finite_Defaults (Unused : in out Fixture) is
+      --  cdr_test_msgs/NonFinite: nan, inf and -inf defaults and constants
+      --  (non-finite values are looked at through Is_NaN and Image: reading
+      --  them as Ada floats fails validity checks).
+      M : Message;
+      procedure Not_A_Number (Name : String) is
+      begin
+         Assert (Constant_Float64 (M, Name) = 0.0, "non-finite constant as a number");
+         Assert (False, Name & " as Float64 must raise Field_Error");
+      exception
+         when E : Field_Error =>
+            Assert (Contains (Text_Of (E), "not a finite number"), Text_Of (E));
+      end Not_A_Number;
+   begin
+      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      M := Init (Get_Message_Support ("cdr_test_msgs", "NonFinite"));
+      declare
+         Text : constant String := Image (M);
+      begin
+         Assert (Contains (Text, "quiet: .nan" & ASCII.LF), "nan default: " & Text);
+         Assert (Contains (Text, "top: .inf" & ASCII.LF), "inf default: " & Text);
+         Assert (Contains (Text, "bottom: -.inf" & ASCII.LF), "-inf default: " & Text);
+         Assert (Contains (Text, "mixed:" & ASCII.LF & "- .nan" & ASCII.LF & "- -.inf"
+                           & ASCII.LF & "- 1.5" & ASCII.LF), "array defaults: " & Text);
+         Assert (Contains (Text, "dynamic_seq:" & ASCII.LF & "- .inf" & ASCII.LF & "- .nan"),
+                 "sequence defaults: " & Text);
+      end;
+      Assert (M ("quiet").Is_NaN and not M ("top").Is_NaN, "Is_NaN");
+      Assert (M ("mixed").As_Array (1).Is_NaN, "array nan");
+      Assert (M ("mixed").As_Array (3).As_Float32 = 1.5, "array 1.5");
+      Assert (M ("dynamic_seq").As_Array.Length = 2, "sequence default length");
+      Assert (Constant_Value (M, "NOT_A_NUMBER") = "nan", "nan constant text");
+      Assert (Constant_Value (M, "SMALL") = "-inf", "-inf constant text");
+      Not_A_Number ("NOT_A_NUMBER");
+      Not_A_Number ("BIG");
+      Not_A_Number ("SMALL");
+   end Non_Finite_Defaults;
+
+   procedure UTF_8_WStrings (Unused : in out Fixture) is
+      --  cdr_test_msgs/Unicode: wstring defaults and constants in UTF-8.
+      E_Acute : constant Wide_Wide_Character := Wide_Wide_Character'Val (16#E9#);
+      Euro    : constant Wide_Wide_Character := Wide_Wide_Character'Val (16#20AC#);
+      Smile   : constant Wide_Wide_Character := Wide_Wide_Character'Val (16#1F600#);
+      M       : Message;
+   begin
+      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      M := Init (Get_Message_Support ("cdr_test_msgs", "Unicode"));
+      Assert (M ("word").Get_WString = E_Acute & "t" & E_Acute,
+              "wstring default decoded as UTF-8 (3 characters), got"
+              & M ("word").Get_WString'Length'Image);
+      Assert (M ("bounded").Get_WString = Euro & Euro, "bounded wstring default");
+      Assert (M ("pair").As_Array (1).Get_WString = Wide_Wide_Character'Val (16#E0#) & "",
+              "wstring array default");
+      Assert (M ("pair").As_Array (2).Get_WString = "b", "wstring array default 2");
+      Assert (M ("plain").Get_String = "" & Character'Val (16#C3#) & Character'Val (16#A9#),
+              "string default keeps its UTF-8 bytes");
+      Assert (Constant_WString (M, "GREETING") = "h" & E_Acute & " " & Euro & " " & Smile,
+              "wstring constant decoded as UTF-8");
+      declare
+         Encoded : constant Ada.Streams.Stream_Element_Array := ROSIDL.CDR.Encode (M);
+         Back    : constant Message := ROSIDL.CDR.Decode (Support (M), Encoded);
+      begin
+         Assert (Back ("word").Get_WString = E_Acute & "t" & E_Acute, "CDR round trip");
+      end;
+   end UTF_8_WStrings;
+
    procedure Nested_References (Unused : in out Fixture) is
       M     : constant Message :=
         Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
@@ -494,6 +560,10 @@ package body ROSIDL.Dynamic_Tests is
       Result.Add_Test (Caller.Create ("dynamic: arrays, resize limits",
                                       Arrays_And_Limits'Access));
       Result.Add_Test (Caller.Create ("dynamic: bulk access", Bulk_Access'Access));
+      Result.Add_Test (Caller.Create ("dynamic: nan/inf defaults and constants",
+                                      Non_Finite_Defaults'Access));
+      Result.Add_Test (Caller.Create ("dynamic: UTF-8 wstring defaults and constants",
+                                      UTF_8_WStrings'Access));
       Result.Add_Test (Caller.Create ("dynamic: NaN and infinities",
                                       Non_Finite_Floats'Access));
       Result.Add_Test (Caller.Create ("dynamic: matrix views of MultiArrays",

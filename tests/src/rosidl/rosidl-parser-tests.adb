@@ -542,8 +542,37 @@ package body ROSIDL.Parser.Tests is
          Assert (M = null, "not reached");
       end Bad_Name;
 
+      procedure Bad_UTF_8 is
+         --  A wstring default whose text is not UTF-8 (a lone Latin-1 byte).
+         M : constant Message_Access := Parse_Message
+           ("my_msgs", "Wide", "wstring w ""caf" & Character'Val (16#E9#) & """");
+      begin
+         Assert (M = null, "not reached");
+      end Bad_UTF_8;
+
+      procedure Bad_UTF_8_Constant is
+         M : constant Message_Access := Parse_Message
+           ("my_msgs", "Wide", "int8 x" & ASCII.LF & "wstring W=" & Character'Val (16#C3#));
+      begin
+         Assert (M = null, "not reached");
+      end Bad_UTF_8_Constant;
+
       Got : Unbounded_String;
    begin
+      Got := To_Unbounded_String (Error_Of (Bad_UTF_8'Access));
+      Assert (Contains (To_String (Got), "my_msgs/msg/Wide.msg:1:")
+              and then Contains (To_String (Got), "valid UTF-8"), To_String (Got));
+      Got := To_Unbounded_String (Error_Of (Bad_UTF_8_Constant'Access));
+      Assert (Contains (To_String (Got), "my_msgs/msg/Wide.msg:2:")
+              and then Contains (To_String (Got), "valid UTF-8"), To_String (Got));
+      declare
+         M : constant Message_Access := Parse_Message
+           ("my_msgs", "Wide", "wstring w ""caf" & Character'Val (16#C3#)
+            & Character'Val (16#A9#) & """");
+      begin
+         Assert (Defaults (Field_Of (M, "w")) = "caf" & Character'Val (16#C3#)
+                 & Character'Val (16#A9#), "valid UTF-8 accepted: " & Defaults (Field_Of (M, "w")));
+      end;
       Got := To_Unbounded_String (Error_Of (Duplicate'Access));
       Assert (Got = "my_msgs/msg/Dup.msg:2:11: expected a new field name, found 'x'"
               & " (already defined at line 1)", To_String (Got));

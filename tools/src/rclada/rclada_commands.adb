@@ -14,6 +14,7 @@ with RCL.Clients;
 with RCL.Contexts;
 with RCL.DDS;
 with RCL.Graph.Queries;
+with RCL.Names;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
@@ -315,6 +316,18 @@ package body Rclada_Commands is
 
    function Fully_Qualified (Name : String) return String is
      (if Name'Length > 0 and then Name (Name'First) = '/' then Name else "/" & Name);
+
+   function Checked_Name (Name : String) return String is
+      --  A topic or service name from the command line, fully qualified and
+      --  validated (an invalid name would be waited for forever).
+      Full    : constant String := Fully_Qualified (Name);
+      Problem : constant String := RCL.Names.Topic_Problem (Full);
+   begin
+      if Problem /= "" then
+         raise Command_Error with "invalid name '" & Name & "': " & Problem;
+      end if;
+      return Full;
+   end Checked_Name;
 
    function Message_From (Support : ROSIDL.Typesupport.Message_Support; Text : String)
       return ROSIDL.Dynamic.Message is
@@ -699,25 +712,25 @@ package body Rclada_Commands is
          if Natural (Pos.Length) /= 2 then
             raise Usage_Error with "topic info takes one topic name";
          end if;
-         Topic_Info (Fully_Qualified (Arg (2)), Args);
+         Topic_Info (Checked_Name (Arg (2)), Args);
       elsif Pos (1) = "echo" then
          Check_Options (Args, "--once --count --best-effort --spin-time");
          if Natural (Pos.Length) not in 2 .. 3 then
             raise Usage_Error with "topic echo takes a topic name and optionally a type";
          end if;
-         Topic_Echo (Fully_Qualified (Arg (2)), Arg (3), Args);
+         Topic_Echo (Checked_Name (Arg (2)), Arg (3), Args);
       elsif Pos (1) = "pub" then
          Check_Options (Args, "--once -1 --rate --times --wait");
          if Natural (Pos.Length) not in 3 .. 4 then
             raise Usage_Error with "topic pub takes a topic name, a type and a YAML message";
          end if;
-         Topic_Pub (Fully_Qualified (Arg (2)), Arg (3), Arg (4), Args);
+         Topic_Pub (Checked_Name (Arg (2)), Arg (3), Arg (4), Args);
       elsif Pos (1) = "hz" then
          Check_Options (Args, "--count --window --spin-time");
          if Natural (Pos.Length) not in 2 .. 3 then
             raise Usage_Error with "topic hz takes a topic name and optionally a type";
          end if;
-         Topic_Hz (Fully_Qualified (Arg (2)), Arg (3), Args);
+         Topic_Hz (Checked_Name (Arg (2)), Arg (3), Args);
       else
          raise Usage_Error with "unknown topic sub-command '" & Pos (1) & "'";
       end if;
@@ -757,7 +770,7 @@ package body Rclada_Commands is
             Node    : constant RCL.Nodes.Node := Tool_Node;
             Client  : RCL.Clients.Client;
          begin
-            Client.Init (Node, Support, Fully_Qualified (Pos (2)));
+            Client.Init (Node, Support, Checked_Name (Pos (2)));
             if not Client.Wait_For_Service (Timeout) then
                raise Command_Error with "service " & Fully_Qualified (Pos (2))
                  & " not available after" & Timeout'Image & " s";
