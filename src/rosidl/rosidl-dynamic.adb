@@ -508,9 +508,13 @@ package body ROSIDL.Dynamic is
 
    function Field_Reference (This : Field_Ref; Name : String) return Field_Ref is
       N : constant Node_Access := Nested_Node (This, "a nested message");
+      I : constant Natural := (if N = null then 0 else Field_Index (N.Def.all, Name));
+      --  The error context (Ref_Name) is only built when the look-up fails:
+      --  this is on the hot path of every nested field access.
    begin
-      return (Cell  => N.Cells (Find (N, Name, " (in field """ & Ref_Name (This)
-                                           & """)"))'Access,
+      return (Cell  => N.Cells (if I /= 0 then I
+                                else Find (N, Name, " (in field """ & Ref_Name (This)
+                                                    & """)"))'Access,
               Index => 0);
    end Field_Reference;
 
