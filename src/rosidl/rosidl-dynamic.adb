@@ -530,16 +530,22 @@ package body ROSIDL.Dynamic is
    function Scalar_Address (This : Field_Ref'Class; Kind : Primitive_Kind; Requested : String := "")
       return System.Address
    is
-      T   : constant Field_Type := Cell_Type (This.Cell.all);
-      Req : constant String :=
+      T : constant Field_Type := Cell_Type (This.Cell.all);
+
+      function Req return String is
         (if Requested = "" then Type_Name (Kind) else Requested);
+      --  Only for error texts: every scalar accessor passes here.
    begin
       if T.Kind /= Kind then
          Raise_Field_Error
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Req);
       end if;
-      return Element_Address (This.Cell.all, Single_Index (This, Req));
+      return Element_Address
+        (This.Cell.all,
+         (if This.Index > 0 then This.Index
+          elsif T.Collection = Single then 1
+          else Single_Index (This, Req)));
    end Scalar_Address;
 
    function As_Bool (This : Field_Ref) return Bool_Ref is
