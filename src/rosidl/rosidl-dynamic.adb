@@ -503,7 +503,7 @@ package body ROSIDL.Dynamic is
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Requested);
       end if;
-      return This.Cell.Extra.Nodes (Single_Index (This, Requested));
+      return This.Cell.Extra.Nodes.Element (Single_Index (This, Requested));
    end Nested_Node;
 
    function Field_Reference (This : Field_Ref; Name : String) return Field_Ref is
