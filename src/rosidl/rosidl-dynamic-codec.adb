@@ -188,7 +188,9 @@ package body ROSIDL.Dynamic.Codec is
          when Message_Kind =>
             for I in 1 .. Cell.Count loop
                Set_Index (S, I);
-               Size_Node (Cell.Extra.Nodes (I), S);
+               Size_Node (Cell.Extra.Nodes.Element (I), S);
+               --  Element, not indexing: no controlled reference object per
+               --  nested message (the hot path of every encoding).
             end loop;
       end case;
    end Size_Cell;
@@ -329,7 +331,7 @@ package body ROSIDL.Dynamic.Codec is
                end loop;
             when Message_Kind =>
                for I in 1 .. Cell.Count loop
-                  Put_Node (Cell.Extra.Nodes (I));
+                  Put_Node (Cell.Extra.Nodes.Element (I));
                end loop;
          end case;
       end Put_Cell;
@@ -641,7 +643,7 @@ package body ROSIDL.Dynamic.Codec is
                end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
-                  Get_Node (Cell.Extra.Nodes (I));
+                  Get_Node (Cell.Extra.Nodes.Element (I));
                end loop;
          end case;
       end Get_Cell;

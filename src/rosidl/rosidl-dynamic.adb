@@ -529,14 +529,18 @@ package body ROSIDL.Dynamic is
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Requested);
       end if;
-      return This.Cell.Extra.Nodes (Single_Index (This, Requested));
+      return This.Cell.Extra.Nodes.Element (Single_Index (This, Requested));
    end Nested_Node;
 
    function Field_Reference (This : Field_Ref; Name : String) return Field_Ref is
       N : constant Node_Access := Nested_Node (This, "a nested message");
+      I : constant Natural := (if N = null then 0 else Field_Index (N.Def.all, Name));
+      --  The error context (Ref_Name) is only built when the look-up fails:
+      --  this is on the hot path of every nested field access.
    begin
-      return (Cell  => N.Cells (Find (N, Name, " (in field """ & Ref_Name (This)
-                                           & """)"))'Access,
+      return (Cell  => N.Cells (if I /= 0 then I
+                                else Find (N, Name, " (in field """ & Ref_Name (This)
+                                                    & """)"))'Access,
               Index => 0);
    end Field_Reference;
 
@@ -552,16 +556,22 @@ package body ROSIDL.Dynamic is
    function Scalar_Address (This : Field_Ref'Class; Kind : Primitive_Kind; Requested : String := "")
       return System.Address
    is
-      T   : constant Field_Type := Cell_Type (This.Cell.all);
-      Req : constant String :=
+      T : constant Field_Type := Cell_Type (This.Cell.all);
+
+      function Req return String is
         (if Requested = "" then Type_Name (Kind) else Requested);
+      --  Only for error texts: every scalar accessor passes here.
    begin
       if T.Kind /= Kind then
          Raise_Field_Error
            (This.Cell.all, Ref_Name (This),
             "expected " & Image (T) & ", requested " & Req);
       end if;
-      return Element_Address (This.Cell.all, Single_Index (This, Req));
+      return Element_Address
+        (This.Cell.all,
+         (if This.Index > 0 then This.Index
+          elsif T.Collection = Single then 1
+          else Single_Index (This, Req)));
    end Scalar_Address;
 
    function As_Bool (This : Field_Ref) return Bool_Ref is

@@ -159,18 +159,51 @@ package body Sancta.Simulation.Sim_Tool is
    end Image;
    --  X with two decimals ("-1.05").
 
-   procedure Set_Time (Stamp : Field_Ref; T : Real) is
+   --  The publication path keeps one message per type and writes it
+   --  through field references looked up once (a Field_Ref designates the
+   --  message's storage, which stays put): looking fields up by name on
+   --  every publication dominated the cost of the ROS 2 path.
+
+   type Time_Fields is record
+      Sec, Nanosec : Field_Ref;
+   end record;
+   --  The fields of a builtin_interfaces/Time.
+
+   function Time_Fields_Of (Stamp : Field_Ref) return Time_Fields is
+     ((Sec => Stamp ("sec"), Nanosec => Stamp ("nanosec")));
+
+   type Header_Fields is record
+      Stamp    : Time_Fields;
+      Frame_Id : Field_Ref;
+   end record;
+   --  The fields of a std_msgs/Header.
+
+   function Header_Fields_Of (Header : Field_Ref) return Header_Fields is
+     ((Stamp => Time_Fields_Of (Header ("stamp")), Frame_Id => Header ("frame_id")));
+
+   type Pose_Fields is record
+      X, Y, Z, Qx, Qy, Qz, Qw : Field_Ref;
+   end record;
+   --  The fields of a geometry_msgs/Pose.
+
+   function Pose_Fields_Of (Target : Field_Ref) return Pose_Fields is
+     ((X  => Target ("position")("x"), Y => Target ("position")("y"),
+       Z  => Target ("position")("z"), Qx => Target ("orientation")("x"),
+       Qy => Target ("orientation")("y"), Qz => Target ("orientation")("z"),
+       Qw => Target ("orientation")("w")));
+
+   procedure Set_Time (Stamp : Time_Fields; T : Real) is
       Seconds : constant Real := Real'Floor (T);
       Nanos   : constant Real := Real'Floor ((T - Seconds) * 1.0E9);
    begin
-      Stamp ("sec").As_Int32 := ROSIDL.Int32 (Seconds);
-      Stamp ("nanosec").As_UInt32 := ROSIDL.UInt32 (Real'Min (Nanos, 999_999_999.0));
+      Stamp.Sec.As_Int32 := ROSIDL.Int32 (Seconds);
+      Stamp.Nanosec.As_UInt32 := ROSIDL.UInt32 (Real'Min (Nanos, 999_999_999.0));
    end Set_Time;
 
-   procedure Set_Stamp (Header : Field_Ref; T : Real; Frame : String) is
+   procedure Set_Stamp (Header : Header_Fields; T : Real; Frame : String) is
    begin
-      Set_Time (Header ("stamp"), T);
-      Header ("frame_id").Set_String (Frame);
+      Set_Time (Header.Stamp, T);
+      Header.Frame_Id.Set_String (Frame);
    end Set_Stamp;
 
    function Is_Sane (P : Pose) return Boolean is
@@ -178,17 +211,15 @@ package body Sancta.Simulation.Sim_Tool is
       and then abs P.X < 1.0E6 and then abs P.Y < 1.0E6 and then abs P.Yaw < 1.0E6);
    --  Finite coordinates of a sensible size.
 
-   procedure Set_Pose (Target : Field_Ref; P : Pose) is
+   procedure Set_Pose (Target : Pose_Fields; P : Pose) is
    begin
-      Target ("position")("x").As_Float64 := ROSIDL.Float64 (P.X);
-      Target ("position")("y").As_Float64 := ROSIDL.Float64 (P.Y);
-      Target ("position")("z").As_Float64 := 0.0;
-      Target ("orientation")("x").As_Float64 := 0.0;
-      Target ("orientation")("y").As_Float64 := 0.0;
-      Target ("orientation")("z").As_Float64 :=
-        ROSIDL.Float64 (Math.Sin (Long_Float (P.Yaw) / 2.0));
-      Target ("orientation")("w").As_Float64 :=
-        ROSIDL.Float64 (Math.Cos (Long_Float (P.Yaw) / 2.0));
+      Target.X.As_Float64 := ROSIDL.Float64 (P.X);
+      Target.Y.As_Float64 := ROSIDL.Float64 (P.Y);
+      Target.Z.As_Float64 := 0.0;
+      Target.Qx.As_Float64 := 0.0;
+      Target.Qy.As_Float64 := 0.0;
+      Target.Qz.As_Float64 := ROSIDL.Float64 (Math.Sin (Long_Float (P.Yaw) / 2.0));
+      Target.Qw.As_Float64 := ROSIDL.Float64 (Math.Cos (Long_Float (P.Yaw) / 2.0));
    end Set_Pose;
 
 
@@ -228,8 +259,29 @@ package body Sancta.Simulation.Sim_Tool is
       Twist_Msg : Message := Init (Twist_Support);
       Odom_Msg  : constant Message := Init (Odom_Support);
       Truth_Msg : constant Message := Init (Truth_Support);
+      Scan_Msg  : constant Message := Init (Scan_Support);
       Clock_Msg : constant Message := Init (Clock_Support);
       Text_Msg  : constant Message := Init (Text_Support);
+
+      Odom_Header  : constant Header_Fields := Header_Fields_Of (Odom_Msg ("header"));
+      Odom_Child   : constant Field_Ref := Odom_Msg ("child_frame_id");
+      Odom_Pose    : constant Pose_Fields := Pose_Fields_Of (Odom_Msg ("pose")("pose"));
+      Odom_Cov     : constant Field_Ref := Odom_Msg ("pose")("covariance");
+      Odom_Linear  : constant Field_Ref := Odom_Msg ("twist")("twist")("linear")("x");
+      Odom_Angular : constant Field_Ref := Odom_Msg ("twist")("twist")("angular")("z");
+      Truth_Header : constant Header_Fields := Header_Fields_Of (Truth_Msg ("header"));
+      Truth_Pose   : constant Pose_Fields := Pose_Fields_Of (Truth_Msg ("pose"));
+      Clock_Time   : constant Time_Fields := Time_Fields_Of (Clock_Msg ("clock"));
+      Scan_Header  : constant Header_Fields := Header_Fields_Of (Scan_Msg ("header"));
+      Scan_Angle_Min       : constant Field_Ref := Scan_Msg ("angle_min");
+      Scan_Angle_Max       : constant Field_Ref := Scan_Msg ("angle_max");
+      Scan_Angle_Increment : constant Field_Ref := Scan_Msg ("angle_increment");
+      Scan_Time_Increment  : constant Field_Ref := Scan_Msg ("time_increment");
+      Scan_Scan_Time       : constant Field_Ref := Scan_Msg ("scan_time");
+      Scan_Range_Min       : constant Field_Ref := Scan_Msg ("range_min");
+      Scan_Range_Max       : constant Field_Ref := Scan_Msg ("range_max");
+      Scan_Ranges          : constant Field_Ref := Scan_Msg ("ranges");
+      --  The fields written on every publication, looked up once.
       Request   : Message := Init (Request_Support (Control));
       Response  : constant Message := Init (Response_Support (Control));
 
@@ -299,26 +351,40 @@ package body Sancta.Simulation.Sim_Tool is
                Rel : constant Pose := Relative (R.Start, O.Pose);
                Cov : ROSIDL.Dynamic.Float64_Array (1 .. 36) := [others => 0.0];
             begin
-               Set_Stamp (Odom_Msg ("header"), O.Stamp, To_String (R.Name) & "/odom");
-               Odom_Msg ("child_frame_id").Set_String (To_String (R.Name) & "/base_link");
-               Set_Pose (Odom_Msg ("pose")("pose"), Rel);
+               Set_Stamp (Odom_Header, O.Stamp, To_String (R.Name) & "/odom");
+               Odom_Child.Set_String (To_String (R.Name) & "/base_link");
+               Set_Pose (Odom_Pose, Rel);
                Cov (1) := ROSIDL.Float64 (O.Pose_Variance);
                Cov (8) := ROSIDL.Float64 (O.Pose_Variance);
                Cov (36) := ROSIDL.Float64 (O.Yaw_Variance);
-               Odom_Msg ("pose")("covariance").Set_Float64_Array (Cov);
-               Odom_Msg ("twist")("twist")("linear")("x").As_Float64 :=
-                 ROSIDL.Float64 (O.Velocity.Linear_X);
-               Odom_Msg ("twist")("twist")("angular")("z").As_Float64 :=
-                 ROSIDL.Float64 (O.Velocity.Angular_Z);
+               Odom_Cov.Set_Float64_Array (Cov);
+               Odom_Linear.As_Float64 := ROSIDL.Float64 (O.Velocity.Linear_X);
+               Odom_Angular.As_Float64 := ROSIDL.Float64 (O.Velocity.Angular_Z);
                R.Odom.Publish (Odom_Msg);
             end;
          end if;
          Count := Sim.Scan_Count (R.Id);
          if Count /= R.Last_Scan then
             R.Last_Scan := Count;
-            R.Scan.Publish
-              (Robot_Messages.Scan_Message
-                 (Sim.Latest_Scan (R.Id), To_String (R.Name) & "/base_link"));
+            declare
+               Scan   : constant Sancta.Robot.Sensors.Laser_Scan := Sim.Latest_Scan (R.Id);
+               Ranges : ROSIDL.Dynamic.Float32_Array (1 .. Scan.Beams);
+            begin
+               --  As Robot_Messages.Scan_Message, into the reused message.
+               for I in Ranges'Range loop
+                  Ranges (I) := ROSIDL.Float32 (Scan.Ranges (I));
+               end loop;
+               Set_Stamp (Scan_Header, Scan.Stamp, To_String (R.Name) & "/base_link");
+               Scan_Angle_Min.As_Float32 := ROSIDL.Float32 (Scan.Angle_Min);
+               Scan_Angle_Max.As_Float32 := ROSIDL.Float32 (Scan.Angle_Max);
+               Scan_Angle_Increment.As_Float32 := ROSIDL.Float32 (Scan.Angle_Increment);
+               Scan_Time_Increment.As_Float32 := ROSIDL.Float32 (Scan.Time_Increment);
+               Scan_Scan_Time.As_Float32 := ROSIDL.Float32 (Scan.Scan_Time);
+               Scan_Range_Min.As_Float32 := ROSIDL.Float32 (Scan.Range_Min);
+               Scan_Range_Max.As_Float32 := ROSIDL.Float32 (Scan.Range_Max);
+               Scan_Ranges.Set_Float32_Array (Ranges);
+               R.Scan.Publish (Scan_Msg);
+            end;
          end if;
          if R.GPS /= null then
             Count := Sim.GPS_Count (R.Id);
@@ -331,8 +397,8 @@ package body Sancta.Simulation.Sim_Tool is
             declare
                T : constant Sancta.Robot.Sensors.Pose_Stamped := Sim.Ground_Truth (R.Id);
             begin
-               Set_Stamp (Truth_Msg ("header"), T.Stamp, "map");
-               Set_Pose (Truth_Msg ("pose"), T.Pose);
+               Set_Stamp (Truth_Header, T.Stamp, "map");
+               Set_Pose (Truth_Pose, T.Pose);
                R.Truth.Publish (Truth_Msg);
             end;
          end if;
@@ -509,7 +575,7 @@ package body Sancta.Simulation.Sim_Tool is
                Publish_Readings (R, Truth_Due);
             end loop;
          end;
-         Set_Time (Clock_Msg ("clock"), Sim.Clock);
+         Set_Time (Clock_Time, Sim.Clock);
          Clock_Pub.Publish (Clock_Msg);
          if not As_Fast then
             delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
