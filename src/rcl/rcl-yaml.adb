@@ -197,6 +197,8 @@ package body RCL.YAML is
       Line       : Positive := 1;
       Line_Start : Positive := 1;
       D          : Document;
+      Depth      : Natural := 0;
+      --  Of the collection being parsed (Enter / Leave).
 
       function Col return Positive is (Pos - Line_Start + 1);
       function EOF return Boolean is (Pos > T'Last);
@@ -215,6 +217,19 @@ package body RCL.YAML is
       begin
          Fail (Message, Line, Col);
       end Fail;
+
+      procedure Enter is
+      begin
+         Depth := Depth + 1;
+         if Depth > Max_Depth then
+            Fail ("collections nested deeper than" & Natural'Image (Max_Depth));
+         end if;
+      end Enter;
+
+      procedure Leave is
+      begin
+         Depth := Depth - 1;
+      end Leave;
 
       procedure Advance is
       begin
@@ -473,6 +488,7 @@ package body RCL.YAML is
          Close : constant Character := (if Open = '[' then ']' else '}');
          N     : constant Positive := New_Node ((if Open = '[' then Sequence else Mapping), L, C);
       begin
+         Enter;
          Advance;
          loop
             Skip_Flow_Space;
@@ -527,6 +543,7 @@ package body RCL.YAML is
             end if;
          end loop;
          Advance;  --  Close.
+         Leave;
          return N;
       end Flow_Node;
 
@@ -701,21 +718,22 @@ package body RCL.YAML is
          N : Positive;
       begin
          Check_Unsupported;
+         Enter;
          if Cur = '-' and then Blank_After (1) then
-            return Block_Sequence (C);
+            N := Block_Sequence (C);
          elsif Cur in '[' | '{' then
             N := Flow_Node;
             Expect_Line_End ("a flow collection");
-            return N;
          elsif Is_Key_Here then
-            return Block_Mapping (C);
+            N := Block_Mapping (C);
          elsif Cur in '"' | ''' then
             N := Quoted_Scalar;
             Expect_Line_End ("a quoted string");
-            return N;
          else
-            return Plain_To_Line_End;
+            N := Plain_To_Line_End;
          end if;
+         Leave;
+         return N;
       end Parse_Node;
 
    begin
