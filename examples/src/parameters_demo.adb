@@ -4,6 +4,7 @@
 --  "rate" (integer, 1 .. 100), "name" (string), "gain" (double), "ids"
 --  (integer array), "frozen" (read-only boolean). Every change is logged as
 --  "parameter <name> = <value>".
+with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with RCL.Logging;
@@ -65,4 +66,5 @@ begin
 exception
    when E : Parameter_Error | RCL.YAML.Parse_Error =>
       Logging.Error (Ada.Exceptions.Exception_Message (E));
+      Ada.Command_Line.Set_Exit_Status (2);
 end Parameters_Demo;

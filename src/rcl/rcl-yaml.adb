@@ -1,7 +1,8 @@
 with Ada.Characters.Latin_1;
-with Ada.Direct_IO;
 with Ada.Directories;
+with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
+with Ada.Unchecked_Deallocation;
 
 package body RCL.YAML is
 
@@ -191,8 +192,31 @@ package body RCL.YAML is
    -- Parse --
    -----------
 
+   function Parse_Text (T : String; Source : String) return Document
+     with Pre => T'First = 1;
+   --  Parse, for a text indexed from 1 (no copy: a large file would not fit on the stack).
+
+   type String_Access is access String;
+   procedure Free is new Ada.Unchecked_Deallocation (String, String_Access);
+
    function Parse (Text : String; Source : String := "<input>") return Document is
-      T          : constant String (1 .. Text'Length) := Text;
+      Copy : String_Access;
+   begin
+      if Text'First = 1 then
+         return Parse_Text (Text, Source);
+      end if;
+      Copy := new String (1 .. Text'Length);
+      Copy.all := Text;
+      return Result : constant Document := Parse_Text (Copy.all, Source) do
+         Free (Copy);
+      end return;
+   exception
+      when others =>
+         Free (Copy);
+         raise;
+   end Parse;
+
+   function Parse_Text (T : String; Source : String) return Document is
       Pos        : Positive := 1;
       Line       : Positive := 1;
       Line_Start : Positive := 1;
@@ -760,40 +784,44 @@ package body RCL.YAML is
          Fail ("unexpected content (check the indentation)");
       end if;
       return D;
-   end Parse;
+   end Parse_Text;
 
    ----------------
    -- Parse_File --
    ----------------
 
    function Parse_File (Path : String) return Document is
+      use type Ada.Directories.File_Kind;
+      Text : String_Access;
    begin
       if not Ada.Directories.Exists (Path) then
          raise Parse_Error with Path & ": no such file";
+      elsif Ada.Directories.Kind (Path) /= Ada.Directories.Ordinary_File then
+         raise Parse_Error with Path & ": not a regular file";
       end if;
       declare
-         Size : constant Natural := Natural (Ada.Directories.Size (Path));
-         subtype Content is String (1 .. Size);
-         package IO is new Ada.Direct_IO (Content);
-         F    : IO.File_Type;
-         Text : Content;
+         F : Ada.Streams.Stream_IO.File_Type;
       begin
-         if Size = 0 then
-            return Parse ("", Path);
-         end if;
-         IO.Open (F, IO.In_File, Path);
-         IO.Read (F, Text);
-         IO.Close (F);
-         return Parse (Text, Path);
+         Ada.Streams.Stream_IO.Open (F, Ada.Streams.Stream_IO.In_File, Path);
+         Text := new String (1 .. Natural (Ada.Streams.Stream_IO.Size (F)));
+         --  On the heap: a large file must not overflow the stack.
+         String'Read (Ada.Streams.Stream_IO.Stream (F), Text.all);
+         Ada.Streams.Stream_IO.Close (F);
       exception
-         when Parse_Error =>
-            raise;
          when others =>
-            if IO.Is_Open (F) then
-               IO.Close (F);
+            if Ada.Streams.Stream_IO.Is_Open (F) then
+               Ada.Streams.Stream_IO.Close (F);
             end if;
+            Free (Text);
             raise Parse_Error with Path & ": cannot be read";
       end;
+      return Result : constant Document := Parse_Text (Text.all, Path) do
+         Free (Text);
+      end return;
+   exception
+      when others =>
+         Free (Text);
+         raise;
    end Parse_File;
 
    ---------------

@@ -6,6 +6,7 @@
 pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
+with Ada.Exceptions;
 with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Run;
@@ -14,14 +15,16 @@ procedure Sancta_CLI is
    use Ada.Command_Line;
    use Ada.Text_IO;
 
-   procedure Usage is
+   procedure Usage (To : File_Type := Standard_Output) is
+      --  To: standard error when the usage answers a mistake.
    begin
-      Put_Line ("usage: sancta COMMAND [ARGS...]");
-      Put_Line ("commands:");
+      Put_Line (To, "usage: sancta COMMAND [ARGS...]");
+      Put_Line (To, "commands:");
       --  One line per subcommand, in the order below.
-      Put_Line ("  help             this text");
-      Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
-      Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
+      Put_Line (To, "  help             this text");
+      Put_Line (To, "  check FILE       validate a configuration, print and draw its wiring");
+      Put_Line (To, "  run FILE         run agents: --agent ID | --all [--set NAME=VALUE]"
+                & " [--for S]");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -29,7 +32,12 @@ begin
    if Command = "" or else Command = "help" or else Command = "--help"
      or else Command = "-h"
    then
-      Usage;
+      if Command = "" then
+         Usage (Standard_Error);
+         Set_Exit_Status (2);  --  As for any other usage error.
+      else
+         Usage;
+      end if;
    --  elsif Command = "plan" then Sancta.Commands.Plan.Run;
    elsif Command = "check" then
       Sancta.Commands.Check.Run;
@@ -37,7 +45,13 @@ begin
       Sancta.Commands.Run.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
-      Usage;
+      Usage (Standard_Error);
       Set_Exit_Status (Failure);
    end if;
+exception
+   when E : others =>
+      --  Last resort: a bug, reported in one line instead of a traceback.
+      Put_Line (Standard_Error, "sancta: internal error: " & Ada.Exceptions.Exception_Name (E)
+                & ": " & Ada.Exceptions.Exception_Message (E));
+      Set_Exit_Status (70);
 end Sancta_CLI;
