@@ -1,4 +1,6 @@
 with Ada.Characters.Latin_1;
+with Ada.Containers.Hashed_Sets;
+with Ada.Strings.Unbounded.Hash;
 with Ada.Directories;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
@@ -7,6 +9,11 @@ with Ada.Unchecked_Deallocation;
 package body RCL.YAML is
 
    package L1 renames Ada.Characters.Latin_1;
+
+   package Key_Sets is new Ada.Containers.Hashed_Sets
+     (Unbounded_String, Ada.Strings.Unbounded.Hash, Equivalent_Elements => "=");
+   --  The keys of the mapping being parsed: duplicates found in constant time (a
+   --  mapping of many keys must not cost the square of their number).
 
    function Img (N : Natural) return String is
       S : constant String := N'Image;
@@ -511,6 +518,7 @@ package body RCL.YAML is
          Open  : constant Character := Cur;
          Close : constant Character := (if Open = '[' then ']' else '}');
          N     : constant Positive := New_Node ((if Open = '[' then Sequence else Mapping), L, C);
+         Seen  : Key_Sets.Set;
       begin
          Enter;
          Advance;
@@ -537,7 +545,7 @@ package body RCL.YAML is
                   if D.Nodes (K).Kind /= Scalar then
                      Fail ("mapping keys must be scalars", K_Line, K_Col);
                   end if;
-                  if D.Nodes (N).Keys.Contains (To_Unbounded_String (Key)) then
+                  if Seen.Contains (To_Unbounded_String (Key)) then
                      Fail ("duplicate key """ & Key & """", K_Line, K_Col);
                   end if;
                   Skip_Flow_Space;
@@ -551,6 +559,7 @@ package body RCL.YAML is
                   else
                      V := Flow_Item;
                   end if;
+                  Seen.Insert (To_Unbounded_String (Key));
                   D.Nodes (N).Keys.Append (To_Unbounded_String (Key));
                   D.Nodes (N).Key_At.Append (Position'(K_Line, K_Col));
                   D.Nodes (N).Children.Append (V);
@@ -631,7 +640,8 @@ package body RCL.YAML is
       end Inline_Value;
 
       function Block_Mapping (C : Positive) return Positive is
-         M : constant Positive := New_Node (Mapping, Line, C);
+         M    : constant Positive := New_Node (Mapping, Line, C);
+         Seen : Key_Sets.Set;
       begin
          loop
             declare
@@ -669,7 +679,7 @@ package body RCL.YAML is
                      Key := To_Unbounded_String (T (Start .. Last));
                   end;
                end if;
-               if D.Nodes (M).Keys.Contains (Key) then
+               if Seen.Contains (Key) then
                   Fail ("duplicate key """ & To_String (Key) & """", K_Line, K_Col);
                end if;
                Advance;  --  ':'
@@ -688,6 +698,7 @@ package body RCL.YAML is
                else
                   V := Inline_Value;
                end if;
+               Seen.Insert (Key);
                D.Nodes (M).Keys.Append (Key);
                D.Nodes (M).Key_At.Append (Position'(K_Line, K_Col));
                D.Nodes (M).Children.Append (V);

@@ -34,6 +34,10 @@ def files(tmp_path_factory):
     (d / "res0.yaml").write_text("image: arena.pgm\nresolution: 0\norigin: [0, 0, 0]\n")
     # Larger than the 8 MiB stack: must be read on the heap.
     (d / "big.yaml").write_text("x: " + "a" * (9 * 1024 * 1024) + "\n")
+    # Many keys then a duplicate: found without a quadratic search (was minutes).
+    keys = ["    p%d: %d" % (i, i) for i in range(200000)]
+    (d / "many.yaml").write_text("\n".join(["/**:", "  ros__parameters:"] + keys
+                                            + ["    p7: 1"]) + "\n")
     return d
 
 
@@ -91,6 +95,8 @@ CASES = [
      ["{d}/deep.yaml:1:103: collections nested deeper than 100"]),
     (["parameters_demo", "--ros-args", "--params-file", "{d}/big.yaml"], 2,
      ["{d}/big.yaml:1:1:"]),
+    (["parameters_demo", "--ros-args", "--params-file", "{d}/many.yaml"], 2,
+     ["{d}/many.yaml:200003:5: duplicate key \"p7\""]),
     (["parameters_demo", "--ros-args", "-p", "rate"], 2, ["argument 3 'rate': expected name:=value"]),
     (["server", "bad name"], 2, ["bad service name", "position 5"]),
     (["client", "1", "2", "0.5", "bad name"], 2, ["bad service name"]),
