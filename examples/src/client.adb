@@ -7,6 +7,7 @@ with Ada.Exceptions;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Logging;
+with RCL.Names;
 with RCL.Nodes;
 
 procedure Client is
@@ -29,6 +30,9 @@ begin
    Request ("a").As_Int64 := ROSIDL.Int64'Value (Arg (1, "2"));
    Request ("b").As_Int64 := ROSIDL.Int64'Value (Arg (2, "3"));
    Timeout := Duration'Value (Arg (3, "10"));
+   if Timeout < 0.0 then
+      raise Constraint_Error;  --  A usage error.
+   end if;
    declare
       Response : constant ROSIDL.Dynamic.Message :=
         Node.Client_Call (Support, Arg (4, "add_two_ints"), Request, Timeout);
@@ -39,6 +43,9 @@ exception
    when E : RCL.RCL_Timeout =>
       Logging.Error ("RCL_Timeout: " & Ada.Exceptions.Exception_Message (E));
       CL.Set_Exit_Status (1);
+   when E : RCL.Names.Name_Error =>
+      Logging.Error ("bad service name: " & Ada.Exceptions.Exception_Message (E));
+      CL.Set_Exit_Status (2);
    when Constraint_Error =>
       Logging.Error ("usage: client [A B [TIMEOUT [SERVICE_NAME]]] (integers, seconds)");
       CL.Set_Exit_Status (2);

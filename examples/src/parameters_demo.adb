@@ -4,6 +4,7 @@
 --  "rate" (integer, 1 .. 100), "name" (string), "gain" (double), "ids"
 --  (integer array), "frozen" (read-only boolean). Every change is logged as
 --  "parameter <name> = <value>".
+with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with RCL.Logging;
@@ -52,12 +53,13 @@ procedure Parameters_Demo is
    end Watch;
 
 begin
+   On_Set (Node, Check'Access);
+   --  First: command-line overrides are checked too.
    Declare_Parameter (Node, "rate", To_Value (Long_Long_Integer'(10)), "publish rate (Hz)");
    Declare_Parameter (Node, "name", To_Value ("demo"), "a display name");
    Declare_Parameter (Node, "gain", To_Value (Long_Float'(1.5)));
    Declare_Parameter (Node, "ids", Parse ("[1, 2, 3]"));
    Declare_Parameter (Node, "frozen", To_Value (True), Read_Only => True);
-   On_Set (Node, Check'Access);
    Serve (Node);
    Node.Timer_Add (0.05, Watch'Access);
    Logging.Info ("parameters ready");
@@ -65,4 +67,5 @@ begin
 exception
    when E : Parameter_Error | RCL.YAML.Parse_Error =>
       Logging.Error (Ada.Exceptions.Exception_Message (E));
+      Ada.Command_Line.Set_Exit_Status (2);
 end Parameters_Demo;

@@ -587,6 +587,20 @@ package body RCL.Parameters is
               & "' is " & Type_Image (Initial.Kind) & " (" & Image (Initial) & ")";
          end if;
       end if;
+      if Found then
+         --  An override passes the node's validation like any later set (else a
+         --  command line could give a value the node rejects).
+         declare
+            V      : constant Validator := Store.Validator_Of (Node_Name);
+            Reason : constant String := (if V = null then "" else V (Name, Initial));
+         begin
+            if Reason /= "" then
+               raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name
+                 & ": the override for '" & To_String (From) & "' (" & Image (Initial)
+                 & ") is rejected: " & Reason;
+            end if;
+         end;
+      end if;
       Store.Insert (Node_Name, Name,
                     (Desc    => (Name        => To_Unbounded_String (Name),
                                  Kind        => Default.Kind,

@@ -102,9 +102,9 @@ package RCL.Parameters is
       Description : String := "";
       Read_Only   : Boolean := False)
      with Pre => Default.Kind /= Not_Set;
-   --  The type is that of Default; an override of another type raises
-   --  Parameter_Error naming its source. Parameter_Error when already
-   --  declared or Name is empty.
+   --  The type is that of Default; an override of another type, or one that the
+   --  node's On_Set check (if already given) rejects, raises Parameter_Error
+   --  naming its source. Parameter_Error when already declared or Name is empty.
 
    function Has_Parameter (Node : RCL.Nodes.Node'Class; Name : String) return Boolean;
 

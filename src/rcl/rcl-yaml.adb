@@ -1,11 +1,19 @@
 with Ada.Characters.Latin_1;
-with Ada.Direct_IO;
+with Ada.Containers.Hashed_Sets;
+with Ada.Strings.Unbounded.Hash;
 with Ada.Directories;
+with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
+with Ada.Unchecked_Deallocation;
 
 package body RCL.YAML is
 
    package L1 renames Ada.Characters.Latin_1;
+
+   package Key_Sets is new Ada.Containers.Hashed_Sets
+     (Unbounded_String, Ada.Strings.Unbounded.Hash, Equivalent_Elements => "=");
+   --  The keys of the mapping being parsed: duplicates found in constant time (a
+   --  mapping of many keys must not cost the square of their number).
 
    function Img (N : Natural) return String is
       S : constant String := N'Image;
@@ -191,12 +199,37 @@ package body RCL.YAML is
    -- Parse --
    -----------
 
+   function Parse_Text (T : String; Source : String) return Document
+     with Pre => T'First = 1;
+   --  Parse, for a text indexed from 1 (no copy: a large file would not fit on the stack).
+
+   type String_Access is access String;
+   procedure Free is new Ada.Unchecked_Deallocation (String, String_Access);
+
    function Parse (Text : String; Source : String := "<input>") return Document is
-      T          : constant String (1 .. Text'Length) := Text;
+      Copy : String_Access;
+   begin
+      if Text'First = 1 then
+         return Parse_Text (Text, Source);
+      end if;
+      Copy := new String (1 .. Text'Length);
+      Copy.all := Text;
+      return Result : constant Document := Parse_Text (Copy.all, Source) do
+         Free (Copy);
+      end return;
+   exception
+      when others =>
+         Free (Copy);
+         raise;
+   end Parse;
+
+   function Parse_Text (T : String; Source : String) return Document is
       Pos        : Positive := 1;
       Line       : Positive := 1;
       Line_Start : Positive := 1;
       D          : Document;
+      Depth      : Natural := 0;
+      --  Of the collection being parsed (Enter / Leave).
 
       function Col return Positive is (Pos - Line_Start + 1);
       function EOF return Boolean is (Pos > T'Last);
@@ -215,6 +248,19 @@ package body RCL.YAML is
       begin
          Fail (Message, Line, Col);
       end Fail;
+
+      procedure Enter is
+      begin
+         Depth := Depth + 1;
+         if Depth > Max_Depth then
+            Fail ("collections nested deeper than" & Natural'Image (Max_Depth));
+         end if;
+      end Enter;
+
+      procedure Leave is
+      begin
+         Depth := Depth - 1;
+      end Leave;
 
       procedure Advance is
       begin
@@ -475,7 +521,9 @@ package body RCL.YAML is
          Open  : constant Character := Cur;
          Close : constant Character := (if Open = '[' then ']' else '}');
          N     : constant Positive := New_Node ((if Open = '[' then Sequence else Mapping), L, C);
+         Seen  : Key_Sets.Set;
       begin
+         Enter;
          Advance;
          loop
             Skip_Flow_Space;
@@ -500,7 +548,7 @@ package body RCL.YAML is
                   if D.Nodes (K).Kind /= Scalar then
                      Fail ("mapping keys must be scalars", K_Line, K_Col);
                   end if;
-                  if D.Nodes (N).Keys.Contains (To_Unbounded_String (Key)) then
+                  if Seen.Contains (To_Unbounded_String (Key)) then
                      Fail ("duplicate key """ & Key & """", K_Line, K_Col);
                   end if;
                   Skip_Flow_Space;
@@ -514,6 +562,7 @@ package body RCL.YAML is
                   else
                      V := Flow_Item;
                   end if;
+                  Seen.Insert (To_Unbounded_String (Key));
                   D.Nodes (N).Keys.Append (To_Unbounded_String (Key));
                   D.Nodes (N).Key_At.Append (Position'(K_Line, K_Col));
                   D.Nodes (N).Children.Append (V);
@@ -530,6 +579,7 @@ package body RCL.YAML is
             end if;
          end loop;
          Advance;  --  Close.
+         Leave;
          return N;
       end Flow_Node;
 
@@ -593,7 +643,8 @@ package body RCL.YAML is
       end Inline_Value;
 
       function Block_Mapping (C : Positive) return Positive is
-         M : constant Positive := New_Node (Mapping, Line, C);
+         M    : constant Positive := New_Node (Mapping, Line, C);
+         Seen : Key_Sets.Set;
       begin
          loop
             declare
@@ -631,7 +682,7 @@ package body RCL.YAML is
                      Key := To_Unbounded_String (T (Start .. Last));
                   end;
                end if;
-               if D.Nodes (M).Keys.Contains (Key) then
+               if Seen.Contains (Key) then
                   Fail ("duplicate key """ & To_String (Key) & """", K_Line, K_Col);
                end if;
                Advance;  --  ':'
@@ -650,6 +701,7 @@ package body RCL.YAML is
                else
                   V := Inline_Value;
                end if;
+               Seen.Insert (Key);
                D.Nodes (M).Keys.Append (Key);
                D.Nodes (M).Key_At.Append (Position'(K_Line, K_Col));
                D.Nodes (M).Children.Append (V);
@@ -704,21 +756,22 @@ package body RCL.YAML is
          N : Positive;
       begin
          Check_Unsupported;
+         Enter;
          if Cur = '-' and then Blank_After (1) then
-            return Block_Sequence (C);
+            N := Block_Sequence (C);
          elsif Cur in '[' | '{' then
             N := Flow_Node;
             Expect_Line_End ("a flow collection");
-            return N;
          elsif Is_Key_Here then
-            return Block_Mapping (C);
+            N := Block_Mapping (C);
          elsif Cur in '"' | ''' then
             N := Quoted_Scalar;
             Expect_Line_End ("a quoted string");
-            return N;
          else
-            return Plain_To_Line_End;
+            N := Plain_To_Line_End;
          end if;
+         Leave;
+         return N;
       end Parse_Node;
 
    begin
@@ -745,40 +798,44 @@ package body RCL.YAML is
          Fail ("unexpected content (check the indentation)");
       end if;
       return D;
-   end Parse;
+   end Parse_Text;
 
    ----------------
    -- Parse_File --
    ----------------
 
    function Parse_File (Path : String) return Document is
+      use type Ada.Directories.File_Kind;
+      Text : String_Access;
    begin
       if not Ada.Directories.Exists (Path) then
          raise Parse_Error with Path & ": no such file";
+      elsif Ada.Directories.Kind (Path) /= Ada.Directories.Ordinary_File then
+         raise Parse_Error with Path & ": not a regular file";
       end if;
       declare
-         Size : constant Natural := Natural (Ada.Directories.Size (Path));
-         subtype Content is String (1 .. Size);
-         package IO is new Ada.Direct_IO (Content);
-         F    : IO.File_Type;
-         Text : Content;
+         F : Ada.Streams.Stream_IO.File_Type;
       begin
-         if Size = 0 then
-            return Parse ("", Path);
-         end if;
-         IO.Open (F, IO.In_File, Path);
-         IO.Read (F, Text);
-         IO.Close (F);
-         return Parse (Text, Path);
+         Ada.Streams.Stream_IO.Open (F, Ada.Streams.Stream_IO.In_File, Path);
+         Text := new String (1 .. Natural (Ada.Streams.Stream_IO.Size (F)));
+         --  On the heap: a large file must not overflow the stack.
+         String'Read (Ada.Streams.Stream_IO.Stream (F), Text.all);
+         Ada.Streams.Stream_IO.Close (F);
       exception
-         when Parse_Error =>
-            raise;
          when others =>
-            if IO.Is_Open (F) then
-               IO.Close (F);
+            if Ada.Streams.Stream_IO.Is_Open (F) then
+               Ada.Streams.Stream_IO.Close (F);
             end if;
+            Free (Text);
             raise Parse_Error with Path & ": cannot be read";
       end;
+      return Result : constant Document := Parse_Text (Text.all, Path) do
+         Free (Text);
+      end return;
+   exception
+      when others =>
+         Free (Text);
+         raise;
    end Parse_File;
 
    ---------------

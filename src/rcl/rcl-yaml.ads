@@ -32,6 +32,11 @@ package RCL.YAML is
 
    subtype Node is Positive;
 
+   Max_Depth : constant := 100;
+   --  Documents nested deeper than this (each collection and each block value counts
+   --  one level) are a Parse_Error: bounds the recursion of the parser and of every
+   --  reader of a Document, whatever the input.
+
    function Parse (Text : String; Source : String := "<input>") return Document;
    --  An empty text (or only comments) gives a Null_Value root.
 

@@ -2,10 +2,13 @@
 --     sancta plan FILE ...     task allocation (see sancta plan --help)
 --     sancta check FILE        validate a configuration and show its wiring
 --     sancta run FILE ...      run agents of a configuration
+--     sancta team [MISSION]    the team mission demo over DDS
+--     sancta team-agent ...    one team node per process
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
 pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
+with Ada.Exceptions;
 with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Run;
@@ -17,17 +20,19 @@ procedure Sancta_CLI is
    use Ada.Command_Line;
    use Ada.Text_IO;
 
-   procedure Usage is
+   procedure Usage (To : File_Type := Standard_Output) is
+      --  To: standard error when the usage answers a mistake.
    begin
-      Put_Line ("usage: sancta COMMAND [ARGS...]");
-      Put_Line ("commands:");
+      Put_Line (To, "usage: sancta COMMAND [ARGS...]");
+      Put_Line (To, "commands:");
       --  One line per subcommand, in the order below.
-      Put_Line ("  help             this text");
-      Put_Line ("  check FILE       validate a configuration, print and draw its wiring");
-      Put_Line ("  run FILE         run agents: --agent ID | --all [--set NAME=VALUE] [--for S]");
-      Put_Line ("  plan FILE ...    task allocation (sancta plan --help)");
-      Put_Line ("  team [MISSION]   team mission demo over DDS (sancta team --help)");
-      Put_Line ("  team-agent ...   one team node per process (sancta team-agent --help)");
+      Put_Line (To, "  help             this text");
+      Put_Line (To, "  check FILE       validate a configuration, print and draw its wiring");
+      Put_Line (To, "  run FILE         run agents: --agent ID | --all [--set NAME=VALUE]"
+                & " [--for S]");
+      Put_Line (To, "  plan FILE ...    task allocation (sancta plan --help)");
+      Put_Line (To, "  team [MISSION]   team mission demo over DDS (sancta team --help)");
+      Put_Line (To, "  team-agent ...   one team node per process (sancta team-agent --help)");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -35,7 +40,12 @@ begin
    if Command = "" or else Command = "help" or else Command = "--help"
      or else Command = "-h"
    then
-      Usage;
+      if Command = "" then
+         Usage (Standard_Error);
+         Set_Exit_Status (2);  --  As for any other usage error.
+      else
+         Usage;
+      end if;
    elsif Command = "check" then
       Sancta.Commands.Check.Run;
    elsif Command = "run" then
@@ -48,7 +58,13 @@ begin
       Sancta.Commands.Team_Agent.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
-      Usage;
+      Usage (Standard_Error);
       Set_Exit_Status (Failure);
    end if;
+exception
+   when E : others =>
+      --  Last resort: a bug, reported in one line instead of a traceback.
+      Put_Line (Standard_Error, "sancta: internal error: " & Ada.Exceptions.Exception_Name (E)
+                & ": " & Ada.Exceptions.Exception_Message (E));
+      Set_Exit_Status (70);
 end Sancta_CLI;

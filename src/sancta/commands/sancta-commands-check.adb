@@ -1,6 +1,7 @@
 with Ada.Command_Line;
 with Ada.Directories;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with GNAT.OS_Lib;
@@ -100,6 +101,13 @@ package body Sancta.Commands.Check is
             end;
             GNAT.OS_Lib.Free (Tool);
          end if;
+      exception
+         when E : Ada.IO_Exceptions.Name_Error | Ada.IO_Exceptions.Use_Error =>
+            GNAT.OS_Lib.Free (Tool);
+            Put_Line (Standard_Error, "sancta check: --output " & Dir
+                      & ": cannot write the wiring picture: "
+                      & Ada.Exceptions.Exception_Message (E));
+            Set_Exit_Status (Failure);
       end;
    exception
       when E : Options.Usage_Error =>

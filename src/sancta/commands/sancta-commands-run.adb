@@ -1,5 +1,6 @@
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Commands.Options;
@@ -80,9 +81,12 @@ package body Sancta.Commands.Run is
             elsif A = "--for" and then Has then
                begin
                   Limit := Duration'Value (Argument (I + 1));
+                  if Limit < 0.0 then
+                     raise Constraint_Error;  --  Not "forever": a mistake.
+                  end if;
                exception
                   when Constraint_Error =>
-                     raise Options.Usage_Error with "--for expects seconds, found '"
+                     raise Options.Usage_Error with "--for expects seconds (>= 0), found '"
                        & Argument (I + 1) & "'";
                end;
                I := I + 1;
@@ -94,7 +98,13 @@ package body Sancta.Commands.Run is
                Set_Level (Argument (I + 1));
                I := I + 1;
             elsif A = "--log" and then Has then
-               Sancta.Logging.Open_File (Argument (I + 1));
+               begin
+                  Sancta.Logging.Open_File (Argument (I + 1));
+               exception
+                  when E : Ada.IO_Exceptions.Name_Error | Ada.IO_Exceptions.Use_Error =>
+                     raise Options.Usage_Error with "--log: cannot create the file: "
+                       & Ada.Exceptions.Exception_Message (E);
+               end;
                I := I + 1;
             elsif A in "-h" | "--help" then
                Put_Line (Usage_Text);

@@ -59,7 +59,8 @@ package body Sancta.Runtime.XML_Trees is
    begin
       while Line in 1 .. Natural (Handler.Lines.Length) loop
          declare
-            Text : constant String := Handler.Lines (Line);
+            Text : String renames Handler.Lines (Line);
+            --  No copy: a one-line file must not cost its length per element.
          begin
             Column := Integer'Min (Column, Text'Length);
             while Column >= 1 loop
@@ -75,6 +76,8 @@ package body Sancta.Runtime.XML_Trees is
       return To_Position (Handler.File, Tag_End);
    end Tag_Start;
 
+   Parse_Failed : exception;
+
    overriding procedure Start_Element
      (Handler    : in out Builder;
       NS         : Sax.Utils.XML_NS;
@@ -85,6 +88,12 @@ package body Sancta.Runtime.XML_Trees is
       New_Element : Element;
       Id : Element_Id;
    begin
+      if Natural (Handler.Stack.Length) >= Max_Depth then
+         Handler.Error_Where := Tag_Start (Handler, Handler.Current_Location);
+         Handler.Error_Text := To_Unbounded_String
+           ("elements nested deeper than" & Natural'Image (Max_Depth));
+         raise Parse_Failed;
+      end if;
       New_Element.Name := To_Unbounded_String (Sax.Symbols.Get (Local_Name).all);
       New_Element.Where := Tag_Start (Handler, Handler.Current_Location);
       for I in 1 .. Sax.Readers.Get_Length (Atts) loop
@@ -112,8 +121,6 @@ package body Sancta.Runtime.XML_Trees is
    begin
       Handler.Stack.Delete_Last;
    end End_Element;
-
-   Parse_Failed : exception;
 
    function Strip_Location (Text : String) return String is
       --  XML/Ada starts its messages with "[file]:line:column: ": drop it,
@@ -162,6 +169,10 @@ package body Sancta.Runtime.XML_Trees is
       if not Ada.Directories.Exists (File) then
          Fail (Start, "cannot open: no such file");
          return;
+      elsif Ada.Directories."/=" (Ada.Directories.Kind (File), Ada.Directories.Ordinary_File)
+      then
+         Fail (Start, "cannot read: not a regular file");
+         return;
       end if;
       Handler.File := To_Unbounded_String (File);
       declare
@@ -177,7 +188,7 @@ package body Sancta.Runtime.XML_Trees is
             if Ada.Text_IO.Is_Open (F) then
                Ada.Text_IO.Close (F);
             end if;
-            Fail (Start, "cannot read: " & Ada.Exceptions.Exception_Message (E));
+            Fail (Start, "cannot read: " & Ada.Exceptions.Exception_Name (E));
             return;
       end;
       Input_Sources.File.Open (File, Input);

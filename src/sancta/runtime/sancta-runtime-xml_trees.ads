@@ -44,6 +44,9 @@ package Sancta.Runtime.XML_Trees is
       --  "malformed XML: ...", "cannot open: ...", "cannot read: ...".
    end record;
 
+   Max_Depth : constant := 100;
+   --  Elements nested deeper than this are an error (bounds every recursive reader).
+
    procedure Load (File : String; Result : out Tree; Error : out Load_Error);
    --  Parse File; on failure Error says where and why (Result is empty).
 

@@ -44,10 +44,10 @@ package body Sancta.Simulation.Images is
       use Ada.Streams.Stream_IO;
       F : File_Type;
    begin
-      if not Ada.Directories.Exists (File_Name)
-        or else Ada.Directories.Kind (File_Name) /= Ada.Directories.Ordinary_File
-      then
+      if not Ada.Directories.Exists (File_Name) then
          raise Format_Error with File_Name & ": no such file";
+      elsif Ada.Directories.Kind (File_Name) /= Ada.Directories.Ordinary_File then
+         raise Format_Error with File_Name & ": not a regular file";
       end if;
       declare
          Size : constant Natural := Natural (Ada.Directories.Size (File_Name));

@@ -410,7 +410,13 @@ package body Sancta.Simulation.Map_Files is
    function Load_World (File_Name : String) return Worlds.World is
       Ext : constant String :=
         Ada.Characters.Handling.To_Lower (Ada.Directories.Extension (File_Name));
+      use type Ada.Directories.File_Kind;
    begin
+      if Ada.Directories.Exists (File_Name)
+        and then Ada.Directories.Kind (File_Name) /= Ada.Directories.Ordinary_File
+      then
+         raise Format_Error with File_Name & ": not a regular file";
+      end if;
       if Ext = "yaml" or else Ext = "yml" then
          return Load_Map (File_Name);
       else

@@ -1,5 +1,6 @@
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
@@ -193,6 +194,17 @@ package body Sancta.Simulation.Render_Tool is
          Set_Exit_Status (Failure);
       when E : Format_Error | Constraint_Error =>
          Put_Line (Standard_Error, "sancta-render: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+      when E : Ada.IO_Exceptions.Name_Error | Ada.IO_Exceptions.Use_Error =>
+         --  An output file that cannot be created; GNAT's message names it.
+         Put_Line (Standard_Error, "sancta-render: cannot write: "
+                   & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+      when E : others =>
+         --  Last resort: a bug, reported in one line instead of a traceback.
+         Put_Line (Standard_Error, "sancta-render: internal error: "
+                   & Ada.Exceptions.Exception_Name (E) & ": "
+                   & Ada.Exceptions.Exception_Message (E));
          Set_Exit_Status (Failure);
    end Run;
 

@@ -135,6 +135,36 @@ package body RCL.YAML.Tests is
       Assert (Error_Of ("a: http://x.y/z") = "", "':' inside a plain scalar is fine");
    end Errors;
 
+   procedure Hostile_Input (Unused : in out Fixture) is
+      --  Bounded nesting (no stack overflow), files that are not files, slices.
+      Deep  : constant String := [1 .. 5_000 => '['] & [1 .. 5_000 => ']'];
+      Fine  : constant String := [1 .. 90 => '['] & [1 .. 90 => ']'];
+      Text  : constant String := "xxa: [1, 2]";
+   begin
+      Assert (Contains (Error_Of (Deep), "t.yaml:1:" & Ada.Strings.Fixed.Trim
+                (Natural'Image (Max_Depth), Ada.Strings.Left) & ": collections nested deeper"),
+              "deep nesting: " & Error_Of (Deep));
+      Assert (Error_Of (Fine) = "", "90 levels are fine: " & Error_Of (Fine));
+      declare
+         D : constant Document := Parse (Text (3 .. Text'Last), "s.yaml");
+      begin
+         Assert (D.Length (D.Find (D.Root, "a")) = 2 and then D.Where (D.Root) = "s.yaml:1:1",
+                 "a slice not indexed from 1 parses the same");
+      end;
+      begin
+         declare
+            D : constant Document := Parse_File (".");
+            pragma Unreferenced (D);
+         begin
+            Assert (False, "a directory parsed");
+         end;
+      exception
+         when E : Parse_Error =>
+            Assert (Ada.Exceptions.Exception_Message (E) = ".: not a regular file",
+                    Ada.Exceptions.Exception_Message (E));
+      end;
+   end Hostile_Input;
+
    procedure Messages_From_YAML (Unused : in out Fixture) is
       use ROSIDL.Typesupport;
       Odom : constant ROSIDL.Dynamic.Message := RCL.YAML.Messages.From_YAML
@@ -290,6 +320,7 @@ package body RCL.YAML.Tests is
       Result.Add_Test (Caller.Create ("yaml: block and flow structures", Block_Structures'Access));
       Result.Add_Test (Caller.Create ("yaml: scalar resolution", Classification'Access));
       Result.Add_Test (Caller.Create ("yaml: errors with positions", Errors'Access));
+      Result.Add_Test (Caller.Create ("yaml: hostile input", Hostile_Input'Access));
       Result.Add_Test (Caller.Create ("yaml: messages from YAML", Messages_From_YAML'Access));
       Result.Add_Test (Caller.Create ("graph: name mangling", Mangling'Access));
       Result.Add_Test (Caller.Create ("graph: ros_discovery_info decoding",

@@ -473,8 +473,14 @@ package body ROSIDL.CDR.Samples is
          end if;
       end loop;
       if N mod 2 /= 0 then
-         raise Constraint_Error with "odd number of hex digits";
+         raise Constraint_Error with "odd number of hex digits:" & Natural'Image (N);
       end if;
+      for I in 1 .. N loop
+         if Clean (I) not in '0' .. '9' | 'a' .. 'f' | 'A' .. 'F' then
+            raise Constraint_Error with "'" & Clean (I) & "' is not a hex digit (digit"
+              & Natural'Image (I) & ")";
+         end if;
+      end loop;
       return Result : Stream_Element_Array (1 .. Stream_Element_Offset (N / 2)) do
          for I in Result'Range loop
             Result (I) := Stream_Element'Value

@@ -30,6 +30,9 @@ procedure CDR_Tool is
    use Ada.Text_IO;
    use ROSIDL.CDR;
 
+   Bad_Argument : exception;
+   --  Its message says which argument is wrong and why.
+
    procedure Put_Image (Text : String) is
    begin
       --  Text ends with LF: written so that Text_IO adds no terminator.
@@ -65,8 +68,14 @@ procedure CDR_Tool is
    end Put_Types;
 
    procedure Put_Random (Seed_Text : String) is
-      Seed : ROSIDL.UInt64 := ROSIDL.UInt64'Value (Seed_Text);
+      Seed : ROSIDL.UInt64;
    begin
+      begin
+         Seed := ROSIDL.UInt64'Value (Seed_Text);
+      exception
+         when Constraint_Error =>
+            raise Bad_Argument with "SEED '" & Seed_Text & "' is not an unsigned 64-bit integer";
+      end;
       for Support of Samples.All_Types loop
          Put_Line (ROSIDL.Typesupport.DDS_Type_Name (Support) & " "
                    & Samples.Hex (Encode (Samples.Random_Message (Support, Seed,
@@ -81,20 +90,24 @@ procedure CDR_Tool is
       while not End_Of_File loop
          declare
             Line  : constant String := Get_Line;
-            Space : constant Natural := Ada.Strings.Fixed.Index (Line, " ");
+            Found_Space : constant Natural := Ada.Strings.Fixed.Index (Line, " ");
+            Space : constant Natural :=
+              (if Found_Space = 0 then Line'Last + 1 else Found_Space);
+            --  A line without hex is a name with no data (a Decode_Error).
             Name  : constant String := Line (Line'First .. Space - 1);
             Found : Boolean := False;
          begin
             for Support of Types loop
                if ROSIDL.Typesupport.DDS_Type_Name (Support) = Name then
                   Found := True;
-                  declare
-                     Msg : constant ROSIDL.Dynamic.Message :=
-                       Decode (Support, Samples.From_Hex (Line (Space + 1 .. Line'Last)));
                   begin
-                     Put_Line (Name & " " & Samples.Hex (Encode (Msg, Little_Endian)));
+                     Put_Line (Name & " " & Samples.Hex
+                       (Encode (Decode (Support,
+                                        Samples.From_Hex (Line (Space + 1 .. Line'Last))),
+                                Little_Endian)));
                   exception
-                     when E : ROSIDL.Decode_Error | ROSIDL.Encode_Error =>
+                     when E : ROSIDL.Decode_Error | ROSIDL.Encode_Error | Constraint_Error =>
+                        --  Constraint_Error: From_Hex's bad hex text.
                         Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
                   end;
                   exit;
@@ -106,6 +119,21 @@ procedure CDR_Tool is
          end;
       end loop;
    end Reencode;
+
+   procedure Check_Sample (Name : String) is
+   begin
+      if not Samples.Names.Contains (Name) then
+         raise Bad_Argument with "unknown sample '" & Name & "' (cdr_tool list shows them)";
+      end if;
+   end Check_Sample;
+
+   function Hex_Argument (Text : String) return Ada.Streams.Stream_Element_Array is
+   begin
+      return Samples.From_Hex (Text);
+   exception
+      when E : Constraint_Error =>
+         raise Bad_Argument with "HEX: " & Ada.Exceptions.Exception_Message (E);
+   end Hex_Argument;
 
    procedure Usage is
    begin
@@ -126,19 +154,23 @@ begin
       for N of Samples.Names loop
          Put_Line (N);
       end loop;
-   elsif Argument_Count in 2 .. 3 and then Argument (1) = "encode" then
+   elsif Argument_Count in 2 .. 3 and then Argument (1) = "encode"
+     and then (Argument_Count = 2 or else Argument (3) = "be")
+   then
+      Check_Sample (Argument (2));
       Put_Line (Samples.Hex
         (Samples.Encode_Sample
            (Argument (2),
             (if Argument_Count = 3 and then Argument (3) = "be" then Big_Endian
              else Little_Endian))));
    elsif Argument_Count = 2 and then Argument (1) = "image" then
+      Check_Sample (Argument (2));
       Put_Image (ROSIDL.Dynamic.Image (Samples.Make (Argument (2))));
    elsif Argument_Count = 3 and then Argument (1) = "decode" then
+      Check_Sample (Argument (2));
       declare
          Msg  : ROSIDL.Dynamic.Message := Samples.Make (Argument (2));
-         Data : constant Ada.Streams.Stream_Element_Array :=
-           Samples.From_Hex (Argument (3));
+         Data : constant Ada.Streams.Stream_Element_Array := Hex_Argument (Argument (3));
          Header : Request_Header;
       begin
          if Samples.Is_Request (Argument (2)) then
@@ -157,4 +189,13 @@ begin
    else
       Usage;
    end if;
+exception
+   when E : Bad_Argument =>
+      Put_Line (Standard_Error, "cdr_tool: " & Ada.Exceptions.Exception_Message (E));
+      Set_Exit_Status (Failure);
+   when E : others =>
+      --  Last resort: a bug, reported in one line instead of a traceback.
+      Put_Line (Standard_Error, "cdr_tool: internal error: " & Ada.Exceptions.Exception_Name (E)
+                & ": " & Ada.Exceptions.Exception_Message (E));
+      Set_Exit_Status (Failure);
 end CDR_Tool;

@@ -6,6 +6,7 @@ with Ada.Exceptions;
 with Ada.Text_IO;
 with RCL;
 with RCL.Contexts;
+with RCL.Names;
 with ROSIDL;
 with Rclada_Commands;
 
@@ -52,7 +53,13 @@ exception
                                           | "interface" then Verb else "")));
       CL.Set_Exit_Status (2);
    when E : Command_Error | RCL.ROS_Exception | RCL.RCL_Timeout | ROSIDL.Unknown_Type
-      | ROSIDL.Definition_Error =>
+      | ROSIDL.Definition_Error | RCL.Names.Name_Error =>
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       CL.Set_Exit_Status (1);
+   when E : others =>
+      --  Last resort: a bug, reported in one line instead of a traceback.
+      Put_Line (Standard_Error, "rclada: internal error: "
+                & Ada.Exceptions.Exception_Name (E) & ": "
+                & Ada.Exceptions.Exception_Message (E));
+      CL.Set_Exit_Status (70);
 end Rclada;

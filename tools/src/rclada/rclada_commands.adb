@@ -1,5 +1,6 @@
 with Ada.Characters.Latin_1;
 with Ada.Exceptions;
+with Ada.Float_Text_IO;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
@@ -100,13 +101,39 @@ package body Rclada_Commands is
       return Default;
    end Option;
 
-   function Number_Option (Args : Arguments; Name : String; Default : String) return Float is
+   function Number_Option
+     (Args : Arguments; Name : String; Default : String;
+      Low  : Float := 0.0; High : Float := 1.0e6) return Float
+   is
+      --  The value of option Name (Default when absent); Usage_Error unless it is a
+      --  number in Low .. High (so no infinity, NaN or value the caller cannot convert).
       Image : constant String := Option (Args, Name, Default);
+      Value : Float;
+
+      function Bound (X : Float) return String is
+         Text : String (1 .. 20);
+      begin
+         if X = Float'Floor (X) and then abs X < 1.0e9 then
+            return Ada.Strings.Fixed.Trim (Long_Long_Integer (X)'Image, Ada.Strings.Left);
+         end if;
+         Ada.Float_Text_IO.Put (Text, X, Aft => 3, Exp => 0);
+         return Ada.Strings.Fixed.Trim (Text, Ada.Strings.Left);
+      end Bound;
    begin
-      return Float'Value (Image);
-   exception
-      when Constraint_Error =>
-         raise Usage_Error with Name & ": '" & Image & "' is not a number";
+      begin
+         Value := Float'Value (Image);
+         if not Value'Valid then
+            raise Constraint_Error;  --  An infinity or NaN.
+         end if;
+      exception
+         when Constraint_Error =>
+            raise Usage_Error with Name & ": '" & Image & "' is not a number";
+      end;
+      if not (Value >= Low and then Value <= High) then
+         raise Usage_Error with Name & ": " & Image & " is out of range ("
+           & Bound (Low) & " .. " & Bound (High) & ")";
+      end if;
+      return Value;
    end Number_Option;
 
    Valued_Options : constant array (1 .. 7) of Unbounded_String :=
@@ -536,7 +563,7 @@ package body Rclada_Commands is
       Support   : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Name);
       Limit     : constant Natural :=
         (if Has_Flag (Args, "--once", "--once") then 1
-         else Natural (Number_Option (Args, "--count", "0")));
+         else Natural (Number_Option (Args, "--count", "0", High => 1.0e9)));
       Seen      : Natural := 0;
       QoS       : constant RCL.QoS.Profile :=
         (if Has_Flag (Args, "--best-effort", "--best-effort") then RCL.QoS.Sensor_Data
@@ -571,10 +598,10 @@ package body Rclada_Commands is
    procedure Topic_Pub (Topic, Type_Arg, Text : String; Args : Arguments) is
       Support : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Arg);
       Msg     : constant ROSIDL.Dynamic.Message := Message_From (Support, Text);
-      Rate    : constant Float := Number_Option (Args, "--rate", "1.0");
+      Rate    : constant Float := Number_Option (Args, "--rate", "1.0", Low => 0.001);
       Times   : constant Natural :=
         (if Has_Flag (Args, "-1", "--once") then 1
-         else Natural (Number_Option (Args, "--times", "0")));
+         else Natural (Number_Option (Args, "--times", "0", High => 1.0e9)));
       Node    : RCL.Nodes.Node := Tool_Node;
       Pub     : constant RCL.Publishers.Publisher :=
         Node.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic);
@@ -617,8 +644,10 @@ package body Rclada_Commands is
       Type_Name : constant String :=
         (if Type_Arg /= "" then Resolve_Message_Type (Type_Arg) else Topic_Type (Topic, Args));
       Support   : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Name);
-      Window    : constant Positive := Positive (Number_Option (Args, "--window", "10000"));
-      Reports   : constant Natural := Natural (Number_Option (Args, "--count", "0"));
+      Window    : constant Positive :=
+        Positive (Number_Option (Args, "--window", "10000", 1.0, 1.0e7));
+      Reports   : constant Natural :=
+        Natural (Number_Option (Args, "--count", "0", High => 1.0e9));
       Reported  : Natural := 0;
       Node      : RCL.Nodes.Node := Tool_Node;
       Times     : array (1 .. Window) of Ada.Real_Time.Time;
