@@ -40,6 +40,8 @@ cleanup() {
 trap cleanup EXIT
 
 ip netns add "$hub" 2>/dev/null || skip "creating a network namespace is not permitted here"
+probe=$(ip netns exec "$hub" true 2>&1) \
+   || skip "running a program in a network namespace is not possible here: $probe"
 ip -n "$hub" link add br0 type bridge || exit 1
 ip -n "$hub" link set br0 up
 ip -n "$hub" link set lo up
