@@ -1,7 +1,9 @@
 """The `sancta check` and `sancta run` commands as a user runs them: exit
 statuses, positioned diagnostics, the wiring outputs, Ctrl-C with the
 components stopped in reverse start order, a watchdog abort."""
+import os
 import re
+import select
 import signal
 import subprocess
 import time
@@ -39,9 +41,21 @@ def test_run_stops_on_ctrl_c_in_reverse_order():
     proc = subprocess.Popen([SANCTA, "run", str(SHARE / "team.xml"), "--all",
                              "--level", "Ari=debug"], cwd=ps.REPO,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    time.sleep(1.5)
+    # Ctrl-C only once both agents have started (a fixed delay is too short
+    # on a loaded machine); give up after 30 s. Raw reads: select() does not
+    # see what a text stream has already buffered.
+    seen, deadline = b"", time.monotonic() + 30.0
+    fd = proc.stdout.fileno()
+    while not all(f"agent {a} started".encode() in seen for a in ("Ari", "Ben")):
+        ready, _, _ = select.select([fd], [], [], max(deadline - time.monotonic(), 0))
+        chunk = os.read(fd, 65536) if ready else b""
+        if not chunk:
+            proc.kill()
+            raise AssertionError("agents did not start in time:\n" + seen.decode()
+                                 + ps.finish(proc))
+        seen += chunk
     proc.send_signal(signal.SIGINT)
-    out = ps.finish(proc)
+    out = seen.decode() + ps.finish(proc)
     assert proc.returncode == 0, out
     assert "stopping: interrupted (Ctrl-C)" in out, out
     started = re.findall(r"\[Ari\] started (\S+)", out)
