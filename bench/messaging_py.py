@@ -8,42 +8,21 @@ import os
 import statistics
 import sys
 import time
-from dataclasses import dataclass, field
+from pathlib import Path
 
 from cyclonedds.core import Policy, Qos, ReadCondition, SampleState, ViewState, InstanceState
 from cyclonedds.core import WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.annotations import final
-from cyclonedds.idl.types import sequence, uint8, uint32
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "interop"))
+from ros_types import MultiArrayLayout_, UInt8MultiArray_  # noqa: E402
+
 STOP = 0xFFFFFFFF
-
-
-@final
-@dataclass
-class MultiArrayDimension_(IdlStruct, typename="std_msgs::msg::dds_::MultiArrayDimension_"):
-    label: str = ""
-    size: uint32 = 0
-    stride: uint32 = 0
-
-
-@final
-@dataclass
-class MultiArrayLayout_(IdlStruct, typename="std_msgs::msg::dds_::MultiArrayLayout_"):
-    dim: sequence[MultiArrayDimension_] = field(default_factory=list)
-    data_offset: uint32 = 0
-
-
-@final
-@dataclass
-class UInt8MultiArray_(IdlStruct, typename="std_msgs::msg::dds_::UInt8MultiArray_"):
-    layout: MultiArrayLayout_ = field(default_factory=MultiArrayLayout_)
-    data: sequence[uint8] = field(default_factory=list)
 
 
 def qos(keep_all):

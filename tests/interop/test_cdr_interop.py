@@ -9,7 +9,7 @@ other's bytes. The Ada side is driven through ``bin/cdr_tool`` whose samples
 """
 import os
 import subprocess
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import pytest
 from cyclonedds.idl import IdlStruct, make_idl_struct
@@ -17,133 +17,20 @@ from cyclonedds.idl._support import Endianness
 from cyclonedds.idl.annotations import final
 import cyclonedds.idl.types as t
 
+from ros_types import (Float32MultiArray_, Float64MultiArray_, Header_, LaserScan_,
+                       MapMetaData_, MultiArrayDimension_, MultiArrayLayout_,
+                       OccupancyGrid_, Odometry_, Point_, Pose_, PoseWithCovariance_,
+                       Quaternion_, String_, Time_, Twist_, TwistWithCovariance_, Vector3_,
+                       dds)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TOOL = os.path.join(ROOT, "bin", "cdr_tool")
-
-
-def ros(pkg, name, ns="msg"):
-    return f"{pkg}::{ns}::dds_::{name}_"
-
-
-@final
-@dataclass
-class String(IdlStruct, typename=ros("std_msgs", "String")):
-    data: str = ""
-
-
-@final
-@dataclass
-class Time(IdlStruct, typename=ros("builtin_interfaces", "Time")):
-    sec: t.int32 = 0
-    nanosec: t.uint32 = 0
-
-
-@final
-@dataclass
-class Header(IdlStruct, typename=ros("std_msgs", "Header")):
-    stamp: Time = field(default_factory=Time)
-    frame_id: str = ""
-
-
-@final
-@dataclass
-class LaserScan(IdlStruct, typename=ros("sensor_msgs", "LaserScan")):
-    header: Header = field(default_factory=Header)
-    angle_min: t.float32 = 0.0
-    angle_max: t.float32 = 0.0
-    angle_increment: t.float32 = 0.0
-    time_increment: t.float32 = 0.0
-    scan_time: t.float32 = 0.0
-    range_min: t.float32 = 0.0
-    range_max: t.float32 = 0.0
-    ranges: t.sequence[t.float32] = field(default_factory=list)
-    intensities: t.sequence[t.float32] = field(default_factory=list)
-
-
-@final
-@dataclass
-class Point(IdlStruct, typename=ros("geometry_msgs", "Point")):
-    x: t.float64 = 0.0
-    y: t.float64 = 0.0
-    z: t.float64 = 0.0
-
-
-@final
-@dataclass
-class Quaternion(IdlStruct, typename=ros("geometry_msgs", "Quaternion")):
-    x: t.float64 = 0.0
-    y: t.float64 = 0.0
-    z: t.float64 = 0.0
-    w: t.float64 = 1.0
-
-
-@final
-@dataclass
-class Pose(IdlStruct, typename=ros("geometry_msgs", "Pose")):
-    position: Point = field(default_factory=Point)
-    orientation: Quaternion = field(default_factory=Quaternion)
-
-
-@final
-@dataclass
-class PoseWithCovariance(IdlStruct, typename=ros("geometry_msgs", "PoseWithCovariance")):
-    pose: Pose = field(default_factory=Pose)
-    covariance: t.array[t.float64, 36] = field(default_factory=lambda: [0.0] * 36)
-
-
-@final
-@dataclass
-class Vector3(IdlStruct, typename=ros("geometry_msgs", "Vector3")):
-    x: t.float64 = 0.0
-    y: t.float64 = 0.0
-    z: t.float64 = 0.0
-
-
-@final
-@dataclass
-class Twist(IdlStruct, typename=ros("geometry_msgs", "Twist")):
-    linear: Vector3 = field(default_factory=Vector3)
-    angular: Vector3 = field(default_factory=Vector3)
-
-
-@final
-@dataclass
-class TwistWithCovariance(IdlStruct, typename=ros("geometry_msgs", "TwistWithCovariance")):
-    twist: Twist = field(default_factory=Twist)
-    covariance: t.array[t.float64, 36] = field(default_factory=lambda: [0.0] * 36)
-
-
-@final
-@dataclass
-class Odometry(IdlStruct, typename=ros("nav_msgs", "Odometry")):
-    header: Header = field(default_factory=Header)
-    child_frame_id: str = ""
-    pose: PoseWithCovariance = field(default_factory=PoseWithCovariance)
-    twist: TwistWithCovariance = field(default_factory=TwistWithCovariance)
-
-
-@final
-@dataclass
-class MapMetaData(IdlStruct, typename=ros("nav_msgs", "MapMetaData")):
-    map_load_time: Time = field(default_factory=Time)
-    resolution: t.float32 = 0.0
-    width: t.uint32 = 0
-    height: t.uint32 = 0
-    origin: Pose = field(default_factory=Pose)
-
-
-@final
-@dataclass
-class OccupancyGrid(IdlStruct, typename=ros("nav_msgs", "OccupancyGrid")):
-    header: Header = field(default_factory=Header)
-    info: MapMetaData = field(default_factory=MapMetaData)
-    data: t.sequence[t.int8] = field(default_factory=list)
 
 
 @final
 @dataclass
 class AddTwoIntsRequestWithHeader(
-        IdlStruct, typename=ros("example_interfaces", "AddTwoInts_Request", "srv")):
+        IdlStruct, typename=dds("example_interfaces", "AddTwoInts_Request", "srv")):
     # The 16-byte request header (guid, sequence) rmw_cyclonedds puts
     # before the body, declared as members so that the layout matches.
     guid: t.uint64 = 0
@@ -154,7 +41,7 @@ class AddTwoIntsRequestWithHeader(
 
 @final
 @dataclass
-class Everything(IdlStruct, typename=ros("cdr_test_msgs", "Everything")):
+class Everything(IdlStruct, typename=dds("cdr_test_msgs", "Everything")):
     b: bool = False
     by: t.byte = 0
     c: t.char = "\0"
@@ -174,7 +61,7 @@ class Everything(IdlStruct, typename=ros("cdr_test_msgs", "Everything")):
 
 @final
 @dataclass
-class Arrays(IdlStruct, typename=ros("cdr_test_msgs", "Arrays")):
+class Arrays(IdlStruct, typename=dds("cdr_test_msgs", "Arrays")):
     fixed_i32: t.array[t.int32, 3]
     fixed_f64: t.array[t.float64, 2]
     fixed_strings: t.array[str, 2]
@@ -182,45 +69,16 @@ class Arrays(IdlStruct, typename=ros("cdr_test_msgs", "Arrays")):
     bounded_f32: t.sequence[t.float32, 3]
     bounded_strings: t.sequence[t.bounded_str[8], 2]
     seq_i16: t.sequence[t.int16]
-    points: t.array[Point, 2]
-    bounded_points: t.sequence[Point, 3]
+    points: t.array[Point_, 2]
+    bounded_points: t.sequence[Point_, 3]
     flags: t.sequence[bool]
     tail: t.uint8
 
 
 @final
 @dataclass
-class Texts(IdlStruct, typename=ros("cdr_test_msgs", "Texts")):
+class Texts(IdlStruct, typename=dds("cdr_test_msgs", "Texts")):
     texts: t.sequence[str]
-
-
-@final
-@dataclass
-class MultiArrayDimension(IdlStruct, typename=ros("std_msgs", "MultiArrayDimension")):
-    label: str = ""
-    size: t.uint32 = 0
-    stride: t.uint32 = 0
-
-
-@final
-@dataclass
-class MultiArrayLayout(IdlStruct, typename=ros("std_msgs", "MultiArrayLayout")):
-    dim: t.sequence[MultiArrayDimension] = field(default_factory=list)
-    data_offset: t.uint32 = 0
-
-
-@final
-@dataclass
-class Float64MultiArray(IdlStruct, typename=ros("std_msgs", "Float64MultiArray")):
-    layout: MultiArrayLayout = field(default_factory=MultiArrayLayout)
-    data: t.sequence[t.float64] = field(default_factory=list)
-
-
-@final
-@dataclass
-class Float32MultiArray(IdlStruct, typename=ros("std_msgs", "Float32MultiArray")):
-    layout: MultiArrayLayout = field(default_factory=MultiArrayLayout)
-    data: t.sequence[t.float32] = field(default_factory=list)
 
 
 # Strings YAML must quote or escape (the same list as the Ada sample "texts").
@@ -234,33 +92,33 @@ TEXTS = ["", "true", "123", "1.5", "-x", "a: b", "#c", " lead", "trail ", "it's"
 
 
 def header(sec, nanosec, frame):
-    return Header(stamp=Time(sec=sec, nanosec=nanosec), frame_id=frame)
+    return Header_(stamp=Time_(sec=sec, nanosec=nanosec), frame_id=frame)
 
 
 SAMPLES = {
-    "string_hi": String(data="hi"),
+    "string_hi": String_(data="hi"),
     "header": header(1_700_000_000, 123_456_789, "base_link"),
-    "laser_scan": LaserScan(
+    "laser_scan": LaserScan_(
         header=header(10, 500, "laser"), angle_min=-1.5, angle_max=1.5,
         angle_increment=0.25, time_increment=0.001, scan_time=0.1,
         range_min=0.1, range_max=30.0,
         ranges=[i * 0.5 for i in range(1, 14)],
         intensities=[100.0 + i for i in range(1, 14)]),
-    "odometry": Odometry(
+    "odometry": Odometry_(
         header=header(5, 6, "odom"), child_frame_id="base_link",
-        pose=PoseWithCovariance(
-            pose=Pose(position=Point(x=1.0, y=2.0, z=3.0),
-                      orientation=Quaternion(x=0.0, y=0.0, z=0.5, w=0.75)),
+        pose=PoseWithCovariance_(
+            pose=Pose_(position=Point_(x=1.0, y=2.0, z=3.0),
+                      orientation=Quaternion_(x=0.0, y=0.0, z=0.5, w=0.75)),
             covariance=[i * 0.125 for i in range(36)]),
-        twist=TwistWithCovariance(
-            twist=Twist(linear=Vector3(x=0.5), angular=Vector3(z=0.25)),
+        twist=TwistWithCovariance_(
+            twist=Twist_(linear=Vector3_(x=0.5), angular=Vector3_(z=0.25)),
             covariance=[-float(i) for i in range(36)])),
-    "occupancy_grid": OccupancyGrid(
+    "occupancy_grid": OccupancyGrid_(
         header=header(1, 2, "map"),
-        info=MapMetaData(
-            map_load_time=Time(sec=3, nanosec=4), resolution=0.05, width=4, height=3,
-            origin=Pose(position=Point(x=-1.0, y=-2.0, z=0.0),
-                        orientation=Quaternion(w=1.0))),
+        info=MapMetaData_(
+            map_load_time=Time_(sec=3, nanosec=4), resolution=0.05, width=4, height=3,
+            origin=Pose_(position=Point_(x=-1.0, y=-2.0, z=0.0),
+                        orientation=Quaternion_(w=1.0))),
         data=[(i % 3) * 50 - 1 for i in range(1, 13)]),
     "add_two_ints_request": AddTwoIntsRequestWithHeader(
         guid=0x0102030405060708, seq=42, a=2, b=3),
@@ -273,14 +131,14 @@ SAMPLES = {
         fixed_i32=[-1, 0, 1], fixed_f64=[0.5, -0.25], fixed_strings=["a", "bcd"],
         bounded_u8=[1, 2, 3], bounded_f32=[1.5], bounded_strings=["x", "yz"],
         seq_i16=[7, -7, 300, -300, 0],
-        points=[Point(x=1.0, y=2.0, z=3.0), Point(x=-1.0, y=-2.0, z=-3.0)],
-        bounded_points=[Point(x=0.5, y=0.25, z=0.125)],
+        points=[Point_(x=1.0, y=2.0, z=3.0), Point_(x=-1.0, y=-2.0, z=-3.0)],
+        bounded_points=[Point_(x=0.5, y=0.25, z=0.125)],
         flags=[True, False, True], tail=255),
     "texts": Texts(texts=TEXTS),
-    "doubles": Float64MultiArray(
-        layout=MultiArrayLayout(dim=[MultiArrayDimension(label="x", size=9, stride=9)]),
+    "doubles": Float64MultiArray_(
+        layout=MultiArrayLayout_(dim=[MultiArrayDimension_(label="x", size=9, stride=9)]),
         data=[0.1, 1e-5, 1e22, 1e16, 123456.789, -2.5, 0.0, -0.0, 1.7976931348623157e308]),
-    "floats": Float32MultiArray(
+    "floats": Float32MultiArray_(
         data=[0.1, 1e-5, 3e38, 16777216.0, -1.401298464324817e-45, 0.05, 3.4028234663852886e38]),
 }
 

@@ -13,6 +13,7 @@ from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 
 import pubsub_support as ps
+from ros_types import Time_
 import service_support as ss
 
 
@@ -79,13 +80,6 @@ class GetParameters_Response_(IdlStruct,
     guid: types.uint64
     seq: types.int64
     values: types.sequence[ParameterValue_]
-
-
-@final
-@dataclass
-class Time_(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
-    sec: types.int32
-    nanosec: types.uint32
 
 
 @final

@@ -7,12 +7,7 @@ from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 
 import pubsub_support as ps
-
-
-@final
-@dataclass
-class String_(IdlStruct, typename="std_msgs::msg::dds_::String_"):
-    data: str
+from ros_types import String_
 
 
 def test_ada_publisher_to_python_subscriber():

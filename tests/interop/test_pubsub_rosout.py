@@ -8,22 +8,10 @@ from dataclasses import dataclass, field
 
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
-from cyclonedds.idl.types import int32, uint8, uint32
+from cyclonedds.idl.types import uint8, uint32
 
 import pubsub_support as ps
-
-
-@final
-@dataclass
-class String_(IdlStruct, typename="std_msgs::msg::dds_::String_"):
-    data: str = ""
-
-
-@final
-@dataclass
-class Time_(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
-    sec: int32 = 0
-    nanosec: uint32 = 0
+from ros_types import String_, Time_
 
 
 @final

@@ -5,116 +5,13 @@ sensor_msgs/LaserScan (sequences) and nav_msgs/Odometry (nested messages,
 fixed arrays); the values are equal on both sides. Python -> Ada is checked
 through the Ada peer's echo: it decodes, re-encodes and republishes."""
 import time
-from dataclasses import dataclass, field
 
 import pytest
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.annotations import final
-from cyclonedds.idl.types import array, float32, float64, int32, sequence, uint32
 
 import pubsub_support as ps
-
-
-def dds(pkg, name):
-    return f"{pkg}::msg::dds_::{name}_"
-
-
-@final
-@dataclass
-class String_(IdlStruct, typename=dds("std_msgs", "String")):
-    data: str = ""
-
-
-@final
-@dataclass
-class Time_(IdlStruct, typename=dds("builtin_interfaces", "Time")):
-    sec: int32 = 0
-    nanosec: uint32 = 0
-
-
-@final
-@dataclass
-class Header_(IdlStruct, typename=dds("std_msgs", "Header")):
-    stamp: Time_ = field(default_factory=Time_)
-    frame_id: str = ""
-
-
-@final
-@dataclass
-class LaserScan_(IdlStruct, typename=dds("sensor_msgs", "LaserScan")):
-    header: Header_ = field(default_factory=Header_)
-    angle_min: float32 = 0.0
-    angle_max: float32 = 0.0
-    angle_increment: float32 = 0.0
-    time_increment: float32 = 0.0
-    scan_time: float32 = 0.0
-    range_min: float32 = 0.0
-    range_max: float32 = 0.0
-    ranges: sequence[float32] = field(default_factory=list)
-    intensities: sequence[float32] = field(default_factory=list)
-
-
-@final
-@dataclass
-class Vector3_(IdlStruct, typename=dds("geometry_msgs", "Vector3")):
-    x: float64 = 0.0
-    y: float64 = 0.0
-    z: float64 = 0.0
-
-
-@final
-@dataclass
-class Twist_(IdlStruct, typename=dds("geometry_msgs", "Twist")):
-    linear: Vector3_ = field(default_factory=Vector3_)
-    angular: Vector3_ = field(default_factory=Vector3_)
-
-
-@final
-@dataclass
-class Point_(IdlStruct, typename=dds("geometry_msgs", "Point")):
-    x: float64 = 0.0
-    y: float64 = 0.0
-    z: float64 = 0.0
-
-
-@final
-@dataclass
-class Quaternion_(IdlStruct, typename=dds("geometry_msgs", "Quaternion")):
-    x: float64 = 0.0
-    y: float64 = 0.0
-    z: float64 = 0.0
-    w: float64 = 1.0
-
-
-@final
-@dataclass
-class Pose_(IdlStruct, typename=dds("geometry_msgs", "Pose")):
-    position: Point_ = field(default_factory=Point_)
-    orientation: Quaternion_ = field(default_factory=Quaternion_)
-
-
-@final
-@dataclass
-class PoseWithCovariance_(IdlStruct, typename=dds("geometry_msgs", "PoseWithCovariance")):
-    pose: Pose_ = field(default_factory=Pose_)
-    covariance: array[float64, 36] = field(default_factory=lambda: [0.0] * 36)
-
-
-@final
-@dataclass
-class TwistWithCovariance_(IdlStruct, typename=dds("geometry_msgs", "TwistWithCovariance")):
-    twist: Twist_ = field(default_factory=Twist_)
-    covariance: array[float64, 36] = field(default_factory=lambda: [0.0] * 36)
-
-
-@final
-@dataclass
-class Odometry_(IdlStruct, typename=dds("nav_msgs", "Odometry")):
-    header: Header_ = field(default_factory=Header_)
-    child_frame_id: str = ""
-    pose: PoseWithCovariance_ = field(default_factory=PoseWithCovariance_)
-    twist: TwistWithCovariance_ = field(default_factory=TwistWithCovariance_)
-
+from ros_types import (Header_, LaserScan_, Odometry_, Point_, Pose_,
+                       PoseWithCovariance_, Quaternion_, String_, Time_,
+                       Twist_, TwistWithCovariance_, Vector3_)
 
 HEADER = Header_(stamp=Time_(sec=1_700_000_123, nanosec=456_789), frame_id="base_laser")
 

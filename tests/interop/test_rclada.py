@@ -12,13 +12,8 @@ from cyclonedds.pub import DataWriter
 from cyclonedds.topic import Topic
 
 import pubsub_support as ps
+from ros_types import String_
 import service_support as ss
-
-
-@final
-@dataclass
-class String_(IdlStruct, typename="std_msgs::msg::dds_::String_"):
-    data: str
 
 
 @final

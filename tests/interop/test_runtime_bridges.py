@@ -12,14 +12,9 @@ from cyclonedds.idl.annotations import final
 from cyclonedds.idl.types import float64
 
 import pubsub_support as ps
+from ros_types import String_
 
 CONFIG = ps.REPO / "tests" / "data" / "config" / "ros2-bridge.xml"
-
-
-@final
-@dataclass
-class String_(IdlStruct, typename="std_msgs::msg::dds_::String_"):
-    data: str
 
 
 @final

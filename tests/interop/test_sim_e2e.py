@@ -5,41 +5,13 @@ without collision, reports progress and status, publishes its map, and
 takes a new task list at run time. Bounded by timeouts that fail with
 both programs' output."""
 import time
-from dataclasses import dataclass, field
-
-from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.annotations import final
-from cyclonedds.idl.types import float32, float64, int8, sequence, uint32
 
 import pubsub_support as ps
+import ros_types as rt
 import sim_support as ss
 
 CONFIG = ps.REPO / "share" / "config" / "sim-robot.xml"
 LAST_GOAL = (16.0, 10.0)
-
-
-@final
-@dataclass
-class Float64_(IdlStruct, typename=ss.dds("std_msgs", "Float64")):
-    data: float64 = 0.0
-
-
-@final
-@dataclass
-class MapMetaData_(IdlStruct, typename=ss.dds("nav_msgs", "MapMetaData")):
-    map_load_time: ss.Time_ = field(default_factory=ss.Time_)
-    resolution: float32 = 0.0
-    width: uint32 = 0
-    height: uint32 = 0
-    origin: ss.Pose_ = field(default_factory=ss.Pose_)
-
-
-@final
-@dataclass
-class OccupancyGrid_(IdlStruct, typename=ss.dds("nav_msgs", "OccupancyGrid")):
-    header: ss.Header_ = field(default_factory=ss.Header_)
-    info: MapMetaData_ = field(default_factory=MapMetaData_)
-    data: sequence[int8] = field(default_factory=list)
 
 
 def wait_status(rd, text, timeout):
@@ -55,12 +27,12 @@ def wait_status(rd, text, timeout):
 
 def test_agent_drives_simulated_robot_through_its_goals():
     dp = ps.participant()
-    status = ps.reader(dp, "rt/robot1/sancta/status", ss.String_, depth=100)
-    progress = ps.reader(dp, "rt/robot1/sancta/progress", Float64_, depth=100)
-    truth = ps.reader(dp, "rt/robot1/ground_truth", ss.PoseStamped_)
-    events = ps.reader(dp, "rt/sancta_sim/events", ss.String_, depth=100)
-    grid = ps.reader(dp, "rt/robot1/map", OccupancyGrid_, depth=2)
-    tasks = ps.writer(dp, "rt/robot1/sancta/tasks", ss.String_)
+    status = ps.reader(dp, "rt/robot1/sancta/status", rt.String_, depth=100)
+    progress = ps.reader(dp, "rt/robot1/sancta/progress", rt.Float64_, depth=100)
+    truth = ps.reader(dp, "rt/robot1/ground_truth", rt.PoseStamped_)
+    events = ps.reader(dp, "rt/sancta_sim/events", rt.String_, depth=100)
+    grid = ps.reader(dp, "rt/robot1/map", rt.OccupancyGrid_, depth=2)
+    tasks = ps.writer(dp, "rt/robot1/sancta/tasks", rt.String_)
     sim = ps.start("sancta-sim", "office", "--robot", "robot1 2 10 0", "--rate", "4x",
                    "--duration", "1000", "--seed", "7")
     agent = ps.start("sancta", "run", CONFIG, "--agent", "Ari", "--for", "120")
@@ -69,7 +41,7 @@ def test_agent_drives_simulated_robot_through_its_goals():
         try:
             seen = wait_status(status, "done 3 / 3", timeout=90)
             assert ps.wait_matched(tasks, 10)
-            tasks.write(ss.String_(data="14.0,10.0"))
+            tasks.write(rt.String_(data="14.0,10.0"))
             seen += wait_status(status, "done 1 / 1", timeout=40)
         except TimeoutError as e:
             raise AssertionError(str(e)) from None
@@ -116,10 +88,10 @@ TEAM = ps.REPO / "share" / "config" / "sim-corridor.xml"
 
 def test_two_agents_swap_ends_of_the_corridor_without_collision():
     dp = ps.participant()
-    status = {n: ps.reader(dp, f"rt/{n}/sancta/status", ss.String_, depth=100)
+    status = {n: ps.reader(dp, f"rt/{n}/sancta/status", rt.String_, depth=100)
               for n in ("Ari", "Ben")}
-    truth = {n: ps.reader(dp, f"rt/{n}/ground_truth", ss.PoseStamped_) for n in ("Ari", "Ben")}
-    events = ps.reader(dp, "rt/sancta_sim/events", ss.String_, depth=100)
+    truth = {n: ps.reader(dp, f"rt/{n}/ground_truth", rt.PoseStamped_) for n in ("Ari", "Ben")}
+    events = ps.reader(dp, "rt/sancta_sim/events", rt.String_, depth=100)
     sim = ps.start("sancta-sim", "office", "--robot", "Ari 2 10 0",
                    "--robot", "Ben 18 10 3.14159265", "--rate", "4x", "--duration", "1000")
     agents = ps.start("sancta", "run", TEAM, "--all", "--for", "120")

@@ -6,6 +6,7 @@ import math
 import time
 
 import pubsub_support as ps
+import ros_types as rt
 import sim_support as ss
 
 
@@ -23,12 +24,12 @@ def stop(sim):
 
 def test_topics_have_ros2_types_and_cmd_vel_moves_the_robot():
     dp = ps.participant()
-    odom = ps.reader(dp, "rt/robot1/odom", ss.Odometry_)
-    scan = ps.reader(dp, "rt/robot1/scan", ss.LaserScan_, reliable=False, depth=5)
-    truth = ps.reader(dp, "rt/robot1/ground_truth", ss.PoseStamped_)
-    gps = ps.reader(dp, "rt/robot1/gps", ss.PoseWithCovarianceStamped_)
-    clock = ps.reader(dp, "rt/clock", ss.Clock_, reliable=False, depth=1)
-    cmd = ps.writer(dp, "rt/robot1/cmd_vel", ss.Twist_)
+    odom = ps.reader(dp, "rt/robot1/odom", rt.Odometry_)
+    scan = ps.reader(dp, "rt/robot1/scan", rt.LaserScan_, reliable=False, depth=5)
+    truth = ps.reader(dp, "rt/robot1/ground_truth", rt.PoseStamped_)
+    gps = ps.reader(dp, "rt/robot1/gps", rt.PoseWithCovarianceStamped_)
+    clock = ps.reader(dp, "rt/clock", rt.Clock_, reliable=False, depth=1)
+    cmd = ps.writer(dp, "rt/robot1/cmd_vel", rt.Twist_)
     sim = start_sim("--robot", "robot1 5 5 0 gps=on gps_std=0.1")
     try:
         for entity in (odom, scan, truth, gps, clock, cmd):
@@ -59,7 +60,7 @@ def test_topics_have_ros2_types_and_cmd_vel_moves_the_robot():
         deadline = time.monotonic() + 10
         moved = None
         while time.monotonic() < deadline:
-            cmd.write(ss.Twist_(linear=ss.Vector3_(0.5, 0, 0)))
+            cmd.write(rt.Twist_(linear=rt.Vector3_(0.5, 0, 0)))
             time.sleep(0.05)
             t = ss.latest(truth, timeout=1)
             if t is not None and t.pose.position.x > 6.0:
@@ -67,7 +68,7 @@ def test_topics_have_ros2_types_and_cmd_vel_moves_the_robot():
                 break
         assert moved is not None, "the robot did not move forward on cmd_vel"
         assert abs(moved.pose.position.y - 5) < 0.05
-        cmd.write(ss.Twist_())
+        cmd.write(rt.Twist_())
         time.sleep(0.5)
         o = ss.latest(odom)
         assert o.pose.pose.position.x > 0.9, o.pose.pose.position
@@ -86,9 +87,9 @@ def stamp_order_ok(odom):
 def test_control_service_kills_revives_and_adds_robots():
     dp = ps.participant()
     control = ss.Control(dp)
-    truth1 = ps.reader(dp, "rt/robot1/ground_truth", ss.PoseStamped_)
-    odom2 = ps.reader(dp, "rt/robot2/odom", ss.Odometry_)
-    events = ps.reader(dp, "rt/sancta_sim/events", ss.String_, depth=100)
+    truth1 = ps.reader(dp, "rt/robot1/ground_truth", rt.PoseStamped_)
+    odom2 = ps.reader(dp, "rt/robot2/odom", rt.Odometry_)
+    events = ps.reader(dp, "rt/sancta_sim/events", rt.String_, depth=100)
     sim = start_sim("--robot", "robot1 3 3 0")
     try:
         assert control.wait_available(), "service not available"
@@ -124,15 +125,15 @@ def test_control_service_kills_revives_and_adds_robots():
 
 def test_collision_is_reported():
     dp = ps.participant()
-    events = ps.reader(dp, "rt/sancta_sim/events", ss.String_, depth=100)
-    cmd = ps.writer(dp, "rt/robot1/cmd_vel", ss.Twist_)
+    events = ps.reader(dp, "rt/sancta_sim/events", rt.String_, depth=100)
+    cmd = ps.writer(dp, "rt/robot1/cmd_vel", rt.Twist_)
     sim = start_sim("--robot", "robot1 1 10 3.14159")
     try:
         assert ps.wait_matched(cmd, 15) and ps.wait_matched(events, 15)
         found = []
         deadline = time.monotonic() + 15
         while not found and time.monotonic() < deadline:
-            cmd.write(ss.Twist_(linear=ss.Vector3_(0.8, 0, 0)))
+            cmd.write(rt.Twist_(linear=rt.Vector3_(0.8, 0, 0)))
             found = [e.data for e in ps.take(events) if e.data.startswith("collision robot1 wall")]
             time.sleep(0.05)
     finally:
@@ -166,7 +167,7 @@ def test_robot_list_file_errors_name_file_line_column(tmp_path):
 def test_sigint_stops_cleanly():
     import signal
     dp = ps.participant()
-    clock = ps.reader(dp, "rt/clock", ss.Clock_, reliable=False, depth=1)
+    clock = ps.reader(dp, "rt/clock", rt.Clock_, reliable=False, depth=1)
     sim = ps.start("sancta-sim", "arena", "--robot", "r1 5 5 0", "--rate", "10x")
     try:
         assert ps.wait_matched(clock, 15)
@@ -183,14 +184,14 @@ def test_sigint_stops_cleanly():
 
 def test_cmd_timeout_stops_a_robot_left_without_commands():
     dp = ps.participant()
-    truth = ps.reader(dp, "rt/r1/ground_truth", ss.PoseStamped_)
-    cmd = ps.writer(dp, "rt/r1/cmd_vel", ss.Twist_)
+    truth = ps.reader(dp, "rt/r1/ground_truth", rt.PoseStamped_)
+    cmd = ps.writer(dp, "rt/r1/cmd_vel", rt.Twist_)
     sim = ps.start("sancta-sim", "arena", "--robot", "r1 5 5 0", "--rate", "4x",
                    "--cmd-timeout", "0.5")
     try:
         assert ps.wait_matched(cmd, 15) and ps.wait_matched(truth, 15)
         start = ss.latest(truth)
-        cmd.write(ss.Twist_(linear=ss.Vector3_(0.5, 0, 0)))  # once, then silence
+        cmd.write(rt.Twist_(linear=rt.Vector3_(0.5, 0, 0)))  # once, then silence
         time.sleep(2.0)  # 8 simulated seconds
         a = ss.latest(truth)
         time.sleep(0.5)
