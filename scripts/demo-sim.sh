@@ -9,7 +9,7 @@ set -uo pipefail
 source "$(dirname "$0")/env.sh"
 cd "$repo_root"
 method="${METHOD:-annealer}"
-rate="${RATE:-2}"  # at 4x and more the wall-clock control loops lag (robots may stall)
+rate="${RATE:-2}"  # the agents run on the simulated time of /clock (--sim-time)
 out=out/demo-sim
 mkdir -p "$out"
 pids=()
@@ -20,12 +20,12 @@ trap cleanup EXIT
    --robot "r4 13 10 0" --rate "$rate" --cmd-timeout 0.5 --quiet > "$out/sim.log" 2>&1 &
 pids+=($!)
 for r in r1 r2 r3 r4; do
-   ./bin/sancta run share/config/sim-team.xml --agent "$r" --set "method=$method" \
+   ./bin/sancta run share/config/sim-team.xml --agent "$r" --set "method=$method" --sim-time \
       > "$out/$r.log" 2>&1 &
    pids+=($!)
    [ "$r" = r2 ] && r2_pid=$!
 done
-./bin/sancta run share/config/sim-team.xml --agent operator > "$out/operator.log" 2>&1 &
+./bin/sancta run share/config/sim-team.xml --agent operator --sim-time > "$out/operator.log" 2>&1 &
 op_pid=$!
 pids+=($op_pid)
 echo "demo-sim: sancta-sim (office, 4 robots, ${rate}x) + 5 agents of share/config/sim-team.xml"

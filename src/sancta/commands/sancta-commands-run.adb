@@ -11,6 +11,8 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Nodes;
+with Sancta.Runtime.ROS_Clocks;
+with RCL.Clocks;
 with Sancta.Runtime.Shutdown;
 
 package body Sancta.Commands.Run is
@@ -26,9 +28,14 @@ package body Sancta.Commands.Run is
 
    Usage_Text : constant String :=
      "usage: sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]"
-     & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]";
+     & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]"
+     & " [--sim-time] [--ros-args -p use_sim_time:=true]";
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
+
+   Sim_Clock : aliased Sancta.Runtime.ROS_Clocks.ROS_Clock;
+   --  With --sim-time (or use_sim_time:=true): the agents run on ROS time
+   --  following /clock (a simulator's time), not on the wall clock.
 
    type Node_Access is access Sancta.Runtime.Nodes.Node;
    type Node_Array is array (Positive range <>) of Node_Access;
@@ -41,6 +48,7 @@ package body Sancta.Commands.Run is
       Overrides : Sancta.Runtime.Components.String_Maps.Map;
       Config    : Configurations.Configuration;
       Stats     : Boolean := False;
+      Sim_Time  : Boolean := RCL.Clocks.Sim_Time_Requested;
       I         : Positive := 2;
 
       procedure Set_Level (Text : String) is
@@ -94,6 +102,14 @@ package body Sancta.Commands.Run is
                Sancta.Logging.Set_Default_Level (Sancta.Logging.Debug);
             elsif A = "--stats" then
                Stats := True;
+            elsif A = "--sim-time" then
+               Sim_Time := True;
+            elsif A = "--ros-args" then
+               --  ROS arguments (use_sim_time read by RCL.Clocks) up to "--".
+               while I < Argument_Count and then Argument (I + 1) /= "--" loop
+                  I := I + 1;
+               end loop;
+               I := I + 1;
             elsif A = "--level" and then Has then
                Set_Level (Argument (I + 1));
                I := I + 1;
@@ -151,7 +167,13 @@ package body Sancta.Commands.Run is
          Created  : Natural := 0;
          Attached : Boolean;
          Done     : Boolean;
+         Time_Of  : Sancta.Runtime.Clocks.Clock_Access := Clock'Access;
       begin
+         if Sim_Time then
+            Sim_Clock.Follow_Clock_Topic ("sancta_clock");
+            Time_Of := Sim_Clock'Access;
+            Sancta.Logging.Log ("run", Sancta.Logging.Info, "on simulated time (/clock)");
+         end if;
          Shutdown.Catch_Interrupt (Attached);
          if not Attached then
             Sancta.Logging.Log ("run", Sancta.Logging.Warning,
@@ -163,7 +185,7 @@ package body Sancta.Commands.Run is
                Created := Index;
                Nodes (Index).Create
                  (Config, Configurations.Find_Agent (Config, Agents (Index)),
-                  Clock'Access);
+                  Time_Of);
             end loop;
             for N of Nodes loop
                N.Start;
@@ -186,9 +208,14 @@ package body Sancta.Commands.Run is
                Put (Nodes (Index).Statistics);
             end if;
          end loop;
+         Sim_Clock.Stop;
          if Shutdown.Failed then
             Set_Exit_Status (Failure);
          end if;
+      exception
+         when others =>
+            Sim_Clock.Stop;  --  Its task would keep the program alive.
+            raise;
       end;
    exception
       when E : Options.Usage_Error =>

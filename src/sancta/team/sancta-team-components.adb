@@ -50,7 +50,7 @@ package body Sancta.Team.Components is
    overriding procedure Start (This : in out Member_Component) is
    begin
       This.Tolerance := Real (This.Option_Real ("tolerance"));
-      This.Last_Pose := Ada.Real_Time.Clock - Ada.Real_Time.Seconds (1);
+      This.Last_Pose := This.Now - Ada.Real_Time.Seconds (1);
       This.Agent := Agents.Create
         ((Id       => To_Unbounded_String (This.Agent_Id),
           Team     => To_Unbounded_String (This.Option_Text ("team")),
@@ -78,8 +78,8 @@ package body Sancta.Team.Components is
    begin
       This.Here := (P.X, P.Y);
       This.Has_Pose := True;
-      if Ada.Real_Time.Clock - This.Last_Pose > Ada.Real_Time.Milliseconds (500) then
-         This.Last_Pose := Ada.Real_Time.Clock;
+      if This.Now - This.Last_Pose > Ada.Real_Time.Milliseconds (500) then
+         This.Last_Pose := This.Now;
          This.Agent.Set_Pose (This.Here);
       end if;
    end On_Input;
