@@ -4,12 +4,16 @@
 # topics, one process per agent. When a quarter of the tasks are done, the
 # process of robot r2 is killed (its host dies; sancta-sim stops the robot
 # when its commands stop); the survivors re-plan and finish. Logs under
-# out/demo-sim/. Options: METHOD (annealer|auctions), RATE (default 2).
+# out/demo-sim/. Options: METHOD (annealer|auctions), RATE (default 2),
+# SIM_TIME (1|0).
 set -uo pipefail
 source "$(dirname "$0")/env.sh"
 cd "$repo_root"
 method="${METHOD:-annealer}"
-rate="${RATE:-2}"  # the agents run on the simulated time of /clock (--sim-time)
+rate="${RATE:-2}"
+# SIM_TIME=1 (default): the agents run on the simulated time of /clock
+# (sancta run --sim-time); SIM_TIME=0: on the wall clock.
+sim_time=$([ "${SIM_TIME:-1}" = 1 ] && echo --sim-time)
 out=out/demo-sim
 mkdir -p "$out"
 pids=()
@@ -20,12 +24,12 @@ trap cleanup EXIT
    --robot "r4 13 10 0" --rate "$rate" --cmd-timeout 0.5 --quiet > "$out/sim.log" 2>&1 &
 pids+=($!)
 for r in r1 r2 r3 r4; do
-   ./bin/sancta run share/config/sim-team.xml --agent "$r" --set "method=$method" --sim-time \
+   ./bin/sancta run share/config/sim-team.xml --agent "$r" --set "method=$method" $sim_time \
       > "$out/$r.log" 2>&1 &
    pids+=($!)
    [ "$r" = r2 ] && r2_pid=$!
 done
-./bin/sancta run share/config/sim-team.xml --agent operator --sim-time > "$out/operator.log" 2>&1 &
+./bin/sancta run share/config/sim-team.xml --agent operator $sim_time > "$out/operator.log" 2>&1 &
 op_pid=$!
 pids+=($op_pid)
 echo "demo-sim: sancta-sim (office, 4 robots, ${rate}x) + 5 agents of share/config/sim-team.xml"

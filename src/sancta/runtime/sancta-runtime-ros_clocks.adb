@@ -1,9 +1,11 @@
+with Ada.Exceptions;
 with Ada.Real_Time;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Clocks;
 with RCL.Nodes;
 with RCL.QoS;
+with Sancta.Logging;
 
 package body Sancta.Runtime.ROS_Clocks is
 
@@ -47,7 +49,14 @@ package body Sancta.Runtime.ROS_Clocks is
          "/clock", On_Clock'Access, RCL.QoS.Clock);
       accept Ready;
       while not Owner.Stopping loop
-         Node.Spin (During => 0.05);
+         begin
+            Node.Spin (During => 0.05);
+         exception
+            when E : others =>
+               --  Keep following /clock: a dead spinner would freeze the time.
+               Sancta.Logging.Log ("sim-time", Sancta.Logging.Error, "/clock: "
+                                   & Ada.Exceptions.Exception_Information (E));
+         end;
          delay 0.001;  --  Spin returns at once after a shutdown: do not busy-loop.
       end loop;
    end Spinner;
