@@ -54,8 +54,10 @@ package body Sancta.Robot.Controllers is
       Scan    : Laser_Scan) return Twist
    is
       To_Goal : constant Real := Distance (Position (Current), Goal);
-      Bearing : constant Real := Normalize_Angle
-        (Math.Arctan (Goal.Y - Current.Y, Goal.X - Current.X) - Current.Yaw);
+      Bearing : constant Real :=
+        (if To_Goal = 0.0 then 0.0  --  Arctan (0, 0) is undefined: at the goal
+         else Normalize_Angle
+                (Math.Arctan (Goal.Y - Current.Y, Goal.X - Current.X) - Current.Yaw));
       Need    : constant Real := Real'Min (To_Goal, Config.Look_Ahead);
       Step    : constant Real := Pi / 36.0;
       Best    : Real := 0.0;

@@ -172,6 +172,14 @@ package body Sancta.Robot.Tests is
          Assert (T.Linear_X > 0.1 and then abs T.Angular_Z < 0.01, "straight to a free goal");
          Assert (U.Linear_X = 0.0 and then abs U.Angular_Z > 1.0, "turn in place");
       end;
+      declare
+         --  Exactly at the goal: no bearing exists (Arctan (0, 0)); stand still.
+         At_Goal : constant Sensors.Twist :=
+           Controllers.Command (C, (1.0, 2.0, 0.5), (1.0, 2.0), Scan);
+      begin
+         Assert (At_Goal.Linear_X = 0.0 and then At_Goal.Angular_Z = 0.0,
+                 "at the goal: zero command");
+      end;
       --  The wall at x = 1: less than the look-ahead free, steer around.
       for B in 1 .. 360 loop
          declare
