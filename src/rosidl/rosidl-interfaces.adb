@@ -458,28 +458,20 @@ package body ROSIDL.Interfaces is
 
    No_Position : constant Source_Position := (Null_Unbounded_String, 0, 0);
 
-   function Message (Package_Name, Name : String) return Message_Access is
-      Cached : constant Message_Access :=
-        Registry.Find_Message (Package_Name & "/msg/" & Name);
-   begin
-      if Cached /= null then
-         return Cached;
-      end if;
-      declare
-         Lock   : Lock_Holder;
-         pragma Unreferenced (Lock);
-         Result : constant Message_Access := Load_Message (Package_Name, Name, No_Position);
-      begin
-         if Result = null then
-            raise Unknown_Type with Not_Found (Package_Name, "msg", Name);
-         end if;
-         return Result;
-      end;
-   end Message;
+   generic
+      type Definition (<>) is limited private;
+      type Definition_Access is access constant Definition;
+      Folder : String;
+      --  "msg", "srv" or "action".
+      with function Find (Key : String) return Definition_Access;
+      with function Load (Package_Name, Name : String) return Definition_Access;
+   function Cached_Or_Loaded (Package_Name, Name : String) return Definition_Access;
+   --  The cached definition, else loaded (under the loader lock), else
+   --  Unknown_Type.
 
-   function Service (Package_Name, Name : String) return Service_Access is
-      Cached : constant Service_Access :=
-        Registry.Find_Service (Package_Name & "/srv/" & Name);
+   function Cached_Or_Loaded (Package_Name, Name : String) return Definition_Access is
+      Cached : constant Definition_Access :=
+        Find (Package_Name & "/" & Folder & "/" & Name);
    begin
       if Cached /= null then
          return Cached;
@@ -487,33 +479,33 @@ package body ROSIDL.Interfaces is
       declare
          Lock   : Lock_Holder;
          pragma Unreferenced (Lock);
-         Result : constant Service_Access := Load_Service (Package_Name, Name);
+         Result : constant Definition_Access := Load (Package_Name, Name);
       begin
          if Result = null then
-            raise Unknown_Type with Not_Found (Package_Name, "srv", Name);
+            raise Unknown_Type with Not_Found (Package_Name, Folder, Name);
          end if;
          return Result;
       end;
-   end Service;
+   end Cached_Or_Loaded;
 
-   function Action (Package_Name, Name : String) return Action_Access is
-      Cached : constant Action_Access :=
-        Registry.Find_Action (Package_Name & "/action/" & Name);
-   begin
-      if Cached /= null then
-         return Cached;
-      end if;
-      declare
-         Lock   : Lock_Holder;
-         pragma Unreferenced (Lock);
-         Result : constant Action_Access := Load_Action (Package_Name, Name);
-      begin
-         if Result = null then
-            raise Unknown_Type with Not_Found (Package_Name, "action", Name);
-         end if;
-         return Result;
-      end;
-   end Action;
+   function Load_Message_Anywhere (Package_Name, Name : String) return Message_Access is
+     (Load_Message (Package_Name, Name, No_Position));
+
+   function Message_Look_Up is new Cached_Or_Loaded
+     (Message_Definition, Message_Access, "msg", Registry.Find_Message, Load_Message_Anywhere);
+   function Service_Look_Up is new Cached_Or_Loaded
+     (Service_Definition, Service_Access, "srv", Registry.Find_Service, Load_Service);
+   function Action_Look_Up is new Cached_Or_Loaded
+     (Action_Definition, Action_Access, "action", Registry.Find_Action, Load_Action);
+
+   function Message (Package_Name, Name : String) return Message_Access
+     renames Message_Look_Up;
+
+   function Service (Package_Name, Name : String) return Service_Access
+     renames Service_Look_Up;
+
+   function Action (Package_Name, Name : String) return Action_Access
+     renames Action_Look_Up;
 
    function Ends_With (S, Suffix : String) return Boolean is
      (S'Length > Suffix'Length
