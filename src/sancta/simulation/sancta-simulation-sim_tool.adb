@@ -556,31 +556,40 @@ package body Sancta.Simulation.Sim_Tool is
       Put_Line ("sancta-sim: " & Natural'Image (Natural (IO.Length)) & " robot(s), domain"
                 & RCL.DDS.Domain_Id'Image (RCL.Contexts.Domain) & ", "
                 & (if As_Fast then "as fast as possible" else "rate " & Image (Rate) & "x"));
-      while not RCL.Contexts.Is_Shutdown
-        and then Sim.Clock < Duration_S - Step / 2.0
-      loop
-         for R of IO loop
-            Take_Commands (R);
-         end loop;
-         Take_Requests;
-         Sim.Step (Step);
-         Report_Events;
-         declare
-            Truth_Due : constant Boolean := Sim.Clock >= Next_Truth - 1.0E-9;
-         begin
-            if Truth_Due then
-               Next_Truth := Next_Truth + Truth_Every;
-            end if;
+      begin
+         while not RCL.Contexts.Is_Shutdown
+           and then Sim.Clock < Duration_S - Step / 2.0
+         loop
             for R of IO loop
-               Publish_Readings (R, Truth_Due);
+               Take_Commands (R);
             end loop;
-         end;
-         Set_Time (Clock_Time, Sim.Clock);
-         Clock_Pub.Publish (Clock_Msg);
-         if not As_Fast then
-            delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
-         end if;
-      end loop;
+            Take_Requests;
+            Sim.Step (Step);
+            Report_Events;
+            declare
+               Truth_Due : constant Boolean := Sim.Clock >= Next_Truth - 1.0E-9;
+            begin
+               if Truth_Due then
+                  Next_Truth := Next_Truth + Truth_Every;
+               end if;
+               for R of IO loop
+                  Publish_Readings (R, Truth_Due);
+               end loop;
+            end;
+            Set_Time (Clock_Time, Sim.Clock);
+            Clock_Pub.Publish (Clock_Msg);
+            if not As_Fast then
+               delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
+            end if;
+         end loop;
+      exception
+         when RCL.ROS_Exception =>
+            --  A publication cut short by the shutdown (Ctrl-C, SIGTERM): the
+            --  run ends normally and its summary below is still printed.
+            if not RCL.Contexts.Is_Shutdown then
+               raise;
+            end if;
+      end;
       declare
          Wall : constant Real := Real (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started));
       begin
