@@ -37,13 +37,25 @@ package body Sancta.Components.Localization is
    ------------------
 
    type Scan_Matcher is new Base_Component with record
-      Config    : Robot.Scan_Matchers.Matcher_Config;
-      Corrector : Robot.Scan_Matchers.Corrector;
+      Config      : Robot.Scan_Matchers.Matcher_Config;
+      Corrector   : Robot.Scan_Matchers.Corrector;
+      Paper_Ports : Boolean := False;
+      --  True for "scan_matching": odometry on input "pose", an output on
+      --  every odometry pose, a fixed correction from options; False for
+      --  "scan_matcher": input "odometry", an output per scan.
+      Fixed       : Pose := (0.0, 0.0, 0.0);
+      --  The odometric frame's pose in the corrected frame (options).
+      Drift       : Pose := (0.0, 0.0, 0.0);
+      --  The correction measured by the last match: corrected pose =
+      --  Drift (+) odometric pose.
    end record;
 
    overriding procedure Start (This : in out Scan_Matcher);
    overriding procedure On_Input
      (This : in out Scan_Matcher; Data : String; Item : Values.Value'Class);
+
+   function Odometry_Input (This : Scan_Matcher'Class) return String is
+     (if This.Paper_Ports then "pose" else "odometry");
 
    overriding procedure Start (This : in out Scan_Matcher) is
    begin
@@ -51,20 +63,34 @@ package body Sancta.Components.Localization is
       This.Config.Keyframe_Angle := Real_Option (This, "keyframe_angle");
       This.Config.Max_Iterations := Positive (This.Option_Integer ("max_iterations"));
       This.Subscribe ("scan");
+      if This.Paper_Ports then
+         This.Fixed := (Real_Option (This, "dx"), Real_Option (This, "dy"),
+                        Real_Option (This, "dyaw"));
+         This.Subscribe ("pose");
+      end if;
    end Start;
 
    overriding procedure On_Input
-     (This : in out Scan_Matcher; Data : String; Item : Values.Value'Class)
-   is
-      pragma Unreferenced (Data);
+     (This : in out Scan_Matcher; Data : String; Item : Values.Value'Class) is
    begin
-      if This.Has_Value ("odometry") then
-         This.Corrector.Update
-           (This.Config, Pose_Of (This.Input ("odometry")),
-            RM.To_Scan (ROS2.Message_Value (Item).Message));
-         This.Output ("pose", Values.Pose_Value'(Data => This.Corrector.Corrected));
-         This.Output ("error", Values.Real_Value'
-                        (Data => Long_Float (This.Corrector.Last_Result.Error)));
+      if Data = "scan" then
+         if This.Has_Value (This.Odometry_Input) then
+            declare
+               Odometry : constant Pose := Pose_Of (This.Input (This.Odometry_Input));
+            begin
+               This.Corrector.Update
+                 (This.Config, Odometry, RM.To_Scan (ROS2.Message_Value (Item).Message));
+               This.Drift := Compose (This.Corrector.Corrected,
+                                      Relative (Odometry, (0.0, 0.0, 0.0)));
+               This.Output ("pose", Values.Pose_Value'
+                              (Data => Compose (This.Fixed, This.Corrector.Corrected)));
+               This.Output ("error", Values.Real_Value'
+                              (Data => Long_Float (This.Corrector.Last_Result.Error)));
+            end;
+         end if;
+      else
+         This.Output ("pose", Values.Pose_Value'
+                        (Data => Compose (This.Fixed, Compose (This.Drift, Pose_Of (Item)))));
       end if;
    end On_Input;
 
@@ -74,6 +100,16 @@ package body Sancta.Components.Localization is
       Result.Initialize (Ctx);
       return Result;
    end Create_Scan_Matcher;
+
+   type Scan_Matcher_Access is access all Scan_Matcher;
+
+   function Create_Scan_Matching (Ctx : Context) return Component_Access is
+      Result : constant Scan_Matcher_Access := new Scan_Matcher;
+   begin
+      Result.Paper_Ports := True;
+      Result.Initialize (Ctx);
+      return Component_Access (Result);
+   end Create_Scan_Matching;
 
    -------------
    -- aligner --
@@ -272,6 +308,25 @@ begin
                                    Check => Size_Check'Access),
        others  => <>),
       Create_Scan_Matcher'Access);
+   Factory.Register
+     ((Name    => To_Unbounded_String ("scan_matching"),
+       Doc     => To_Unbounded_String
+                    ("odometric pose corrected by ICP on laser scans (or a fixed correction)"),
+       Ports   => Port_Vectors.Empty_Vector
+                    & In_Port ("pose", "types.pose")
+                    & In_Port ("scan", RM.Scan_Type, Optional => True)
+                    & Out_Port ("pose", "types.pose")
+                    & Out_Port ("error", "types.real"),
+       Options => Option_Vectors.Empty_Vector
+                    & Opt ("keyframe_distance", "0.4")
+                    & Opt ("keyframe_angle", "0.3")
+                    & Make_Option ("max_iterations", Integer_Option, "50",
+                                   Check => Size_Check'Access)
+                    & Make_Option ("dx", Real_Option, "0.0")
+                    & Make_Option ("dy", Real_Option, "0.0")
+                    & Make_Option ("dyaw", Real_Option, "0.0"),
+       others  => <>),
+      Create_Scan_Matching'Access);
    Factory.Register
      ((Name    => To_Unbounded_String ("aligner"),
        Doc     => To_Unbounded_String ("heading correction from walls at right angles"),

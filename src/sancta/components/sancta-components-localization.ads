@@ -8,8 +8,16 @@
 --  (types.pose: the corrected pose, same frame as the odometry; the first
 --  odometry pose is taken as exact) and "error" (types.real, mean
 --  point-to-line distance of the last match). Options keyframe_distance
---  (0.4), keyframe_angle (0.3), max_iterations (50). It replaces, for real
---  matching, the runtime's "scan_matching" (a fixed correction).
+--  (0.4), keyframe_angle (0.3), max_iterations (50).
+--
+--  "scan_matching" (the paper's Listing 1.1 and Figure 2): the same ICP
+--  with the paper's ports. Requires "pose" (types.pose, odometric) and,
+--  optionally, "scan"; provides "pose" (corrected) on every odometric pose
+--  -- the odometric pose corrected by the drift the last match measured --
+--  and "error". Options as scan_matcher, plus dx, dy, dyaw: a fixed pose
+--  of the odometric frame in the corrected frame (identity by default),
+--  applied on top; with no scan wired, that fixed correction is all it
+--  does (Listing 1.1 as written).
 --
 --  "aligner" (event-driven on "pose" and "scan"): heading correction from
 --  walls at multiples of 90 degrees (Aligners). Requires "pose"

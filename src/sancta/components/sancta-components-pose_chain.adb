@@ -66,39 +66,6 @@ package body Sancta.Components.Pose_Chain is
       return Result;
    end Create_Odometry;
 
-   --  scan_matching --
-
-   type Scan_Matching is new Base_Component with record
-      Correction : Pose;
-   end record;
-
-   overriding procedure Start (This : in out Scan_Matching);
-   overriding procedure On_Input
-     (This : in out Scan_Matching; Data : String; Item : Values.Value'Class);
-
-   overriding procedure Start (This : in out Scan_Matching) is
-   begin
-      This.Correction := (X => Real (This.Option_Real ("dx")), Y => Real (This.Option_Real ("dy")),
-                          Yaw => Real (This.Option_Real ("dyaw")));
-      This.Subscribe ("pose");
-   end Start;
-
-   overriding procedure On_Input
-     (This : in out Scan_Matching; Data : String; Item : Values.Value'Class)
-   is
-      pragma Unreferenced (Data);
-   begin
-      This.Output ("pose", Values.Pose_Value'
-                     (Data => Compose (This.Correction, Values.Pose_Value (Item).Data)));
-   end On_Input;
-
-   function Create_Scan_Matching (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Scan_Matching;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Scan_Matching;
-
    --  transform --
 
    type Transform is new Base_Component with null record;
@@ -163,18 +130,4 @@ begin
        Refine     => null,
        others     => <>),
       Create_Odometry'Access);
-   Factory.Register
-     ((Name       => To_Unbounded_String ("scan_matching"),
-       Doc        => To_Unbounded_String ("pose correction (PARTIAL: fixed correction, no MbICP)"),
-       Ports      => Port_Vectors.Empty_Vector
-                       & In_Port ("pose", "types.pose")
-                       & Out_Port ("pose", "types.pose"),
-       Options    => Option_Vectors.Empty_Vector
-                       & Make_Option ("dx", Real_Option, "0.0")
-                       & Make_Option ("dy", Real_Option, "0.0")
-                       & Make_Option ("dyaw", Real_Option, "0.0"),
-       Any_Inputs => False,
-       Refine     => null,
-       others     => <>),
-      Create_Scan_Matching'Access);
 end Sancta.Components.Pose_Chain;

@@ -8,14 +8,8 @@
 --  the optional inputs "v" and "w" (types.real) when they hold a value.
 --  Options: period (default 0.1), x, y, yaw, v, w (default 0).
 --
---  "scan_matching": requires "pose", provides "pose" (types.pose), event
---  driven. PARTIAL: no laser input and no MbICP matching exist yet; the
---  component applies the fixed correction given by options dx, dy, dyaw
---  (the pose of the odometric frame in the corrected frame, identity by
---  default), which is what a scan matcher's output amounts to when its
---  estimate of the odometry drift is constant. Real point-to-line ICP
---  matching on laser scans is the "scan_matcher" component
---  (Sancta.Components.Localization).
+--  "scan_matching" (Listing 1.1's second component) is registered by
+--  Sancta.Components.Localization, next to the ICP it runs.
 --
 --  "transform" (the Transformer of the paper's Table 1): a pose given in
 --  robot coordinates (input "local") expressed in world coordinates, given

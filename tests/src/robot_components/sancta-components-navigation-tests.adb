@@ -273,6 +273,29 @@ package body Sancta.Components.Navigation.Tests is
       Assert (Raised, "no planner once the component stopped");
    end Path_Costs_Callback;
 
+   procedure Scan_Matching_Without_Laser (Unused : in out Fixture) is
+      Config : Configurations.Configuration;
+      Clock  : aliased Clocks.Manual_Clock;
+      N      : Nodes.Node;
+   begin
+      Register_Feed;
+      Load_Checked ("tests/data/config/scan-matching-fixed.xml", Config);
+      N.Create (Config, 1, Clock'Unchecked_Access);
+      Logging.Set_Console (False);
+      N.Start (Run_Scheduler_Task => False);
+      N.Database.Put ("odometric_pose", Values.Pose_Value'(Data => (2.0, 0.0, 0.5)));
+      declare
+         P : constant Pose := Pose_At (N, "corrected_pose");
+      begin
+         N.Stop;
+         Logging.Set_Console (True);
+         --  (1, -2, pi/2) (+) (2, 0, 0.5) = (1, 0, pi/2 + 0.5).
+         Assert (abs (P.X - 1.0) < 1.0E-9 and then abs (P.Y - 0.0) < 1.0E-9
+                 and then abs (P.Yaw - (Pi / 2.0 + 0.5)) < 1.0E-9,
+                 "fixed correction: " & Img (P.X) & "," & Img (P.Y) & "," & Img (P.Yaw));
+      end;
+   end Scan_Matching_Without_Laser;
+
    procedure Bad_Goal_Option (Unused : in out Fixture) is
       Config : Configurations.Configuration;
    begin
@@ -405,6 +428,8 @@ package body Sancta.Components.Navigation.Tests is
       Add ("a bad goal list is a positioned configuration error", Bad_Goal_Option'Access);
       Add ("executor and transformer wiring, task lists", Executor_Takes_Task_Lists'Access);
       Add ("path_costs: cost callback and waypoints", Path_Costs_Callback'Access);
+      Add ("scan_matching with no laser: the fixed correction",
+           Scan_Matching_Without_Laser'Access);
       Add ("closed loop with a simulator: goals, localisation, map",
            Closed_Loop_Reaches_Goals'Access);
       return Result;
