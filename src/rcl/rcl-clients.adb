@@ -53,11 +53,13 @@ package body RCL.Clients is
       This.Support := Support;
       RCL.DDS.Create (This.Requests, P.all, RCL.Services.Request_Topic (FQ),
                       DDS_Type_Name (Request_Support (Support)), QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Id));
+                      User_Data => RCL.Graph.Endpoint_User_Data
+                                     (DDS_Type_Name (Request_Support (Support)), Id));
       RCL.DDS.Create (This.Replies, P.all, RCL.Services.Reply_Topic (FQ),
                       DDS_Type_Name (Response_Support (Support)),
                       (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
-                      User_Data => RCL.Graph.Endpoint_User_Data (Id));
+                      User_Data => RCL.Graph.Endpoint_User_Data
+                                     (DDS_Type_Name (Response_Support (Support)), Id));
       RCL.DDS.Create (This.Waiting, P.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);

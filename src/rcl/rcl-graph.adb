@@ -116,7 +116,12 @@ package body RCL.Graph is
       Writer := new RCL.DDS.Writer;
       RCL.DDS.Create
         (Writer.all, RCL.Contexts.Participant.all, Topic_Name, Type_Name,
-         (RCL.QoS.Default with delta Depth => 1, Durability => RCL.QoS.Transient_Local));
+         (RCL.QoS.Default with delta Depth => 1, Durability => RCL.QoS.Transient_Local),
+         User_Data =>
+           (if Layout = Jazzy_16
+            then "typehash="
+                 & ROSIDL.Type_Hashes.Hash (ROSIDL.Typesupport.Definition (Support)) & ";"
+            else ""));
    end Open;
 
    function Gid_Bytes (Id : RCL.DDS.GUID) return ROSIDL.Dynamic.UInt8_Array is
@@ -297,8 +302,11 @@ package body RCL.Graph is
    -- Endpoint USER_DATA --
    -----------------------
 
-   function Endpoint_User_Data (Layout : GID_Layout; Extra : String := "") return String is
-     (Extra & (if Layout = Jazzy_16 then "typehash=" & Zero_Type_Hash & ";" else ""));
+   function Endpoint_User_Data
+     (Layout : GID_Layout; DDS_Type_Name : String; Extra : String := "") return String is
+     (Extra & (if Layout = Jazzy_16
+               then "typehash=" & ROSIDL.Type_Hashes.Hash_Of_DDS_Type (DDS_Type_Name) & ";"
+               else ""));
 
    function Type_Hash (User_Data : String) return String is
       Value : constant String := RCL.DDS.Matching.User_Data_Value (User_Data, "typehash");

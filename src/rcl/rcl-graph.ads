@@ -9,6 +9,7 @@
 --  select 16; anything else 24), before the first node is created.
 with Ada.Strings.Unbounded;
 with RCL.DDS;
+with ROSIDL.Type_Hashes;
 
 package RCL.Graph is
 
@@ -52,18 +53,18 @@ package RCL.Graph is
 
    --  Endpoint USER_DATA -------------------------------------------------
 
-   Zero_Type_Hash : constant String :=
-     "RIHS01_0000000000000000000000000000000000000000000000000000000000000000";
-   --  The type hash this library announces (Jazzy layout): computing the
-   --  real RIHS01 hash (SHA-256 of the type description) is not done; a
-   --  zero hash means "unknown" to Jazzy, which then matches by name.
+   Zero_Type_Hash : constant String := ROSIDL.Type_Hashes.Zero;
+   --  The hash of a type unknown to this program (a raw-CDR endpoint whose
+   --  interface is not on the search path): Jazzy then matches by name.
 
-   function Endpoint_User_Data (Layout : GID_Layout; Extra : String := "") return String;
-   --  The USER_DATA of an endpoint: Extra ("clientid=...;" or "") then, in
-   --  the Jazzy layout, "typehash=<Zero_Type_Hash>;".
+   function Endpoint_User_Data
+     (Layout : GID_Layout; DDS_Type_Name : String; Extra : String := "") return String;
+   --  The USER_DATA of an endpoint of the given type: Extra ("clientid=...;"
+   --  or "") then, in the Jazzy layout, "typehash=RIHS01_<hex>;", the
+   --  type's REP 2011 hash (ROSIDL.Type_Hashes), as rmw_cyclonedds writes it.
 
-   function Endpoint_User_Data (Extra : String := "") return String is
-     (Endpoint_User_Data (Layout, Extra));
+   function Endpoint_User_Data (DDS_Type_Name : String; Extra : String := "") return String is
+     (Endpoint_User_Data (Layout, DDS_Type_Name, Extra));
    --  The same in the current layout.
 
    function Type_Hash (User_Data : String) return String;

@@ -171,7 +171,7 @@ package body RCL.Nodes is
       S.Topic := new String'(FQ);
       S.Handle := Handle;
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
-                      Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data);
+                      Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Entities.Add (S);
       RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
@@ -195,7 +195,7 @@ package body RCL.Nodes is
       S.Topic := new String'(Name);
       S.Handle := Handle;
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data (User_Data));
+                      User_Data => RCL.Graph.Endpoint_User_Data (Type_Name, User_Data));
       This.Entities.Add (S);
       RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
       Added := S;

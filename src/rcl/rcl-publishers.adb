@@ -61,7 +61,7 @@ package body RCL.Publishers is
       Node       : RCL.Graph.Node_Id) is
    begin
       RCL.DDS.Create (This.W, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, Profile,
-                      User_Data => RCL.Graph.Endpoint_User_Data);
+                      User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Topic := To_Unbounded_String (Topic);
       This.Node := Node;
       RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));

@@ -88,7 +88,8 @@ package body RCL.Rosout is
       Writer := new RCL.DDS.Writer;
       RCL.DDS.Create (Writer.all, RCL.Contexts.Participant.all, "rt/rosout",
                       ROSIDL.Typesupport.DDS_Type_Name (Support), RCL.QoS.Rosout,
-                      User_Data => RCL.Graph.Endpoint_User_Data);
+                      User_Data => RCL.Graph.Endpoint_User_Data
+                        (ROSIDL.Typesupport.DDS_Type_Name (Support)));
       RCL.Logging.Set_Sink (Sink'Access);
    exception
       when E : others =>

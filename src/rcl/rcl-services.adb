@@ -175,7 +175,8 @@ package body RCL.Services is
       S.Name := To_Unbounded_String (FQ);
       RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
                       DDS_Type_Name (Response_Support (Support)), QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Id));
+                      User_Data => RCL.Graph.Endpoint_User_Data
+                                     (DDS_Type_Name (Response_Support (Support)), Id));
       RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
       Node.Add_Endpoint
         (Type_Name => DDS_Type_Name (Request_Support (Support)),

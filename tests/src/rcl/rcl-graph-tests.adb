@@ -2,6 +2,8 @@ with AUnit.Assertions; use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with ROSIDL;
+with ROSIDL.Interfaces;
+with ROSIDL.Type_Hashes;
 with ROSIDL.Typesupport;
 with RCL.Clients;
 with RCL.DDS.Matching;
@@ -103,6 +105,10 @@ package body RCL.Graph.Tests is
    end Endpoint_Removal;
 
    procedure Type_Hashes (Unused : in out Fixture) is
+      String_Type : constant String := "std_msgs::msg::dds_::String_";
+      String_Hash : constant String :=
+        "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18";
+      --  As published by ROS 2 Jazzy.
       Sample : constant String :=
         "typehash=RIHS01_00112233445566778899aabbccddeeff00112233445566778899aabbccddeeff;"
         & "clientid=1.f.a.b;";
@@ -115,11 +121,24 @@ package body RCL.Graph.Tests is
       Assert (Type_Hash ("clientid=1.f.a.b;") = Zero_Type_Hash, "missing means zero");
       Assert (Type_Hash ("") = Zero_Type_Hash, "empty USER_DATA");
       Assert (Type_Hash ("typehash") = Zero_Type_Hash, "no '=': ignored");
-      Assert (Endpoint_User_Data (Humble_24, "clientid=x;") = "clientid=x;", "Humble: no hash");
-      Assert (Endpoint_User_Data (Jazzy_16, "clientid=x;")
-              = "clientid=x;typehash=" & Zero_Type_Hash & ";", "Jazzy: zero hash");
-      Assert (Endpoint_User_Data (Jazzy_16) = "typehash=" & Zero_Type_Hash & ";",
+      Assert (Endpoint_User_Data (Humble_24, String_Type, "clientid=x;") = "clientid=x;",
+              "Humble: no hash");
+      Assert (Endpoint_User_Data (Jazzy_16, String_Type, "clientid=x;")
+              = "clientid=x;typehash=" & String_Hash & ";", "Jazzy: the type's hash");
+      Assert (Endpoint_User_Data (Jazzy_16, String_Type) = "typehash=" & String_Hash & ";",
               "Jazzy topic endpoint");
+      Assert (Endpoint_User_Data (Jazzy_16, "no_pkg::msg::dds_::Nothing_")
+              = "typehash=" & Zero_Type_Hash & ";", "Jazzy, unknown type: zero hash");
+      declare
+         Request : constant String := ROSIDL.Type_Hashes.Hash
+           (ROSIDL.Interfaces.Message_By_DDS_Name
+              ("example_interfaces::srv::dds_::AddTwoInts_Request_"));
+      begin
+         Assert (Request /= Zero_Type_Hash, "a service request has a hash");
+         Assert (Endpoint_User_Data
+                   (Jazzy_16, "example_interfaces::srv::dds_::AddTwoInts_Request_", "x=1;")
+                 = "x=1;typehash=" & Request & ";", "service request: the request's hash");
+      end;
       Assert (Zero_Type_Hash'Length = 7 + 64, "RIHS01_ and 64 hex digits");
    end Type_Hashes;
 
