@@ -14,8 +14,15 @@ log_dir="$repo_root/obj/test-logs"
 mkdir -p "$log_dir"
 
 echo "== AUnit suites (ROS_DOMAIN_ID=$ROS_DOMAIN_ID, loopback only)"
-./bin/test_driver 2>&1 | tee "$log_dir/aunit.txt"
+# A test that fails may leave a task running, which keeps the driver from
+# exiting: a time limit turns such a hang into a reported failure.
+timeout -k 15 "${AUNIT_TIMEOUT:-1200}" ./bin/test_driver 2>&1 | tee "$log_dir/aunit.txt"
 driver_status=${PIPESTATUS[0]}
+if [ "$driver_status" -eq 124 ] || [ "$driver_status" -eq 137 ]; then
+   echo "run-tests: the AUnit driver did not end within ${AUNIT_TIMEOUT:-1200} s (killed)"
+   failed=$((failed + 1))
+   status=1
+fi
 total=$(sed -n 's/^Total Tests Run: *\([0-9]*\).*/\1/p' "$log_dir/aunit.txt")
 ok=$(sed -n 's/^Successful Tests: *\([0-9]*\).*/\1/p' "$log_dir/aunit.txt")
 if [ -z "$total" ] || [ -z "$ok" ]; then

@@ -412,6 +412,46 @@ package body RCL.Nodes is
    ---------------------
 
    function Version (This : Node) return Natural is (This.Entities.Version);
+   function Tracked_Subscription (This : Node; Topic : String) return Subscription_Access is
+      FQ : constant String := This.Expand (Topic);
+   begin
+      for I in 1 .. This.Entities.Sub_Count loop
+         declare
+            S : constant Subscription_Access := This.Entities.Sub (I);
+         begin
+            if S.Topic.all = FQ then
+               return S;
+            end if;
+         end;
+      end loop;
+      raise ROS_Exception with "node " & To_String (This.Name) & " has no subscription on " & FQ;
+   end Tracked_Subscription;
+
+   procedure Track_Liveliness (This : in out Node; Topic : String) is
+      S : constant Subscription_Access := Tracked_Subscription (This, Topic);
+   begin
+      if not RCL.DDS.Is_Tracking_Liveliness (S.Reader) then
+         RCL.DDS.Track_Liveliness (S.Reader);
+      end if;
+   end Track_Liveliness;
+
+   procedure Take_Liveliness_Change
+     (This      : in out Node;
+      Topic     : String;
+      Publisher : out ROSIDL.GID;
+      Alive     : out Boolean;
+      Found     : out Boolean)
+   is
+      S      : constant Subscription_Access := Tracked_Subscription (This, Topic);
+      Writer : RCL.DDS.GUID;
+   begin
+      if not RCL.DDS.Is_Tracking_Liveliness (S.Reader) then
+         raise ROS_Exception with "liveliness of " & S.Topic.all & " not tracked";
+      end if;
+      RCL.DDS.Take_Liveliness_Change (S.Reader, Writer, Alive, Found);
+      Publisher := ROSIDL.GID (Writer);
+   end Take_Liveliness_Change;
+
    function Subscription_Count (This : Node) return Natural is (This.Entities.Sub_Count);
    function Get_Subscription (This : Node; Index : Positive) return Subscription_Access is
      (This.Entities.Sub (Index));

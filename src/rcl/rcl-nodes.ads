@@ -98,6 +98,27 @@ package RCL.Nodes is
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
 
+   --  Liveliness of publishers ---------------------------------------------
+
+   procedure Track_Liveliness (This : in out Node; Topic : String);
+   --  From now on, records the liveliness changes of the publishers that
+   --  this node's first subscription on Topic (expanded) matches: a
+   --  publisher whose QoS has a Lease (Liveliness Automatic) and that stops
+   --  asserting itself -- its process died, its host is cut off -- is
+   --  reported lost once the lease has passed, and alive again when heard
+   --  again. ROS_Exception when the node has no subscription on Topic.
+
+   procedure Take_Liveliness_Change
+     (This      : in out Node;
+      Topic     : String;
+      Publisher : out ROSIDL.GID;
+      Alive     : out Boolean;
+      Found     : out Boolean);
+   --  The oldest change recorded for Topic, if any (Found): the publisher's
+   --  GID (as in ROSIDL.Message_Info; all zero when DDS no longer knew it)
+   --  and whether it became alive or was lost. Safe while another task
+   --  spins the node.
+
    --  Services and clients (RCL.Services, RCL.Clients) --------------------
 
    procedure Serve

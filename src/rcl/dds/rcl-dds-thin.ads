@@ -228,4 +228,19 @@ package RCL.DDS.Thin is
    function Entity_Guid (Entity : Entity_T; Guid : out Guid_Bytes) return Return_T
      with Import, Convention => C, External_Name => "sancta_dds_entity_guid";
 
+   --  Liveliness of matched writers (shim, sancta_liveliness.h).
+
+   function Liveliness_Attach (Reader : Entity_T) return System.Address
+     with Import, Convention => C, External_Name => "sancta_liveliness_attach";
+
+   function Liveliness_Take
+     (Tracker : System.Address; Guid : out Guid_Bytes; Alive : out C.int) return C.int
+     with Import, Convention => C, External_Name => "sancta_liveliness_take";
+
+   function Liveliness_Dropped (Tracker : System.Address) return C.unsigned
+     with Import, Convention => C, External_Name => "sancta_liveliness_dropped";
+
+   procedure Liveliness_Detach (Reader : Entity_T; Tracker : System.Address)
+     with Import, Convention => C, External_Name => "sancta_liveliness_detach";
+
 end RCL.DDS.Thin;

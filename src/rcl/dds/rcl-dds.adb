@@ -525,8 +525,41 @@ package body RCL.DDS is
    function Type_Name (This : Reader) return String is
      (if This.Type_Name = null then "" else This.Type_Name.all);
 
+   procedure Track_Liveliness (This : in out Reader) is
+   begin
+      This.Liveliness := Thin.Liveliness_Attach (C.int (This.Handle));
+      if This.Liveliness = System.Null_Address then
+         raise ROS_Exception with "cannot track the liveliness of the writers of "
+           & This.Topic_Name.all;
+      end if;
+   end Track_Liveliness;
+
+   function Is_Tracking_Liveliness (This : Reader) return Boolean is
+     (This.Liveliness /= System.Null_Address);
+
+   procedure Take_Liveliness_Change
+     (This   : in out Reader;
+      Writer : out GUID;
+      Alive  : out Boolean;
+      Found  : out Boolean)
+   is
+      G : Thin.Guid_Bytes;
+      A : C.int;
+   begin
+      Found := Thin.Liveliness_Take (This.Liveliness, G, A) = 1;
+      Writer := (if Found then GUID (G) else Null_GUID);
+      Alive := Found and then A = 1;
+   end Take_Liveliness_Change;
+
+   function Dropped_Liveliness_Changes (This : Reader) return Natural is
+     (Natural (Thin.Liveliness_Dropped (This.Liveliness)));
+
    overriding procedure Finalize (This : in out Reader) is
    begin
+      if This.Liveliness /= System.Null_Address then
+         Thin.Liveliness_Detach (C.int (This.Handle), This.Liveliness);
+         This.Liveliness := System.Null_Address;
+      end if;
       Delete (This.Condition);
       Delete (This.Handle);
       Delete (This.Topic);

@@ -165,6 +165,29 @@ package RCL.DDS is
    function Topic_Name (This : Reader) return String;
    function Type_Name (This : Reader) return String;
 
+   procedure Track_Liveliness (This : in out Reader)
+     with Pre => Is_Open (This) and then not Is_Tracking_Liveliness (This);
+   --  From now on, queues every liveliness change of the writers This
+   --  matches (their QoS lease expiring, a writer asserting itself again)
+   --  for Take_Liveliness_Change. Cyclone reports the changes in its own
+   --  thread; the queue holds 1024 of them.
+
+   function Is_Tracking_Liveliness (This : Reader) return Boolean;
+
+   procedure Take_Liveliness_Change
+     (This   : in out Reader;
+      Writer : out GUID;
+      Alive  : out Boolean;
+      Found  : out Boolean)
+     with Pre => Is_Tracking_Liveliness (This);
+   --  The oldest queued change, if any (Found): the writer's endpoint GUID
+   --  (Null_GUID when Cyclone no longer knew it) and whether it became
+   --  alive (True) or lost its liveliness or vanished (False).
+
+   function Dropped_Liveliness_Changes (This : Reader) return Natural
+     with Pre => Is_Tracking_Liveliness (This);
+   --  Changes lost because the queue was full.
+
    overriding procedure Finalize (This : in out Reader);
 
    -------------
@@ -240,6 +263,8 @@ private
       Condition : Entity_Id := No_Entity;
       Cache     : GUID_Cache;
       Topic_Name, Type_Name : Name_Access;
+      Liveliness : System.Address := System.Null_Address;
+      --  The shim's liveliness tracker, when tracking.
    end record;
 
    type Waitset is new Ada.Finalization.Limited_Controlled with record

@@ -6,6 +6,7 @@ with Ada.Text_IO;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.DDS;
 with RCL.QoS;
 with Sancta.Team.Interfaces;
 
@@ -71,27 +72,55 @@ package body Sancta.Team.Networks is
    --  Protected helpers ---------------------------------------------------------
 
    protected body Roster is
-      procedure Heard (Member : String; Lease : Duration; New_Member : out Boolean) is
+      procedure Heard
+        (Member : String; Lease : Duration; Writer : String; New_Member : out Boolean) is
       begin
          New_Member := not Last.Contains (Member);
          Last.Include (Member, Clock);
          Leases.Include (Member, Lease);
+         Writers.Include (Member, Writer);
       end Heard;
 
-      procedure Expire (Now : Time; Lost : out Name_Vectors.Vector) is
+      procedure Writer_Lost (Writer : String; Member : out Unbounded_String) is
+      begin
+         Member := Null_Unbounded_String;
+         for C in Writers.Iterate loop
+            if Name_Maps.Element (C) = Writer then
+               Member := To_Unbounded_String (Name_Maps.Key (C));
+            end if;
+         end loop;
+         if Length (Member) > 0 then
+            Last.Exclude (To_String (Member));
+            Leases.Exclude (To_String (Member));
+            Writers.Exclude (To_String (Member));
+         end if;
+      end Writer_Lost;
+
+      procedure Expire
+        (Now : Time; Local_Prefix : String; All_Members : Boolean;
+         Lost : in out Name_Vectors.Vector)
+      is
          use Time_Maps;
          C : Cursor := Last.First;
+         function Is_Local (Member : String) return Boolean is
+           (Writers.Contains (Member)
+            and then Ada.Strings.Fixed.Head (Writers.Element (Member), Local_Prefix'Length)
+                     = Local_Prefix);
+         Expired : Name_Vectors.Vector;
       begin
-         Lost.Clear;
          while Has_Element (C) loop
-            if Now - Element (C) > To_Time_Span (Leases.Element (Key (C))) then
-               Lost.Append (To_Unbounded_String (Key (C)));
+            if (All_Members or else Is_Local (Key (C)))
+              and then Now - Element (C) > To_Time_Span (Leases.Element (Key (C)))
+            then
+               Expired.Append (To_Unbounded_String (Key (C)));
             end if;
             Next (C);
          end loop;
-         for M of Lost loop
+         Lost.Append (Expired);
+         for M of Expired loop
             Last.Delete (To_String (M));
             Leases.Delete (To_String (M));
+            Writers.Exclude (To_String (M));
          end loop;
       end Expire;
 
@@ -99,6 +128,7 @@ package body Sancta.Team.Networks is
       begin
          Last.Clear;
          Leases.Clear;
+         Writers.Clear;
       end Clear;
 
       function List return Name_Vectors.Vector is
@@ -170,10 +200,14 @@ package body Sancta.Team.Networks is
       end loop;
    end Notify_Lost;
 
-   procedure Heard (This : in out Network'Class; Member : String; Lease : Duration) is
+   function Image (Writer : ROSIDL.GID) return String is
+     (RCL.DDS.Image (RCL.DDS.GUID (Writer)));
+
+   procedure Heard
+     (This : in out Network'Class; Member : String; Lease : Duration; Writer : String) is
       New_Member : Boolean;
    begin
-      This.Alive.Heard (Member, Lease, New_Member);
+      This.Alive.Heard (Member, Lease, Writer, New_Member);
       if New_Member then
          Notify_Joined (This, Member);
       end if;
@@ -228,7 +262,6 @@ package body Sancta.Team.Networks is
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info)
    is
-      pragma Unreferenced (Info);
       Net : constant Network_Access := Registry.Find (Node.Name);
    begin
       if Net = null or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping then
@@ -238,7 +271,8 @@ package body Sancta.Team.Networks is
          Lease : constant Long_Float := Long_Float (Msg ("lease").As_Float64.Element.all);
       begin
          if Lease >= 0.01 and then Lease <= 3600.0 then
-            Heard (Net.all, Msg ("node").Get_String, Duration (Lease));
+            Heard (Net.all, Msg ("node").Get_String, Duration (Lease),
+                   Image (Info.Publisher_GID));
          end if;
       end;
    end On_Presence;
@@ -293,7 +327,9 @@ package body Sancta.Team.Networks is
       Net.Messages := new RCL.Publishers.Publisher'
         (Net.Node.Publish (Support ("Envelope"), Messages_Topic (Team), Message_QoS));
       Net.Presence := new RCL.Publishers.Publisher'
-        (Net.Node.Publish (Support ("Presence"), Presence_Topic (Team), Presence_QoS));
+        (Net.Node.Publish (Support ("Presence"), Presence_Topic (Team),
+                           (Presence_QoS with delta Liveliness => RCL.QoS.Manual_By_Topic,
+                                                    Lease      => Lease)));
       Net.State := new RCL.Publishers.Publisher'
         (Net.Node.Publish (Support ("DbEntry"), State_Topic (Team), State_QoS));
       return Net;
@@ -330,6 +366,9 @@ package body Sancta.Team.Networks is
                            On_Envelope'Access, Message_QoS);
       This.Node.Subscribe (Support ("Presence"), Presence_Topic (To_String (This.Team)),
                            On_Presence'Access, Presence_QoS);
+      --  The reader's lease is infinite: it matches writers of any lease,
+      --  and DDS reports each one's liveliness by its own lease.
+      This.Node.Track_Liveliness (Presence_Topic (To_String (This.Team)));
       This.Node.Subscribe (Support ("DbEntry"), State_Topic (To_String (This.Team)),
                            On_State'Access, State_QoS);
       This.Worker := new Receiver (This'Unchecked_Access);
@@ -403,7 +442,7 @@ package body Sancta.Team.Networks is
    procedure Beat (This : in out Network'Class) is
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("Presence"));
    begin
-      Heard (This, To_String (This.Id), This.Lease);
+      Heard (This, To_String (This.Id), This.Lease, "");
       if This.Status.Get.Isolated then
          return;
       end if;
@@ -439,6 +478,9 @@ package body Sancta.Team.Networks is
    task body Receiver is
       Period : constant Time_Span := To_Time_Span (Owner.Lease / 4);
       Lost   : Name_Vectors.Vector;
+      Local_Prefix : constant String :=
+        Ada.Strings.Fixed.Head (RCL.DDS.Image (Owner.Presence.GID), 12 * 3 - 1);
+      --  "xx.xx....": the 12-byte GUID prefix of this process's participant.
    begin
       accept Go;
       loop
@@ -448,7 +490,28 @@ package body Sancta.Team.Networks is
                Beat (Owner.all);
                Owner.Next_Beat := Clock + Period;
             end if;
-            Owner.Alive.Expire (Clock, Lost);
+            Lost.Clear;
+            loop
+               declare
+                  Writer       : ROSIDL.GID;
+                  Alive, Found : Boolean;
+                  Member       : Unbounded_String;
+               begin
+                  Owner.Node.Take_Liveliness_Change
+                    (Presence_Topic (To_String (Owner.Team)), Writer, Alive, Found);
+                  exit when not Found;
+                  if not Alive and then not Owner.Status.Get.Isolated then
+                     Owner.Alive.Writer_Lost (Image (Writer), Member);
+                     if Length (Member) > 0 then
+                        Lost.Append (Member);
+                     end if;
+                  end if;
+               end;
+            end loop;
+            --  Cyclone applies no lease to the writers of its own
+            --  participant: members in this process are expired on silence,
+            --  as is everyone while this node is isolated.
+            Owner.Alive.Expire (Clock, Local_Prefix, Owner.Status.Get.Isolated, Lost);
             for M of Lost loop
                if To_String (M) /= To_String (Owner.Id) then
                   Notify_Lost (Owner.all, To_String (M));

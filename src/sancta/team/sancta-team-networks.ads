@@ -9,19 +9,26 @@
 --  receiver hands a sample to the consumers subscribed to its channel when
 --  the destination is itself, one of its groups, or everyone.
 --
---  Presence uses a heartbeat topic (/sancta/team/presence, sancta_msgs/
---  Presence) rather than DDS liveliness, because the RCL layer does not
---  expose liveliness-changed status: each node publishes its heartbeat every
---  Lease / 4 and a member silent for more than its announced Lease is lost.
---  Membership listeners hear joins (also re-joins) and losses.
+--  Presence rests on DDS liveliness: each node writes its presence
+--  (sancta_msgs/Presence on /sancta/team/presence: id, groups, lease) with
+--  the QoS liveliness MANUAL_BY_TOPIC and a lease of Lease, every Lease / 4;
+--  each write asserts its liveliness. A node hearing a presence sample
+--  from an unknown member reports a join; when DDS reports the member's
+--  presence writer not alive (its process died, its host is cut off, or it
+--  stopped writing for longer than its lease) it reports the loss; a member
+--  heard again rejoins. Membership listeners hear joins and losses.
+--  (Cyclone applies no lease to the writers of its own participant: members
+--  living in the same process are expired when silent for their lease.)
 --
 --  The replicated database's entries travel on /sancta/team/state
 --  (sancta_msgs/DbEntry, reliable, TRANSIENT_LOCAL, depth 1000) through the
 --  same Network (Publish_State / Set_State_Consumer).
 --
 --  Isolate simulates a cut-off host: while isolated a node neither sends nor
---  receives anything (tests of catching up; the namespace test cuts a real
---  link).
+--  receives anything, so the others' DDS liveliness declares it lost after
+--  its lease; and it expires the others itself once it has not heard them
+--  for their lease (what their lapsed liveliness would tell a really cut-off
+--  host). Tests of catching up use it; the namespace test cuts a real link.
 --
 --     Net : Network_Access := Create ("r1", Groups => "robots", Lease => 2.0);
 --     Net.Subscribe ("auction", My_Consumer'Access);
@@ -138,15 +145,30 @@ private
      (String, Ada.Real_Time.Time, "<", Ada.Real_Time."=");
    package Lease_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Duration);
 
+   package Name_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, String);
+
    protected type Roster is
-      procedure Heard (Member : String; Lease : Duration; New_Member : out Boolean);
-      procedure Expire (Now : Ada.Real_Time.Time; Lost : out Name_Vectors.Vector);
+      procedure Heard
+        (Member : String; Lease : Duration; Writer : String; New_Member : out Boolean);
+      --  Writer: the image of the member's presence writer GID ("" for
+      --  the node itself).
+      procedure Writer_Lost (Writer : String; Member : out Unbounded_String);
+      --  Removes the member whose current presence writer is Writer; Member
+      --  is "" when there is none (an older writer of a restarted member).
+      procedure Expire
+        (Now : Ada.Real_Time.Time; Local_Prefix : String; All_Members : Boolean;
+         Lost : in out Name_Vectors.Vector);
+      --  Appends to Lost, and removes, the members silent for more than
+      --  their lease among those whose presence writer's GUID starts with
+      --  Local_Prefix (or all members when All_Members).
       procedure Clear;
       function List return Name_Vectors.Vector;
       function Contains (Member : String) return Boolean;
    private
-      Last   : Time_Maps.Map;
-      Leases : Lease_Maps.Map;
+      Last    : Time_Maps.Map;
+      Leases  : Lease_Maps.Map;
+      Writers : Name_Maps.Map;
+      --  Member -> image of its presence writer's GID.
    end Roster;
 
    protected type Mutex is

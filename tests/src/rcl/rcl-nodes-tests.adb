@@ -150,6 +150,55 @@ package body RCL.Nodes.Tests is
       Assert (Count = 0, "a reliable reader gets nothing from a best-effort writer");
    end QoS_Mismatch;
 
+   procedure Publisher_Liveliness (Unused : in out Fixture) is
+      Leased   : constant RCL.QoS.Profile := (RCL.QoS.Default with delta Lease => 0.5);
+      Watcher  : Node := Init ("liveliness_watcher");
+      Writer   : ROSIDL.GID := [others => 0];
+      G        : ROSIDL.GID;
+      Alive, Found : Boolean;
+      Came_Alive, Lost : Boolean := False;
+      Raised   : Boolean := False;
+   begin
+      Watcher.Subscribe_Raw (Type_Name, "/leased", On_Data'Access, Leased);
+      Watcher.Track_Liveliness ("/leased");
+      Watcher.Track_Liveliness ("leased");   --  twice: no effect
+      declare
+         Other : Node := Init ("liveliness_publisher");
+         Pub   : constant RCL.Publishers.Publisher :=
+           Other.Publish_Raw (Type_Name, "/leased", Leased);
+      begin
+         Writer := ROSIDL.GID (Pub.GID);
+         Pub.Publish_Raw (Payload (1));
+         for I in 1 .. 100 loop
+            Watcher.Take_Liveliness_Change ("/leased", G, Alive, Found);
+            if Found then
+               Came_Alive := Alive and then G = Writer;
+               exit;
+            end if;
+            delay 0.05;
+         end loop;
+      end;
+      --  The publisher is gone: reported lost.
+      for I in 1 .. 100 loop
+         Watcher.Take_Liveliness_Change ("/leased", G, Alive, Found);
+         if Found then
+            Lost := not Alive and then G = Writer;
+            exit;
+         end if;
+         delay 0.05;
+      end loop;
+      Assert (Came_Alive, "the publisher is reported alive, with its GID");
+      Assert (Lost, "the deleted publisher is reported lost, with its GID");
+      begin
+         Watcher.Track_Liveliness ("/not_subscribed");
+      exception
+         when E : ROS_Exception =>
+            Raised := Ada.Strings.Fixed.Index
+              (Ada.Exceptions.Exception_Message (E), "/not_subscribed") > 0;
+      end;
+      Assert (Raised, "no subscription on the topic: ROS_Exception naming it");
+   end Publisher_Liveliness;
+
    Ticks : Natural := 0 with Atomic;
 
    procedure Tick (Node : in out Nodes.Node'Class; Timer : in out RCL.Timers.Timer;
@@ -370,6 +419,8 @@ package body RCL.Nodes.Tests is
       Result.Add_Test (Caller.Create ("nodes: callback exception", Callback_Exception'Access));
       Result.Add_Test (Caller.Create ("nodes: two nodes, one executor", Two_Nodes'Access));
       Result.Add_Test (Caller.Create ("nodes: QoS mismatch", QoS_Mismatch'Access));
+      Result.Add_Test (Caller.Create ("nodes: publisher liveliness (alive, lost)",
+                                      Publisher_Liveliness'Access));
       Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
       Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
       Result.Add_Test (Caller.Create ("nodes: errors", Errors'Access));
