@@ -289,7 +289,8 @@ package body Sancta.Allocation.Annealers is
    procedure Evaluate_Move
      (P : Problem; S : State; W : Weights; Mv : in out Move; Valid : out Boolean)
    is
-      A : constant Positive := Mv.A.Robot;
+      A : constant Natural := Mv.A.Robot;
+      --  Positive but for a switch subtree move (no tour plans).
       B : constant Natural := Mv.B.Robot;
       Max, Sum, Comp : Cost;
    begin
@@ -1236,6 +1237,7 @@ package body Sancta.Allocation.Annealers is
       --  Best holds the best solution; False while the current solution is
       --  a better one not yet copied (copied before leaving it).
       Moves, Accepted, Last_Best_Move : Long_Long_Integer := 0;
+      Switches : Long_Long_Integer := 0;
       T0, T1, Temp : Long_Float;
       Elapsed : Duration := 0.0;
       Best_Time : Duration := 0.0;
@@ -1465,7 +1467,7 @@ package body Sancta.Allocation.Annealers is
                      Moves_Per_Second => (if Elapsed > 0.0
                                           then Long_Float (Moves) / Long_Float (Elapsed)
                                           else 0.0),
-                     Time_To_Best => Best_Time));
+                     Time_To_Best => Best_Time, Switches => Switches));
          end if;
       end Send_Report;
 
@@ -1705,6 +1707,9 @@ package body Sancta.Allocation.Annealers is
                   end if;
                   Do_Apply (Mv);
                   Accepted := Accepted + 1;
+                  if Mv.Or_Node /= 0 then
+                     Switches := Switches + 1;
+                  end if;
                   Cur := Mv.Value;
                   if D < 0.0 then
                      Score (Kind) := Score (Kind) + 1.0;
@@ -1755,7 +1760,7 @@ package body Sancta.Allocation.Annealers is
                 Accepted => Accepted, Elapsed => Elapsed,
                 Moves_Per_Second => (if Elapsed > 0.0
                                      then Long_Float (Moves) / Long_Float (Elapsed) else 0.0),
-                Time_To_Best => Best_Time);
+                Time_To_Best => Best_Time, Switches => Switches);
       Free (S);
       Free (D);
    end Solve;

@@ -89,6 +89,8 @@ package Sancta.Allocation.Annealers is
       Elapsed       : Duration := 0.0;
       Moves_Per_Second : Long_Float := 0.0;
       Time_To_Best  : Duration := 0.0;
+      Switches      : Long_Long_Integer := 0;
+      --  Accepted switch subtree moves (plan trees).
    end record;
 
    type Reporter is access procedure (P : Progress);
