@@ -1,3 +1,5 @@
+with Ada.Strings.Fixed;
+
 package body Sancta.Allocation.Problems is
 
    function Create
@@ -380,6 +382,14 @@ package body Sancta.Allocation.Problems is
       end loop;
       return Sel;
    end Cheapest_Selection;
+
+   function Task_Name (This : Problem; T : Positive) return String is
+     (if T <= Natural (This.Task_Names.Length) then This.Task_Names (T)
+      else Ada.Strings.Fixed.Trim (T'Image, Ada.Strings.Left));
+
+   function Or_Name (This : Problem; O : Positive) return String is
+     (if O <= Natural (This.Or_Names.Length) then This.Or_Names (O)
+      else "or" & Ada.Strings.Fixed.Trim (O'Image, Ada.Strings.Left));
 
    function Check (This : Problem) return String is
       Seen : Boolean_Array (1 .. This.Tasks) := [others => False];

@@ -25,6 +25,7 @@
 --  modelled as their entry location plus an inner length folded into the
 --  matrix by the caller; every task must be feasible for some robot even
 --  when it sits in an alternative never chosen; at most Tasks OR nodes.
+with Ada.Containers.Indefinite_Vectors;
 with Ada.Containers.Vectors;
 with Sancta.Geometry;
 
@@ -59,6 +60,7 @@ package Sancta.Allocation.Problems is
 
    package Node_Vectors is new Ada.Containers.Vectors (Positive, Plan_Node);
    package Natural_Vectors is new Ada.Containers.Vectors (Positive, Natural);
+   package Name_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
 
    type Problem
      (Locations    : Positive;
@@ -102,6 +104,9 @@ package Sancta.Allocation.Problems is
       Task_Branch    : Location_Array (1 .. Tasks) := [others => 0];
       --  Nearest OR ancestor of each task and the alternative it lies in.
       In_Plan        : Boolean_Array (1 .. Tasks) := [others => False];
+      Task_Names     : Name_Vectors.Vector;
+      Or_Names       : Name_Vectors.Vector;
+      --  Optional labels of the tasks and OR ordinals (mission files).
    end record;
 
    type Problem_Access is access Problem;
@@ -246,6 +251,10 @@ package Sancta.Allocation.Problems is
    --  start -> task -> end trip (times its multiplier); locked nodes keep
    --  their frozen alternative. Used by the baselines and the annealer's
    --  construction.
+
+   function Task_Name (This : Problem; T : Positive) return String;
+   function Or_Name (This : Problem; O : Positive) return String;
+   --  The label given (Task_Names, Or_Names) or the number.
 
    function Check (This : Problem) return String;
    --  "" when consistent; else what is wrong.

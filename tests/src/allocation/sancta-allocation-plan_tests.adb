@@ -1,3 +1,7 @@
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
 with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
@@ -6,6 +10,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
+with Sancta.Allocation.Missions;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.Random;
 with Sancta.Geometry;
@@ -451,6 +456,131 @@ package body Sancta.Allocation.Plan_Tests is
       end loop;
    end Robot_Cost_Functions;
 
+   NL : constant String := [1 => ASCII.LF];
+
+   procedure Write (File, Text : String) is
+      F : Ada.Text_IO.File_Type;
+   begin
+      Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, File);
+      Ada.Text_IO.Put (F, Text);
+      Ada.Text_IO.Close (F);
+   end Write;
+
+   procedure Expect_Error (F, Text, Expect : String) is
+   begin
+      Write (F, Text);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         pragma Unreferenced (P);
+      begin
+         Assert (False, "no error, expected '" & Expect & "'");
+      end;
+   exception
+      when E : Format_Error =>
+         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
+                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
+                 & Expect & "'");
+   end Expect_Error;
+
+   procedure Mission_Plans (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-compound.xml";
+      Head : constant String := "<mission scale=""10"">" & NL
+        & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL;
+      Body_Text : constant String :=
+        "  <robot id=""bo"" x=""0"" y=""0"" factor=""2"" metric=""manhattan""/>" & NL
+        & "  <task id=""t1"" x=""1"" y=""0""/>" & NL
+        & "  <plan>" & NL
+        & "    <or id=""survey"" robots=""ari"">" & NL
+        & "      <and> <task x=""2"" y=""0""/> <task x=""3"" y=""0""/> </and>" & NL
+        & "      <task id=""far"" x=""50"" y=""50""/>" & NL
+        & "      <or>" & NL
+        & "        <and> <task x=""9"" y=""9""/>" & NL
+        & "              <or> <at x=""8"" y=""0""/> <at x=""7"" y=""7""/> </or> </and>" & NL
+        & "        <task x=""40"" y=""0""/>" & NL
+        & "      </or>" & NL
+        & "    </or>" & NL
+        & "  </plan>" & NL;
+   begin
+      Write (F, Head & Body_Text & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Assert (P.Tasks = 7 and then Or_Count (P.all) = 2, "sizes:" & P.Tasks'Image
+                 & Or_Count (P.all)'Image);
+         Assert (Alternatives (P.all, 1) = 3 and then Alternatives (P.all, 2) = 2,
+                 "alternatives");
+         Assert (Task_Name (P.all, 3) = "survey.1.2" and then Task_Name (P.all, 4) = "far"
+                 and then Task_Name (P.all, 6) = "survey.3.1.2", "names: "
+                 & Task_Name (P.all, 3) & " " & Task_Name (P.all, 6));
+         Assert (P.Alt_Count (6) = 2 and then P.Alt_Count (5) = 1, "flat OR in a compound");
+         Assert (P.Task_Or (2) = 1 and then P.Task_Branch (2) = 1 and then P.Task_Or (5) = 2
+                 and then P.Task_Branch (5) = 1 and then Or_Parent (P.all, 2) = 1
+                 and then Or_Branch (P.all, 2) = 3 and then P.Task_Or (1) = 0, "tree shape");
+         Assert (not P.Can_Do (2, 2) and then not P.Can_Do (2, 7) and then P.Can_Do (2, 1),
+                 "robots= applies to the whole subtree");
+         --  bo: Manhattan x factor 2 x scale 10; task survey.3.1.1 at (9, 9).
+         Assert (Robot_Distance (P.all, 2, 2, Location_Of (P.all, 5)) = 360
+                 and then Robot_Distance (P.all, 1, 1, Location_Of (P.all, 5)) = 127,
+                 "own metric:" & Robot_Distance (P.all, 2, 2, Location_Of (P.all, 5))'Image);
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Validate (P.all, A) = "", Validate (P.all, A));
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal on the compound plan");
+         Assert (A.Branch (1) = 1 and then E.Branch (1) = 1, "the near compound alternative");
+         Assert (Evaluate (P.all, E, Min_Sum).Sum = 60, "cost"
+                 & Evaluate (P.all, E, Min_Sum).Sum'Image);
+      end;
+      --  A task done in the nested alternative locks both OR nodes there.
+      Write (F, Head & Body_Text & "  <done robot=""ari"" tasks=""survey.3.2""/>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Validate (P.all, A) = "" and then A.Branch (1) = 3 and then A.Branch (2) = 2
+                 and then E.Branch (1) = 3, "locked by the done task");
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal with the lock");
+      end;
+      Expect_Error (F, Head & "  <or id=""e""/>" & NL & "</mission>" & NL,
+                    F & ":3: <or id=""e""> has no alternative");
+      Expect_Error (F, Head & "  <or id=""x"">" & NL & "    <at x=""1"" y=""1""/>" & NL
+                    & "    <and/>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":6: alternative 2 (line 5) of <or id=""x""> has no task");
+      Expect_Error (F, Head & "  <or id=""y"">" & NL & "    <at x=""1"" y=""1""/>" & NL
+                    & "    <and> <task x=""1"" y=""1""/> <or> </or> </and>" & NL
+                    & "  </or>" & NL & "</mission>" & NL,
+                    F & ":5: <or id=""y""> has no alternative");
+      Expect_Error (F, Head & "  <task id=""s.2"" x=""1"" y=""1""/>" & NL
+                    & "  <or id=""s"">" & NL
+                    & "    <and> <task x=""1"" y=""1""/> <task x=""2"" y=""1""/> </and>" & NL
+                    & "    <task x=""5"" y=""5""/>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":6: task 's.2' defined twice (also line 3)");
+      Expect_Error (F, Head & "  <robot id=""b"" x=""1"" y=""1"" factor=""-1""/>" & NL
+                    & "</mission>" & NL,
+                    F & ":3: <robot> factor='-1' is not a number in (0, 1e6]");
+      Expect_Error (F, Head & "  <robot id=""b"" x=""1"" y=""1"" metric=""taxi""/>" & NL
+                    & "</mission>" & NL,
+                    F & ":3: <robot> metric='taxi' is not euclidean or manhattan");
+      Expect_Error (F, Head & "  <plan>" & NL & "    <task id=""a"" x=""1"" y=""1"">" & NL
+                    & "      <at x=""1"" y=""1""/>" & NL & "    </task>" & NL & "  </plan>" & NL
+                    & "</mission>" & NL,
+                    F & ":5: <at> must be inside <mission>, <and> or <or>");
+      Expect_Error (F, Head & "  <or id=""d"">" & NL & "    <or> <or>" & NL
+                    & "      <and> <task x=""1"" y=""1""/> <task x=""2"" y=""1""/> </and>" & NL
+                    & "    </or> </or>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":4: more <or> nodes than tasks");
+      Ada.Directories.Delete_File (F);
+   end Mission_Plans;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -467,6 +597,7 @@ package body Sancta.Allocation.Plan_Tests is
       Add ("switch to a compound alternative; frozen tasks lock OR nodes",
            Switch_To_Compound'Access);
       Add ("per-robot cost functions", Robot_Cost_Functions'Access);
+      Add ("mission XML: nested compound plans, robot metrics, errors", Mission_Plans'Access);
       return Result;
    end Suite;
 
