@@ -27,7 +27,7 @@ package body Sancta.Commands.Plan is
    begin
       Put_Line ("usage: sancta plan FILE [options]");
       Put_Line ("  FILE                 a TSPLIB .tsp/.atsp instance (depot = node 1) or a");
-      Put_Line ("                       SANCTA mission .xml (robots, tasks, OR alternatives)");
+      Put_Line ("                       SANCTA mission .xml (robots, tasks, AND/OR plans)");
       Put_Line ("options:");
       Put_Line ("  --robots N           number of robots for TSPLIB files (default 1)");
       Put_Line ("  --objective NAME     minmax | minsum | minave | minmix | mintim, or");
