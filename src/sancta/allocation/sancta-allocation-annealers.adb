@@ -680,6 +680,25 @@ package body Sancta.Allocation.Annealers is
 
    function Random_Task (P : Problem; S : State; G : in out Gen) return Natural is
    begin
+      if S.N_Active < S.NT then
+         --  Plan trees: a uniform pick among the tasks in the tours (O (R)).
+         for Try in 1 .. 8 loop
+            declare
+               K : Natural := Random.Below (G, Positive'Max (1, S.N_Active));
+            begin
+               for R in 1 .. S.NR loop
+                  if K < S.Len (R) then
+                     if K + 1 > P.Frozen_Length (R) then
+                        return S.Tk (R, K + 1);
+                     end if;
+                     exit;
+                  end if;
+                  K := K - S.Len (R);
+               end loop;
+            end;
+         end loop;
+         return 0;
+      end if;
       for Try in 1 .. 8 loop
          declare
             T : constant Positive := 1 + Random.Below (G, S.NT);
@@ -968,23 +987,75 @@ package body Sancta.Allocation.Annealers is
    --  sum, completion and makespan are exact, Apply_Subtree then installs
    --  them and rebuilds only the touched robots.
 
-   type Pending (NR, NP, NT : Positive) is record
+   type Pending (NR, NP, NT, NI : Positive) is record
       Tk      : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      Lc      : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  The tasks' locations.
       Len     : Count_Array (1 .. NR) := [others => 0];
       Changed : Boolean_Array (1 .. NR) := [others => False];
       RC, RCm : Cost_Array (1 .. NR) := [others => 0];
       Sel     : Location_Array (1 .. NT) := [others => 1];
       Gone    : Boolean_Array (1 .. NT) := [others => False];
       Added   : Count_Array (1 .. NT) := [others => 0];
+      Or_Node : Natural := 0;
+      New_Active : Natural := 0;
+      Under_First : Count_Array (1 .. NP) := [others => 1];
+      Under   : Count_Array (1 .. NI) := [others => 0];
+      --  The tasks below each OR ordinal O: Under (Under_First (O) ..
+      --  Under_First (O + 1) - 1) (fixed for the run; NP = NT + 1).
    end record;
+
+   procedure Set_Under (P : Problem; D : in out Pending) is
+      Count : Count_Array (1 .. D.NT + 1) := [others => 0];
+   begin
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               Count (X) := Count (X) + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+      D.Under_First (1) := 1;
+      for O in 1 .. D.NT loop
+         D.Under_First (O + 1) := D.Under_First (O) + Count (O);
+      end loop;
+      Count := [others => 0];
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               D.Under (D.Under_First (X) + Count (X)) := T;
+               Count (X) := Count (X) + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+   end Set_Under;
+
+   function Under_Size (P : Problem) return Positive is
+      N : Natural := 0;
+   begin
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               N := N + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+      return Positive'Max (1, N);
+   end Under_Size;
    type Pending_Access is access Pending;
    procedure Free is new Ada.Unchecked_Deallocation (Pending, Pending_Access);
 
-   function Pending_Loc (P : Problem; S : State; D : Pending; R : Positive; Q : Natural)
-     return Natural
-   is (if Q = 0 then P.Start (R)
-       elsif Q > D.Len (R) then P.Finish (R)
-       else Location_Of (P, D.Tk (R, Q), S.Choice (D.Tk (R, Q))));
+   function Pending_Loc (P : Problem; D : Pending; R : Positive; Q : Natural) return Natural
+   is (if Q = 0 then P.Start (R) elsif Q > D.Len (R) then P.Finish (R) else D.Lc (R, Q));
 
    procedure Pending_Costs (P : Problem; S : State; D : in out Pending; R : Positive) is
       Here : Natural := P.Start (R);
@@ -1040,9 +1111,10 @@ package body Sancta.Allocation.Annealers is
       if D.Sel (O) >= S.Sel (O) then
          D.Sel (O) := D.Sel (O) + 1;
       end if;
-      --  Which tasks leave and which come.
-      for T in 1 .. S.NT loop
+      --  Which tasks leave and which come (only tasks below O can).
+      for K in D.Under_First (O) .. D.Under_First (O + 1) - 1 loop
          declare
+            T : constant Positive := D.Under (K);
             After : constant Boolean := Is_Active (P, D.Sel, T);
          begin
             D.Gone (T) := S.Active (T) and then not After;
@@ -1055,7 +1127,7 @@ package body Sancta.Allocation.Annealers is
             end if;
          end;
       end loop;
-      --  The current tours without the leaving tasks.
+      --  The current tours without the leaving tasks, and their costs.
       for R in 1 .. S.NR loop
          D.Len (R) := 0;
          D.Changed (R) := False;
@@ -1065,8 +1137,17 @@ package body Sancta.Allocation.Annealers is
             else
                D.Len (R) := D.Len (R) + 1;
                D.Tk (R, D.Len (R)) := S.Tk (R, I);
+               D.Lc (R, D.Len (R)) := S.Lc (R, I);
             end if;
          end loop;
+         if D.Changed (R) then
+            Pending_Costs (P, S, D, R);
+         else
+            D.RC (R) := S.RC (R);
+         end if;
+      end loop;
+      for K in D.Under_First (O) .. D.Under_First (O + 1) - 1 loop
+         D.Gone (D.Under (K)) := False;
       end loop;
       --  Insert the coming tasks in random order.
       for I in reverse 2 .. NA loop
@@ -1088,19 +1169,26 @@ package body Sancta.Allocation.Annealers is
                Best_R : Natural := 0;
                Best_Q : Natural := 0;
                Best_D : Cost := Cost'Last;
+               Best_K : Cost := Cost'Last;
+               Makespan : constant Boolean :=
+                 W.C.Max_Weight > 0.0 and then W.C.Sum_Weight = 0.0 and then W.C.Ave_Weight = 0.0;
+               --  Pure makespan: the place giving the least robot cost
+               --  (ties: least added cost); else the least added cost.
             begin
                if Cheapest then
                   for R in 1 .. S.NR loop
                      if P.Can_Do (R, T) then
                         for Q in P.Frozen_Length (R) .. D.Len (R) loop
                            declare
-                              A  : constant Natural := Pending_Loc (P, S, D, R, Q);
-                              B  : constant Natural := Pending_Loc (P, S, D, R, Q + 1);
+                              A  : constant Natural := Pending_Loc (P, D, R, Q);
+                              B  : constant Natural := Pending_Loc (P, D, R, Q + 1);
                               DC : constant Cost := Cost (P.Multiplier (R))
                                 * (Robot_Distance (P, R, A, L) + Robot_Distance (P, R, L, B)
                                    - Robot_Distance (P, R, A, B));
+                              Key : constant Cost := (if Makespan then D.RC (R) + DC else DC);
                            begin
-                              if DC < Best_D then
+                              if Key < Best_K or else (Key = Best_K and then DC < Best_D) then
+                                 Best_K := Key;
                                  Best_D := DC;
                                  Best_R := R;
                                  Best_Q := Q;
@@ -1126,10 +1214,20 @@ package body Sancta.Allocation.Annealers is
                if Best_R = 0 then
                   return;
                end if;
+               declare
+                  A : constant Natural := Pending_Loc (P, D, Best_R, Best_Q);
+                  B : constant Natural := Pending_Loc (P, D, Best_R, Best_Q + 1);
+               begin
+                  D.RC (Best_R) := D.RC (Best_R) + Cost (P.Multiplier (Best_R))
+                    * (Robot_Distance (P, Best_R, A, L) + Robot_Distance (P, Best_R, L, B)
+                       - Robot_Distance (P, Best_R, A, B));
+               end;
                for I in reverse Best_Q + 1 .. D.Len (Best_R) loop
                   D.Tk (Best_R, I + 1) := D.Tk (Best_R, I);
+                  D.Lc (Best_R, I + 1) := D.Lc (Best_R, I);
                end loop;
                D.Tk (Best_R, Best_Q + 1) := T;
+               D.Lc (Best_R, Best_Q + 1) := L;
                D.Len (Best_R) := D.Len (Best_R) + 1;
                D.Changed (Best_R) := True;
             end;
@@ -1155,6 +1253,8 @@ package body Sancta.Allocation.Annealers is
             end if;
          end loop;
          Mv.Or_Node := O;
+         D.Or_Node := O;
+         D.New_Active := Active_After;
          Mv.New_Sum := Sum;
          Mv.New_Comp := Comp;
          Mv.New_Max := Max;
@@ -1167,14 +1267,18 @@ package body Sancta.Allocation.Annealers is
    procedure Apply_Subtree (P : Problem; S : in out State; D : Pending) is
    begin
       S.Sel := D.Sel;
-      for T in 1 .. S.NT loop
-         S.Active (T) := Is_Active (P, S.Sel, T);
-         if not S.Active (T) then
-            S.Own (T) := 0;
-            S.Pos (T) := 0;
-         end if;
+      for K in D.Under_First (D.Or_Node) .. D.Under_First (D.Or_Node + 1) - 1 loop
+         declare
+            T : constant Positive := D.Under (K);
+         begin
+            S.Active (T) := Is_Active (P, S.Sel, T);
+            if not S.Active (T) then
+               S.Own (T) := 0;
+               S.Pos (T) := 0;
+            end if;
+         end;
       end loop;
-      S.N_Active := Active_Count (P, S.Sel);
+      S.N_Active := D.New_Active;
       for R in 1 .. S.NR loop
          if D.Changed (R) then
             S.Len (R) := D.Len (R);
@@ -1249,7 +1353,8 @@ package body Sancta.Allocation.Annealers is
                               Switch_Subtree => 0.5];
       Score, Tries : Real_Array := [others => 0.0];
       Has_Or : Boolean := False;
-      D      : Pending_Access := new Pending (P.Robots, P.Tasks + 1, P.Tasks);
+      D      : Pending_Access :=
+        new Pending (P.Robots, P.Tasks + 1, P.Tasks, Under_Size (P));
       Locked : Boolean_Array (1 .. P.Tasks) := [others => False];
       --  Plan trees: the switch subtree move's new tours, and the OR
       --  ordinals it must not switch (above a frozen task).
@@ -1533,6 +1638,7 @@ package body Sancta.Allocation.Annealers is
       for O in 1 .. Or_Count (P) loop
          Locked (O) := Is_Locked (P, O);
       end loop;
+      Set_Under (P, D.all);
       if not (for some O in 1 .. Or_Count (P) => not Locked (O) and then Alternatives (P, O) > 1)
       then
          Weight (Switch_Subtree) := 0.0;
