@@ -703,6 +703,14 @@ package body Sancta.Allocation.Missions is
                   end if;
                end loop;
                Freeze (P.all, R, Ts);
+               declare
+                  Why : constant String := Check (P.all);
+               begin
+                  if Why'Length > 12 and then Why (Why'First .. Why'First + 11) = "frozen task "
+                  then
+                     Fail (File, D.Line, Why);
+                  end if;
+               end;
             end;
          end loop;
          P.Min_Tasks := 0;

@@ -563,7 +563,11 @@ package body Sancta.Commands.Plan is
                         Free_Tasks := Free_Tasks + 1;
                      end if;
                   end loop;
-                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks then
+                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks
+                    and then not Has_Plan (P.all)
+                  then
+                     --  (With a plan, the active tasks of each selection
+                     --  count: the solver itself says when too many.)
                      raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
                        & " tasks; the exact solver takes at most"
                        & Sancta.Allocation.Exact.Max_Tasks'Image;

@@ -578,8 +578,37 @@ package body Sancta.Allocation.Plan_Tests is
                     & "      <and> <task x=""1"" y=""1""/> <task x=""2"" y=""1""/> </and>" & NL
                     & "    </or> </or>" & NL & "  </or>" & NL & "</mission>" & NL,
                     F & ":4: more <or> nodes than tasks");
+      Write (F, Head & Body_Text & "  <done robot=""ari"" tasks=""far""/>" & NL
+             & "  <done robot=""bo"" tasks=""survey.1.1""/>" & NL & "</mission>" & NL);
+      begin
+         declare
+            P : constant Problem_Access := Missions.Read (F);
+            pragma Unreferenced (P);
+         begin
+            Assert (False, "done tasks in exclusive alternatives accepted");
+         end;
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
+                    F & ":17: frozen task") > 0,
+                    "message: " & Ada.Exceptions.Exception_Message (E));
+      end;
       Ada.Directories.Delete_File (F);
    end Mission_Plans;
+
+   procedure Deterministic (Unused : in out Fixture) is
+      P : constant Problem_Access := Plan_Problem (30, 4, (Own_Factor => True, others => <>), 77);
+      A, B : Assignment (P.Robots, P.Tasks);
+      S : Annealers.Progress;
+      O : constant Annealers.Options :=
+        (Criterion => Min_Max, Seed => 5, Time_Limit => 0.0, Iterations => 30_000,
+         others => <>);
+   begin
+      Annealers.Solve (P.all, O, A, S);
+      Annealers.Solve (P.all, O, B, S);
+      Assert (A = B, "same seed, different plan-tree allocations");
+      Assert (Validate (P.all, A) = "", Validate (P.all, A));
+   end Deterministic;
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
@@ -598,6 +627,7 @@ package body Sancta.Allocation.Plan_Tests is
            Switch_To_Compound'Access);
       Add ("per-robot cost functions", Robot_Cost_Functions'Access);
       Add ("mission XML: nested compound plans, robot metrics, errors", Mission_Plans'Access);
+      Add ("same seed, same result with plan trees", Deterministic'Access);
       return Result;
    end Suite;
 
