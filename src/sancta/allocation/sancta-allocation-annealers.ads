@@ -10,7 +10,10 @@
 --  to a candidate neighbour (k nearest), 2-opt within a tour and 2-opt*
 --  between tours, cross-exchange between tours, the old moves (random move,
 --  move to another robot, guided move from the worst robot, swap any, log
---  auction, switch OR alternative); adaptive move weights; geometric,
+--  auction, switch OR alternative), switch subtree for plan trees (another
+--  alternative at an OR node: the leaving tasks are removed, the coming ones
+--  inserted, cheapest or at random, the touched robots' costs recomputed
+--  exactly); adaptive move weights; geometric,
 --  cyclic or the old re-heating schedule; budgets by time, iterations and
 --  convergence; a final descent (polish) with the neighbour moves.
 --
@@ -89,6 +92,8 @@ package Sancta.Allocation.Annealers is
       Elapsed       : Duration := 0.0;
       Moves_Per_Second : Long_Float := 0.0;
       Time_To_Best  : Duration := 0.0;
+      Switches      : Long_Long_Integer := 0;
+      --  Accepted switch subtree moves (plan trees).
    end record;
 
    type Reporter is access procedure (P : Progress);
