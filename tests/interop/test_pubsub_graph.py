@@ -89,6 +89,27 @@ def test_discovery_info(distro, size):
         ada_part = participants[bytes(whole.gid.data[:16])]
         assert ada_part.qos[Policy.Userdata].data == b"enclave=/;"
         assert publications[out_writer[0]].type_name == "std_msgs::msg::dds_::String_"
+        # Jazzy endpoints announce the REP 2011 type hash Jazzy computes.
+        def user_data(endpoint):
+            policy = endpoint.qos[Policy.Userdata] if Policy.Userdata in endpoint.qos else None
+            return policy.data if policy is not None else b""
+        info_writer = [p for p in publications.values()
+                       if p.topic_name == "ros_discovery_info"
+                       and p.participant_key.bytes == bytes(whole.gid.data[:16])]
+        assert info_writer, "no ros_discovery_info writer of the Ada participant"
+        if distro == "jazzy":
+            assert user_data(publications[out_writer[0]]) == (
+                b"typehash=RIHS01_"
+                b"df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18;")
+            assert user_data(subscriptions[in_reader[0]]) == (
+                b"typehash=RIHS01_"
+                b"df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18;")
+            assert user_data(info_writer[0]) == (
+                b"typehash=RIHS01_"
+                b"91a0593bacdcc50ea9bdcf849a938b128412cc1ea821245c663bcd26f83c295e;")
+        else:
+            assert b"typehash" not in user_data(publications[out_writer[0]])
+            assert b"typehash" not in user_data(info_writer[0])
     finally:
         ada.kill()
         ada.communicate()
