@@ -12,6 +12,7 @@ with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
 with Sancta.Team.Databases;
 with Sancta.Team.Demos;
+with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;
@@ -459,6 +460,36 @@ package body Sancta.Team.Tests is
       Op.Stop;
    end Test_Join;
 
+   --  The team_member's goal rule (the stall of the configuration demo) ---------------
+
+   procedure Test_Goal_Tracker (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Goal_Trackers;
+      Tracker : Goal_Tracker;
+      G       : constant Sancta.Geometry.Point := (7.0, 7.0);
+      Here    : constant Sancta.Geometry.Point := (2.0, 10.0);
+
+      procedure Expect (Found : Boolean; Task_Id : String; At_Point : Sancta.Geometry.Point;
+                        Wanted : Action; Why : String) is
+         Got : constant Action := Tracker.Decide (Found, G, Task_Id, At_Point, 0.35);
+      begin
+         Assert (Got = Wanted, Why & ": " & Got'Image & " instead of " & Wanted'Image);
+      end Expect;
+   begin
+      Expect (False, "", Here, Go_Idle, "no plan at first");
+      Assert (Tracker.Is_Idle, "not idle without a plan");
+      Expect (False, "", Here, Nothing, "still no plan");
+      Expect (True, "s2b", Here, New_Goal, "first goal");
+      Expect (True, "s2b", Here, Nothing, "same goal again");
+      --  A new round: no adopted plan for a moment, then the same task back.
+      Expect (False, "", Here, Go_Idle, "new round without a plan");
+      Expect (True, "s2b", Here, New_Goal, "the same goal after an idle spell");
+      Assert (not Tracker.Is_Idle, "idle with a goal");
+      Expect (True, "s2c", Here, New_Goal, "another task at the same point");
+      Expect (True, "s2c", (7.1, 7.1), At_Goal, "within the tolerance");
+      Expect (True, "s2c", (7.3, 7.3), Nothing, "0.42 m away: not there, goal already sent");
+   end Test_Goal_Tracker;
+
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
@@ -523,6 +554,7 @@ package body Sancta.Team.Tests is
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
+      Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
       return Result;
