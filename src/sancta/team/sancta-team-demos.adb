@@ -8,9 +8,7 @@ with Sancta.Robot.Path_Costs;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Images;
 with Sancta.Simulation.Map_Files;
-with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Simulators;
-with Sancta.Simulation.Worlds;
 with Sancta.Team.Missions;
 
 package body Sancta.Team.Demos is
@@ -69,6 +67,69 @@ package body Sancta.Team.Demos is
       return Result;
    end Planned_Scene;
 
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector
+   is
+      Result : Completion_Vectors.Vector;
+   begin
+      for K in 1 .. Natural'Min (Natural (S.Robots.Length), Natural (P.Tours.Length)) loop
+         if To_String (S.Robots (K).Id) = Robot then
+            for St of P.Tours (K) loop
+               if not Is_Done (To_String (St.Task_Id)) then
+                  Result.Append (Completion'(Task_Id => St.Task_Id, others => <>));
+               end if;
+            end loop;
+         end if;
+      end loop;
+      return Result;
+   end Unfinished;
+
+   procedure Resolve_Orphans (Result : in out Demo_Result) is
+   begin
+      for O of Result.Orphans loop
+         for C of Result.Completions loop
+            if C.Task_Id = O.Task_Id then
+               O.Robot := C.Robot;
+               O.Time := C.Time;
+            end if;
+         end loop;
+      end loop;
+   end Resolve_Orphans;
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Worlds.World;
+      Scene  : Rendering.Scene;
+      Dir    : String)
+   is
+      F : File_Type;
+      procedure Picture (Name : String; S : Rendering.Scene) is
+      begin
+         Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
+         Images.Save_PNG (Rendering.Render (World, S), Dir & "/" & Name & ".png");
+      end Picture;
+   begin
+      Ada.Directories.Create_Path (Dir);
+      Picture ("trajectories", Scene);
+      if Result.Plan_Before.Generation > 0 then
+         Picture ("plan-before",
+                  Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots));
+      end if;
+      if Result.Plan_After.Generation > 0 then
+         Picture ("plan-after",
+                  Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots));
+      end if;
+      Create (F, Out_File, Dir & "/summary.json");
+      Put (F, Summary_JSON (Result));
+      Close (F);
+      Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
+                & ".{svg,png}");
+   end Write_Report;
+
    function Summary_JSON (Result : Demo_Result) return String is
       J : Unbounded_String;
       function Q (S : String) return String renames Runtime.Values.JSON_String;
@@ -114,6 +175,17 @@ package body Sancta.Team.Demos is
                     & ASCII.LF);
          end;
       end loop;
+      Append (J, "  ]," & ASCII.LF & "  ""reallocated"": [" & ASCII.LF);
+      for K in 1 .. Natural (Result.Orphans.Length) loop
+         declare
+            C : constant Completion := Result.Orphans (K);
+         begin
+            Append (J, "    {""task"": " & Q (To_String (C.Task_Id)) & ", ""done_by"": "
+                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time) & "}"
+                    & (if K < Natural (Result.Orphans.Length) then "," else "")
+                    & ASCII.LF);
+         end;
+      end loop;
       Append (J, "  ]" & ASCII.LF & "}" & ASCII.LF);
       return To_String (J);
    end Summary_JSON;
@@ -136,6 +208,12 @@ package body Sancta.Team.Demos is
                    & " s; re-planned: " & (if Result.Replanned then "yes" else "no")
                    & ", " & F1 (Result.Replan_Wall) & " s wall ("
                    & F1 (Result.Replan_Sim) & " s simulated) after the loss, lease included");
+         Put ("its unfinished tasks, re-allocated:");
+         for O of Result.Orphans loop
+            Put (" " & To_String (O.Task_Id) & ">"
+                 & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
+         end loop;
+         New_Line;
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
                 & " m, makespan " & F1 (Result.Planned_Makespan) & " m");
@@ -234,6 +312,9 @@ package body Sancta.Team.Demos is
             end if;
          end Record_Completion;
 
+         function Done_Here (Task_Id : String) return Boolean is
+           (Operator.Database.Contains ("done/" & Task_Id));
+
          procedure Kill (R : Positive) is
          begin
             Victim := R;
@@ -247,6 +328,9 @@ package body Sancta.Team.Demos is
             Kill_Gen := Observer.Round.Generation;
             Result.Plan_Before := Observer.Adopted;
             Result.Round_Before := Observer.Round;
+            Result.Orphans := Unfinished
+              (Result.Round_Before, Result.Plan_Before, To_String (M.Robots (R).Id),
+               Done_Here'Access);
             Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
                       & To_String (M.Robots (R).Id) & " killed (simulator kill, agent stopped)");
          end Kill;
@@ -433,32 +517,9 @@ package body Sancta.Team.Demos is
             end if;
          end loop;
          Operator.Stop;
+         Resolve_Orphans (Result);
          if Config.Out_Dir /= Null_Unbounded_String then
-            declare
-               Dir : constant String := To_String (Config.Out_Dir);
-               F   : File_Type;
-               procedure Picture (Name : String; S : Rendering.Scene) is
-               begin
-                  Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
-                  Images.Save_PNG (Rendering.Render (World, S), Dir & "/" & Name & ".png");
-               end Picture;
-            begin
-               Ada.Directories.Create_Path (Dir);
-               Picture ("trajectories", Scene);
-               if Result.Plan_Before.Generation > 0 then
-                  Picture ("plan-before",
-                           Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots));
-               end if;
-               if Result.Plan_After.Generation > 0 then
-                  Picture ("plan-after",
-                           Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots));
-               end if;
-               Create (F, Out_File, Dir & "/summary.json");
-               Put (F, Summary_JSON (Result));
-               Close (F);
-               Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
-                         & ".{svg,png}");
-            end;
+            Write_Report (Result, World, Scene, To_String (Config.Out_Dir));
          end if;
       end;
    end Run;

@@ -11,6 +11,8 @@
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;
+with Sancta.Simulation.Rendering;
+with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Plans;
 
@@ -79,7 +81,37 @@ package Sancta.Team.Demos is
       Round_Before    : Plans.Snapshot;
       Plan_After      : Plans.Plan;
       Round_After     : Plans.Snapshot;
+      Orphans         : Completion_Vectors.Vector;
+      --  The killed robot's tasks not done at the kill (its tour in the
+      --  plan before the loss), each with the robot that finally did it
+      --  (Resolve_Orphans; empty Robot: nobody).
    end record;
+
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector;
+   --  The tasks of Robot's tour in plan P of round S not done yet.
+
+   procedure Resolve_Orphans (Result : in out Demo_Result);
+   --  Fills each orphan's Robot and Time from Result.Completions.
+
+   function Planned_Scene
+     (S : Plans.Snapshot; P : Plans.Plan; Ids : Robot_Summary_Vectors.Vector)
+      return Sancta.Simulation.Rendering.Scene;
+   --  The planned tours as polylines from each robot's position, with a
+   --  marker "task>robot" per task.
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Sancta.Simulation.Worlds.World;
+      Scene  : Sancta.Simulation.Rendering.Scene;
+      Dir    : String);
+   --  Dir/summary.json, trajectories.svg/png (World with Scene: executed
+   --  trajectories, tasks, robots), plan-before and plan-after .svg/.png
+   --  (when the result has those plans). Creates Dir.
 
    procedure Run (Config : Demo_Config; Result : out Demo_Result);
    --  Runs the mission and, unless Out_Dir is empty, writes the report:
