@@ -45,14 +45,20 @@ def check_summary(out, output):
     assert summary["replanned"], context
     dead = [r for r in summary["robots"] if r["id"] == killed]
     assert dead and not dead[0]["alive"], context
+    # Completion times are when the observer saw the record: one written
+    # just before the kill may arrive a moment (well under 2 s simulated)
+    # after it; a SIGKILLed process writes nothing later.
     for c in summary["completions"]:
-        assert c["robot"] != killed or c["time_s"] <= summary["kill_time_s"], \
+        assert c["robot"] != killed or c["time_s"] <= summary["kill_time_s"] + 2.0, \
             f"{c} done by the dead robot after its death{context}"
     orphans = summary["reallocated"]
     assert orphans, f"the killed robot had no unfinished task{context}"
     for o in orphans:
         assert o["done_by"] not in ("", killed), f"{o} not done by a survivor{context}"
     assert summary["executed_total_m"] > 0 and summary["planned_total_m"] > 0, context
+    # The same first plan along A* paths is never much shorter than along
+    # straight lines (grid cells: a few cm per leg).
+    assert summary["planned_grid_total_m"] >= 0.98 * summary["planned_total_m"], context
     for name in ("trajectories.svg", "trajectories.png", "plan-before.svg", "plan-after.svg",
                  "sim.log", "operator.log", f"{killed}.log"):
         assert (out / name).exists(), f"{name} missing{context}"

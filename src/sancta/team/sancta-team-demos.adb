@@ -150,6 +150,9 @@ package body Sancta.Team.Demos is
       Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
       Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
               & ASCII.LF);
+      Append (J, "  ""planned_grid_total_m"": " & Img (Result.Grid_Total) & "," & ASCII.LF);
+      Append (J, "  ""planned_grid_makespan_m"": " & Img (Result.Grid_Makespan) & ","
+              & ASCII.LF);
       Append (J, "  ""executed_total_m"": " & Img (Result.Executed_Total) & "," & ASCII.LF);
       Append (J, "  ""rounds"": " & Trim (Result.Rounds) & "," & ASCII.LF);
       Append (J, "  ""collisions"": " & Trim (Result.Collisions) & "," & ASCII.LF);
@@ -216,10 +219,34 @@ package body Sancta.Team.Demos is
          New_Line;
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
-                & " m, makespan " & F1 (Result.Planned_Makespan) & " m");
+                & " m, makespan " & F1 (Result.Planned_Makespan) & " m (straight legs, the"
+                & " planners' model); " & F1 (Result.Grid_Total) & " m, makespan "
+                & F1 (Result.Grid_Makespan) & " m along A* paths");
       Put_Line ("executed: total distance " & F1 (Result.Executed_Total) & " m; rounds of"
                 & " allocation:" & Result.Rounds'Image & "; collisions:" & Result.Collisions'Image);
    end Print_Summary;
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Worlds.World)
+   is
+      Map : Robot.Path_Costs.Planner;
+
+      function Leg (From, To : Point) return Long_Float is
+         C : constant Real := Map.Cost (From, To);
+      begin
+         return (if C = Robot.Path_Costs.Unreachable then Long_Float (Distance (From, To))
+                 else Long_Float (C));
+      end Leg;
+   begin
+      Map.Initialize (Worlds.Occupancy (Grid), Robot_Radius => 0.3);
+      Result.Planned_Total := Plans.Total (S, P);
+      Result.Planned_Makespan := Plans.Makespan (S, P);
+      Result.Grid_Total := Plans.Total (S, P, Leg'Access);
+      Result.Grid_Makespan := Plans.Makespan (S, P, Leg'Access);
+   end Note_First_Plan;
 
    procedure Run (Config : Demo_Config; Result : out Demo_Result) is
       use type Ada.Real_Time.Time;
@@ -442,11 +469,11 @@ package body Sancta.Team.Demos is
                Next_Rec := Next_Rec + 0.5;
             end if;
             if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
-               Result.Planned_Total := Plans.Total (Observer.Round, Observer.Adopted);
-               Result.Planned_Makespan := Plans.Makespan (Observer.Round, Observer.Adopted);
+               Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
                Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
                          & F1 (Result.Planned_Total) & " m, makespan "
-                         & F1 (Result.Planned_Makespan) & " m");
+                         & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
+                         & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
             end if;
             if Config.Kill and then Victim = 0
               and then Long_Float (Operator.Done_Tasks)

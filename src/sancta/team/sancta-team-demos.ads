@@ -74,6 +74,12 @@ package Sancta.Team.Demos is
       Replanned       : Boolean := False;
       Planned_Total   : Long_Float := 0.0;
       Planned_Makespan : Long_Float := 0.0;
+      --  The first adopted plan's costs in the planners' model (straight
+      --  legs between task points).
+      Grid_Total      : Long_Float := 0.0;
+      Grid_Makespan   : Long_Float := 0.0;
+      --  The same plan with A* path lengths on the world's grid (robot
+      --  radius 0.3 m) for the legs: comparable to the executed distance.
       Executed_Total  : Long_Float := 0.0;
       Rounds          : Natural := 0;
       Collisions      : Natural := 0;
@@ -122,6 +128,14 @@ package Sancta.Team.Demos is
    --  fewer than two robots).
 
    procedure Print_Summary (Result : Demo_Result);
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Sancta.Simulation.Worlds.World);
+   --  Sets the planned costs of Result from plan P of round S (Grid: the
+   --  world whose occupancy gives the A* legs).
 
    function Summary_JSON (Result : Demo_Result) return String;
 

@@ -169,16 +169,22 @@ package body Sancta.Team.Plans is
    --  Costs -------------------------------------------------------------------
 
    function Tour_Cost
-     (S : Snapshot; Start : Point; Tour : Step_Vectors.Vector) return Long_Float
+     (S     : Snapshot;
+      Start : Point;
+      Tour  : Step_Vectors.Vector;
+      Leg   : access function (From, To : Point) return Long_Float := null)
+      return Long_Float
    is
       Here   : Point := Start;
       Result : Long_Float := 0.0;
    begin
       for St of Tour loop
          declare
-            T : constant Missions.Mission_Task := Task_Of (S, To_String (St.Task_Id));
+            T    : constant Missions.Mission_Task := Task_Of (S, To_String (St.Task_Id));
+            To_P : constant Point := Missions.Entry_Point (T, St.Choice);
          begin
-            Result := Result + Long_Float (Distance (Here, Missions.Entry_Point (T, St.Choice)))
+            Result := Result
+              + (if Leg = null then Long_Float (Distance (Here, To_P)) else Leg (Here, To_P))
               + Missions.Inner_Length (T, St.Choice);
             Here := Missions.Exit_Point (T, St.Choice);
          end;
@@ -186,20 +192,28 @@ package body Sancta.Team.Plans is
       return Result;
    end Tour_Cost;
 
-   function Makespan (S : Snapshot; P : Plan) return Long_Float is
+   function Makespan
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
+   is
       Result : Long_Float := 0.0;
    begin
       for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R)));
+         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg));
       end loop;
       return Result;
    end Makespan;
 
-   function Total (S : Snapshot; P : Plan) return Long_Float is
+   function Total
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
+   is
       Result : Long_Float := 0.0;
    begin
       for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R));
+         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg);
       end loop;
       return Result;
    end Total;

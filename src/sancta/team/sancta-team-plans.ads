@@ -64,11 +64,28 @@ package Sancta.Team.Plans is
    function Task_Of (S : Snapshot; Id : String) return Missions.Mission_Task;
 
    function Tour_Cost
-     (S : Snapshot; Start : Sancta.Geometry.Point; Tour : Step_Vectors.Vector) return Long_Float;
+     (S     : Snapshot;
+      Start : Sancta.Geometry.Point;
+      Tour  : Step_Vectors.Vector;
+      Leg   : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   --  Leg: the cost of going from one point to another (e.g. an A* path
+   --  length on the world's grid); null: the straight line (the planners'
+   --  model). The length inside a task (an explore segment) is always
+   --  straight.
    function Evaluate (S : Snapshot; P : in out Plan) return Long_Float;
    --  Sets P.Value and returns it.
-   function Makespan (S : Snapshot; P : Plan) return Long_Float;
-   function Total (S : Snapshot; P : Plan) return Long_Float;
+   function Makespan
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   function Total
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   --  The longest tour and the sum of the tours, legs as for Tour_Cost.
 
    procedure Best_Insertion
      (S         : Snapshot;

@@ -346,6 +346,12 @@ package body Sancta.Team.Sim_Demos is
    begin
       Result := (others => <>);
       Result.Tasks_Total := Natural (M.Tasks.Length);
+      if Config.Kill and then Config.Kill_Robot /= Null_Unbounded_String
+        and then (for all R of View.Robots => R.Id /= Config.Kill_Robot)
+      then
+         raise Constraint_Error with "--kill " & To_String (Config.Kill_Robot)
+           & ": no such robot agent in " & To_String (Config.Config_File);
+      end if;
       Start_Processes;
       Put_Line ("demo: " & To_String (Config.Config_File) & ": mission " & To_String (M.Name)
                 & ":" & Result.Tasks_Total'Image & " tasks," & N'Image & " robot agents + "
@@ -615,11 +621,11 @@ package body Sancta.Team.Sim_Demos is
             if Result.Planned_Total = 0.0 and then Monitor.Adopted.Generation > 0
               and then Monitor.Adopted.Generation = Monitor.Round.Generation
             then
-               Result.Planned_Total := Plans.Total (Monitor.Round, Monitor.Adopted);
-               Result.Planned_Makespan := Plans.Makespan (Monitor.Round, Monitor.Adopted);
+               Demos.Note_First_Plan (Result, Monitor.Round, Monitor.Adopted, World);
                Put_Line (Stamp & "first plan adopted (round" & Monitor.Round.Generation'Image
                          & "): total " & F1 (Result.Planned_Total) & " m, makespan "
-                         & F1 (Result.Planned_Makespan) & " m");
+                         & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
+                         & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
             end if;
             if Config.Kill and then Victim = 0 and then Result.Planned_Total > 0.0
               and then Long_Float (Result.Completions.Length)
@@ -697,6 +703,15 @@ package body Sancta.Team.Sim_Demos is
                                 else "?")));
          end loop;
          Demos.Resolve_Orphans (Result);
+         --  A task the robot finished just before its death (its record
+         --  reaching this observer after the kill) was not unfinished.
+         for K in reverse 1 .. Natural (Result.Orphans.Length) loop
+            if Result.Killed /= Null_Unbounded_String
+              and then Result.Orphans (K).Robot = Result.Killed
+            then
+               Result.Orphans.Delete (K);
+            end if;
+         end loop;
          if Dir /= "" then
             Demos.Write_Report (Result, World, Scene, Dir);
          end if;

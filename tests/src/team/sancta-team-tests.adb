@@ -384,6 +384,36 @@ package body Sancta.Team.Tests is
          Assert (D.Tours = A.Tours and then abs (D.Value - A.Value) < 1.0E-6,
                  "plan text does not round-trip");
       end;
+      --  Legs costed by a function (the A* lengths of the demo's summary).
+      declare
+         One : Plans.Snapshot;
+         P   : Plans.Plan;
+         Seg : Missions.Mission_Task;
+         Go  : Missions.Mission_Task;
+         function Doubled (From, To : Sancta.Geometry.Point) return Long_Float is
+           (2.0 * Long_Float (Sancta.Geometry.Distance (From, To)));
+      begin
+         One.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("r"), (0.0, 0.0)));
+         Go.Id := To_Unbounded_String ("go");
+         Go.Points.Append (Missions.Point'(3.0, 4.0));
+         Seg.Id := To_Unbounded_String ("seg");
+         Seg.Kind := Missions.Explore_Segment;
+         Seg.Points.Append (Missions.Point'(3.0, 8.0));
+         Seg.Points.Append (Missions.Point'(3.0, 10.0));
+         One.Tasks.Append (Go);
+         One.Tasks.Append (Seg);
+         P.Tours.Append (Plans.Step_Vectors.Empty_Vector);
+         P.Tours (1).Append (Plans.Step'(Go.Id, 1));
+         P.Tours (1).Append (Plans.Step'(Seg.Id, 1));
+         --  Straight: 5 to go, 4 to the segment, 2 inside it.
+         Assert (abs (Plans.Total (One, P) - 11.0) < 1.0E-9,
+                 "straight total" & Plans.Total (One, P)'Image);
+         --  Legs doubled, the inside of the segment not.
+         Assert (abs (Plans.Total (One, P, Doubled'Access) - 20.0) < 1.0E-9,
+                 "total with doubled legs" & Plans.Total (One, P, Doubled'Access)'Image);
+         Assert (abs (Plans.Makespan (One, P, Doubled'Access) - 20.0) < 1.0E-9,
+                 "makespan with doubled legs");
+      end;
    end Test_Plans;
 
    --  A robot joining gets tasks; tasks done stay done ---------------------------------
