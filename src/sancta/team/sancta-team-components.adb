@@ -8,7 +8,9 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Shutdown;
 with Sancta.Runtime.Values;
+with Sancta.Simulation.Sim_Tool;
 with Sancta.Team.Agents;
+with Sancta.Team.Grid_Costs;
 with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Missions;
 
@@ -48,6 +50,19 @@ package body Sancta.Team.Components is
    overriding procedure On_Input
      (This : in out Member_Component; Data : String; Item : Values.Value'Class);
 
+   function Leg_Costs (This : Member_Component'Class) return Grid_Costs.Cost_Access is
+      World : constant String := This.Option_Text ("world");
+   begin
+      if This.Option_Text ("costs") = "straight" then
+         return null;
+      elsif World = "" or else Simulation.Sim_Tool.World_File (World) = "" then
+         raise Constraint_Error with "team_member: costs=""grid"" needs world= (a bundled"
+           & " world or a map file), found '" & World & "'";
+      end if;
+      return Grid_Costs.Create (Simulation.Sim_Tool.World_File (World),
+                                Robot_Radius => Real (This.Option_Real ("robot_radius")));
+   end Leg_Costs;
+
    overriding procedure Start (This : in out Member_Component) is
    begin
       This.Tolerance := Real (This.Option_Real ("tolerance"));
@@ -59,6 +74,7 @@ package body Sancta.Team.Components is
           Lease    => Ada.Real_Time.To_Duration (This.Option_Duration ("lease")),
           How      => Agents.Parse_Method (This.Option_Text ("method")),
           Verbose  => True,
+          Costs    => Leg_Costs (This),
           others   => <>));
       This.Subscribe ("pose");
    end Start;
@@ -197,7 +213,11 @@ begin
                     & Make_Option ("method", Choice_Option, "annealer",
                                    Choices => "annealer auctions")
                     & Make_Option ("lease", Duration_Option, "1.0")
-                    & Make_Option ("tolerance", Real_Option, "0.3"),
+                    & Make_Option ("tolerance", Real_Option, "0.3")
+                    & Make_Option ("costs", Choice_Option, "straight",
+                                   Choices => "straight grid")
+                    & Make_Option ("world", Text_Option, "")
+                    & Make_Option ("robot_radius", Real_Option, "0.2"),
        others  => <>),
       Create_Member'Access);
    Factory.Register

@@ -219,8 +219,8 @@ package body Sancta.Team.Demos is
          New_Line;
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
-                & " m, makespan " & F1 (Result.Planned_Makespan) & " m (straight legs, the"
-                & " planners' model); " & F1 (Result.Grid_Total) & " m, makespan "
+                & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
+                & " legs; " & F1 (Result.Grid_Total) & " m, makespan "
                 & F1 (Result.Grid_Makespan) & " m along A* paths");
       Put_Line ("executed: total distance " & F1 (Result.Executed_Total) & " m; rounds of"
                 & " allocation:" & Result.Rounds'Image & "; collisions:" & Result.Collisions'Image);

@@ -218,9 +218,12 @@ package body Sancta.Team.Plans is
       return Result;
    end Total;
 
-   function Evaluate (S : Snapshot; P : in out Plan) return Long_Float is
+   function Evaluate
+     (S   : Snapshot;
+      P   : in out Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float is
    begin
-      P.Value := Makespan (S, P) + Total (S, P) / 1000.0;
+      P.Value := Makespan (S, P, Leg) + Total (S, P, Leg) / 1000.0;
       return P.Value;
    end Evaluate;
 
@@ -231,8 +234,11 @@ package body Sancta.Team.Plans is
       Task_Id   : String;
       New_Cost  : out Long_Float;
       Position  : out Positive;
-      Choice    : out Positive)
+      Choice    : out Positive;
+      Leg       : access function (From, To : Point) return Long_Float := null)
    is
+      function Distance (A, B : Point) return Real is
+        (if Leg = null then Sancta.Geometry.Distance (A, B) else Real (Leg (A, B)));
       T     : constant Missions.Mission_Task := Task_Of (S, Task_Id);
       L     : constant Natural := Natural (Tour.Length);
       Entry_P, Exit_P : array (0 .. L) of Point;
@@ -362,8 +368,12 @@ package body Sancta.Team.Plans is
       Budget     : Duration;
       Start_From : Plan;
       Proposer   : String;
-      Iterations : Long_Long_Integer := 0) return Plan
+      Iterations : Long_Long_Integer := 0;
+      Leg        : access function (From, To : Point) return Long_Float := null)
+      return Plan
    is
+      function Distance (A, B : Point) return Real is
+        (if Leg = null then Sancta.Geometry.Distance (A, B) else Real (Leg (A, B)));
       use Sancta.Allocation;
       use Sancta.Allocation.Problems;
       use Sancta.Allocation.Assignments;
@@ -377,7 +387,7 @@ package body Sancta.Team.Plans is
          for R in 1 .. NR loop
             Result.Tours.Append (Step_Vectors.Empty_Vector);
          end loop;
-         Dummy := Evaluate (S, Result);
+         Dummy := Evaluate (S, Result, Leg);
          return Result;
       end if;
       declare
@@ -492,7 +502,7 @@ package body Sancta.Team.Plans is
             end;
          end;
       end;
-      Dummy := Evaluate (S, Result);
+      Dummy := Evaluate (S, Result, Leg);
       return Result;
    end Anneal;
 

@@ -467,7 +467,10 @@ package body Sancta.Team.Sim_Demos is
          function Done_Here (Task_Id : String) return Boolean is
            (Monitor.Database.Contains ("done/" & Task_Id));
 
-         function Stamp return String is ("t=" & F1 (Sim_Clock) & " s  ");
+         function Stamp return String is
+           ("t=" & F1 (Sim_Clock) & " s (wall "
+            & F1 (Long_Float (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Start_Wall)))
+            & ")  ");
 
          procedure Note_Completions is
          begin
@@ -528,6 +531,34 @@ package body Sancta.Team.Sim_Demos is
             return Best;
          end Choose_Victim;
 
+         procedure Control (Command, Id : String) is
+            --  A call of the simulator's control service (the first one
+            --  waits for the service's discovery: done once at the start,
+            --  with "list", so that the kill does not stall this loop).
+            Support : constant ROSIDL.Typesupport.Service_Support :=
+              ROSIDL.Typesupport.Get_Service_Support ("sancta_msgs", "SimControl");
+            Request : constant ROSIDL.Dynamic.Message :=
+              ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Support));
+         begin
+            Request ("command").Set_String (Command);
+            Request ("name").Set_String (Id);
+            declare
+               Response : constant ROSIDL.Dynamic.Message :=
+                 Node.Client_Call (Support, "/sancta_sim/control", Request, Timeout => 5.0);
+            begin
+               if not Response ("success").As_Bool then
+                  Put_Line (Stamp & "sancta-sim: " & Command & " " & Id & ": "
+                            & Response ("message").Get_String);
+               end if;
+            end;
+         exception
+            when E : others =>
+               Put_Line (Stamp & "sancta-sim " & Command & " " & Id & " failed ("
+                         & Ada.Exceptions.Exception_Message (E) & ")"
+                         & (if Command = "kill" then "; the robot stops when its commands stop"
+                            else ""));
+         end Control;
+
          procedure Kill (R : Positive) is
             Id : constant String := Robot_Id (R);
          begin
@@ -545,29 +576,7 @@ package body Sancta.Team.Sim_Demos is
             Result.Robots (R).Alive := False;
             Put_Line (Stamp & "** robot " & Id & ": its agent's process killed (SIGKILL), "
                       & Trim (Natural (Result.Orphans.Length)) & " of its tasks unfinished");
-            declare
-               Support : constant ROSIDL.Typesupport.Service_Support :=
-                 ROSIDL.Typesupport.Get_Service_Support ("sancta_msgs", "SimControl");
-               Request : constant ROSIDL.Dynamic.Message :=
-                 ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Support));
-            begin
-               Request ("command").Set_String ("kill");
-               Request ("name").Set_String (Id);
-               declare
-                  Response : constant ROSIDL.Dynamic.Message :=
-                    Node.Client_Call (Support, "/sancta_sim/control", Request, Timeout => 3.0);
-               begin
-                  if not Response ("success").As_Bool then
-                     Put_Line (Stamp & "sancta-sim did not kill " & Id & ": "
-                               & Response ("message").Get_String);
-                  end if;
-               end;
-            exception
-               when E : others =>
-                  Put_Line (Stamp & "sancta-sim kill of " & Id & " failed ("
-                            & Ada.Exceptions.Exception_Message (E)
-                            & "); the robot stops when its commands stop");
-            end;
+            Control ("kill", Id);
          end Kill;
 
          procedure Check_Replanned is
@@ -614,6 +623,7 @@ package body Sancta.Team.Sim_Demos is
          Node.Subscribe
            (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
             "/sancta_sim/events", On_Event'Access);
+         Control ("list", "");
          loop
             Node.Spin (During => 0.05);
             Reap (Children);
