@@ -4,7 +4,6 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Navigators;
-with Sancta.Robot.Path_Costs;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Images;
 with Sancta.Simulation.Map_Files;
@@ -35,8 +34,10 @@ package body Sancta.Team.Demos is
    --  Planned tours as polylines (for the pictures) -------------------------------
 
    function Planned_Scene
-     (S : Plans.Snapshot; P : Plans.Plan; Ids : Robot_Summary_Vectors.Vector)
-      return Rendering.Scene
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null) return Rendering.Scene
    is
       Result : Rendering.Scene;
    begin
@@ -52,6 +53,14 @@ package body Sancta.Team.Demos is
                         T : constant Missions.Mission_Task :=
                           Plans.Task_Of (S, To_String (St.Task_Id));
                      begin
+                        if Map /= null and then not Path.Is_Empty then
+                           --  The leg along the A* path the robot would drive.
+                           for W of Robot.Path_Costs.Path
+                             (Map.all, Path.Last_Element, Missions.Entry_Point (T, St.Choice))
+                           loop
+                              Path.Append (W);
+                           end loop;
+                        end if;
                         Path.Append (Missions.Entry_Point (T, St.Choice));
                         Path.Append (Missions.Exit_Point (T, St.Choice));
                         Result.Markers.Append
@@ -106,7 +115,8 @@ package body Sancta.Team.Demos is
       Scene  : Rendering.Scene;
       Dir    : String)
    is
-      F : File_Type;
+      F   : File_Type;
+      Map : aliased Robot.Path_Costs.Planner;
       procedure Picture (Name : String; S : Rendering.Scene) is
       begin
          Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
@@ -114,14 +124,17 @@ package body Sancta.Team.Demos is
       end Picture;
    begin
       Ada.Directories.Create_Path (Dir);
+      Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
       Picture ("trajectories", Scene);
       if Result.Plan_Before.Generation > 0 then
          Picture ("plan-before",
-                  Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots));
+                  Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
+                                 Map'Access));
       end if;
       if Result.Plan_After.Generation > 0 then
          Picture ("plan-after",
-                  Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots));
+                  Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots,
+                                 Map'Access));
       end if;
       Create (F, Out_File, Dir & "/summary.json");
       Put (F, Summary_JSON (Result));

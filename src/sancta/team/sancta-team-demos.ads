@@ -11,6 +11,7 @@
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;
+with Sancta.Robot.Path_Costs;
 with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
@@ -105,10 +106,14 @@ package Sancta.Team.Demos is
    --  Fills each orphan's Robot and Time from Result.Completions.
 
    function Planned_Scene
-     (S : Plans.Snapshot; P : Plans.Plan; Ids : Robot_Summary_Vectors.Vector)
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null)
       return Sancta.Simulation.Rendering.Scene;
-   --  The planned tours as polylines from each robot's position, with a
-   --  marker "task>robot" per task.
+   --  The planned tours as polylines from each robot's position (with Map:
+   --  the legs along A* paths on it; without, straight), with a marker
+   --  "task>robot" per task.
 
    procedure Write_Report
      (Result : Demo_Result;
@@ -117,7 +122,8 @@ package Sancta.Team.Demos is
       Dir    : String);
    --  Dir/summary.json, trajectories.svg/png (World with Scene: executed
    --  trajectories, tasks, robots), plan-before and plan-after .svg/.png
-   --  (when the result has those plans). Creates Dir.
+   --  (when the result has those plans; legs along A* paths on World).
+   --  Creates Dir.
 
    procedure Run (Config : Demo_Config; Result : out Demo_Result);
    --  Runs the mission and, unless Out_Dir is empty, writes the report:

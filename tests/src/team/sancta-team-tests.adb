@@ -13,6 +13,8 @@ with Sancta.Team.Agents;
 with Sancta.Team.Databases;
 with Sancta.Team.Demos;
 with Sancta.Team.Goal_Trackers;
+with Sancta.Team.Grid_Costs;
+with Sancta.Robot.Grids;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;
@@ -520,6 +522,39 @@ package body Sancta.Team.Tests is
       Expect (True, "s2c", (7.3, 7.3), Nothing, "0.42 m away: not there, goal already sent");
    end Test_Goal_Tracker;
 
+   --  Allocation legs along A* on a coarsened grid -------------------------------------
+
+   procedure Test_Grid_Costs (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Sancta.Robot.Grids;
+      --  10 m x 10 m at 0.05 m, a wall along x = 5 from y = 0 to 8 (a gap
+      --  from 8 to 10).
+      G : Grid (199, 199);
+   begin
+      G.Origin := (0.0, 0.0);
+      G.Resolution := 0.05;
+      Draw (G, (A => (5.0, 0.0), B => (5.0, 8.0), Thickness => 0.1));
+      declare
+         C : constant Grid := Grid_Costs.Coarsen (G, 4);
+      begin
+         Assert (Width (C) = 50 and then Height (C) = 50, "coarse size");
+         Assert (abs (Long_Float (C.Resolution) - 0.2) < 1.0E-9, "coarse resolution");
+         Assert (Is_Occupied_At (C, (5.0, 4.0)), "the wall is lost");
+         Assert (not Is_Occupied_At (C, (5.0, 9.0)), "the gap is closed");
+         Assert (not Is_Occupied_At (C, (2.0, 2.0)), "free space became occupied");
+      end;
+      declare
+         Costs : constant Grid_Costs.Cost_Access :=
+           Grid_Costs.Create (G, Robot_Radius => 0.2, Cell => 0.2);
+         Around : constant Long_Float := Costs.Leg ((3.0, 2.0), (7.0, 2.0));
+         Open   : constant Long_Float := Costs.Leg ((1.0, 1.0), (1.0, 5.0));
+      begin
+         --  Through the gap: at least up to y = 8 and back, about 4 + 2 x 6.
+         Assert (Around > 14.0 and then Around < 18.0, "leg around the wall:" & Around'Image);
+         Assert (abs (Open - 4.0) < 0.5, "open leg:" & Open'Image);
+      end;
+   end Test_Grid_Costs;
+
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
@@ -585,6 +620,7 @@ package body Sancta.Team.Tests is
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
       Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
+      Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
       return Result;
