@@ -4,6 +4,7 @@
 --     sancta run FILE ...      run agents of a configuration
 --     sancta team [MISSION]    the team mission demo over DDS
 --     sancta team-agent ...    one team node per process
+--     sancta demo [CONFIG]     the team demo, an agent process per robot
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
 pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
@@ -11,6 +12,7 @@ with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Text_IO;
 with Sancta.Commands.Check;
+with Sancta.Commands.Demo;
 with Sancta.Commands.Run;
 with Sancta.Commands.Plan;
 with Sancta.Commands.Team;
@@ -33,6 +35,7 @@ procedure Sancta_CLI is
       Put_Line (To, "  plan FILE ...    task allocation (sancta plan --help)");
       Put_Line (To, "  team [MISSION]   team mission demo over DDS (sancta team --help)");
       Put_Line (To, "  team-agent ...   one team node per process (sancta team-agent --help)");
+      Put_Line (To, "  demo [CONFIG]    team demo: sancta-sim + an agent process per robot");
    end Usage;
 
    Command : constant String := (if Argument_Count = 0 then "" else Argument (1));
@@ -56,6 +59,8 @@ begin
       Sancta.Commands.Team.Run;
    elsif Command = "team-agent" then
       Sancta.Commands.Team_Agent.Run;
+   elsif Command = "demo" then
+      Sancta.Commands.Demo.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");
       Usage (Standard_Error);

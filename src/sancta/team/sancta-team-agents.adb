@@ -9,6 +9,7 @@ package body Sancta.Team.Agents is
    use Sancta.Geometry;
    use type Interfaces.Unsigned_64;
    use type Missions.Task_Kind;
+   use type Grid_Costs.Cost_Access;
 
    Tick          : constant Duration := 0.02;
    Settle_Time   : constant Time_Span := Milliseconds (300);
@@ -285,8 +286,13 @@ package body Sancta.Team.Agents is
          Start : constant Plans.Plan :=
            (if This.Improved_Rounds = 0 then (others => <>) else V.Adopted);
          T0    : constant Time := Clock;
+         function Leg (From, To : Point) return Long_Float is
+           (This.Config.Costs.Leg (From, To));
          Mine  : constant Plans.Plan :=
-           Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id));
+           (if This.Config.Costs = null
+            then Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id))
+            else Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id),
+                               Leg => Leg'Access));
       begin
          Log (This, "annealed round" & S.Generation'Image & " in"
               & Duration'Image (To_Duration (Clock - T0)) & " s: "
@@ -302,6 +308,8 @@ package body Sancta.Team.Agents is
    --  Auctions (coordinator side) -------------------------------------------------------
 
    procedure Run_Auctions (This : in out Agent'Class; S : Plans.Snapshot) is
+      function Leg (From, To : Point) return Long_Float is
+        (This.Config.Costs.Leg (From, To));
       Result     : Plans.Plan := (Generation => S.Generation,
                                   Proposer => This.Config.Id, others => <>);
       Unassigned : Name_Sets.Set;
@@ -379,7 +387,11 @@ package body Sancta.Team.Agents is
             end if;
          end;
       end loop;
-      Dummy := Plans.Evaluate (S, Result);
+      if This.Config.Costs = null then
+         Dummy := Plans.Evaluate (S, Result);
+      else
+         Dummy := Plans.Evaluate (S, Result, Leg'Access);
+      end if;
       This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Result, S));
       Log (This, "auctions of round" & S.Generation'Image & " done in" & Step'Image & " steps");
    end Run_Auctions;
@@ -391,6 +403,7 @@ package body Sancta.Team.Agents is
    is
       pragma Unreferenced (Channel);
       A : Agent renames This.Owner.all;
+      function Leg (From, To : Point) return Long_Float is (A.Config.Costs.Leg (From, To));
       type Line_Array is array (1 .. 6) of Unbounded_String;
       L : Line_Array;
       N : Natural := 0;
@@ -479,7 +492,12 @@ package body Sancta.Team.Agents is
                         Cost : Long_Float;
                         Pos, C : Positive;
                      begin
-                        Plans.Best_Insertion (S, Start, A.Bundle, T, Cost, Pos, C);
+                        if A.Config.Costs = null then
+                           Plans.Best_Insertion (S, Start, A.Bundle, T, Cost, Pos, C);
+                        else
+                           Plans.Best_Insertion (S, Start, A.Bundle, T, Cost, Pos, C,
+                                                 Leg'Access);
+                        end if;
                         if Cost < Best.Cost then
                            Best := (A.Config.Id, To_Unbounded_String (T), Cost, Pos, C);
                         end if;

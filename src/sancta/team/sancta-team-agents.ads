@@ -40,6 +40,7 @@ with Ada.Strings.Unbounded;
 with Interfaces;
 with Sancta.Geometry;
 with Sancta.Team.Databases;
+with Sancta.Team.Grid_Costs;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;
@@ -68,6 +69,10 @@ package Sancta.Team.Agents is
       Seed       : Interfaces.Unsigned_64 := 1;
       Verbose    : Boolean := True;
       --  Rounds, auctions and annealing results on standard error.
+      Costs      : Grid_Costs.Cost_Access := null;
+      --  Leg costs of the allocation (annealing, bids): A* lengths on the
+      --  world's grid; null: straight lines. Every robot of a team must
+      --  use the same (plans' values are compared across robots).
    end record;
 
    type Agent is tagged limited private;

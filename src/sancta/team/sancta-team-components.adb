@@ -8,7 +8,10 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Shutdown;
 with Sancta.Runtime.Values;
+with Sancta.Simulation.Sim_Tool;
 with Sancta.Team.Agents;
+with Sancta.Team.Grid_Costs;
+with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Missions;
 
 package body Sancta.Team.Components is
@@ -28,6 +31,8 @@ package body Sancta.Team.Components is
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
+   function Img (X : Real) return String is (Values.Real_Image (Long_Float (X)));
+
    --  team_member ---------------------------------------------------------------
 
    type Member_Component is new Base_Component with record
@@ -35,10 +40,8 @@ package body Sancta.Team.Components is
       Tolerance : Real := 0.3;
       Here      : Point := (0.0, 0.0);
       Has_Pose  : Boolean := False;
-      Goal      : Point := (Real'Last, Real'Last);
-      Task_Id   : Unbounded_String;
+      Tracker   : Goal_Trackers.Goal_Tracker;
       Last_Pose : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
-      Status    : Unbounded_String;
    end record;
 
    overriding procedure Start (This : in out Member_Component);
@@ -46,6 +49,19 @@ package body Sancta.Team.Components is
    overriding procedure Run (This : in out Member_Component; Next : in out Clocks.Time);
    overriding procedure On_Input
      (This : in out Member_Component; Data : String; Item : Values.Value'Class);
+
+   function Leg_Costs (This : Member_Component'Class) return Grid_Costs.Cost_Access is
+      World : constant String := This.Option_Text ("world");
+   begin
+      if This.Option_Text ("costs") = "straight" then
+         return null;
+      elsif World = "" or else Simulation.Sim_Tool.World_File (World) = "" then
+         raise Constraint_Error with "team_member: costs=""grid"" needs world= (a bundled"
+           & " world or a map file), found '" & World & "'";
+      end if;
+      return Grid_Costs.Create (Simulation.Sim_Tool.World_File (World),
+                                Robot_Radius => Real (This.Option_Real ("robot_radius")));
+   end Leg_Costs;
 
    overriding procedure Start (This : in out Member_Component) is
    begin
@@ -57,7 +73,8 @@ package body Sancta.Team.Components is
           Is_Robot => True,
           Lease    => Ada.Real_Time.To_Duration (This.Option_Duration ("lease")),
           How      => Agents.Parse_Method (This.Option_Text ("method")),
-          Verbose  => False,
+          Verbose  => True,
+          Costs    => Leg_Costs (This),
           others   => <>));
       This.Subscribe ("pose");
    end Start;
@@ -95,28 +112,25 @@ package body Sancta.Team.Components is
          return;
       end if;
       This.Agent.Current_Goal (Found, Goal, Tid);
-      if not Found then
-         if This.Status /= To_Unbounded_String ("idle") then
-            This.Status := To_Unbounded_String ("idle");
+      case This.Tracker.Decide (Found, Goal, To_String (Tid), This.Here, This.Tolerance) is
+         when Goal_Trackers.Nothing =>
+            null;
+         when Goal_Trackers.Go_Idle =>
             This.Output ("status", Values.To_Value ("idle"));
             This.Output ("goal", Values.Pose_Value'(Data => (This.Here.X, This.Here.Y, 0.0)));
-         end if;
-         return;
-      end if;
-      if Distance (This.Here, Goal) <= This.Tolerance then
-         This.Agent.Arrived (To_String (Tid), Done);
-         if Done then
-            This.Log (Logging.Info, "did " & To_String (Tid));
-         end if;
-         return;
-      end if;
-      if Goal /= This.Goal or else Tid /= This.Task_Id then
-         This.Goal := Goal;
-         This.Task_Id := Tid;
-         This.Status := "task " & Tid;
-         This.Output ("status", Values.To_Value (To_String (This.Status)));
-         This.Output ("goal", Values.Pose_Value'(Data => (Goal.X, Goal.Y, 0.0)));
-      end if;
+            This.Log (Logging.Info, "idle (round" & This.Agent.Round.Generation'Image
+                      & ", plan" & This.Agent.Adopted.Generation'Image & ")");
+         when Goal_Trackers.At_Goal =>
+            This.Agent.Arrived (To_String (Tid), Done);
+            if Done then
+               This.Log (Logging.Info, "did " & To_String (Tid));
+            end if;
+         when Goal_Trackers.New_Goal =>
+            This.Output ("status", Values.To_Value ("task " & To_String (Tid)));
+            This.Output ("goal", Values.Pose_Value'(Data => (Goal.X, Goal.Y, 0.0)));
+            This.Log (Logging.Info, "task " & To_String (Tid) & " goal " & Img (Goal.X) & ","
+                      & Img (Goal.Y));
+      end case;
    end Run;
 
    function Create_Member (Ctx : Context) return Component_Access is
@@ -199,7 +213,11 @@ begin
                     & Make_Option ("method", Choice_Option, "annealer",
                                    Choices => "annealer auctions")
                     & Make_Option ("lease", Duration_Option, "1.0")
-                    & Make_Option ("tolerance", Real_Option, "0.3"),
+                    & Make_Option ("tolerance", Real_Option, "0.3")
+                    & Make_Option ("costs", Choice_Option, "straight",
+                                   Choices => "straight grid")
+                    & Make_Option ("world", Text_Option, "")
+                    & Make_Option ("robot_radius", Real_Option, "0.2"),
        others  => <>),
       Create_Member'Access);
    Factory.Register

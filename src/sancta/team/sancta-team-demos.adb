@@ -4,13 +4,10 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Navigators;
-with Sancta.Robot.Path_Costs;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Images;
 with Sancta.Simulation.Map_Files;
-with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Simulators;
-with Sancta.Simulation.Worlds;
 with Sancta.Team.Missions;
 
 package body Sancta.Team.Demos is
@@ -37,8 +34,10 @@ package body Sancta.Team.Demos is
    --  Planned tours as polylines (for the pictures) -------------------------------
 
    function Planned_Scene
-     (S : Plans.Snapshot; P : Plans.Plan; Ids : Robot_Summary_Vectors.Vector)
-      return Rendering.Scene
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null) return Rendering.Scene
    is
       Result : Rendering.Scene;
    begin
@@ -54,6 +53,14 @@ package body Sancta.Team.Demos is
                         T : constant Missions.Mission_Task :=
                           Plans.Task_Of (S, To_String (St.Task_Id));
                      begin
+                        if Map /= null and then not Path.Is_Empty then
+                           --  The leg along the A* path the robot would drive.
+                           for W of Robot.Path_Costs.Path
+                             (Map.all, Path.Last_Element, Missions.Entry_Point (T, St.Choice))
+                           loop
+                              Path.Append (W);
+                           end loop;
+                        end if;
                         Path.Append (Missions.Entry_Point (T, St.Choice));
                         Path.Append (Missions.Exit_Point (T, St.Choice));
                         Result.Markers.Append
@@ -68,6 +75,73 @@ package body Sancta.Team.Demos is
       end loop;
       return Result;
    end Planned_Scene;
+
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector
+   is
+      Result : Completion_Vectors.Vector;
+   begin
+      for K in 1 .. Natural'Min (Natural (S.Robots.Length), Natural (P.Tours.Length)) loop
+         if To_String (S.Robots (K).Id) = Robot then
+            for St of P.Tours (K) loop
+               if not Is_Done (To_String (St.Task_Id)) then
+                  Result.Append (Completion'(Task_Id => St.Task_Id, others => <>));
+               end if;
+            end loop;
+         end if;
+      end loop;
+      return Result;
+   end Unfinished;
+
+   procedure Resolve_Orphans (Result : in out Demo_Result) is
+   begin
+      for O of Result.Orphans loop
+         for C of Result.Completions loop
+            if C.Task_Id = O.Task_Id then
+               O.Robot := C.Robot;
+               O.Time := C.Time;
+            end if;
+         end loop;
+      end loop;
+   end Resolve_Orphans;
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Worlds.World;
+      Scene  : Rendering.Scene;
+      Dir    : String)
+   is
+      F   : File_Type;
+      Map : aliased Robot.Path_Costs.Planner;
+      procedure Picture (Name : String; S : Rendering.Scene) is
+      begin
+         Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
+         Images.Save_PNG (Rendering.Render (World, S), Dir & "/" & Name & ".png");
+      end Picture;
+   begin
+      Ada.Directories.Create_Path (Dir);
+      Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
+      Picture ("trajectories", Scene);
+      if Result.Plan_Before.Generation > 0 then
+         Picture ("plan-before",
+                  Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
+                                 Map'Access));
+      end if;
+      if Result.Plan_After.Generation > 0 then
+         Picture ("plan-after",
+                  Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots,
+                                 Map'Access));
+      end if;
+      Create (F, Out_File, Dir & "/summary.json");
+      Put (F, Summary_JSON (Result));
+      Close (F);
+      Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
+                & ".{svg,png}");
+   end Write_Report;
 
    function Summary_JSON (Result : Demo_Result) return String is
       J : Unbounded_String;
@@ -88,6 +162,9 @@ package body Sancta.Team.Demos is
       Append (J, "  ""replan_sim_s"": " & Img (Result.Replan_Sim) & "," & ASCII.LF);
       Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
       Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
+              & ASCII.LF);
+      Append (J, "  ""planned_grid_total_m"": " & Img (Result.Grid_Total) & "," & ASCII.LF);
+      Append (J, "  ""planned_grid_makespan_m"": " & Img (Result.Grid_Makespan) & ","
               & ASCII.LF);
       Append (J, "  ""executed_total_m"": " & Img (Result.Executed_Total) & "," & ASCII.LF);
       Append (J, "  ""rounds"": " & Trim (Result.Rounds) & "," & ASCII.LF);
@@ -114,6 +191,17 @@ package body Sancta.Team.Demos is
                     & ASCII.LF);
          end;
       end loop;
+      Append (J, "  ]," & ASCII.LF & "  ""reallocated"": [" & ASCII.LF);
+      for K in 1 .. Natural (Result.Orphans.Length) loop
+         declare
+            C : constant Completion := Result.Orphans (K);
+         begin
+            Append (J, "    {""task"": " & Q (To_String (C.Task_Id)) & ", ""done_by"": "
+                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time) & "}"
+                    & (if K < Natural (Result.Orphans.Length) then "," else "")
+                    & ASCII.LF);
+         end;
+      end loop;
       Append (J, "  ]" & ASCII.LF & "}" & ASCII.LF);
       return To_String (J);
    end Summary_JSON;
@@ -136,12 +224,42 @@ package body Sancta.Team.Demos is
                    & " s; re-planned: " & (if Result.Replanned then "yes" else "no")
                    & ", " & F1 (Result.Replan_Wall) & " s wall ("
                    & F1 (Result.Replan_Sim) & " s simulated) after the loss, lease included");
+         Put ("its unfinished tasks, re-allocated:");
+         for O of Result.Orphans loop
+            Put (" " & To_String (O.Task_Id) & ">"
+                 & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
+         end loop;
+         New_Line;
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
-                & " m, makespan " & F1 (Result.Planned_Makespan) & " m");
+                & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
+                & " legs; " & F1 (Result.Grid_Total) & " m, makespan "
+                & F1 (Result.Grid_Makespan) & " m along A* paths");
       Put_Line ("executed: total distance " & F1 (Result.Executed_Total) & " m; rounds of"
                 & " allocation:" & Result.Rounds'Image & "; collisions:" & Result.Collisions'Image);
    end Print_Summary;
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Worlds.World)
+   is
+      Map : Robot.Path_Costs.Planner;
+
+      function Leg (From, To : Point) return Long_Float is
+         C : constant Real := Map.Cost (From, To);
+      begin
+         return (if C = Robot.Path_Costs.Unreachable then Long_Float (Distance (From, To))
+                 else Long_Float (C));
+      end Leg;
+   begin
+      Map.Initialize (Worlds.Occupancy (Grid), Robot_Radius => 0.3);
+      Result.Planned_Total := Plans.Total (S, P);
+      Result.Planned_Makespan := Plans.Makespan (S, P);
+      Result.Grid_Total := Plans.Total (S, P, Leg'Access);
+      Result.Grid_Makespan := Plans.Makespan (S, P, Leg'Access);
+   end Note_First_Plan;
 
    procedure Run (Config : Demo_Config; Result : out Demo_Result) is
       use type Ada.Real_Time.Time;
@@ -234,6 +352,9 @@ package body Sancta.Team.Demos is
             end if;
          end Record_Completion;
 
+         function Done_Here (Task_Id : String) return Boolean is
+           (Operator.Database.Contains ("done/" & Task_Id));
+
          procedure Kill (R : Positive) is
          begin
             Victim := R;
@@ -247,6 +368,9 @@ package body Sancta.Team.Demos is
             Kill_Gen := Observer.Round.Generation;
             Result.Plan_Before := Observer.Adopted;
             Result.Round_Before := Observer.Round;
+            Result.Orphans := Unfinished
+              (Result.Round_Before, Result.Plan_Before, To_String (M.Robots (R).Id),
+               Done_Here'Access);
             Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
                       & To_String (M.Robots (R).Id) & " killed (simulator kill, agent stopped)");
          end Kill;
@@ -358,11 +482,11 @@ package body Sancta.Team.Demos is
                Next_Rec := Next_Rec + 0.5;
             end if;
             if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
-               Result.Planned_Total := Plans.Total (Observer.Round, Observer.Adopted);
-               Result.Planned_Makespan := Plans.Makespan (Observer.Round, Observer.Adopted);
+               Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
                Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
                          & F1 (Result.Planned_Total) & " m, makespan "
-                         & F1 (Result.Planned_Makespan) & " m");
+                         & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
+                         & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
             end if;
             if Config.Kill and then Victim = 0
               and then Long_Float (Operator.Done_Tasks)
@@ -433,32 +557,9 @@ package body Sancta.Team.Demos is
             end if;
          end loop;
          Operator.Stop;
+         Resolve_Orphans (Result);
          if Config.Out_Dir /= Null_Unbounded_String then
-            declare
-               Dir : constant String := To_String (Config.Out_Dir);
-               F   : File_Type;
-               procedure Picture (Name : String; S : Rendering.Scene) is
-               begin
-                  Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
-                  Images.Save_PNG (Rendering.Render (World, S), Dir & "/" & Name & ".png");
-               end Picture;
-            begin
-               Ada.Directories.Create_Path (Dir);
-               Picture ("trajectories", Scene);
-               if Result.Plan_Before.Generation > 0 then
-                  Picture ("plan-before",
-                           Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots));
-               end if;
-               if Result.Plan_After.Generation > 0 then
-                  Picture ("plan-after",
-                           Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots));
-               end if;
-               Create (F, Out_File, Dir & "/summary.json");
-               Put (F, Summary_JSON (Result));
-               Close (F);
-               Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
-                         & ".{svg,png}");
-            end;
+            Write_Report (Result, World, Scene, To_String (Config.Out_Dir));
          end if;
       end;
    end Run;

@@ -11,6 +11,9 @@
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;
+with Sancta.Robot.Path_Costs;
+with Sancta.Simulation.Rendering;
+with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Plans;
 
@@ -72,6 +75,12 @@ package Sancta.Team.Demos is
       Replanned       : Boolean := False;
       Planned_Total   : Long_Float := 0.0;
       Planned_Makespan : Long_Float := 0.0;
+      --  The first adopted plan's costs in the planners' model (straight
+      --  legs between task points).
+      Grid_Total      : Long_Float := 0.0;
+      Grid_Makespan   : Long_Float := 0.0;
+      --  The same plan with A* path lengths on the world's grid (robot
+      --  radius 0.3 m) for the legs: comparable to the executed distance.
       Executed_Total  : Long_Float := 0.0;
       Rounds          : Natural := 0;
       Collisions      : Natural := 0;
@@ -79,7 +88,42 @@ package Sancta.Team.Demos is
       Round_Before    : Plans.Snapshot;
       Plan_After      : Plans.Plan;
       Round_After     : Plans.Snapshot;
+      Orphans         : Completion_Vectors.Vector;
+      --  The killed robot's tasks not done at the kill (its tour in the
+      --  plan before the loss), each with the robot that finally did it
+      --  (Resolve_Orphans; empty Robot: nobody).
    end record;
+
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector;
+   --  The tasks of Robot's tour in plan P of round S not done yet.
+
+   procedure Resolve_Orphans (Result : in out Demo_Result);
+   --  Fills each orphan's Robot and Time from Result.Completions.
+
+   function Planned_Scene
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null)
+      return Sancta.Simulation.Rendering.Scene;
+   --  The planned tours as polylines from each robot's position (with Map:
+   --  the legs along A* paths on it; without, straight), with a marker
+   --  "task>robot" per task.
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Sancta.Simulation.Worlds.World;
+      Scene  : Sancta.Simulation.Rendering.Scene;
+      Dir    : String);
+   --  Dir/summary.json, trajectories.svg/png (World with Scene: executed
+   --  trajectories, tasks, robots), plan-before and plan-after .svg/.png
+   --  (when the result has those plans; legs along A* paths on World).
+   --  Creates Dir.
 
    procedure Run (Config : Demo_Config; Result : out Demo_Result);
    --  Runs the mission and, unless Out_Dir is empty, writes the report:
@@ -90,6 +134,14 @@ package Sancta.Team.Demos is
    --  fewer than two robots).
 
    procedure Print_Summary (Result : Demo_Result);
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Sancta.Simulation.Worlds.World);
+   --  Sets the planned costs of Result from plan P of round S (Grid: the
+   --  world whose occupancy gives the A* legs).
 
    function Summary_JSON (Result : Demo_Result) return String;
 

@@ -6,6 +6,7 @@ with Ada.Text_IO;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.Contexts;
 with RCL.DDS;
 with RCL.QoS;
 with Sancta.Team.Interfaces;
@@ -485,6 +486,9 @@ package body Sancta.Team.Networks is
       accept Go;
       loop
          exit when Owner.Status.Get.Stopping;
+         --  After Ctrl-C / SIGTERM the context is shut down: nothing can be
+         --  sent any more (publishing would raise at every beat).
+         exit when RCL.Contexts.Is_Shutdown;
          begin
             if Clock >= Owner.Next_Beat then
                Beat (Owner.all);

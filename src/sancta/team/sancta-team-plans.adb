@@ -169,16 +169,22 @@ package body Sancta.Team.Plans is
    --  Costs -------------------------------------------------------------------
 
    function Tour_Cost
-     (S : Snapshot; Start : Point; Tour : Step_Vectors.Vector) return Long_Float
+     (S     : Snapshot;
+      Start : Point;
+      Tour  : Step_Vectors.Vector;
+      Leg   : access function (From, To : Point) return Long_Float := null)
+      return Long_Float
    is
       Here   : Point := Start;
       Result : Long_Float := 0.0;
    begin
       for St of Tour loop
          declare
-            T : constant Missions.Mission_Task := Task_Of (S, To_String (St.Task_Id));
+            T    : constant Missions.Mission_Task := Task_Of (S, To_String (St.Task_Id));
+            To_P : constant Point := Missions.Entry_Point (T, St.Choice);
          begin
-            Result := Result + Long_Float (Distance (Here, Missions.Entry_Point (T, St.Choice)))
+            Result := Result
+              + (if Leg = null then Long_Float (Distance (Here, To_P)) else Leg (Here, To_P))
               + Missions.Inner_Length (T, St.Choice);
             Here := Missions.Exit_Point (T, St.Choice);
          end;
@@ -186,27 +192,38 @@ package body Sancta.Team.Plans is
       return Result;
    end Tour_Cost;
 
-   function Makespan (S : Snapshot; P : Plan) return Long_Float is
+   function Makespan
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
+   is
       Result : Long_Float := 0.0;
    begin
       for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R)));
+         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg));
       end loop;
       return Result;
    end Makespan;
 
-   function Total (S : Snapshot; P : Plan) return Long_Float is
+   function Total
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
+   is
       Result : Long_Float := 0.0;
    begin
       for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R));
+         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg);
       end loop;
       return Result;
    end Total;
 
-   function Evaluate (S : Snapshot; P : in out Plan) return Long_Float is
+   function Evaluate
+     (S   : Snapshot;
+      P   : in out Plan;
+      Leg : access function (From, To : Point) return Long_Float := null) return Long_Float is
    begin
-      P.Value := Makespan (S, P) + Total (S, P) / 1000.0;
+      P.Value := Makespan (S, P, Leg) + Total (S, P, Leg) / 1000.0;
       return P.Value;
    end Evaluate;
 
@@ -217,8 +234,11 @@ package body Sancta.Team.Plans is
       Task_Id   : String;
       New_Cost  : out Long_Float;
       Position  : out Positive;
-      Choice    : out Positive)
+      Choice    : out Positive;
+      Leg       : access function (From, To : Point) return Long_Float := null)
    is
+      function Distance (A, B : Point) return Real is
+        (if Leg = null then Sancta.Geometry.Distance (A, B) else Real (Leg (A, B)));
       T     : constant Missions.Mission_Task := Task_Of (S, Task_Id);
       L     : constant Natural := Natural (Tour.Length);
       Entry_P, Exit_P : array (0 .. L) of Point;
@@ -348,8 +368,12 @@ package body Sancta.Team.Plans is
       Budget     : Duration;
       Start_From : Plan;
       Proposer   : String;
-      Iterations : Long_Long_Integer := 0) return Plan
+      Iterations : Long_Long_Integer := 0;
+      Leg        : access function (From, To : Point) return Long_Float := null)
+      return Plan
    is
+      function Distance (A, B : Point) return Real is
+        (if Leg = null then Sancta.Geometry.Distance (A, B) else Real (Leg (A, B)));
       use Sancta.Allocation;
       use Sancta.Allocation.Problems;
       use Sancta.Allocation.Assignments;
@@ -363,7 +387,7 @@ package body Sancta.Team.Plans is
          for R in 1 .. NR loop
             Result.Tours.Append (Step_Vectors.Empty_Vector);
          end loop;
-         Dummy := Evaluate (S, Result);
+         Dummy := Evaluate (S, Result, Leg);
          return Result;
       end if;
       declare
@@ -478,7 +502,7 @@ package body Sancta.Team.Plans is
             end;
          end;
       end;
-      Dummy := Evaluate (S, Result);
+      Dummy := Evaluate (S, Result, Leg);
       return Result;
    end Anneal;
 

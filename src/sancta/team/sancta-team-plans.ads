@@ -64,11 +64,32 @@ package Sancta.Team.Plans is
    function Task_Of (S : Snapshot; Id : String) return Missions.Mission_Task;
 
    function Tour_Cost
-     (S : Snapshot; Start : Sancta.Geometry.Point; Tour : Step_Vectors.Vector) return Long_Float;
-   function Evaluate (S : Snapshot; P : in out Plan) return Long_Float;
-   --  Sets P.Value and returns it.
-   function Makespan (S : Snapshot; P : Plan) return Long_Float;
-   function Total (S : Snapshot; P : Plan) return Long_Float;
+     (S     : Snapshot;
+      Start : Sancta.Geometry.Point;
+      Tour  : Step_Vectors.Vector;
+      Leg   : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   --  Leg: the cost of going from one point to another (e.g. an A* path
+   --  length on the world's grid); null: the straight line (the planners'
+   --  model). The length inside a task (an explore segment) is always
+   --  straight.
+   function Evaluate
+     (S   : Snapshot;
+      P   : in out Plan;
+      Leg : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   --  Sets P.Value and returns it (legs as for Tour_Cost).
+   function Makespan
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   function Total
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Long_Float;
+   --  The longest tour and the sum of the tours, legs as for Tour_Cost.
 
    procedure Best_Insertion
      (S         : Snapshot;
@@ -77,7 +98,8 @@ package Sancta.Team.Plans is
       Task_Id   : String;
       New_Cost  : out Long_Float;
       Position  : out Positive;
-      Choice    : out Positive);
+      Choice    : out Positive;
+      Leg       : access function (From, To : Sancta.Geometry.Point) return Long_Float := null);
    --  Where inserting Task_Id into Tour (before Position, with Choice) gives
    --  the cheapest tour, and that tour's cost (an auction bid).
 
@@ -87,12 +109,15 @@ package Sancta.Team.Plans is
       Budget     : Duration;
       Start_From : Plan;
       Proposer   : String;
-      Iterations : Long_Long_Integer := 0) return Plan
+      Iterations : Long_Long_Integer := 0;
+      Leg        : access function (From, To : Sancta.Geometry.Point) return Long_Float := null)
+      return Plan
      with Pre => not S.Robots.Is_Empty and then (Budget > 0.0 or else Iterations > 0);
    --  The project's annealer (Sancta.Allocation.Annealers) on this round
    --  for Budget of wall-clock time (or Iterations moves, whichever ends
    --  first; 0 = no limit); starts from Start_From when it has tours for S,
-   --  else from its own greedy start.
+   --  else from its own greedy start. Leg: the cost of the legs between
+   --  points (null: straight lines), computed once per pair of points.
 
    function Greedy (S : Snapshot; Proposer : String) return Plan
      with Pre => not S.Robots.Is_Empty;

@@ -12,6 +12,9 @@ with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
 with Sancta.Team.Databases;
 with Sancta.Team.Demos;
+with Sancta.Team.Goal_Trackers;
+with Sancta.Team.Grid_Costs;
+with Sancta.Robot.Grids;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;
@@ -383,6 +386,36 @@ package body Sancta.Team.Tests is
          Assert (D.Tours = A.Tours and then abs (D.Value - A.Value) < 1.0E-6,
                  "plan text does not round-trip");
       end;
+      --  Legs costed by a function (the A* lengths of the demo's summary).
+      declare
+         One : Plans.Snapshot;
+         P   : Plans.Plan;
+         Seg : Missions.Mission_Task;
+         Go  : Missions.Mission_Task;
+         function Doubled (From, To : Sancta.Geometry.Point) return Long_Float is
+           (2.0 * Long_Float (Sancta.Geometry.Distance (From, To)));
+      begin
+         One.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("r"), (0.0, 0.0)));
+         Go.Id := To_Unbounded_String ("go");
+         Go.Points.Append (Missions.Point'(3.0, 4.0));
+         Seg.Id := To_Unbounded_String ("seg");
+         Seg.Kind := Missions.Explore_Segment;
+         Seg.Points.Append (Missions.Point'(3.0, 8.0));
+         Seg.Points.Append (Missions.Point'(3.0, 10.0));
+         One.Tasks.Append (Go);
+         One.Tasks.Append (Seg);
+         P.Tours.Append (Plans.Step_Vectors.Empty_Vector);
+         P.Tours (1).Append (Plans.Step'(Go.Id, 1));
+         P.Tours (1).Append (Plans.Step'(Seg.Id, 1));
+         --  Straight: 5 to go, 4 to the segment, 2 inside it.
+         Assert (abs (Plans.Total (One, P) - 11.0) < 1.0E-9,
+                 "straight total" & Plans.Total (One, P)'Image);
+         --  Legs doubled, the inside of the segment not.
+         Assert (abs (Plans.Total (One, P, Doubled'Access) - 20.0) < 1.0E-9,
+                 "total with doubled legs" & Plans.Total (One, P, Doubled'Access)'Image);
+         Assert (abs (Plans.Makespan (One, P, Doubled'Access) - 20.0) < 1.0E-9,
+                 "makespan with doubled legs");
+      end;
    end Test_Plans;
 
    --  A robot joining gets tasks; tasks done stay done ---------------------------------
@@ -459,6 +492,69 @@ package body Sancta.Team.Tests is
       Op.Stop;
    end Test_Join;
 
+   --  The team_member's goal rule (the stall of the configuration demo) ---------------
+
+   procedure Test_Goal_Tracker (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Goal_Trackers;
+      Tracker : Goal_Tracker;
+      G       : constant Sancta.Geometry.Point := (7.0, 7.0);
+      Here    : constant Sancta.Geometry.Point := (2.0, 10.0);
+
+      procedure Expect (Found : Boolean; Task_Id : String; At_Point : Sancta.Geometry.Point;
+                        Wanted : Action; Why : String) is
+         Got : constant Action := Tracker.Decide (Found, G, Task_Id, At_Point, 0.35);
+      begin
+         Assert (Got = Wanted, Why & ": " & Got'Image & " instead of " & Wanted'Image);
+      end Expect;
+   begin
+      Expect (False, "", Here, Go_Idle, "no plan at first");
+      Assert (Tracker.Is_Idle, "not idle without a plan");
+      Expect (False, "", Here, Nothing, "still no plan");
+      Expect (True, "s2b", Here, New_Goal, "first goal");
+      Expect (True, "s2b", Here, Nothing, "same goal again");
+      --  A new round: no adopted plan for a moment, then the same task back.
+      Expect (False, "", Here, Go_Idle, "new round without a plan");
+      Expect (True, "s2b", Here, New_Goal, "the same goal after an idle spell");
+      Assert (not Tracker.Is_Idle, "idle with a goal");
+      Expect (True, "s2c", Here, New_Goal, "another task at the same point");
+      Expect (True, "s2c", (7.1, 7.1), At_Goal, "within the tolerance");
+      Expect (True, "s2c", (7.3, 7.3), Nothing, "0.42 m away: not there, goal already sent");
+   end Test_Goal_Tracker;
+
+   --  Allocation legs along A* on a coarsened grid -------------------------------------
+
+   procedure Test_Grid_Costs (T : in out Fixture) is
+      pragma Unreferenced (T);
+      use Sancta.Robot.Grids;
+      --  10 m x 10 m at 0.05 m, a wall along x = 5 from y = 0 to 8 (a gap
+      --  from 8 to 10).
+      G : Grid (199, 199);
+   begin
+      G.Origin := (0.0, 0.0);
+      G.Resolution := 0.05;
+      Draw (G, (A => (5.0, 0.0), B => (5.0, 8.0), Thickness => 0.1));
+      declare
+         C : constant Grid := Grid_Costs.Coarsen (G, 4);
+      begin
+         Assert (Width (C) = 50 and then Height (C) = 50, "coarse size");
+         Assert (abs (Long_Float (C.Resolution) - 0.2) < 1.0E-9, "coarse resolution");
+         Assert (Is_Occupied_At (C, (5.0, 4.0)), "the wall is lost");
+         Assert (not Is_Occupied_At (C, (5.0, 9.0)), "the gap is closed");
+         Assert (not Is_Occupied_At (C, (2.0, 2.0)), "free space became occupied");
+      end;
+      declare
+         Costs : constant Grid_Costs.Cost_Access :=
+           Grid_Costs.Create (G, Robot_Radius => 0.2, Cell => 0.2);
+         Around : constant Long_Float := Costs.Leg ((3.0, 2.0), (7.0, 2.0));
+         Open   : constant Long_Float := Costs.Leg ((1.0, 1.0), (1.0, 5.0));
+      begin
+         --  Through the gap: at least up to y = 8 and back, about 4 + 2 x 6.
+         Assert (Around > 14.0 and then Around < 18.0, "leg around the wall:" & Around'Image);
+         Assert (abs (Open - 4.0) < 0.5, "open leg:" & Open'Image);
+      end;
+   end Test_Grid_Costs;
+
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
@@ -523,6 +619,8 @@ package body Sancta.Team.Tests is
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
+      Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
+      Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
       return Result;

@@ -1,0 +1,148 @@
+with Ada.Command_Line;
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
+with Ada.Text_IO;
+with Sancta.Team.Demos;
+with Sancta.Team.Missions;
+with Sancta.Team.Sim_Demos;
+
+package body Sancta.Commands.Demo is
+
+   use Ada.Command_Line;
+   use Ada.Strings.Unbounded;
+   use Ada.Text_IO;
+
+   procedure Usage is
+   begin
+      Put_Line ("usage: sancta demo [CONFIG.xml] [--set NAME=VALUE]... [--rate X] [--wall-clock]");
+      Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--max SECONDS]");
+      Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check]");
+      Put_Line ("  sancta-sim + one 'sancta run CONFIG --agent ID' process per agent;");
+      Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
+   end Usage;
+
+   function Default_Config return String is
+      Exe : constant String := Ada.Directories.Containing_Directory (Command_Name);
+   begin
+      return Exe & "/../share/config/sim-team.xml";
+   exception
+      when others =>
+         return "share/config/sim-team.xml";
+   end Default_Config;
+
+   function Check_Passed (R : Sancta.Team.Demos.Demo_Result) return Boolean is
+      Completed : Boolean := R.All_Done and then R.Duplicates = 0;
+   begin
+      if R.Killed /= Null_Unbounded_String then
+         Completed := Completed and then R.Replanned;
+         for O of R.Orphans loop
+            Completed := Completed and then O.Robot /= Null_Unbounded_String
+              and then O.Robot /= R.Killed;
+         end loop;
+      end if;
+      return Completed;
+   end Check_Passed;
+
+   procedure Run is
+      Config : Sancta.Team.Sim_Demos.Sim_Demo_Config;
+      Check  : Boolean := False;
+      I      : Positive := 2;
+      Result : Sancta.Team.Demos.Demo_Result;
+
+      function Value return String is
+      begin
+         if I + 1 > Argument_Count then
+            raise Constraint_Error with "option " & Argument (I) & " needs a value";
+         end if;
+         I := I + 1;
+         return Argument (I);
+      end Value;
+
+      function Number (Text : String; Name : String) return Long_Float is
+      begin
+         return Long_Float'Value (Text);
+      exception
+         when Constraint_Error =>
+            raise Constraint_Error with "option " & Name & ": """ & Text & """ is not a number";
+      end Number;
+   begin
+      Config.Config_File := To_Unbounded_String (Default_Config);
+      while I <= Argument_Count loop
+         declare
+            A : constant String := Argument (I);
+         begin
+            if A = "--help" or else A = "-h" then
+               Usage;
+               return;
+            elsif A = "--set" then
+               declare
+                  Item  : constant String := Value;
+                  Equal : constant Natural := Ada.Strings.Fixed.Index (Item, "=");
+               begin
+                  if Equal <= Item'First then
+                     raise Constraint_Error with "option --set: expected NAME=VALUE, found """
+                       & Item & """";
+                  end if;
+                  Config.Overrides.Include
+                    (Item (Item'First .. Equal - 1), Item (Equal + 1 .. Item'Last));
+               end;
+            elsif A = "--rate" then
+               Config.Rate := Number (Value, A);
+               if Config.Rate <= 0.0 or else Config.Rate > 100.0 then
+                  raise Constraint_Error with "option --rate: expected a value in ]0, 100]";
+               end if;
+            elsif A = "--wall-clock" then
+               Config.Sim_Time := False;
+            elsif A = "--kill" then
+               Config.Kill_Robot := To_Unbounded_String (Value);
+            elsif A = "--no-kill" then
+               Config.Kill := False;
+            elsif A = "--kill-at" then
+               Config.Kill_Fraction := Number (Value, A);
+               if Config.Kill_Fraction not in 0.0 .. 1.0 then
+                  raise Constraint_Error with "option --kill-at: expected a fraction in [0, 1]";
+               end if;
+            elsif A = "--max" then
+               Config.Max_Seconds := Number (Value, A);
+            elsif A = "--max-wall" then
+               Config.Max_Wall := Duration (Number (Value, A));
+            elsif A = "--out" then
+               Config.Out_Dir := To_Unbounded_String (Value);
+            elsif A = "--quiet" then
+               Config.Verbose := False;
+            elsif A = "--check" then
+               Check := True;
+            elsif A'Length > 0 and then A (A'First) = '-' then
+               raise Constraint_Error with "unknown option " & A;
+            else
+               Config.Config_File := To_Unbounded_String (A);
+            end if;
+         end;
+         I := I + 1;
+      end loop;
+      if not Ada.Directories.Exists (To_String (Config.Config_File)) then
+         raise Constraint_Error with To_String (Config.Config_File) & ": no such file";
+      end if;
+      Sancta.Team.Sim_Demos.Run (Config, Result);
+      Sancta.Team.Demos.Print_Summary (Result);
+      if Check then
+         if Check_Passed (Result) then
+            Put_Line ("check: passed (every task done exactly once"
+                      & (if Result.Killed = Null_Unbounded_String then ")"
+                         else "; the lost robot's unfinished tasks done by survivors)"));
+         else
+            Put_Line ("check: FAILED");
+            Set_Exit_Status (Failure);
+         end if;
+      elsif not Result.All_Done then
+         Set_Exit_Status (Failure);
+      end if;
+   exception
+      when E : Constraint_Error | Sancta.Team.Missions.Format_Error =>
+         Put_Line (Standard_Error, "sancta demo: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (2);
+   end Run;
+
+end Sancta.Commands.Demo;

@@ -1,0 +1,76 @@
+"""The README's demo (`sancta demo share/config/sim-team.xml`): sancta-sim
+and one `sancta run` process per agent of the configuration file, in
+accelerated simulation time; one robot's process is killed mid-mission.
+Checks the demo's own summary (summary.json): every mission task done
+exactly once, the killed robot's unfinished tasks re-allocated to and done
+by survivors, nothing done by the dead robot after its death. Bounded by
+the demo's own wall-clock limit and a subprocess timeout."""
+import json
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pubsub_support as ps
+
+CONFIG = ps.REPO / "share" / "config" / "sim-team.xml"
+MISSION = ps.REPO / "share" / "missions" / "office-team.xml"
+
+
+def mission_tasks():
+    root = ET.parse(MISSION).getroot()
+    return {e.get("id") for e in root if e.tag in ("goto", "explore", "choose")}
+
+
+def run_demo(out, *extra):
+    exe = ps.BIN / "sancta"
+    assert exe.exists(), f"{exe} not built"
+    proc = subprocess.run(
+        [str(exe), "demo", str(CONFIG), "--rate", "8", "--max-wall", "100", "--check",
+         "--out", str(out), *extra],
+        cwd=ps.REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        timeout=140)
+    return proc.returncode, proc.stdout
+
+
+def check_summary(out, output):
+    summary = json.loads((out / "summary.json").read_text())
+    context = f"\ndemo said:\n{output}"
+    tasks = mission_tasks()
+    assert len(tasks) >= 20
+    done = [c["task"] for c in summary["completions"]]
+    assert sorted(done) == sorted(tasks), f"tasks done {sorted(done)}{context}"
+    assert summary["all_done"] and summary["tasks_done"] == len(tasks), context
+    assert summary["duplicates"] == 0, context
+    killed = summary["killed"]
+    assert killed, f"no robot killed{context}"
+    assert summary["replanned"], context
+    dead = [r for r in summary["robots"] if r["id"] == killed]
+    assert dead and not dead[0]["alive"], context
+    # Completion times are when the observer saw the record: one written
+    # just before the kill may arrive a moment (well under 2 s simulated)
+    # after it; a SIGKILLed process writes nothing later.
+    for c in summary["completions"]:
+        assert c["robot"] != killed or c["time_s"] <= summary["kill_time_s"] + 2.0, \
+            f"{c} done by the dead robot after its death{context}"
+    orphans = summary["reallocated"]
+    assert orphans, f"the killed robot had no unfinished task{context}"
+    for o in orphans:
+        assert o["done_by"] not in ("", killed), f"{o} not done by a survivor{context}"
+    assert summary["executed_total_m"] > 0 and summary["planned_total_m"] > 0, context
+    # The same first plan along A* paths is never much shorter than along
+    # straight lines (grid cells: a few cm per leg).
+    assert summary["planned_grid_total_m"] >= 0.98 * summary["planned_total_m"], context
+    for name in ("trajectories.svg", "trajectories.png", "plan-before.svg", "plan-after.svg",
+                 "sim.log", "operator.log", f"{killed}.log"):
+        assert (out / name).exists(), f"{name} missing{context}"
+
+
+def test_demo_annealer_robot_lost(tmp_path):
+    code, output = run_demo(tmp_path)
+    assert code == 0 and "check: passed" in output, output
+    check_summary(tmp_path, output)
+
+
+def test_demo_auctions_robot_lost(tmp_path):
+    code, output = run_demo(tmp_path, "--set", "method=auctions", "--kill", "r3")
+    assert code == 0 and "check: passed" in output, output
+    check_summary(tmp_path, output)
