@@ -49,6 +49,7 @@ def test_killed_robot_process_is_lost_by_liveliness(tmp_path):
         killed = time.monotonic()
         assert wait_for(r"round [0-9]+ robots r1,r2 ", op, 30), op.read_text()
         noticed = time.monotonic() - killed
+        print(f"loss of r3 noticed (re-allocation round) {noticed:.2f} s after SIGKILL")
         procs["operator"].wait(timeout=150)
         text = op.read_text()
         assert procs["operator"].returncode == 0, text
