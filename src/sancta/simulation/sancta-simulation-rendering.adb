@@ -2,6 +2,7 @@ with Ada.Directories;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Grids;
+with Sancta.Simulation.Glyphs;
 
 package body Sancta.Simulation.Rendering is
 
@@ -137,6 +138,13 @@ package body Sancta.Simulation.Rendering is
       for M of S.Markers loop
          Line (M.Where - (0.3, 0.3), M.Where + (0.3, 0.3), (200, 0, 0));
          Line (M.Where + (-0.3, 0.3), M.Where + (0.3, -0.3), (200, 0, 0));
+      end loop;
+      --  Labels last, over every line (as in the SVG: right of the marker).
+      for M of S.Markers loop
+         if Length (M.Label) > 0 then
+            Glyphs.Draw_Text (Img, PX (M.Where) + 7, PY (M.Where) - Glyphs.Glyph_Height / 2,
+                              To_String (M.Label), (120, 0, 0));
+         end if;
       end loop;
       return Img;
    end Render;

@@ -1,6 +1,6 @@
 --  Pictures of a world with robot trajectories, robots and points of
---  interest, as SVG (vector, labelled) or as an image saved to PNG (no
---  text: markers only). Trajectories can be read from and written to CSV
+--  interest, as SVG (vector) or as an image saved to PNG (labels in a
+--  5 x 7 pixel font, Sancta.Simulation.Glyphs). Trajectories can be read from and written to CSV
 --  ("robot,x,y" per line, robots numbered from 1). A world can also be
 --  written as a ROS map-server pair (PGM + YAML).
 --

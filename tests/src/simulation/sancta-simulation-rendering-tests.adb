@@ -6,6 +6,8 @@ with AUnit.Assertions;   use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Robot.Grids;
+with Sancta.Simulation.Glyphs;
+with Sancta.Simulation.Images;
 with Sancta.Simulation.Map_Files;
 
 package body Sancta.Simulation.Rendering.Tests is
@@ -106,6 +108,48 @@ package body Sancta.Simulation.Rendering.Tests is
       end;
    end SVG_And_CSV;
 
+   procedure Text_In_Pictures (Unused : in out Fixture) is
+      use type Images.Color;
+      Img : Images.Image := Images.Create (40, 12);
+      function Inked_Pixels (C : Character) return Natural is
+         N : Natural := 0;
+      begin
+         for Row in 1 .. Glyphs.Glyph_Height loop
+            for Column in 1 .. Glyphs.Glyph_Width loop
+               N := N + (if Glyphs.Is_Inked (C, Column, Row) then 1 else 0);
+            end loop;
+         end loop;
+         return N;
+      end Inked_Pixels;
+      Red : constant Images.Color := (200, 0, 0);
+      Count : Natural := 0;
+   begin
+      Assert (Glyphs.Is_Inked ('1', 3, 1) and then not Glyphs.Is_Inked ('1', 1, 1), "glyph 1");
+      Assert (Glyphs.Is_Inked ('T', 1, 1) and then Glyphs.Is_Inked ('T', 3, 7)
+              and then not Glyphs.Is_Inked ('T', 1, 7), "glyph T");
+      Assert ((for all Row in 1 .. 7 => (for all Column in 1 .. 5 =>
+                Glyphs.Is_Inked ('r', Column, Row) = Glyphs.Is_Inked ('R', Column, Row))),
+              "lower case drawn as upper case");
+      Assert ((for all Row in 1 .. 7 => (for all Column in 1 .. 5 =>
+                Glyphs.Is_Inked ('~', Column, Row) = Glyphs.Is_Inked ('?', Column, Row))),
+              "no glyph: '?'");
+      Assert (Inked_Pixels (' ') = 0 and then Inked_Pixels ('A') = 18,
+              "space blank, A inked:" & Inked_Pixels ('A')'Image);
+      Glyphs.Draw_Text (Img, 2, 3, "r1>t2", Red);
+      for Y in 1 .. 12 loop
+         for X in 1 .. 40 loop
+            if Images.Get (Img, X, Y) = Red then
+               Count := Count + 1;
+               Assert (X in 2 .. 2 + Glyphs.Text_Width ("r1>t2") and then Y in 3 .. 9,
+                       "ink outside the text box");
+            end if;
+         end loop;
+      end loop;
+      Assert (Count > 20, "text drawn:" & Count'Image & " pixels");
+      --  Clipped at the edges, no failure.
+      Glyphs.Draw_Text (Img, -3, 9, "clipped text running off", Red);
+   end Text_In_Pictures;
+
    procedure Map_Pair_Round_Trip (Unused : in out Fixture) is
       W : constant Worlds.World := Room;
    begin
@@ -131,6 +175,8 @@ package body Sancta.Simulation.Rendering.Tests is
       Result.Add_Test (Caller.Create ("rendering: PNG picture", Picture'Access));
       Result.Add_Test (Caller.Create ("rendering: SVG and trajectories CSV",
                                       SVG_And_CSV'Access));
+      Result.Add_Test (Caller.Create ("rendering: text in pictures (5 x 7 font)",
+                                      Text_In_Pictures'Access));
       Result.Add_Test (Caller.Create ("rendering: map-server pair round trip",
                                       Map_Pair_Round_Trip'Access));
       return Result;
