@@ -152,14 +152,16 @@ package body Sancta.Allocation.Annealers is
 
    type Seg_Kind is (Span, Single);
    type Seg is record
-      Kind     : Seg_Kind := Span;
-      Robot    : Positive := 1;
-      First    : Natural := 1;
-      Last     : Natural := 0;
-      Reversed : Boolean := False;
-      Task_Id  : Natural := 0;   --  Single: this task ...
-      Loc      : Natural := 0;   --  ... at this location
+      Kind     : Seg_Kind;
+      Robot    : Positive;
+      First    : Natural;
+      Last     : Natural;
+      Reversed : Boolean;
+      Task_Id  : Natural;   --  Single: this task ...
+      Loc      : Natural;   --  ... at this location
    end record;
+   --  No default values: a tour plan only reads its first Count segments,
+   --  and moves are built millions of times a second.
 
    Max_Segs : constant := 6;
    type Seg_List is array (1 .. Max_Segs) of Seg;
@@ -182,20 +184,37 @@ package body Sancta.Allocation.Annealers is
       Value       : Long_Float := 0.0;
    end record;
 
+   procedure Clear (Mv : in out Move) is
+   begin
+      Mv.A.Robot := 0;
+      Mv.A.Count := 0;
+      Mv.B.Robot := 0;
+      Mv.B.Count := 0;
+   end Clear;
+
+   function No_Move return Move is
+   begin
+      return M : Move do
+         Clear (M);
+      end return;
+   end No_Move;
+   --  A move of no tour (for Verify without a prediction).
+
    procedure Add (T : in out Tour_Plan; Robot : Positive; First, Last : Natural;
                   Reversed : Boolean := False) is
    begin
       if First <= Last then
          T.Count := T.Count + 1;
          T.Segs (T.Count) := (Kind => Span, Robot => Robot, First => First,
-                              Last => Last, Reversed => Reversed, others => <>);
+                              Last => Last, Reversed => Reversed, Task_Id => 0, Loc => 0);
       end if;
    end Add;
 
    procedure Add_Single (T : in out Tour_Plan; Task_Id, Loc : Positive) is
    begin
       T.Count := T.Count + 1;
-      T.Segs (T.Count) := (Kind => Single, Task_Id => Task_Id, Loc => Loc, others => <>);
+      T.Segs (T.Count) := (Kind => Single, Task_Id => Task_Id, Loc => Loc, Robot => 1,
+                           First => 1, Last => 0, Reversed => False);
    end Add_Single;
 
    procedure Eval_Tour
@@ -692,8 +711,7 @@ package body Sancta.Allocation.Annealers is
          end if;
       end Moved;
    begin
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       Ok := True;
       if R1 /= R2 then
          Mv.A.Robot := R1;
@@ -781,8 +799,7 @@ package body Sancta.Allocation.Annealers is
       end if;
       R2 := S.Own (U);
       J := S.Pos (U);
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       if R1 = R2 then
          declare
             Lo, Hi : Natural;
@@ -886,8 +903,7 @@ package body Sancta.Allocation.Annealers is
          return;
       end if;
       C := S.Pos (V);
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       Mv.A.Robot := R;
       Add (Mv.A, R, 1, A);
       Add (Mv.A, R, B + 1, C);
@@ -918,8 +934,7 @@ package body Sancta.Allocation.Annealers is
       end if;
       E1 := Natural'Min (I + L1 - 1, S.Len (R1));
       E2 := Natural'Min (J + L2, S.Len (R2));
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       Mv.A.Robot := R1;
       Add (Mv.A, R1, 1, I - 1);
       Add (Mv.A, R2, J + 1, E2);
@@ -943,8 +958,7 @@ package body Sancta.Allocation.Annealers is
       if T = U then
          return;
       end if;
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       if R1 = R2 then
          if J < I then
             declare
@@ -1198,8 +1212,7 @@ package body Sancta.Allocation.Annealers is
                   J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
                begin
                   if J > I then
-                     Mv.A := (others => <>);
-                     Mv.B := (others => <>);
+                     Clear (Mv);
                      Mv.A.Robot := R1;
                      Add (Mv.A, R1, 1, I - 1);
                      Add (Mv.A, R1, I, J, True);
@@ -1382,7 +1395,7 @@ package body Sancta.Allocation.Annealers is
             Load (P, S.all, Backup);
          end if;
          if Opts.Check then
-            Verify (P, S.all, (others => <>), False);
+            Verify (P, S.all, No_Move, False);
          end if;
       end Ruin_And_Recreate;
 
@@ -1509,7 +1522,7 @@ package body Sancta.Allocation.Annealers is
          end if;
       end if;
       if Opts.Check then
-         Verify (P, S.all, (others => <>), False);
+         Verify (P, S.all, No_Move, False);
       end if;
       Cur := Current_Value (P, S.all, W);
       Best_Value := Current_Value (P, S.all, WT);
@@ -1600,7 +1613,7 @@ package body Sancta.Allocation.Annealers is
                                                                    (X * Long_Float (Runs))));
                            Construct (P, S.all, Opts.Criterion, G);
                            if Opts.Check then
-                              Verify (P, S.all, (others => <>), False);
+                              Verify (P, S.all, No_Move, False);
                            end if;
                            Cur := Current_Value (P, S.all, W);
                            XR := X * Long_Float (Runs) - Long_Float (Run);
