@@ -19,6 +19,7 @@ with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
+with Sancta.Allocation.Plan_Tests;
 with Sancta.Allocation.Tests;
 with Sancta.Team.Tests;
 
@@ -51,6 +52,7 @@ package body All_Suites is
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Plan_Tests.Suite);
       Result.Add_Test (Sancta.Team.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);

@@ -38,11 +38,16 @@ package body Sancta.Allocation.Annealers is
       RC   : Cost_Array (1 .. NR) := [others => 0];
       RCm  : Cost_Array (1 .. NR) := [others => 0];
       Sum, Comp : Cost := 0;
-      Sq   : Long_Float := 0.0;
-      --  Sum of the squared robot costs (recomputed, never updated in place).
       Tree : Cost_Array (1 .. N2) := [others => 0];
       Near : Near_Grid (1 .. NT, 1 .. NK) := [others => [others => 0]];
       Near_Count : Count_Array (1 .. NT) := [others => 0];
+      Sel  : Location_Array (1 .. NT) := [others => 1];
+      --  Plan trees: the alternative chosen at each OR ordinal ...
+      Active : Boolean_Array (1 .. NT) := [others => True];
+      --  ... the tasks it makes active (only they are in tours; Own = 0
+      --  for the others) ...
+      N_Active : Natural := NT;
+      --  ... and their number.
    end record;
 
    type State_Access is access State;
@@ -119,15 +124,15 @@ package body Sancta.Allocation.Annealers is
             S.Lc (R, I) := L;
             S.Own (T) := R;
             S.Pos (T) := I;
-            S.Fw (R, I) := S.Fw (R, I - 1) + P.Distance (S.Lc (R, I - 1), L);
-            S.Rv (R, I) := S.Rv (R, I - 1) + P.Distance (L, S.Lc (R, I - 1));
+            S.Fw (R, I) := S.Fw (R, I - 1) + Robot_Distance (P, R, S.Lc (R, I - 1), L);
+            S.Rv (R, I) := S.Rv (R, I - 1) + Robot_Distance (P, R, L, S.Lc (R, I - 1));
             S.PF (R, I) := S.PF (R, I - 1) + S.Fw (R, I);
             S.PR (R, I) := S.PR (R, I - 1) + S.Rv (R, I);
          end;
       end loop;
       S.Lc (R, N + 1) := P.Finish (R);
-      S.Fw (R, N + 1) := S.Fw (R, N) + P.Distance (S.Lc (R, N), P.Finish (R));
-      S.Rv (R, N + 1) := S.Rv (R, N) + P.Distance (P.Finish (R), S.Lc (R, N));
+      S.Fw (R, N + 1) := S.Fw (R, N) + Robot_Distance (P, R, S.Lc (R, N), P.Finish (R));
+      S.Rv (R, N + 1) := S.Rv (R, N) + Robot_Distance (P, R, P.Finish (R), S.Lc (R, N));
       if not P.All_Feasible then
          for I in 1 .. N loop
             if not P.Can_Do (R, S.Tk (R, I)) then
@@ -141,10 +146,6 @@ package body Sancta.Allocation.Annealers is
       S.Sum := S.Sum - Old_RC + S.RC (R);
       S.Comp := S.Comp - Old_RCm + S.RCm (R);
       Tree_Set (S, R, Key (S, R));
-      S.Sq := 0.0;
-      for Q in 1 .. S.NR loop
-         S.Sq := S.Sq + Long_Float (S.RC (Q)) ** 2;
-      end loop;
    end Rebuild;
 
    ---------------------------------------------------------------------------
@@ -176,11 +177,14 @@ package body Sancta.Allocation.Annealers is
       A, B        : Tour_Plan;
       Switch_Task : Natural := 0;   --  OR switch: task and its new choice
       Switch_To   : Natural := 0;
+      Or_Node     : Natural := 0;
+      --  Switch subtree: the OR ordinal switched (the move's new tours are
+      --  in the solver's Pending record, its costs already evaluated).
+      New_Active  : Natural := 0;
       New_A_Cost, New_B_Cost : Cost := 0;
       New_A_Comp, New_B_Comp : Cost := 0;
       New_A_Len, New_B_Len   : Natural := 0;
       New_Max, New_Sum, New_Comp : Cost := 0;
-      New_Sq      : Long_Float := 0.0;
       Value       : Long_Float := 0.0;
    end record;
 
@@ -190,6 +194,7 @@ package body Sancta.Allocation.Annealers is
       Mv.A.Count := 0;
       Mv.B.Robot := 0;
       Mv.B.Count := 0;
+      Mv.Or_Node := 0;
    end Clear;
 
    function No_Move return Move is
@@ -234,7 +239,7 @@ package body Sancta.Allocation.Annealers is
             G : Seg renames T.Segs (K);
          begin
             if G.Kind = Single then
-               Time := Time + P.Distance (Here, G.Loc);
+               Time := Time + Robot_Distance (P, R, Here, G.Loc);
                Sum := Sum + Time;
                Here := G.Loc;
                Count := Count + 1;
@@ -246,14 +251,27 @@ package body Sancta.Allocation.Annealers is
                   RS : constant Positive := G.Robot;
                   N  : constant Cost := Cost (G.Last - G.First + 1);
                begin
-                  if not G.Reversed then
-                     Time := Time + P.Distance (Here, S.Lc (RS, G.First));
+                  if RS /= R and then (Has_Own_Costs (P, R) or else Has_Own_Costs (P, RS)) then
+                     --  Another robot's segment in a different metric: arc
+                     --  by arc in R's own costs (its prefix sums are RS's).
+                     for K2 in G.First .. G.Last loop
+                        declare
+                           I : constant Positive :=
+                             (if G.Reversed then G.Last - (K2 - G.First) else K2);
+                        begin
+                           Time := Time + Robot_Distance (P, R, Here, S.Lc (RS, I));
+                           Sum := Sum + Time;
+                           Here := S.Lc (RS, I);
+                        end;
+                     end loop;
+                  elsif not G.Reversed then
+                     Time := Time + Robot_Distance (P, R, Here, S.Lc (RS, G.First));
                      Sum := Sum + N * (Time - S.Fw (RS, G.First))
                        + S.PF (RS, G.Last) - S.PF (RS, G.First - 1);
                      Time := Time + S.Fw (RS, G.Last) - S.Fw (RS, G.First);
                      Here := S.Lc (RS, G.Last);
                   else
-                     Time := Time + P.Distance (Here, S.Lc (RS, G.Last));
+                     Time := Time + Robot_Distance (P, R, Here, S.Lc (RS, G.Last));
                      Sum := Sum + N * (Time + S.Rv (RS, G.Last))
                        - (S.PR (RS, G.Last) - S.PR (RS, G.First - 1));
                      Time := Time + S.Rv (RS, G.Last) - S.Rv (RS, G.First);
@@ -271,7 +289,7 @@ package body Sancta.Allocation.Annealers is
             end if;
          end;
       end loop;
-      Time := Time + P.Distance (Here, P.Finish (R));
+      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
       Length := M * Time + Cost (Bad) * Infinity;
       Completion := M * Sum + Cost (Bad) * Infinity;
    end Eval_Tour;
@@ -279,26 +297,29 @@ package body Sancta.Allocation.Annealers is
    type Weights is record
       C   : Criterion;
       Tie : Long_Float := 0.0;  --  weight of Sum added to break MinMax ties
-      Square : Long_Float := 0.0;
-      --  Weight of the sum of squared robot costs: a smooth makespan guide
-      --  (every long tour pulls, not only the longest).
    end record;
 
-   function Objective (W : Weights; Max, Sum, Comp : Cost; Sq : Long_Float; Tasks : Natural)
+   function Objective (W : Weights; Max, Sum, Comp : Cost; Tasks : Natural)
      return Long_Float
-   is (Value (W.C, Max, Sum, Comp, Tasks) + W.Tie * Long_Float (Sum) + W.Square * Sq);
+   is (Value (W.C, Max, Sum, Comp, Tasks) + W.Tie * Long_Float (Sum));
 
    function Current_Value (P : Problem; S : State; W : Weights) return Long_Float is
-     (Objective (W, Current_Max (S), S.Sum, S.Comp, S.Sq, P.Tasks));
+     (Objective (W, Current_Max (S), S.Sum, S.Comp, Natural'Min (S.N_Active, P.Tasks)));
 
    procedure Evaluate_Move
      (P : Problem; S : State; W : Weights; Mv : in out Move; Valid : out Boolean)
    is
-      A : constant Positive := Mv.A.Robot;
+      A : constant Natural := Mv.A.Robot;
+      --  Positive but for a switch subtree move (no tour plans).
       B : constant Natural := Mv.B.Robot;
       Max, Sum, Comp : Cost;
-      Sq : Long_Float := 0.0;
    begin
+      if Mv.Or_Node /= 0 then
+         --  Switch subtree: evaluated when proposed (Gen_Switch_Subtree).
+         Valid := True;
+         return;
+      end if;
+      Mv.New_Active := S.N_Active;
       Eval_Tour (P, S, Mv.A, Mv.New_A_Cost, Mv.New_A_Comp, Mv.New_A_Len);
       Valid := Mv.New_A_Len >= P.Min_Tasks or else Mv.New_A_Len >= S.Len (A);
       Sum := S.Sum - S.RC (A) + Mv.New_A_Cost;
@@ -316,17 +337,10 @@ package body Sancta.Allocation.Annealers is
             Max := Cost'Max (Max, Mv.New_B_Cost);
          end if;
       end if;
-      if W.Square /= 0.0 then
-         Sq := S.Sq - Long_Float (S.RC (A)) ** 2 + Long_Float (Mv.New_A_Cost) ** 2;
-         if B /= 0 then
-            Sq := Sq - Long_Float (S.RC (B)) ** 2 + Long_Float (Mv.New_B_Cost) ** 2;
-         end if;
-      end if;
       Mv.New_Max := Max;
       Mv.New_Sum := Sum;
       Mv.New_Comp := Comp;
-      Mv.New_Sq := Sq;
-      Mv.Value := Objective (W, Max, Sum, Comp, Sq, P.Tasks);
+      Mv.Value := Objective (W, Max, Sum, Comp, S.N_Active);
    end Evaluate_Move;
 
    --  Writes a planned tour into Buf (tasks), returns the first position
@@ -431,7 +445,7 @@ package body Sancta.Allocation.Annealers is
                   if S.Own (T) /= R or else S.Pos (T) /= I then
                      Fail ("position index of task" & T'Image);
                   end if;
-                  Time := Time + P.Distance (Here, L);
+                  Time := Time + Robot_Distance (P, R, Here, L);
                   CSum := CSum + Time;
                   if not P.Can_Do (R, T) then
                      Bad := Bad + 1;
@@ -439,7 +453,7 @@ package body Sancta.Allocation.Annealers is
                   Here := L;
                end;
             end loop;
-            Time := Time + P.Distance (Here, P.Finish (R));
+            Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
             RC := M * Time + Cost (Bad) * Infinity;
             RCm := M * CSum + Cost (Bad) * Infinity;
             if RC /= S.RC (R) or else RCm /= S.RCm (R) then
@@ -462,10 +476,26 @@ package body Sancta.Allocation.Annealers is
          end;
       end loop;
       for T in 1 .. S.NT loop
-         if Seen (T) /= 1 then
-            Fail ("task" & T'Image & " appears" & Seen (T)'Image & " times");
+         if S.Active (T) /= Is_Active (P, S.Sel, T) then
+            Fail ("active flag of task" & T'Image);
+         elsif Seen (T) /= (if S.Active (T) then 1 else 0) then
+            Fail ("task" & T'Image & " (active: " & S.Active (T)'Image & ") appears"
+                  & Seen (T)'Image & " times");
+         elsif not S.Active (T) and then S.Own (T) /= 0 then
+            Fail ("inactive task" & T'Image & " has an owner");
          end if;
       end loop;
+      if Active_Count (P, S.Sel) /= S.N_Active then
+         Fail ("active count" & S.N_Active'Image);
+      end if;
+      if Predicted and then Mv.Or_Node /= 0
+        and then (Mv.New_Sum /= S.Sum or else Mv.New_Comp /= S.Comp
+                  or else Mv.New_Max /= Current_Max (S) or else Mv.New_Active /= S.N_Active)
+      then
+         Fail ("switch subtree prediction: sum" & Mv.New_Sum'Image & " actual" & S.Sum'Image
+               & ", completion" & Mv.New_Comp'Image & " actual" & S.Comp'Image
+               & ", max" & Mv.New_Max'Image & " actual" & Current_Max (S)'Image);
+      end if;
       if Sum /= S.Sum or else Comp /= S.Comp or else Max /= Current_Max (S) then
          Fail ("totals: sum" & S.Sum'Image & " vs" & Sum'Image & ", max"
                & Current_Max (S)'Image & " vs" & Max'Image);
@@ -516,6 +546,16 @@ package body Sancta.Allocation.Annealers is
    procedure Load (P : Problem; S : in out State; A : Assignment) is
    begin
       S.Choice := A.Choice;
+      S.Sel := A.Branch;
+      S.N_Active := 0;
+      for T in 1 .. S.NT loop
+         S.Active (T) := Is_Active (P, S.Sel, T);
+         if S.Active (T) then
+            S.N_Active := S.N_Active + 1;
+         end if;
+         S.Own (T) := 0;
+         S.Pos (T) := 0;
+      end loop;
       S.Sum := 0;
       S.Comp := 0;
       S.RC := [others => 0];
@@ -532,6 +572,7 @@ package body Sancta.Allocation.Annealers is
    procedure Store (S : State; A : in out Assignment) is
    begin
       A.Choice := S.Choice;
+      A.Branch := S.Sel;
       for R in 1 .. S.NR loop
          A.Length (R) := S.Len (R);
          for I in 1 .. S.Len (R) loop
@@ -545,9 +586,9 @@ package body Sancta.Allocation.Annealers is
       if C.Sum_Weight = 0.0 and then C.Ave_Weight = 0.0 and then P.Robots > 1 then
          --  Pure makespan: plateaus everywhere; a tiny total-cost term
          --  breaks ties without ever trading a unit of makespan.
-         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)), 0.0);
+         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)));
       end if;
-      return (C, 0.0, 0.0);
+      return (C, 0.0);
    end Make_Weights;
 
    --  Insert task T (unassigned) at its best place.
@@ -622,12 +663,15 @@ package body Sancta.Allocation.Annealers is
       Order : Count_Array (1 .. P.Tasks);
       N     : Natural := 0;
       Done  : Boolean_Array (1 .. P.Tasks) := [others => False];
-      W     : Weights := (C, 0.0, 0.0);
-      Empty_A : constant Assignment := Empty (P);
+      W     : Weights := (C, 0.0);
+      Empty_A : Assignment := Empty (P);
    begin
+      if Has_Plan (P) then
+         Empty_A.Branch := Cheapest_Selection (P);
+      end if;
       Load (P, S, Empty_A);
       for T in 1 .. P.Tasks loop
-         if not P.Is_Frozen (T) then
+         if not P.Is_Frozen (T) and then S.Active (T) then
             N := N + 1;
             Order (N) := T;
          end if;
@@ -679,10 +723,30 @@ package body Sancta.Allocation.Annealers is
    --  does not give a legal move.
 
    function Movable (P : Problem; S : State; T : Positive) return Boolean is
-     (S.Pos (T) > P.Frozen_Length (S.Own (T)));
+     (S.Own (T) /= 0 and then S.Pos (T) > P.Frozen_Length (S.Own (T)));
+   --  Active (in a tour) and not frozen.
 
    function Random_Task (P : Problem; S : State; G : in out Gen) return Natural is
    begin
+      if S.N_Active < S.NT then
+         --  Plan trees: a uniform pick among the tasks in the tours (O (R)).
+         for Try in 1 .. 8 loop
+            declare
+               K : Natural := Random.Below (G, Positive'Max (1, S.N_Active));
+            begin
+               for R in 1 .. S.NR loop
+                  if K < S.Len (R) then
+                     if K + 1 > P.Frozen_Length (R) then
+                        return S.Tk (R, K + 1);
+                     end if;
+                     exit;
+                  end if;
+                  K := K - S.Len (R);
+               end loop;
+            end;
+         end loop;
+         return 0;
+      end if;
       for Try in 1 .. 8 loop
          declare
             T : constant Positive := 1 + Random.Below (G, S.NT);
@@ -762,7 +826,7 @@ package body Sancta.Allocation.Annealers is
       pragma Unreferenced (G);
    begin
       Ok := False;
-      if U = 0 then
+      if U = 0 or else S.Own (U) = 0 then
          return;
       end if;
       R2 := S.Own (U);
@@ -794,7 +858,7 @@ package body Sancta.Allocation.Annealers is
       J  : Positive;
    begin
       Ok := False;
-      if U = 0 then
+      if U = 0 or else S.Own (U) = 0 then
          return;
       end if;
       R2 := S.Own (U);
@@ -924,7 +988,7 @@ package body Sancta.Allocation.Annealers is
       E1, E2 : Natural;
    begin
       Ok := False;
-      if U = 0 then
+      if U = 0 or else S.Own (U) = 0 then
          return;
       end if;
       R2 := S.Own (U);
@@ -1019,6 +1083,318 @@ package body Sancta.Allocation.Annealers is
    end Gen_Insert;
 
    ---------------------------------------------------------------------------
+   --  Switch subtree (plan trees): choose another alternative at an OR node;
+   --  the tasks that become inactive leave their tours, those that become
+   --  active are inserted (cheapest insertion in added length, or at random
+   --  places). The new tours of all robots are built in a Pending record and
+   --  the touched robots' costs recomputed exactly (integers): the move's
+   --  sum, completion and makespan are exact, Apply_Subtree then installs
+   --  them and rebuilds only the touched robots.
+
+   type Pending (NR, NP, NT, NI : Positive) is record
+      Tk      : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      Lc      : Grid (1 .. NR, 0 .. NP) := [others => [others => 0]];
+      --  The tasks' locations.
+      Len     : Count_Array (1 .. NR) := [others => 0];
+      Changed : Boolean_Array (1 .. NR) := [others => False];
+      RC, RCm : Cost_Array (1 .. NR) := [others => 0];
+      Sel     : Location_Array (1 .. NT) := [others => 1];
+      Gone    : Boolean_Array (1 .. NT) := [others => False];
+      Added   : Count_Array (1 .. NT) := [others => 0];
+      Or_Node : Natural := 0;
+      New_Active : Natural := 0;
+      Under_First : Count_Array (1 .. NP) := [others => 1];
+      Under   : Count_Array (1 .. NI) := [others => 0];
+      --  The tasks below each OR ordinal O: Under (Under_First (O) ..
+      --  Under_First (O + 1) - 1) (fixed for the run; NP = NT + 1).
+   end record;
+
+   procedure Set_Under (P : Problem; D : in out Pending) is
+      Count : Count_Array (1 .. D.NT + 1) := [others => 0];
+   begin
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               Count (X) := Count (X) + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+      D.Under_First (1) := 1;
+      for O in 1 .. D.NT loop
+         D.Under_First (O + 1) := D.Under_First (O) + Count (O);
+      end loop;
+      Count := [others => 0];
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               D.Under (D.Under_First (X) + Count (X)) := T;
+               Count (X) := Count (X) + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+   end Set_Under;
+
+   function Under_Size (P : Problem) return Positive is
+      N : Natural := 0;
+   begin
+      for T in 1 .. P.Tasks loop
+         declare
+            X : Natural := P.Task_Or (T);
+         begin
+            while X /= 0 loop
+               N := N + 1;
+               X := Or_Parent (P, X);
+            end loop;
+         end;
+      end loop;
+      return Positive'Max (1, N);
+   end Under_Size;
+   type Pending_Access is access Pending;
+   procedure Free is new Ada.Unchecked_Deallocation (Pending, Pending_Access);
+
+   function Pending_Loc (P : Problem; D : Pending; R : Positive; Q : Natural) return Natural
+   is (if Q = 0 then P.Start (R) elsif Q > D.Len (R) then P.Finish (R) else D.Lc (R, Q));
+
+   procedure Pending_Costs (P : Problem; S : State; D : in out Pending; R : Positive) is
+      Here : Natural := P.Start (R);
+      Time, Sum : Cost := 0;
+      Bad  : Natural := 0;
+      M    : constant Cost := Cost (P.Multiplier (R));
+   begin
+      for I in 1 .. D.Len (R) loop
+         declare
+            T : constant Positive := D.Tk (R, I);
+            L : constant Natural := Location_Of (P, T, S.Choice (T));
+         begin
+            Time := Time + Robot_Distance (P, R, Here, L);
+            Sum := Sum + Time;
+            if not P.Can_Do (R, T) then
+               Bad := Bad + 1;
+            end if;
+            Here := L;
+         end;
+      end loop;
+      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+      D.RC (R) := M * Time + Cost (Bad) * Infinity;
+      D.RCm (R) := M * Sum + Cost (Bad) * Infinity;
+   end Pending_Costs;
+
+   procedure Gen_Switch_Subtree
+     (P : Problem; S : State; G : in out Gen; W : Weights; Locked : Boolean_Array;
+      D : in out Pending; Mv : in out Move; Ok : out Boolean)
+   is
+      O  : Natural := 0;
+      NA : Natural := 0;
+      Active_After : Natural := S.N_Active;
+   begin
+      Ok := False;
+      Mv := No_Move;
+      for Try in 1 .. 4 loop
+         declare
+            X : constant Positive := 1 + Random.Below (G, Or_Count (P));
+         begin
+            if not Locked (X) and then Alternatives (P, X) >= 2
+              and then Or_Active (P, S.Sel, X)
+            then
+               O := X;
+               exit;
+            end if;
+         end;
+      end loop;
+      if O = 0 then
+         return;
+      end if;
+      D.Sel := S.Sel;
+      D.Sel (O) := 1 + Random.Below (G, Alternatives (P, O) - 1);
+      if D.Sel (O) >= S.Sel (O) then
+         D.Sel (O) := D.Sel (O) + 1;
+      end if;
+      --  Which tasks leave and which come (only tasks below O can).
+      for K in D.Under_First (O) .. D.Under_First (O + 1) - 1 loop
+         declare
+            T : constant Positive := D.Under (K);
+            After : constant Boolean := Is_Active (P, D.Sel, T);
+         begin
+            D.Gone (T) := S.Active (T) and then not After;
+            if After and then not S.Active (T) then
+               NA := NA + 1;
+               D.Added (NA) := T;
+               Active_After := Active_After + 1;
+            elsif D.Gone (T) then
+               Active_After := Active_After - 1;
+            end if;
+         end;
+      end loop;
+      --  The current tours without the leaving tasks, and their costs.
+      for R in 1 .. S.NR loop
+         D.Len (R) := 0;
+         D.Changed (R) := False;
+         for I in 1 .. S.Len (R) loop
+            if D.Gone (S.Tk (R, I)) then
+               D.Changed (R) := True;
+            else
+               D.Len (R) := D.Len (R) + 1;
+               D.Tk (R, D.Len (R)) := S.Tk (R, I);
+               D.Lc (R, D.Len (R)) := S.Lc (R, I);
+            end if;
+         end loop;
+         if D.Changed (R) then
+            Pending_Costs (P, S, D, R);
+         else
+            D.RC (R) := S.RC (R);
+         end if;
+      end loop;
+      for K in D.Under_First (O) .. D.Under_First (O + 1) - 1 loop
+         D.Gone (D.Under (K)) := False;
+      end loop;
+      --  Insert the coming tasks in random order.
+      for I in reverse 2 .. NA loop
+         declare
+            J : constant Positive := 1 + Random.Below (G, I);
+            X : constant Positive := D.Added (I);
+         begin
+            D.Added (I) := D.Added (J);
+            D.Added (J) := X;
+         end;
+      end loop;
+      declare
+         Cheapest : constant Boolean := Random.Below (G, 4) /= 0;
+      begin
+         for K in 1 .. NA loop
+            declare
+               T : constant Positive := D.Added (K);
+               L : constant Natural := Location_Of (P, T, S.Choice (T));
+               Best_R : Natural := 0;
+               Best_Q : Natural := 0;
+               Best_D : Cost := Cost'Last;
+               Best_K : Cost := Cost'Last;
+               Makespan : constant Boolean :=
+                 W.C.Max_Weight > 0.0 and then W.C.Sum_Weight = 0.0 and then W.C.Ave_Weight = 0.0;
+               --  Pure makespan: the place giving the least robot cost
+               --  (ties: least added cost); else the least added cost.
+            begin
+               if Cheapest then
+                  for R in 1 .. S.NR loop
+                     if P.Can_Do (R, T) then
+                        for Q in P.Frozen_Length (R) .. D.Len (R) loop
+                           declare
+                              A  : constant Natural := Pending_Loc (P, D, R, Q);
+                              B  : constant Natural := Pending_Loc (P, D, R, Q + 1);
+                              DC : constant Cost := Cost (P.Multiplier (R))
+                                * (Robot_Distance (P, R, A, L) + Robot_Distance (P, R, L, B)
+                                   - Robot_Distance (P, R, A, B));
+                              Key : constant Cost := (if Makespan then D.RC (R) + DC else DC);
+                           begin
+                              if Key < Best_K or else (Key = Best_K and then DC < Best_D) then
+                                 Best_K := Key;
+                                 Best_D := DC;
+                                 Best_R := R;
+                                 Best_Q := Q;
+                              end if;
+                           end;
+                        end loop;
+                     end if;
+                  end loop;
+               else
+                  for Try in 1 .. 2 * S.NR loop
+                     declare
+                        R : constant Positive := 1 + Random.Below (G, S.NR);
+                     begin
+                        if P.Can_Do (R, T) then
+                           Best_R := R;
+                           Best_Q := P.Frozen_Length (R)
+                             + Random.Below (G, D.Len (R) - P.Frozen_Length (R) + 1);
+                           exit;
+                        end if;
+                     end;
+                  end loop;
+               end if;
+               if Best_R = 0 then
+                  return;
+               end if;
+               declare
+                  A : constant Natural := Pending_Loc (P, D, Best_R, Best_Q);
+                  B : constant Natural := Pending_Loc (P, D, Best_R, Best_Q + 1);
+               begin
+                  D.RC (Best_R) := D.RC (Best_R) + Cost (P.Multiplier (Best_R))
+                    * (Robot_Distance (P, Best_R, A, L) + Robot_Distance (P, Best_R, L, B)
+                       - Robot_Distance (P, Best_R, A, B));
+               end;
+               for I in reverse Best_Q + 1 .. D.Len (Best_R) loop
+                  D.Tk (Best_R, I + 1) := D.Tk (Best_R, I);
+                  D.Lc (Best_R, I + 1) := D.Lc (Best_R, I);
+               end loop;
+               D.Tk (Best_R, Best_Q + 1) := T;
+               D.Lc (Best_R, Best_Q + 1) := L;
+               D.Len (Best_R) := D.Len (Best_R) + 1;
+               D.Changed (Best_R) := True;
+            end;
+         end loop;
+      end;
+      --  Exact costs of the touched robots.
+      declare
+         Sum  : Cost := S.Sum;
+         Comp : Cost := S.Comp;
+         Max  : Cost := 0;
+      begin
+         for R in 1 .. S.NR loop
+            if D.Changed (R) then
+               if D.Len (R) < P.Min_Tasks and then D.Len (R) < S.Len (R) then
+                  return;
+               end if;
+               Pending_Costs (P, S, D, R);
+               Sum := Sum - S.RC (R) + D.RC (R);
+               Comp := Comp - S.RCm (R) + D.RCm (R);
+               Max := Cost'Max (Max, D.RC (R));
+            else
+               Max := Cost'Max (Max, S.RC (R));
+            end if;
+         end loop;
+         Mv.Or_Node := O;
+         D.Or_Node := O;
+         D.New_Active := Active_After;
+         Mv.New_Sum := Sum;
+         Mv.New_Comp := Comp;
+         Mv.New_Max := Max;
+         Mv.New_Active := Active_After;
+         Mv.Value := Objective (W, Max, Sum, Comp, Active_After);
+         Ok := True;
+      end;
+   end Gen_Switch_Subtree;
+
+   procedure Apply_Subtree (P : Problem; S : in out State; D : Pending) is
+   begin
+      S.Sel := D.Sel;
+      for K in D.Under_First (D.Or_Node) .. D.Under_First (D.Or_Node + 1) - 1 loop
+         declare
+            T : constant Positive := D.Under (K);
+         begin
+            S.Active (T) := Is_Active (P, S.Sel, T);
+            if not S.Active (T) then
+               S.Own (T) := 0;
+               S.Pos (T) := 0;
+            end if;
+         end;
+      end loop;
+      S.N_Active := D.New_Active;
+      for R in 1 .. S.NR loop
+         if D.Changed (R) then
+            S.Len (R) := D.Len (R);
+            for I in 1 .. D.Len (R) loop
+               S.Tk (R, I) := D.Tk (R, I);
+            end loop;
+            Rebuild (P, S, R, 1);
+         end if;
+      end loop;
+   end Apply_Subtree;
+
+   ---------------------------------------------------------------------------
 
    protected body Best_Box is
       procedure Post (A : Assignment; V : Long_Float) is
@@ -1069,6 +1445,7 @@ package body Sancta.Allocation.Annealers is
       --  Best holds the best solution; False while the current solution is
       --  a better one not yet copied (copied before leaving it).
       Moves, Accepted, Last_Best_Move : Long_Long_Integer := 0;
+      Switches : Long_Long_Integer := 0;
       T0, T1, Temp : Long_Float;
       Elapsed : Duration := 0.0;
       Best_Time : Duration := 0.0;
@@ -1078,7 +1455,7 @@ package body Sancta.Allocation.Annealers is
                               Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
                               Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
                               Segment_Move => 0.5, Random_Reverse => 0.5,
-                              Ruin_Recreate => 0.0];
+                              Switch_Subtree => 0.5, Ruin_Recreate => 0.0];
       --  Ruin_Recreate is not drawn: it runs on its share of evaluations.
       Score, Tries : Real_Array := [others => 0.0];
       Kinds : Kind_Stats_Array;
@@ -1094,6 +1471,11 @@ package body Sancta.Allocation.Annealers is
       Ruin_Evals : Long_Long_Integer := 0;
       --  Move evaluations spent in ruin and recreate (best insertions).
       Has_Or : Boolean := False;
+      D      : Pending_Access :=
+        new Pending (P.Robots, P.Tasks + 1, P.Tasks, Under_Size (P));
+      Locked : Boolean_Array (1 .. P.Tasks) := [others => False];
+      --  Plan trees: the switch subtree move's new tours, and the OR
+      --  ordinals it must not switch (above a frozen task).
       Log_Tries : constant Positive :=
         Natural (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
       Stop : Boolean := False;
@@ -1124,10 +1506,17 @@ package body Sancta.Allocation.Annealers is
       begin
          Ok := False;
          Mv.Switch_Task := 0;
+         Mv.Or_Node := 0;
          if T = 0 then
             return;
          end if;
+         if Kind = Switch_Subtree then
+            Gen_Switch_Subtree (P, S.all, G, W, Locked, D.all, Mv, Ok);
+            return;
+         end if;
          case Kind is
+            when Switch_Subtree =>
+               null;
             when Or_Opt_Near =>
                Gen_Or_Opt (P, S.all, G, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
                            Random.Below (G, 4), Mv, Ok);
@@ -1280,7 +1669,7 @@ package body Sancta.Allocation.Annealers is
       end Save_Best;
 
       function True_Value return Long_Float is
-        (Value (Opts.Criterion, Current_Max (S.all), S.Sum, S.Comp, P.Tasks));
+        (Value (Opts.Criterion, Current_Max (S.all), S.Sum, S.Comp, S.N_Active));
 
       Only_Ruin : Boolean := False;
       --  No drawn move kind is enabled: every move is a ruin and recreate.
@@ -1359,7 +1748,7 @@ package body Sancta.Allocation.Annealers is
          for I in 1 .. N loop
             Best_Insert (P, S.all, W, List (I));
          end loop;
-         Ruin_Evals := Ruin_Evals + Long_Long_Integer (N * (P.Tasks + P.Robots));
+         Ruin_Evals := Ruin_Evals + Long_Long_Integer (N * (S.N_Active + P.Robots));
          for R in 1 .. P.Robots loop
             if S.Len (R) < P.Min_Tasks and then S.Len (R) < Old_Len (R) then
                Ok := False;
@@ -1401,7 +1790,11 @@ package body Sancta.Allocation.Annealers is
 
       procedure Do_Apply (Mv : Move) is
       begin
-         Apply (P, S.all, Mv);
+         if Mv.Or_Node /= 0 then
+            Apply_Subtree (P, S.all, D.all);
+         else
+            Apply (P, S.all, Mv);
+         end if;
          if Opts.Check then
             Verify (P, S.all, Mv, True);
          end if;
@@ -1422,7 +1815,7 @@ package body Sancta.Allocation.Annealers is
                                           then Long_Float (Moves) / Long_Float (Elapsed)
                                           else 0.0),
                      Time_To_Best => Best_Time, Kinds => Kinds,
-                     Polish_Gain => Polish_Gain));
+                     Polish_Gain => Polish_Gain, Switches => Switches));
          end if;
       end Send_Report;
 
@@ -1484,6 +1877,14 @@ package body Sancta.Allocation.Annealers is
       if not Has_Or then
          Weight (Switch_Or) := 0.0;
       end if;
+      for O in 1 .. Or_Count (P) loop
+         Locked (O) := Is_Locked (P, O);
+      end loop;
+      Set_Under (P, D.all);
+      if not (for some O in 1 .. Or_Count (P) => not Locked (O) and then Alternatives (P, O) > 1)
+      then
+         Weight (Switch_Subtree) := 0.0;
+      end if;
       if P.Robots = 1 then
          Weight (Move_Owner) := 0.0;
          Weight (Guided_Move) := 0.0;
@@ -1517,9 +1918,6 @@ package body Sancta.Allocation.Annealers is
       if WT.Tie > 0.0 then
          Guide0 := (if Opts.Balance >= 0.0 then Opts.Balance else 1.0 / Long_Float (P.Robots));
          W.Tie := Long_Float'Max (WT.Tie, Guide0);
-         if Opts.Square > 0.0 then
-            W.Square := Opts.Square / Long_Float (Cost'Max (1, Current_Max (S.all)));
-         end if;
       end if;
       if Opts.Check then
          Verify (P, S.all, No_Move, False);
@@ -1693,12 +2091,16 @@ package body Sancta.Allocation.Annealers is
                   if D <= 0.0 or else (D < 30.0 * Temp
                                         and then Random.Uniform (G) < Exp (-D / Temp))
                   then
-                     TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp, 0.0, P.Tasks);
+                     TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp,
+                                     Mv.New_Active);
                      if not Best_Saved and then TV > Best_Value then
                         Save_Best;
                      end if;
                      Do_Apply (Mv);
                      Accepted := Accepted + 1;
+                     if Mv.Or_Node /= 0 then
+                        Switches := Switches + 1;
+                     end if;
                      Kinds (Kind).Accepted := Kinds (Kind).Accepted + 1;
                      Cur := Mv.Value;
                      if D < 0.0 then
@@ -1754,8 +2156,10 @@ package body Sancta.Allocation.Annealers is
                 Accepted => Accepted, Elapsed => Elapsed,
                 Moves_Per_Second => (if Elapsed > 0.0
                                      then Long_Float (Moves) / Long_Float (Elapsed) else 0.0),
-                Time_To_Best => Best_Time, Kinds => Kinds, Polish_Gain => Polish_Gain);
+                Time_To_Best => Best_Time, Kinds => Kinds, Polish_Gain => Polish_Gain,
+                Switches => Switches);
       Free (S);
+      Free (D);
    end Solve;
 
 end Sancta.Allocation.Annealers;

@@ -7,12 +7,21 @@
 --  from a max segment tree over robot costs (O(log R)).
 --
 --  Moves: relocate / Or-opt (segments of 1..3 tasks, possibly reversed) next
---  to a candidate neighbour (k nearest), 2-opt within a tour and 2-opt*
---  between tours, cross-exchange between tours, the old moves (random move,
---  move to another robot, guided move from the worst robot, swap any, log
---  auction, switch OR alternative); adaptive move weights; geometric,
---  cyclic or the old re-heating schedule; budgets by time, iterations and
---  convergence; a final descent (polish) with the neighbour moves.
+--  to a candidate neighbour (k nearest), 2-opt within a tour, Or-3opt
+--  (segment exchange of any lengths, both new arcs next to neighbours),
+--  2-opt* between tours (tails swapped, or crossed with reversal: 2-opt
+--  across two tours through a common depot), cross-exchange between tours,
+--  the old moves (random move, move to another robot, guided move from the
+--  worst robot, swap any, log auction, switch OR alternative), switch
+--  subtree for plan trees (another alternative at an OR node: the leaving
+--  tasks are removed, the coming ones inserted, cheapest or at random, the
+--  touched robots' costs recomputed exactly), and ruin and recreate (a task
+--  and some of its neighbours, for makespan often from the longest tour,
+--  taken out and put back at their best places) on a fixed share of the
+--  work; adaptive move weights; geometric (optionally as several
+--  independent runs sharing the budget), cyclic or the old re-heating
+--  schedule; budgets by time, iterations and convergence; a final descent
+--  (polish) with the neighbour moves. Per-kind statistics in Progress.Kinds.
 --
 --     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
 --     Solve (P.all, O, Best, Stats);
@@ -44,7 +53,7 @@ package Sancta.Allocation.Annealers is
    type Move_Kind is
      (Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Random_Move, Move_Owner,
       Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse,
-      Ruin_Recreate);
+      Switch_Subtree, Ruin_Recreate);
    --  The annealer's neighbourhoods (see the package comment).
 
    type Kind_Flags is array (Move_Kind) of Boolean;
@@ -96,9 +105,6 @@ package Sancta.Allocation.Annealers is
       --  Share of the move evaluations spent in ruin and recreate moves
       --  (a task and some of its neighbours taken out and put back at their
       --  best places); 0 = none.
-      Square       : Long_Float := 0.0;
-      --  Pure makespan only: weight of the sum of squared robot costs
-      --  (divided by the start makespan) in the search objective.
       Target       : Long_Float := 0.0;
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).
@@ -130,6 +136,8 @@ package Sancta.Allocation.Annealers is
       Kinds         : Kind_Stats_Array;
       Polish_Gain   : Long_Float := 0.0;
       --  How much the final descent lowered the objective.
+      Switches      : Long_Long_Integer := 0;
+      --  Accepted switch subtree moves (plan trees).
    end record;
 
    type Reporter is access procedure (P : Progress);

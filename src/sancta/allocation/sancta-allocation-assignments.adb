@@ -9,6 +9,7 @@ package body Sancta.Allocation.Assignments is
             end loop;
             A.Length (R) := P.Frozen_Length (R);
          end loop;
+         A.Branch := Default_Selection (P);
       end return;
    end Empty;
 
@@ -50,7 +51,7 @@ package body Sancta.Allocation.Assignments is
             T    : constant Positive := This.Tour (Robot, K);
             Next : constant Positive := Location_Of (P, T, This.Choice (T));
          begin
-            Time := Time + P.Distance (Here, Next);
+            Time := Time + Robot_Distance (P, Robot, Here, Next);
             Completion := Completion + M * Time;
             if not P.Can_Do (Robot, T) then
                Bad := Bad + 1;
@@ -58,7 +59,7 @@ package body Sancta.Allocation.Assignments is
             Here := Next;
          end;
       end loop;
-      Time := Time + P.Distance (Here, P.Finish (Robot));
+      Time := Time + Robot_Distance (P, Robot, Here, P.Finish (Robot));
       Length := M * Time + Bad * Infinity;
       Completion := Completion + Bad * Infinity;
    end Robot_Costs;
@@ -83,7 +84,8 @@ package body Sancta.Allocation.Assignments is
             E.Sum := E.Sum + E.Robot_Cost (R);
             E.Completion_Sum := E.Completion_Sum + E.Robot_Completion (R);
          end loop;
-         E.Value := Value (C, E.Max, E.Sum, E.Completion_Sum, P.Tasks);
+         E.Active := Active_Count (P, This.Branch);
+         E.Value := Value (C, E.Max, E.Sum, E.Completion_Sum, E.Active);
       end return;
    end Evaluate;
 
@@ -118,8 +120,15 @@ package body Sancta.Allocation.Assignments is
             end;
          end loop;
       end loop;
+      for O in 1 .. Or_Count (P) loop
+         if This.Branch (O) not in 1 .. Alternatives (P, O) then
+            return "OR node" & O'Image & " has invalid alternative" & This.Branch (O)'Image;
+         end if;
+      end loop;
       for T in 1 .. P.Tasks loop
-         if not Seen (T) then
+         if Seen (T) and then not Is_Active (P, This.Branch, T) then
+            return "task" & T'Image & " is assigned but lies in an unchosen alternative";
+         elsif not Seen (T) and then Is_Active (P, This.Branch, T) then
             return "task" & T'Image & " is not assigned";
          elsif This.Choice (T) not in 1 .. P.Alt_Count (T) then
             return "task" & T'Image & " has invalid choice" & This.Choice (T)'Image;

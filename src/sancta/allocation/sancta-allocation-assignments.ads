@@ -1,5 +1,7 @@
---  An allocation: each robot's ordered tour of tasks and, for each task, the
---  alternative chosen for it; and its evaluation from scratch (the reference
+--  An allocation: each robot's ordered tour of tasks, for each task the
+--  alternative location chosen for it, and for each OR node of the plan
+--  tree the alternative chosen there (which fixes the active tasks); and
+--  its evaluation from scratch (the reference
 --  the annealer's incremental costs are checked against).
 --
 --     A : Assignment := Empty (P.all);  --  frozen prefixes only
@@ -16,10 +18,14 @@ package Sancta.Allocation.Assignments is
       Tour   : Tour_Matrix (1 .. Robots, 1 .. Tasks) := [others => [others => 0]];
       Length : Count_Array (1 .. Robots) := [others => 0];
       Choice : Location_Array (1 .. Tasks) := [others => 1];
+      Branch : Location_Array (1 .. Tasks) := [others => 1];
+      --  The alternative chosen at each OR ordinal of the plan tree.
    end record;
 
    function Empty (P : Problem) return Assignment;
-   --  Every robot with its frozen prefix only; every choice the first.
+   --  Every robot with its frozen prefix only; every choice the first,
+   --  every OR node at its first alternative (or the one holding a frozen
+   --  task).
 
    procedure Append (This : in out Assignment; Robot, T : Positive)
      with Pre => This.Length (Robot) < This.Tasks;
@@ -36,6 +42,8 @@ package Sancta.Allocation.Assignments is
       Robot_Completion : Cost_Array (1 .. Robots);
       --  Sum of the task completion times of each robot.
       Max, Sum, Completion_Sum : Cost := 0;
+      Active           : Natural := 0;
+      --  Number of active tasks (the mean completion time is over them).
       Value            : Long_Float := 0.0;
    end record;
 
@@ -47,7 +55,7 @@ package Sancta.Allocation.Assignments is
      (P : Problem; This : Assignment; Robot : Positive) return Cost;
 
    function Validate (P : Problem; This : Assignment) return String;
-   --  "" when complete (each task exactly once), frozen prefixes kept,
+   --  "" when complete (each active task exactly once, no inactive one), frozen prefixes kept,
    --  choices valid, every robot has P.Min_Tasks tasks and all costs are
    --  finite; else the first problem found.
 

@@ -2,6 +2,7 @@ package body Sancta.Allocation.Baselines is
 
    function Solve (P : Problem; How : Method; C : Criterion := Min_Sum) return Assignment is
       A    : Assignment := Empty (P);
+      Sel  : constant Location_Array := Cheapest_Selection (P);
       Done : Boolean_Array (1 .. P.Tasks) := P.Is_Frozen;
       RC   : Cost_Array (1 .. P.Robots);
       Left : Natural := 0;
@@ -16,10 +17,15 @@ package body Sancta.Allocation.Baselines is
          L : constant Natural := Location_Of (P, T);
       begin
          return (if P.Can_Do (R, T) then 0 else Infinity)
-           + Cost (P.Multiplier (R)) * (P.Distance (Loc (R, K), L) + P.Distance (L, Loc (R, K + 1))
-                                        - P.Distance (Loc (R, K), Loc (R, K + 1)));
+           + Cost (P.Multiplier (R))
+             * (Robot_Distance (P, R, Loc (R, K), L) + Robot_Distance (P, R, L, Loc (R, K + 1))
+                - Robot_Distance (P, R, Loc (R, K), Loc (R, K + 1)));
       end Added;
    begin
+      A.Branch := Sel;
+      for T in 1 .. P.Tasks loop
+         Done (T) := Done (T) or else not Is_Active (P, Sel, T);
+      end loop;
       for R in 1 .. P.Robots loop
          RC (R) := Tour_Cost (P, A, R);
       end loop;
@@ -52,7 +58,8 @@ package body Sancta.Allocation.Baselines is
                                  D : constant Cost :=
                                    (if How = Best_Pair
                                     then Cost (P.Multiplier (R))
-                                         * P.Distance (Loc (R, K), Location_Of (P, T))
+                                         * Robot_Distance (P, R, Loc (R, K),
+                                                           Location_Of (P, T))
                                     else Added (R, T, K));
                                  Key : constant Cost :=
                                    (case How is

@@ -9,7 +9,10 @@
 --  unallocated task, the cost of inserting it at the best place of its own
 --  plan (added cost for MinSum/MinAve, resulting tour cost for MinMax); the
 --  lowest bid wins and is inserted there. Robots below the minimum task
---  count are served first. Tasks keep their first OR alternative.
+--  count are served first. Tasks keep their first alternative location.
+--  Plan trees: the alternative of every OR node is fixed first, cheapest
+--  first (Problems.Cheapest_Selection: the least estimated start -> task ->
+--  end trip cost, bottom-up), then only the active tasks are allocated.
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 

@@ -36,14 +36,18 @@ package body Sancta.Allocation.Exact is
 
    function Has (Set, Bit : Natural) return Boolean is ((Set / 2 ** Bit) mod 2 = 1);
 
-   function Solve (P : Problem; C : Criterion) return Assignment is
+   --  The optimum for the active tasks of one plan selection.
+   function Solve_Active
+     (P : Problem; C : Criterion; Sel : Location_Array; Feasible : out Boolean)
+      return Assignment
+   is
       Free_Count : Natural := 0;
       Bit_Of : array (1 .. P.Tasks) of Integer := [others => -1];
       V : Natural := 0;
       Average : constant Boolean := C.Ave_Weight /= 0.0;
    begin
       for T in 1 .. P.Tasks loop
-         if not P.Is_Frozen (T) then
+         if not P.Is_Frozen (T) and then Is_Active (P, Sel, T) then
             if Free_Count = Max_Tasks then
                raise Constraint_Error with "exact solver: more than" & Max_Tasks'Image
                  & " free tasks";
@@ -66,6 +70,7 @@ package body Sancta.Allocation.Exact is
          K : Natural := 0;
          Result : Assignment := Empty (P);
       begin
+         Result.Branch := Sel;
          for T in 1 .. P.Tasks loop
             if Bit_Of (T) >= 0 then
                for Ch in 1 .. P.Alt_Count (T) loop
@@ -92,7 +97,7 @@ package body Sancta.Allocation.Exact is
                      T : constant Positive := P.Frozen (R, I);
                      L : constant Natural := Location_Of (P, T);
                   begin
-                     F0 := F0 + P.Distance (S0, L);
+                     F0 := F0 + Robot_Distance (P, R, S0, L);
                      FC := FC + F0;
                      S0 := L;
                      if not P.Can_Do (R, T) then
@@ -106,7 +111,7 @@ package body Sancta.Allocation.Exact is
                   --  Forward: DP (S, v) = shortest path from S0 through S ending at v.
                   for X in 1 .. Nodes'Last loop
                      if P.Can_Do (R, Nodes (X).Task_Id) then
-                        DP (2 ** Nodes (X).Bit, X) := P.Distance (S0, Nodes (X).Loc);
+                        DP (2 ** Nodes (X).Bit, X) := Robot_Distance (P, R, S0, Nodes (X).Loc);
                      end if;
                   end loop;
                   for S in 1 .. Full loop
@@ -118,7 +123,8 @@ package body Sancta.Allocation.Exact is
                                  declare
                                     S2 : constant Natural := S + 2 ** Nodes (Y).Bit;
                                     D  : constant Cost :=
-                                      DP (S, X) + P.Distance (Nodes (X).Loc, Nodes (Y).Loc);
+                                      DP (S, X)
+                                      + Robot_Distance (P, R, Nodes (X).Loc, Nodes (Y).Loc);
                                  begin
                                     if D < DP (S2, Y) then
                                        DP (S2, Y) := D;
@@ -134,13 +140,14 @@ package body Sancta.Allocation.Exact is
                      SC (S) := Unreachable;
                      EN (S, 1) := 0;
                      if S = 0 then
-                        SC (S) := M * (F0 + P.Distance (S0, P.Finish (R)));
+                        SC (S) := M * (F0 + Robot_Distance (P, R, S0, P.Finish (R)));
                      else
                         for X in 1 .. Nodes'Last loop
                            if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
                               declare
                                  D : constant Cost :=
-                                   M * (F0 + DP (S, X) + P.Distance (Nodes (X).Loc, P.Finish (R)));
+                                   M * (F0 + DP (S, X)
+                                        + Robot_Distance (P, R, Nodes (X).Loc, P.Finish (R)));
                               begin
                                  if D < SC (S) then
                                     SC (S) := D;
@@ -169,7 +176,7 @@ package body Sancta.Allocation.Exact is
                                  declare
                                     S2 : constant Natural := S + 2 ** Nodes (Y).Bit;
                                     D  : constant Cost := DP (S, X) + Cost (Pop_Count (S))
-                                      * P.Distance (Nodes (Y).Loc, Nodes (X).Loc);
+                                      * Robot_Distance (P, R, Nodes (Y).Loc, Nodes (X).Loc);
                                  begin
                                     if D < DP (S2, Y) then
                                        DP (S2, Y) := D;
@@ -192,7 +199,7 @@ package body Sancta.Allocation.Exact is
                               declare
                                  Cnt : constant Cost := Cost (Pop_Count (S));
                                  D : constant Cost := M * (FC + Cnt * F0
-                                   + Cnt * P.Distance (S0, Nodes (X).Loc) + DP (S, X));
+                                   + Cnt * Robot_Distance (P, R, S0, Nodes (X).Loc) + DP (S, X));
                               begin
                                  if D < SC (S) then
                                     SC (S) := D;
@@ -266,10 +273,12 @@ package body Sancta.Allocation.Exact is
                   end;
                end loop;
             end loop;
-            if G (P.Robots) (Full) >= Unreachable then
-               raise Constraint_Error with "exact solver: no feasible allocation";
+            Feasible := G (P.Robots) (Full) < Unreachable;
+            if not Feasible then
+               Cur := 0;  --  nothing to rebuild
             end if;
             for R in reverse 1 .. P.Robots loop
+               exit when not Feasible;
                declare
                   T : constant Natural := GS (R) (Cur, 1);
                   Order : array (1 .. N) of Positive;
@@ -315,6 +324,70 @@ package body Sancta.Allocation.Exact is
          end loop;
          return Result;
       end;
+   end Solve_Active;
+
+   function Solve (P : Problem; C : Criterion) return Assignment is
+      Sel    : Location_Array := Default_Selection (P);
+      NO     : constant Natural := Or_Count (P);
+      Locked : array (1 .. NO) of Boolean;
+      Best   : Assignment := Empty (P);
+      Best_V : Long_Float := Long_Float'Last;
+      Found  : Boolean := False;
+      Combos : Natural := 0;
+   begin
+      if NO = 0 then
+         declare
+            A : constant Assignment := Solve_Active (P, C, Sel, Found);
+         begin
+            if not Found then
+               raise Constraint_Error with "exact solver: no feasible allocation";
+            end if;
+            return A;
+         end;
+      end if;
+      for O in 1 .. NO loop
+         Locked (O) := Is_Locked (P, O);
+      end loop;
+      --  Every selection (odometer over the unlocked OR nodes); selections
+      --  differing only at unreached OR nodes are the same, only the one
+      --  with 1 there is solved.
+      loop
+         if (for all O in 1 .. NO => Sel (O) = 1 or else Or_Active (P, Sel, O)) then
+            Combos := Combos + 1;
+            if Combos > Max_Selections then
+               raise Constraint_Error with "exact solver: more than" & Max_Selections'Image
+                 & " plan selections";
+            end if;
+            declare
+               Feasible : Boolean;
+               A : constant Assignment := Solve_Active (P, C, Sel, Feasible);
+               V : constant Long_Float :=
+                 (if Feasible then Evaluate (P, A, C).Value else Long_Float'Last);
+            begin
+               if Feasible and then V < Best_V then
+                  Best_V := V;
+                  Best := A;
+                  Found := True;
+               end if;
+            end;
+         end if;
+         declare
+            O : Natural := 1;
+         begin
+            while O <= NO and then (Locked (O) or else Sel (O) = Alternatives (P, O)) loop
+               if not Locked (O) then
+                  Sel (O) := 1;
+               end if;
+               O := O + 1;
+            end loop;
+            exit when O > NO;
+            Sel (O) := Sel (O) + 1;
+         end;
+      end loop;
+      if not Found then
+         raise Constraint_Error with "exact solver: no feasible allocation";
+      end if;
+      return Best;
    end Solve;
 
 end Sancta.Allocation.Exact;

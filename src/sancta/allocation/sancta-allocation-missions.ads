@@ -12,26 +12,30 @@
 --       <done robot="ari" tasks="t1"/>             <!-- frozen prefix -->
 --     </mission>
 --
---  Plans may nest: <and> (or <plan>) groups children that are all done;
---  an <or> alternative may be an <at>, a <task> (x, y), a nested <or>
---  (its alternatives join the outer ones) or an <and> holding one of those:
+--  Plans nest to any depth: <and> (or <plan>) groups children that are
+--  all done; <or> children are its alternatives (exactly one is done): an
+--  <at>, a <task> (x, y; id optional inside an <or>), a nested <or>, or an
+--  <and> of several of those (a compound alternative):
 --
 --     <plan>
 --       <task id="t1" x="1" y="0"/>
---       <and>
---         <or id="door" robots="ari">
---           <or> <at x="100" y="100"/> <task x="50" y="50"/> </or>
---           <and> <task x="2" y="0"/> </and>
---         </or>
---       </and>
+--       <or id="survey" robots="ari,bo">         <!-- robots: whole subtree -->
+--         <and> <task x="10" y="0"/> <task x="10" y="5"/> </and>
+--         <or> <at x="30" y="0"/> <at x="0" y="30"/> </or>
+--       </or>
 --     </plan>
 --
---  Partial (known limit): such trees are normalised to the problem's
---  one-level model (each outermost <or> is one task with alternative
---  locations). An <or> alternative made of several tasks (an <and> with two
---  leaves: a compound task) is refused with a positioned error, as the
---  model, the annealer's switch move and the exact solver do not handle
---  OR nodes over task sets yet.
+--  An <or> (or an <and> of one element) whose alternatives are all single
+--  places is one task with alternative locations (the one-level model:
+--  "door" above is task "door" with two locations). Other <or>s are OR
+--  nodes of the problem's plan tree; their tasks without an id are named
+--  after the outermost id and their position ("survey.1.2": alternative 1,
+--  second task). Empty <or>s or alternatives are errors (file:line).
+--
+--  Per-robot cost functions: <robot ... factor="1.5" metric="manhattan"/>
+--  gives that robot its own costs, nint (scale * factor * distance) with
+--  the Euclidean (default) or Manhattan distance (a slow robot, one moving
+--  along the axes); cost="N" still multiplies them.
 --
 --  Distances are nint (scale * Euclidean distance); scale defaults to 100
 --  (centimetres for metres). A robot's cost multiplies its distances

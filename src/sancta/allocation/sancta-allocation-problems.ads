@@ -1,7 +1,11 @@
 --  The allocation problem: locations with an exact (possibly asymmetric)
 --  distance matrix, tasks placed at one location or at one of several
---  alternative locations (an OR node: the planner chooses), robots with a
---  start location, closed or open tours and a cost multiplier (heterogeneous
+--  alternative locations (a one-level OR: the planner chooses), a plan tree
+--  of AND / OR nodes over the tasks (an OR alternative may be a subtree of
+--  several tasks: a compound task; the choice at every OR node fixes the
+--  active task set), robots with a start location, closed or open tours, a
+--  cost multiplier and optionally a cost function of their own (an explicit
+--  matrix, a callback or a factor over the shared matrix: heterogeneous
 --  teams), infeasible robot/task pairs, frozen tour prefixes (tasks already
 --  done or under way, for online re-planning), and the minimum number of
 --  tasks per robot (1 in the classic mTSP).
@@ -10,19 +14,19 @@
 --     Set_Distance (P.all, 1, 2, 10); ...
 --     Set_Task (P.all, 1, Location => 2);
 --     Set_Robot (P.all, 1, Start => 1, Closed => True);
+--     Add_Node (P.all, Or_Node, Parent => 0, Node => O);   --  plan: 1 or 2
+--     Add_Plan_Task (P.all, O, 1);  Add_Plan_Task (P.all, O, 2);
 --
---  Problems are built once and read-only afterwards; they live on the heap
---  because their matrix can be large (1000 locations: 8 MB).
+--  Tasks outside the plan tree are always active (the root is an implicit
+--  AND). Problems are built once and read-only afterwards; they live on the
+--  heap because their matrix can be large (1000 locations: 8 MB).
 --
---  Partial (known limits): heterogeneous robots differ by an integer cost
---  multiplier (speed), by what they can do (Forbid) and by their start and
---  end depots (Set_Robot, Set_Robot_End), not by whole cost functions
---  of their own (the annealer's O(1) segment costs rely on one matrix);
---  plans are one level deep: a task is an OR node over alternative single
---  locations (the mission reader normalises nested <and>/<or> trees to this
---  form when they have no compound alternative); OR nodes over sets of
---  tasks and compound tasks with distinct entry and exit points are not
---  modelled yet.
+--  Known limits: compound tasks with distinct entry and exit points are
+--  modelled as their entry location plus an inner length folded into the
+--  matrix by the caller; every task must be feasible for some robot even
+--  when it sits in an alternative never chosen; at most Tasks OR nodes.
+with Ada.Containers.Indefinite_Vectors;
+with Ada.Containers.Vectors;
 with Sancta.Geometry;
 
 package Sancta.Allocation.Problems is
@@ -34,6 +38,29 @@ package Sancta.Allocation.Problems is
    type Boolean_Array is array (Positive range <>) of Boolean;
    type Point_Array is array (Positive range <>) of Sancta.Geometry.Point;
    type Task_Matrix is array (Positive range <>, Positive range <>) of Natural;
+   type Cost_Matrix_Access is access Cost_Matrix;
+   type Robot_Matrices is array (Positive range <>) of Cost_Matrix_Access;
+
+   type Node_Kind is (Task_Node, And_Node, Or_Node);
+   type Plan_Node is record
+      Kind        : Node_Kind := And_Node;
+      Task_Id     : Natural := 0;    --  Task_Node: its task
+      Parent      : Natural := 0;    --  0: the implicit root AND
+      First_Child : Natural := 0;
+      Last_Child  : Natural := 0;
+      Next        : Natural := 0;    --  next sibling
+      Children    : Natural := 0;
+      Or_Anc      : Natural := 0;
+      --  Ordinal of the nearest OR ancestor (0: none) ...
+      Branch      : Natural := 0;
+      --  ... and the alternative of it this node lies in (1 .. its Children).
+      Or_Index    : Natural := 0;    --  Or_Node: its ordinal
+   end record;
+   --  One node of the plan tree (nodes are numbered from 1 in creation order).
+
+   package Node_Vectors is new Ada.Containers.Vectors (Positive, Plan_Node);
+   package Natural_Vectors is new Ada.Containers.Vectors (Positive, Natural);
+   package Name_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
 
    type Problem
      (Locations    : Positive;
@@ -68,6 +95,18 @@ package Sancta.Allocation.Problems is
       Min_Tasks      : Natural := 0;
       --  Every robot must do at least this many tasks (mTSP: 1).
       Name           : String (1 .. 32) := [others => ' '];
+      Own            : Robot_Matrices (1 .. Robots) := [others => null];
+      --  A robot's own base distances (null: the shared Distance).
+      Plan           : Node_Vectors.Vector;
+      Or_Nodes       : Natural_Vectors.Vector;
+      --  The node of each OR ordinal.
+      Task_Or        : Location_Array (1 .. Tasks) := [others => 0];
+      Task_Branch    : Location_Array (1 .. Tasks) := [others => 0];
+      --  Nearest OR ancestor of each task and the alternative it lies in.
+      In_Plan        : Boolean_Array (1 .. Tasks) := [others => False];
+      Task_Names     : Name_Vectors.Vector;
+      Or_Names       : Name_Vectors.Vector;
+      --  Optional labels of the tasks and OR ordinals (mission files).
    end record;
 
    type Problem_Access is access Problem;
@@ -127,6 +166,95 @@ package Sancta.Allocation.Problems is
 
    function Is_Closed (This : Problem; R : Positive) return Boolean
    is (This.Finish (R) /= Nowhere);
+
+   ---------------------------------------------------------------------------
+   --  Per-robot cost functions. Infeasible arcs may cost Infinity (a tour
+   --  using one is infeasible); costs are base units, the multiplier still
+   --  applies on top.
+
+   procedure Set_Robot_Distance
+     (This : in out Problem; R : Positive; From, To : Positive; D : Cost)
+     with Pre => From <= This.Locations and then To <= This.Locations
+                 and then D in 0 .. Infinity;
+   --  Robot R's own distance; the first call gives R a copy of the shared
+   --  matrix (set the shared distances first).
+
+   type Robot_Cost_Function is access function (R, From, To : Positive) return Cost;
+   procedure Set_Robot_Costs
+     (This : in out Problem; R : Positive; F : not null Robot_Cost_Function);
+   --  Robot R's own distances from a callback (From /= To; e.g. path length
+   --  of that robot on a grid map; Infinity or more: unreachable).
+
+   procedure Set_Robot_Factor (This : in out Problem; R : Positive; Factor : Long_Float)
+     with Pre => Factor > 0.0;
+   --  Robot R's own distances: nint (Factor * shared distance) (e.g. a slow
+   --  robot on the whole map, unlike Multiplier which is an integer).
+
+   function Has_Own_Costs (This : Problem; R : Positive) return Boolean
+   is (This.Own (R) /= null);
+
+   function Robot_Distance (This : Problem; R : Positive; From, To : Natural) return Cost
+   is (if This.Own (R) = null then This.Distance (From, To) else This.Own (R) (From, To));
+   --  Base distance for robot R (before its multiplier).
+
+   ---------------------------------------------------------------------------
+   --  Plan trees.
+
+   subtype Inner_Kind is Node_Kind range And_Node .. Or_Node;
+
+   procedure Add_Node
+     (This : in out Problem; Kind : Inner_Kind; Parent : Natural; Node : out Positive)
+     with Pre => Parent <= Natural (This.Plan.Length)
+                 and then (Parent = 0 or else This.Plan (Parent).Kind /= Task_Node);
+   --  A new AND or OR node under Parent (0: the root). Constraint_Error when
+   --  there would be more OR nodes than tasks.
+
+   procedure Add_Plan_Task (This : in out Problem; Parent : Positive; T : Positive)
+     with Pre => T <= This.Tasks and then Parent <= Natural (This.Plan.Length)
+                 and then This.Plan (Parent).Kind /= Task_Node;
+   --  Task T as a child of Parent; Constraint_Error when T is already placed.
+
+   function Or_Count (This : Problem) return Natural is (Natural (This.Or_Nodes.Length));
+   function Has_Plan (This : Problem) return Boolean is (Or_Count (This) > 0);
+
+   function Alternatives (This : Problem; O : Positive) return Natural
+   is (This.Plan (This.Or_Nodes (O)).Children);
+   --  Number of alternatives of OR ordinal O.
+
+   function Or_Parent (This : Problem; O : Positive) return Natural
+   is (This.Plan (This.Or_Nodes (O)).Or_Anc);
+   function Or_Branch (This : Problem; O : Positive) return Natural
+   is (This.Plan (This.Or_Nodes (O)).Branch);
+
+   function Or_Active (This : Problem; Sel : Location_Array; O : Natural) return Boolean;
+   --  OR ordinal O (0: the root) is reached under the selection Sel (one
+   --  alternative per OR ordinal).
+
+   function Is_Active (This : Problem; Sel : Location_Array; T : Positive) return Boolean
+   is (This.Task_Or (T) = 0
+       or else (Sel (This.Task_Or (T)) = This.Task_Branch (T)
+                and then Or_Active (This, Sel, This.Task_Or (T))));
+   --  Task T is to be done under Sel.
+
+   function Active_Count (This : Problem; Sel : Location_Array) return Natural;
+
+   function Default_Selection (This : Problem) return Location_Array;
+   --  (1 .. Tasks): the first alternative everywhere, except that OR nodes
+   --  above a frozen task select the alternative holding it.
+
+   function Is_Locked (This : Problem; O : Positive) return Boolean;
+   --  OR ordinal O lies above a frozen task: its choice cannot change.
+
+   function Cheapest_Selection (This : Problem) return Location_Array;
+   --  (1 .. Tasks): at each OR node (bottom-up) the alternative of least
+   --  estimated cost, a task being estimated at its cheapest robot's
+   --  start -> task -> end trip (times its multiplier); locked nodes keep
+   --  their frozen alternative. Used by the baselines and the annealer's
+   --  construction.
+
+   function Task_Name (This : Problem; T : Positive) return String;
+   function Or_Name (This : Problem; O : Positive) return String;
+   --  The label given (Task_Names, Or_Names) or the number.
 
    function Check (This : Problem) return String;
    --  "" when consistent; else what is wrong.

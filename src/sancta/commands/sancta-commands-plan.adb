@@ -27,7 +27,7 @@ package body Sancta.Commands.Plan is
    begin
       Put_Line ("usage: sancta plan FILE [options]");
       Put_Line ("  FILE                 a TSPLIB .tsp/.atsp instance (depot = node 1) or a");
-      Put_Line ("                       SANCTA mission .xml (robots, tasks, OR alternatives)");
+      Put_Line ("                       SANCTA mission .xml (robots, tasks, AND/OR plans)");
       Put_Line ("options:");
       Put_Line ("  --robots N           number of robots for TSPLIB files (default 1)");
       Put_Line ("  --objective NAME     minmax | minsum | minave | minmix | mintim, or");
@@ -50,8 +50,6 @@ package body Sancta.Commands.Plan is
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
       Put_Line ("                       (evaluations per move drawn; default 0.2, 0 = none)");
-      Put_Line ("  --square W           minmax: weight of the sum of squared robot costs");
-      Put_Line ("                       (over the start makespan) in the search objective");
       Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
       Put_Line ("                       end temperature = start / R (2000)");
       Put_Line ("  --no-polish          skip the final local search");
@@ -234,6 +232,54 @@ package body Sancta.Commands.Plan is
       accept Wait;
    end Runner;
 
+   --  JSON string contents: quotes, backslashes and control characters escaped.
+   function JSON_Text (S : String) return String is
+      Hex : constant String := "0123456789abcdef";
+      R   : Unbounded_String;
+   begin
+      for C of S loop
+         if C = '"' or else C = '\' then
+            Append (R, '\' & C);
+         elsif Character'Pos (C) < 32 then
+            Append (R, "\u00" & Hex (Character'Pos (C) / 16 + 1)
+                    & Hex (Character'Pos (C) mod 16 + 1));
+         else
+            Append (R, C);
+         end if;
+      end loop;
+      return To_String (R);
+   end JSON_Text;
+
+   --  Task T lies below alternative Sel (O) of OR ordinal O.
+   function Below (P : Problem; Sel : Location_Array; T, O : Positive) return Boolean is
+      X : Natural := P.Task_Or (T);
+      B : Natural := P.Task_Branch (T);
+   begin
+      while X /= 0 loop
+         if X = O then
+            return B = Sel (O);
+         end if;
+         B := Or_Branch (P, X);
+         X := Or_Parent (P, X);
+      end loop;
+      return False;
+   end Below;
+
+   --  The tasks done for OR ordinal O's chosen alternative, by name.
+   function Chosen_Tasks (P : Problem; A : Assignment; O : Positive; Sep, Quote : String)
+     return String
+   is
+      R : Unbounded_String;
+   begin
+      for T in 1 .. P.Tasks loop
+         if Is_Active (P, A.Branch, T) and then Below (P, A.Branch, T, O) then
+            Append (R, (if R = "" then "" else Sep) & Quote & JSON_Text (Task_Name (P, T))
+                    & Quote);
+         end if;
+      end loop;
+      return To_String (R);
+   end Chosen_Tasks;
+
    procedure Write_SVG (File : String; P : Problem; A : Assignment) is
       use Sancta.Geometry;
       F : File_Type;
@@ -278,6 +324,20 @@ package body Sancta.Commands.Plan is
       for L in 1 .. P.Locations loop
          Put_Line (F, "<circle r=""3"" fill=""black"" cx=""" & SX (P.Coordinates (L).X)
                    & """ cy=""" & SY (P.Coordinates (L).Y) & """/>");
+      end loop;
+      --  Places not used: alternatives not chosen (OR nodes, locations), grey.
+      for T in 1 .. P.Tasks loop
+         for C in 1 .. P.Alt_Count (T) loop
+            if not Is_Active (P, A.Branch, T) or else C /= A.Choice (T) then
+               declare
+                  L : constant Positive := Location_Of (P, T, C);
+               begin
+                  Put_Line (F, "<circle r=""4"" fill=""#cccccc"" stroke=""#999999"" cx="""
+                            & SX (P.Coordinates (L).X) & """ cy=""" & SY (P.Coordinates (L).Y)
+                            & """/>");
+               end;
+            end if;
+         end loop;
       end loop;
       for R in 1 .. P.Robots loop
          Put_Line (F, "<rect width=""10"" height=""10"" fill=""black"" x="""
@@ -438,18 +498,6 @@ package body Sancta.Commands.Plan is
                   when Constraint_Error =>
                      raise Usage_Error with "--ruin: '" & S & "' is not a number in 0 .. 10";
                end;
-            elsif A = "--square" then
-               declare
-                  S : constant String := Value_Of (A);
-               begin
-                  Opts.Square := Long_Float'Value (S);
-                  if Opts.Square < 0.0 then
-                     raise Constraint_Error;
-                  end if;
-               exception
-                  when Constraint_Error =>
-                     raise Usage_Error with "--square: '" & S & "' is not a number >= 0";
-               end;
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);
@@ -575,7 +623,11 @@ package body Sancta.Commands.Plan is
                         Free_Tasks := Free_Tasks + 1;
                      end if;
                   end loop;
-                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks then
+                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks
+                    and then not Has_Plan (P.all)
+                  then
+                     --  (With a plan, the active tasks of each selection
+                     --  count: the solver itself says when too many.)
                      raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
                        & " tasks; the exact solver takes at most"
                        & Sancta.Allocation.Exact.Max_Tasks'Image;
@@ -600,7 +652,8 @@ package body Sancta.Commands.Plan is
             E : constant Evaluation := Evaluate (P.all, Result, Crit);
             V : constant String := Validate (P.all, Result);
             Ave : constant Long_Float :=
-              Long_Float (E.Completion_Sum) / Long_Float (P.Tasks) / Scale_Factor;
+              Long_Float (E.Completion_Sum) / Long_Float (Natural'Max (1, E.Active))
+              / Scale_Factor;
 
             function Tour_Text (R : Positive; Sep : String) return String is
                T : Unbounded_String := To_Unbounded_String (Img (P.Start (R)));
@@ -623,6 +676,20 @@ package body Sancta.Commands.Plan is
                   Put_Line ("robot " & Img (R) & "  cost " & Cost_Img (E.Robot_Cost (R))
                             & "  tasks " & Img (Result.Length (R)) & "  tour "
                             & Tour_Text (R, " "));
+               end loop;
+               for O in 1 .. Or_Count (P.all) loop
+                  Put_Line ("plan " & Or_Name (P.all, O)
+                            & (if Or_Active (P.all, Result.Branch, O)
+                               then " -> alternative " & Img (Result.Branch (O)) & " of "
+                                    & Img (Alternatives (P.all, O)) & " ("
+                                    & Chosen_Tasks (P.all, Result, O, ", ", "") & ")"
+                               else " not reached"));
+               end loop;
+               for T in 1 .. P.Tasks loop
+                  if P.Alt_Count (T) > 1 and then Is_Active (P.all, Result.Branch, T) then
+                     Put_Line ("choice " & Task_Name (P.all, T) & " -> location "
+                               & Img (Result.Choice (T)) & " of " & Img (P.Alt_Count (T)));
+                  end if;
                end loop;
                Put_Line ("objective " & To_String (Crit_Name) & " = "
                          & Real_Img (E.Value / Scale_Factor, 3)
@@ -663,8 +730,39 @@ package body Sancta.Commands.Plan is
                   for R in 1 .. P.Robots loop
                      Append (J, (if R > 1 then ", " else "") & "{""robot"": " & Img (R)
                              & ", ""cost"": " & Cost_Img (E.Robot_Cost (R))
-                             & ", ""tour"": [" & Tour_Text (R, ", ") & "]}");
+                             & ", ""tour"": [" & Tour_Text (R, ", ") & "], ""tasks"": [");
+                     for K in 1 .. Result.Length (R) loop
+                        Append (J, (if K > 1 then ", " else "") & """"
+                                & JSON_Text (Task_Name (P.all, Result.Tour (R, K))) & """");
+                     end loop;
+                     Append (J, "]}");
                   end loop;
+                  Append (J, "], ""active_tasks"": " & Img (E.Active) & ", ""plan"": [");
+                  for O in 1 .. Or_Count (P.all) loop
+                     Append (J, (if O > 1 then ", " else "") & "{""or"": """
+                             & JSON_Text (Or_Name (P.all, O)) & """, ""reached"": "
+                             & (if Or_Active (P.all, Result.Branch, O) then "true" else "false")
+                             & ", ""alternative"": " & Img (Result.Branch (O))
+                             & ", ""alternatives"": " & Img (Alternatives (P.all, O))
+                             & ", ""tasks"": ["
+                             & (if Or_Active (P.all, Result.Branch, O)
+                                then Chosen_Tasks (P.all, Result, O, ", ", """") else "")
+                             & "]}");
+                  end loop;
+                  Append (J, "], ""choices"": [");
+                  declare
+                     First : Boolean := True;
+                  begin
+                     for T in 1 .. P.Tasks loop
+                        if P.Alt_Count (T) > 1 and then Is_Active (P.all, Result.Branch, T) then
+                           Append (J, (if First then "" else ", ") & "{""task"": """
+                                   & JSON_Text (Task_Name (P.all, T)) & """, ""location"": "
+                                   & Img (Result.Choice (T)) & ", ""locations"": "
+                                   & Img (P.Alt_Count (T)) & "}");
+                           First := False;
+                        end if;
+                     end loop;
+                  end;
                   Append (J, "]}");
                   if To_String (JSON) = "-" then
                      Put_Line (To_String (J));

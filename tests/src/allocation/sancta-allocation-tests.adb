@@ -616,11 +616,6 @@ package body Sancta.Allocation.Tests is
          & NL & "</mission>" & NL,
          F & ":3: <robot> end_x/end_y with return='false'");
       Expect_Mission_Error
-        (F, Head & "  <or id=""x"">" & NL & "    <and>" & NL
-         & "      <task x=""1"" y=""1""/>" & NL & "      <task x=""2"" y=""1""/>" & NL
-         & "    </and>" & NL & "  </or>" & NL & "</mission>" & NL,
-         F & ":6: <and> (line 4) inside <or id=""x""> has more than one task");
-      Expect_Mission_Error
         (F, Head & "  <and>" & NL & "    <robot id=""b"" x=""1"" y=""1""/>" & NL
          & "  </and>" & NL & "</mission>" & NL,
          F & ":4: <robot> must be a child of <mission>");

@@ -1,0 +1,57 @@
+"""`sancta plan` on a mission with an AND/OR plan (compound alternatives):
+the chosen alternatives are printed and in the JSON, the tours hold exactly
+the active tasks, and a bad plan gets a file:line error. No DDS is opened."""
+import json
+import subprocess
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+SANCTA = str(REPO / "bin" / "sancta")
+MISSION = str(REPO / "share" / "missions" / "plans.xml")
+ALTERNATIVES = {
+    "inspect": [{"valve-e1", "valve-e2"}, {"door", "gauge"}],
+    "sample": [{"sample.1"}, {"sample.2.1", "sample.2.2", "sample.2.3"}],
+}
+
+
+def run(*args):
+    return subprocess.run([SANCTA, "plan", *args], capture_output=True, text=True, timeout=60)
+
+
+def test_plan_json_has_the_chosen_alternatives():
+    for solver in ["anneal", "exact", "auction", "greedy"]:
+        p = run(MISSION, "--solver", solver, "--time", "0", "--iterations", "20000",
+                "--quiet", "--json", "-")
+        assert p.returncode == 0, p.stderr
+        d = json.loads(p.stdout)
+        assert d["valid"], solver
+        done = [t for tour in d["tours"] for t in tour["tasks"]]
+        assert len(done) == len(set(done)) == d["active_tasks"]
+        assert "dock" in done
+        for o in d["plan"]:
+            assert o["reached"] and o["alternatives"] == 2
+            chosen = ALTERNATIVES[o["or"]][o["alternative"] - 1]
+            other = ALTERNATIVES[o["or"]][2 - o["alternative"]]
+            assert set(o["tasks"]) == chosen, (solver, o)
+            assert chosen <= set(done) and not (other & set(done)), (solver, o, done)
+
+
+def test_plan_text_and_optimum():
+    exact = json.loads(run(MISSION, "--solver", "exact", "--quiet", "--json", "-").stdout)
+    p = run(MISSION, "--time", "0", "--iterations", "50000")
+    assert p.returncode == 0, p.stderr
+    assert "plan inspect -> alternative " in p.stdout
+    assert "plan sample -> alternative " in p.stdout
+    line = [l for l in p.stdout.splitlines() if l.startswith("objective ")][0]
+    assert float(line.split()[3]) == exact["objective"]
+
+
+def test_bad_plan_is_positioned(tmp_path):
+    f = tmp_path / "bad.xml"
+    f.write_text('<mission>\n  <robot id="a" x="0" y="0"/>\n  <or id="o">\n'
+                 '    <and> <task x="1" y="1"/> <task x="2" y="2"/> </and>\n'
+                 '    <and>\n    </and>\n  </or>\n</mission>\n')
+    p = run(str(f))
+    assert p.returncode == 1
+    assert f"{f}:7: alternative 2 (line 5) of <or id=\"o\"> has no task" in p.stderr
+    assert "raised" not in p.stderr

@@ -1,0 +1,634 @@
+with Ada.Directories;
+with Ada.Exceptions;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with AUnit.Assertions;        use AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
+with Interfaces;
+with Sancta.Allocation.Annealers;
+with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Baselines;
+with Sancta.Allocation.Exact;
+with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+with Sancta.Allocation.Random;
+with Sancta.Geometry;
+
+package body Sancta.Allocation.Plan_Tests is
+
+   use type Interfaces.Unsigned_64;
+
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   function Img (X : Long_Float) return String is (X'Image);
+
+   type Variant is record
+      Closed        : Boolean := True;
+      Asymmetric    : Boolean := False;
+      Heterogeneous : Boolean := False;
+      Own_Factor    : Boolean := False;
+      --  Robot 1 is 1.7 times slower (its own matrix).
+      Own_Matrix    : Boolean := False;
+      --  Robot 2 has an explicit asymmetric matrix of its own.
+      Own_Callback  : Boolean := False;
+      --  The last robot's costs come from a callback ...
+      Infinite_Arcs : Boolean := False;
+      --  ... with some unreachable arcs.
+      Infeasible    : Boolean := False;
+      Alternatives  : Boolean := False;
+      Frozen        : Boolean := False;
+      Min_Tasks     : Natural := 0;
+   end record;
+
+   function Odd_Metric (R, From, To : Positive) return Cost is
+     (Cost ((From * 37 + To * 91 + R * 11) mod 500 + 1));
+
+   function Odd_Metric_Unreachable (R, From, To : Positive) return Cost is
+     (if (From * 7 + To * 3 + R) mod 13 = 0 then Infinity else Odd_Metric (R, From, To));
+
+   --  A random problem whose tasks 1 .. Tasks - 1 form one or two random
+   --  AND/OR trees (OR alternatives are single tasks or subtrees of several:
+   --  compound tasks), task Tasks outside them.
+   function Plan_Problem
+     (Tasks, Robots : Positive; V : Variant; Seed : Interfaces.Unsigned_64)
+      return Problem_Access
+   is
+      G : Random.Generator := Random.Seeded (Seed);
+      N_Alt : constant Positive := (if V.Alternatives then 2 * Tasks else Tasks);
+      L : constant Positive := Robots + N_Alt;
+      P : constant Problem_Access := Create (L, Tasks, Robots, N_Alt);
+      Pts : Point_Array (1 .. L);
+
+      procedure Build (Parent : Natural; First, Last : Positive) is
+         N     : constant Positive := Last - First + 1;
+         Node  : Positive;
+         Parts : Positive;
+         Start : Positive := First;
+      begin
+         if N = 1 and then Parent /= 0 then
+            Add_Plan_Task (P.all, Parent, First);
+            return;
+         end if;
+         Add_Node (P.all, (if Parent /= 0 and then Random.Below (G, 3) = 0 then And_Node
+                           else Or_Node), Parent, Node);
+         if N = 1 then
+            Add_Plan_Task (P.all, Node, First);
+            return;
+         end if;
+         Parts := 2 + Random.Below (G, Natural'Min (2, N - 1));
+         for K in 1 .. Parts loop
+            declare
+               Left : constant Positive := Last - Start + 1;
+               Size : constant Positive :=
+                 (if K = Parts then Left else 1 + Random.Below (G, Left - (Parts - K)));
+            begin
+               Build (Node, Start, Start + Size - 1);
+               Start := Start + Size;
+            end;
+         end loop;
+      end Build;
+   begin
+      for I in Pts'Range loop
+         Pts (I) := (Sancta.Geometry.Real (Random.Below (G, 1000)),
+                     Sancta.Geometry.Real (Random.Below (G, 1000)));
+      end loop;
+      Set_Euclidean (P.all, Pts, 1.0);
+      if V.Asymmetric then
+         for A in 1 .. L loop
+            for B in 1 .. L loop
+               if A /= B then
+                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 300)));
+               end if;
+            end loop;
+         end loop;
+         Update_Symmetry (P.all);
+      end if;
+      for R in 1 .. Robots loop
+         Set_Robot (P.all, R, R, V.Closed,
+                    Multiplier => (if V.Heterogeneous then 1 + (R - 1) mod 3 else 1));
+      end loop;
+      for T in 1 .. Tasks loop
+         if V.Alternatives and then T mod 2 = 0 then
+            Set_Task_Alternatives (P.all, T, [Robots + 2 * T - 1, Robots + 2 * T]);
+         elsif V.Alternatives then
+            Set_Task_Alternatives (P.all, T, [1 => Robots + 2 * T - 1]);
+         else
+            Set_Task (P.all, T, Robots + T);
+         end if;
+      end loop;
+      if V.Own_Factor then
+         Set_Robot_Factor (P.all, 1, 1.7);
+      end if;
+      if V.Own_Matrix and then Robots >= 2 then
+         for A in 1 .. L loop
+            for B in 1 .. L loop
+               if A /= B then
+                  Set_Robot_Distance (P.all, 2, A, B,
+                                      P.Distance (A, B) / 2 + Cost (Random.Below (G, 400)));
+               end if;
+            end loop;
+         end loop;
+      end if;
+      if V.Own_Callback then
+         Set_Robot_Costs (P.all, Robots, (if V.Infinite_Arcs then Odd_Metric_Unreachable'Access
+                                          else Odd_Metric'Access));
+      end if;
+      if Tasks > 6 then
+         Build (0, 1, Tasks / 2);
+         Build (0, Tasks / 2 + 1, Tasks - 1);
+      elsif Tasks > 1 then
+         Build (0, 1, Tasks - 1);
+      end if;
+      if V.Infeasible then
+         for T in 1 .. Tasks loop
+            if T mod 3 = 0 then
+               Forbid (P.all, 1 + T mod Robots, T);
+            end if;
+         end loop;
+      end if;
+      if V.Frozen then
+         Freeze (P.all, 1, [1 => 1]);
+      end if;
+      P.Min_Tasks := V.Min_Tasks;
+      return P;
+   end Plan_Problem;
+
+   type Criterion_Array is array (Positive range <>) of Criterion;
+   Pure_Criteria : constant Criterion_Array := [Min_Sum, Min_Max, Min_Ave];
+
+   ---------------------------------------------------------------------------
+
+   procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
+      Criteria : constant Criterion_Array :=
+        [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
+      Variants : constant array (1 .. 7) of Variant :=
+        [Variant'(others => <>),
+         (Closed => False, others => <>),
+         (Asymmetric => True, Own_Factor => True, others => <>),
+         (Closed => False, Own_Matrix => True, Own_Callback => True, others => <>),
+         (Own_Callback => True, Infinite_Arcs => True, Heterogeneous => True, others => <>),
+         (Alternatives => True, Frozen => True, Infeasible => True, others => <>),
+         (Closed => False, Asymmetric => True, Heterogeneous => True, Own_Factor => True,
+          Own_Matrix => True, Own_Callback => True, Infinite_Arcs => True,
+          Infeasible => True, Alternatives => True, Frozen => True, Min_Tasks => 0)];
+      Seed : Interfaces.Unsigned_64 := 3100;
+   begin
+      for V of Variants loop
+         for C of Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Plan_Problem (19, 3, V, Seed);
+               A : Assignment (P.Robots, P.Tasks);
+               S : Annealers.Progress;
+               O : Annealers.Options;
+               Switched : Boolean := False;
+            begin
+               Assert (Check (P.all) = "", "bad test problem: " & Check (P.all));
+               --  A near random walk (every move checked against a full
+               --  recomputation, the switch subtree's predicted costs too).
+               O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 6_000,
+                     Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+                     Polish => False, Adaptive => False, others => <>);
+               Annealers.Solve (P.all, O, A, S);
+               Assert (S.Accepted > 300 or else Active_Count (P.all, A.Branch) < 6,
+                       "too few moves applied:" & S.Accepted'Image
+                       & " (seed" & Seed'Image & ", active tasks"
+                       & Active_Count (P.all, A.Branch)'Image & ")");
+               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
+               Switched := S.Switches > 0;
+               O.Start_Temperature := 0.0;
+               O.End_Temperature := 0.0;
+               O.Polish := True;
+               Annealers.Solve (P.all, O, A, S);
+               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
+               Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6,
+                       "reported best" & Img (S.Best) & " /= recomputed"
+                       & Img (Evaluate (P.all, A, C).Value));
+               Assert (Switched or else V.Frozen,
+                       "the random walk never left the initial plan selection (seed"
+                       & Seed'Image & ")");
+            end;
+         end loop;
+      end loop;
+   end Incremental_Equals_Recomputed;
+
+   ---------------------------------------------------------------------------
+   --  Brute force: every plan selection, every order of its active tasks
+   --  cut into robot tours, every choice of alternative locations.
+
+   function Brute_Force (P : Problem; C : Criterion) return Long_Float is
+      N : constant Positive := P.Tasks;
+      Sel : Location_Array (1 .. N) := [others => 1];
+      Act : Location_Array (1 .. N);
+      NA  : Natural := 0;
+      Perm : Location_Array (1 .. N);
+      Used : Boolean_Array (1 .. N) := [others => False];
+      Best : Long_Float := Long_Float'Last;
+      A : Assignment (P.Robots, P.Tasks);
+
+      procedure Try_Cuts (Robot : Positive; From : Positive) is
+      begin
+         if Robot = P.Robots then
+            A.Length (Robot) := 0;
+            for K in From .. NA loop
+               Append (A, Robot, Perm (K));
+            end loop;
+            if Validate (P, A) = "" then
+               Best := Long_Float'Min (Best, Evaluate (P, A, C).Value);
+            end if;
+            return;
+         end if;
+         for Last in From - 1 .. NA loop
+            A.Length (Robot) := 0;
+            for K in From .. Last loop
+               Append (A, Robot, Perm (K));
+            end loop;
+            Try_Cuts (Robot + 1, Last + 1);
+         end loop;
+      end Try_Cuts;
+
+      procedure Try_Choices (K : Positive) is
+      begin
+         if K > NA then
+            Try_Cuts (1, 1);
+            return;
+         end if;
+         for Ch in 1 .. P.Alt_Count (Act (K)) loop
+            A.Choice (Act (K)) := Ch;
+            Try_Choices (K + 1);
+         end loop;
+      end Try_Choices;
+
+      procedure Permute (K : Positive) is
+      begin
+         if K > NA then
+            Try_Choices (1);
+            return;
+         end if;
+         for I in 1 .. NA loop
+            if not Used (I) then
+               Used (I) := True;
+               Perm (K) := Act (I);
+               Permute (K + 1);
+               Used (I) := False;
+            end if;
+         end loop;
+      end Permute;
+
+      procedure Try_Selections (O : Positive) is
+      begin
+         if O > Or_Count (P) then
+            NA := 0;
+            for T in 1 .. N loop
+               if Is_Active (P, Sel, T) then
+                  NA := NA + 1;
+                  Act (NA) := T;
+               end if;
+            end loop;
+            A.Branch := Sel;
+            Permute (1);
+            return;
+         end if;
+         for B in 1 .. Alternatives (P, O) loop
+            Sel (O) := B;
+            Try_Selections (O + 1);
+         end loop;
+      end Try_Selections;
+   begin
+      Try_Selections (1);
+      return Best;
+   end Brute_Force;
+
+   procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
+      Variants : constant array (1 .. 4) of Variant :=
+        [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
+         (Own_Factor => True, Own_Matrix => True, Heterogeneous => True, others => <>),
+         (Alternatives => True, Frozen => True, Own_Callback => True, Min_Tasks => 1,
+          others => <>)];
+      Seed : Interfaces.Unsigned_64 := 3500;
+   begin
+      for V of Variants loop
+         for C of Pure_Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Plan_Problem (6, 2, V, Seed);
+               A : constant Assignment := Exact.Solve (P.all, C);
+               B : constant Long_Float := Brute_Force (P.all, C);
+            begin
+               Assert (Or_Count (P.all) > 0, "no OR node in the test problem");
+               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
+               Assert (Evaluate (P.all, A, C).Value = B,
+                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force"
+                       & Img (B) & " (seed" & Seed'Image & ")");
+            end;
+         end loop;
+      end loop;
+   end Exact_Equals_Brute_Force;
+
+   procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
+      Variants : constant array (1 .. 4) of Variant :=
+        [Variant'(others => <>),
+         (Closed => False, Heterogeneous => True, Own_Factor => True, others => <>),
+         (Asymmetric => True, Infeasible => True, Own_Matrix => True, others => <>),
+         (Alternatives => True, Frozen => True, Own_Callback => True, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 3900;
+   begin
+      for V of Variants loop
+         for C of Pure_Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Plan_Problem (10, 3, V, Seed);
+               E : constant Assignment := Exact.Solve (P.all, C);
+               Opt : constant Long_Float := Evaluate (P.all, E, C).Value;
+               A : Assignment (P.Robots, P.Tasks);
+               S : Annealers.Progress;
+            begin
+               Annealers.Solve (P.all, (Criterion => C, Seed => Seed, Time_Limit => 0.0,
+                                        Iterations => 60_000, others => <>), A, S);
+               Assert (Validate (P.all, A) = "", "annealer invalid: " & Validate (P.all, A));
+               Assert (Evaluate (P.all, A, C).Value = Opt,
+                       "annealer" & Img (Evaluate (P.all, A, C).Value) & " /= optimum"
+                       & Img (Opt) & " (seed" & Seed'Image & ")");
+               for M in Baselines.Method loop
+                  declare
+                     B : constant Assignment := Baselines.Solve (P.all, M, C);
+                  begin
+                     Assert (Validate (P.all, B) = "", M'Image & " invalid: "
+                             & Validate (P.all, B));
+                     Assert (Evaluate (P.all, B, C).Value >= Opt,
+                             M'Image & " better than the optimum");
+                  end;
+               end loop;
+            end;
+         end loop;
+      end loop;
+   end Annealer_Reaches_Optimum;
+
+   --  One robot at (0, 0); OR: task 1 alone at (90, 0), or the compound
+   --  alternative of tasks 2, 3, 4 around (60, 0). The cheapest-first
+   --  estimate (one round trip per task) prefers task 1 (180 < 3 * 120), the
+   --  true optimum is the compound one (about 130): the annealer must switch.
+   procedure Switch_To_Compound (Unused : in out Fixture) is
+      P : constant Problem_Access := Create (Locations => 5, Tasks => 4, Robots => 1);
+      O, Alt : Positive;
+      A : Assignment (1, 4);
+      S : Annealers.Progress;
+   begin
+      Set_Euclidean (P.all, [1 => (0.0, 0.0), 2 => (90.0, 0.0), 3 => (60.0, 0.0),
+                             4 => (60.0, 5.0), 5 => (60.0, Sancta.Geometry."-" (5.0))]);
+      Set_Robot (P.all, 1, Start => 1, Closed => True);
+      for T in 1 .. 4 loop
+         Set_Task (P.all, T, T + 1);
+      end loop;
+      Add_Node (P.all, Or_Node, 0, O);
+      Add_Plan_Task (P.all, O, 1);
+      Add_Node (P.all, And_Node, O, Alt);
+      for T in 2 .. 4 loop
+         Add_Plan_Task (P.all, Alt, T);
+      end loop;
+      Assert (Check (P.all) = "", Check (P.all));
+      Assert (Cheapest_Selection (P.all) (1) = 1, "estimate should prefer task 1");
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 3_000,
+                               Check => True, others => <>), A, S);
+      Assert (Validate (P.all, A) = "", Validate (P.all, A));
+      Assert (A.Branch (1) = 2 and then A.Length (1) = 3, "compound alternative not chosen");
+      Assert (Evaluate (P.all, A, Min_Sum).Sum = 130,
+              "cost" & Evaluate (P.all, A, Min_Sum).Sum'Image);
+      Assert (Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Sum = 130, "exact");
+      declare
+         B : constant Assignment := Baselines.Solve (P.all, Baselines.Auction, Min_Sum);
+      begin
+         Assert (Validate (P.all, B) = "" and then B.Branch (1) = 1
+                 and then Evaluate (P.all, B, Min_Sum).Sum = 180, "auction: cheapest-first");
+      end;
+      --  Frozen task 3 locks the OR node on the compound alternative.
+      Freeze (P.all, 1, [1 => 3]);
+      Assert (Is_Locked (P.all, 1) and then Default_Selection (P.all) (1) = 2, "locked");
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 500,
+                               Check => True, others => <>), A, S);
+      Assert (Validate (P.all, A) = "" and then A.Tour (1, 1) = 3, "frozen prefix kept");
+      Freeze (P.all, 1, [3, 1]);
+      Assert (Check (P.all) /= "", "frozen tasks in exclusive alternatives accepted");
+   end Switch_To_Compound;
+
+   --  Per-robot cost functions: a slow robot, an unreachable task.
+   function Blocked (R, From, To : Positive) return Cost is
+     (if R = 1 and then To = 3 then Infinity else 10 * Cost (abs (From - To)));
+
+   procedure Robot_Cost_Functions (Unused : in out Fixture) is
+      P : constant Problem_Access := Create (Locations => 4, Tasks => 2, Robots => 2);
+      A : Assignment (2, 2);
+      S : Annealers.Progress;
+   begin
+      Set_Euclidean (P.all, [1 => (0.0, 0.0), 2 => (0.0, 0.0), 3 => (10.0, 0.0),
+                             4 => (0.0, 20.0)]);
+      Set_Robot (P.all, 1, Start => 1, Closed => True);
+      Set_Robot (P.all, 2, Start => 2, Closed => True);
+      Set_Task (P.all, 1, 3);
+      Set_Task (P.all, 2, 4);
+      Set_Robot_Factor (P.all, 2, 2.5);
+      Append (A, 2, 1);
+      Append (A, 1, 2);
+      Assert (Tour_Cost (P.all, A, 2) = 50 and then Tour_Cost (P.all, A, 1) = 40,
+              "factor: " & Tour_Cost (P.all, A, 2)'Image & Tour_Cost (P.all, A, 1)'Image);
+      Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0, Iterations => 2_000,
+                               Check => True, others => <>), A, S);
+      Assert (Evaluate (P.all, A, Min_Sum).Sum = 52 and then A.Length (1) = 2,
+              "the fast robot does both:" & Evaluate (P.all, A, Min_Sum).Sum'Image);
+      --  Robot 1 cannot reach task 1's location (3): robot 2 must take it.
+      Set_Robot_Costs (P.all, 1, Blocked'Access);
+      Assert (Robot_Distance (P.all, 1, 1, 3) = Infinity and then P.Distance (1, 3) = 10,
+              "callback costs are robot 1's only");
+      for C of Pure_Criteria loop
+         Annealers.Solve (P.all, (Criterion => C, Time_Limit => 0.0, Iterations => 2_000,
+                                  Check => True, others => <>), A, S);
+         Assert (Validate (P.all, A) = ""
+                 and then (for some K in 1 .. A.Length (2) => A.Tour (2, K) = 1),
+                 "robot 2 must do task 1");
+         Assert (Evaluate (P.all, A, C).Value = Evaluate (P.all, Exact.Solve (P.all, C), C).Value,
+                 "annealer /= exact with a callback robot");
+         for M in Baselines.Method loop
+            Assert (not Is_Infinite (Evaluate (P.all, Baselines.Solve (P.all, M, C), C).Max),
+                    M'Image & " used an unreachable arc");
+         end loop;
+      end loop;
+   end Robot_Cost_Functions;
+
+   NL : constant String := [1 => ASCII.LF];
+
+   procedure Write (File, Text : String) is
+      F : Ada.Text_IO.File_Type;
+   begin
+      Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, File);
+      Ada.Text_IO.Put (F, Text);
+      Ada.Text_IO.Close (F);
+   end Write;
+
+   procedure Expect_Error (F, Text, Expect : String) is
+   begin
+      Write (F, Text);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         pragma Unreferenced (P);
+      begin
+         Assert (False, "no error, expected '" & Expect & "'");
+      end;
+   exception
+      when E : Format_Error =>
+         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
+                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
+                 & Expect & "'");
+   end Expect_Error;
+
+   procedure Mission_Plans (Unused : in out Fixture) is
+      F : constant String := "obj/alloc-test-compound.xml";
+      Head : constant String := "<mission scale=""10"">" & NL
+        & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL;
+      Body_Text : constant String :=
+        "  <robot id=""bo"" x=""0"" y=""0"" factor=""2"" metric=""manhattan""/>" & NL
+        & "  <task id=""t1"" x=""1"" y=""0""/>" & NL
+        & "  <plan>" & NL
+        & "    <or id=""survey"" robots=""ari"">" & NL
+        & "      <and> <task x=""2"" y=""0""/> <task x=""3"" y=""0""/> </and>" & NL
+        & "      <task id=""far"" x=""50"" y=""50""/>" & NL
+        & "      <or>" & NL
+        & "        <and> <task x=""9"" y=""9""/>" & NL
+        & "              <or> <at x=""8"" y=""0""/> <at x=""7"" y=""7""/> </or> </and>" & NL
+        & "        <task x=""40"" y=""0""/>" & NL
+        & "      </or>" & NL
+        & "    </or>" & NL
+        & "  </plan>" & NL;
+   begin
+      Write (F, Head & Body_Text & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Assert (P.Tasks = 7 and then Or_Count (P.all) = 2, "sizes:" & P.Tasks'Image
+                 & Or_Count (P.all)'Image);
+         Assert (Alternatives (P.all, 1) = 3 and then Alternatives (P.all, 2) = 2,
+                 "alternatives");
+         Assert (Task_Name (P.all, 3) = "survey.1.2" and then Task_Name (P.all, 4) = "far"
+                 and then Task_Name (P.all, 6) = "survey.3.1.2", "names: "
+                 & Task_Name (P.all, 3) & " " & Task_Name (P.all, 6));
+         Assert (P.Alt_Count (6) = 2 and then P.Alt_Count (5) = 1, "flat OR in a compound");
+         Assert (P.Task_Or (2) = 1 and then P.Task_Branch (2) = 1 and then P.Task_Or (5) = 2
+                 and then P.Task_Branch (5) = 1 and then Or_Parent (P.all, 2) = 1
+                 and then Or_Branch (P.all, 2) = 3 and then P.Task_Or (1) = 0, "tree shape");
+         Assert (not P.Can_Do (2, 2) and then not P.Can_Do (2, 7) and then P.Can_Do (2, 1),
+                 "robots= applies to the whole subtree");
+         --  bo: Manhattan x factor 2 x scale 10; task survey.3.1.1 at (9, 9).
+         Assert (Robot_Distance (P.all, 2, 2, Location_Of (P.all, 5)) = 360
+                 and then Robot_Distance (P.all, 1, 1, Location_Of (P.all, 5)) = 127,
+                 "own metric:" & Robot_Distance (P.all, 2, 2, Location_Of (P.all, 5))'Image);
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Validate (P.all, A) = "", Validate (P.all, A));
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal on the compound plan");
+         Assert (A.Branch (1) = 1 and then E.Branch (1) = 1, "the near compound alternative");
+         Assert (Evaluate (P.all, E, Min_Sum).Sum = 60, "cost"
+                 & Evaluate (P.all, E, Min_Sum).Sum'Image);
+      end;
+      --  A task done in the nested alternative locks both OR nodes there.
+      Write (F, Head & Body_Text & "  <done robot=""ari"" tasks=""survey.3.2""/>" & NL
+             & "</mission>" & NL);
+      declare
+         P : constant Problem_Access := Missions.Read (F);
+         E : constant Assignment := Exact.Solve (P.all, Min_Sum);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
+                                  Iterations => 5_000, Check => True, others => <>), A, S);
+         Assert (Validate (P.all, A) = "" and then A.Branch (1) = 3 and then A.Branch (2) = 2
+                 and then E.Branch (1) = 3, "locked by the done task");
+         Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
+                 "annealer not optimal with the lock");
+      end;
+      Expect_Error (F, Head & "  <or id=""e""/>" & NL & "</mission>" & NL,
+                    F & ":3: <or id=""e""> has no alternative");
+      Expect_Error (F, Head & "  <or id=""x"">" & NL & "    <at x=""1"" y=""1""/>" & NL
+                    & "    <and/>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":6: alternative 2 (line 5) of <or id=""x""> has no task");
+      Expect_Error (F, Head & "  <or id=""y"">" & NL & "    <at x=""1"" y=""1""/>" & NL
+                    & "    <and> <task x=""1"" y=""1""/> <or> </or> </and>" & NL
+                    & "  </or>" & NL & "</mission>" & NL,
+                    F & ":5: <or id=""y""> has no alternative");
+      Expect_Error (F, Head & "  <task id=""s.2"" x=""1"" y=""1""/>" & NL
+                    & "  <or id=""s"">" & NL
+                    & "    <and> <task x=""1"" y=""1""/> <task x=""2"" y=""1""/> </and>" & NL
+                    & "    <task x=""5"" y=""5""/>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":6: task 's.2' defined twice (also line 3)");
+      Expect_Error (F, Head & "  <robot id=""b"" x=""1"" y=""1"" factor=""-1""/>" & NL
+                    & "</mission>" & NL,
+                    F & ":3: <robot> factor='-1' is not a number in (0, 1e6]");
+      Expect_Error (F, Head & "  <robot id=""b"" x=""1"" y=""1"" metric=""taxi""/>" & NL
+                    & "</mission>" & NL,
+                    F & ":3: <robot> metric='taxi' is not euclidean or manhattan");
+      Expect_Error (F, Head & "  <plan>" & NL & "    <task id=""a"" x=""1"" y=""1"">" & NL
+                    & "      <at x=""1"" y=""1""/>" & NL & "    </task>" & NL & "  </plan>" & NL
+                    & "</mission>" & NL,
+                    F & ":5: <at> must be inside <mission>, <and> or <or>");
+      Expect_Error (F, Head & "  <or id=""d"">" & NL & "    <or> <or>" & NL
+                    & "      <and> <task x=""1"" y=""1""/> <task x=""2"" y=""1""/> </and>" & NL
+                    & "    </or> </or>" & NL & "  </or>" & NL & "</mission>" & NL,
+                    F & ":4: more <or> nodes than tasks");
+      Write (F, Head & Body_Text & "  <done robot=""ari"" tasks=""far""/>" & NL
+             & "  <done robot=""bo"" tasks=""survey.1.1""/>" & NL & "</mission>" & NL);
+      begin
+         declare
+            P : constant Problem_Access := Missions.Read (F);
+            pragma Unreferenced (P);
+         begin
+            Assert (False, "done tasks in exclusive alternatives accepted");
+         end;
+      exception
+         when E : Format_Error =>
+            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
+                    F & ":17: frozen task") > 0,
+                    "message: " & Ada.Exceptions.Exception_Message (E));
+      end;
+      Ada.Directories.Delete_File (F);
+   end Mission_Plans;
+
+   procedure Deterministic (Unused : in out Fixture) is
+      P : constant Problem_Access := Plan_Problem (30, 4, (Own_Factor => True, others => <>), 77);
+      A, B : Assignment (P.Robots, P.Tasks);
+      S : Annealers.Progress;
+      O : constant Annealers.Options :=
+        (Criterion => Min_Max, Seed => 5, Time_Limit => 0.0, Iterations => 30_000,
+         others => <>);
+   begin
+      Annealers.Solve (P.all, O, A, S);
+      Annealers.Solve (P.all, O, B, S);
+      Assert (A = B, "same seed, different plan-tree allocations");
+      Assert (Validate (P.all, A) = "", Validate (P.all, A));
+   end Deterministic;
+
+   function Suite return AUnit.Test_Suites.Access_Test_Suite is
+      Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
+      procedure Add (Name : String; Proc : Caller.Test_Method) is
+      begin
+         Result.Add_Test (Caller.Create ("allocation plans: " & Name, Proc));
+      end Add;
+   begin
+      Add ("incremental costs equal recomputed costs (plan trees, robot costs)",
+           Incremental_Equals_Recomputed'Access);
+      Add ("exact solver equals brute force over plan selections",
+           Exact_Equals_Brute_Force'Access);
+      Add ("annealer reaches the exact optimum; baselines valid",
+           Annealer_Reaches_Optimum'Access);
+      Add ("switch to a compound alternative; frozen tasks lock OR nodes",
+           Switch_To_Compound'Access);
+      Add ("per-robot cost functions", Robot_Cost_Functions'Access);
+      Add ("mission XML: nested compound plans, robot metrics, errors", Mission_Plans'Access);
+      Add ("same seed, same result with plan trees", Deterministic'Access);
+      return Result;
+   end Suite;
+
+end Sancta.Allocation.Plan_Tests;
