@@ -153,14 +153,16 @@ package body Sancta.Allocation.Annealers is
 
    type Seg_Kind is (Span, Single);
    type Seg is record
-      Kind     : Seg_Kind := Span;
-      Robot    : Positive := 1;
-      First    : Natural := 1;
-      Last     : Natural := 0;
-      Reversed : Boolean := False;
-      Task_Id  : Natural := 0;   --  Single: this task ...
-      Loc      : Natural := 0;   --  ... at this location
+      Kind     : Seg_Kind;
+      Robot    : Positive;
+      First    : Natural;
+      Last     : Natural;
+      Reversed : Boolean;
+      Task_Id  : Natural;   --  Single: this task ...
+      Loc      : Natural;   --  ... at this location
    end record;
+   --  No default values: a tour plan only reads its first Count segments,
+   --  and moves are built millions of times a second.
 
    Max_Segs : constant := 6;
    type Seg_List is array (1 .. Max_Segs) of Seg;
@@ -186,20 +188,38 @@ package body Sancta.Allocation.Annealers is
       Value       : Long_Float := 0.0;
    end record;
 
+   procedure Clear (Mv : in out Move) is
+   begin
+      Mv.A.Robot := 0;
+      Mv.A.Count := 0;
+      Mv.B.Robot := 0;
+      Mv.B.Count := 0;
+      Mv.Or_Node := 0;
+   end Clear;
+
+   function No_Move return Move is
+   begin
+      return M : Move do
+         Clear (M);
+      end return;
+   end No_Move;
+   --  A move of no tour (for Verify without a prediction).
+
    procedure Add (T : in out Tour_Plan; Robot : Positive; First, Last : Natural;
                   Reversed : Boolean := False) is
    begin
       if First <= Last then
          T.Count := T.Count + 1;
          T.Segs (T.Count) := (Kind => Span, Robot => Robot, First => First,
-                              Last => Last, Reversed => Reversed, others => <>);
+                              Last => Last, Reversed => Reversed, Task_Id => 0, Loc => 0);
       end if;
    end Add;
 
    procedure Add_Single (T : in out Tour_Plan; Task_Id, Loc : Positive) is
    begin
       T.Count := T.Count + 1;
-      T.Segs (T.Count) := (Kind => Single, Task_Id => Task_Id, Loc => Loc, others => <>);
+      T.Segs (T.Count) := (Kind => Single, Task_Id => Task_Id, Loc => Loc, Robot => 1,
+                           First => 1, Last => 0, Reversed => False);
    end Add_Single;
 
    procedure Eval_Tour
@@ -606,6 +626,39 @@ package body Sancta.Allocation.Annealers is
       Apply (P, S, Best);
    end Best_Insert;
 
+   --  Takes the tasks of List out of their tours (they must be movable).
+   procedure Remove_Tasks (P : Problem; S : in out State; List : Count_Array) is
+      Gone : Boolean_Array (1 .. S.NT) := [others => False];
+      First : Count_Array (1 .. S.NR) := [others => 0];
+   begin
+      for T of List loop
+         Gone (T) := True;
+         declare
+            R : constant Positive := S.Own (T);
+         begin
+            if First (R) = 0 or else S.Pos (T) < First (R) then
+               First (R) := S.Pos (T);
+            end if;
+         end;
+      end loop;
+      for R in 1 .. S.NR loop
+         if First (R) /= 0 then
+            declare
+               N : Natural := First (R) - 1;
+            begin
+               for I in First (R) .. S.Len (R) loop
+                  if not Gone (S.Tk (R, I)) then
+                     N := N + 1;
+                     S.Tk (R, N) := S.Tk (R, I);
+                  end if;
+               end loop;
+               S.Len (R) := N;
+               Rebuild (P, S, R, First (R));
+            end;
+         end if;
+      end loop;
+   end Remove_Tasks;
+
    procedure Construct (P : Problem; S : in out State; C : Criterion; G : in out Gen) is
       Order : Count_Array (1 .. P.Tasks);
       N     : Natural := 0;
@@ -669,11 +722,6 @@ package body Sancta.Allocation.Annealers is
    --  Move generators. Each fills Mv and returns Ok = False when the draw
    --  does not give a legal move.
 
-   type Move_Kind is
-     (Or_Opt_Near, Two_Opt_Near, Cross_Near, Random_Move, Move_Owner,
-      Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse,
-      Switch_Subtree);
-
    function Movable (P : Problem; S : State; T : Positive) return Boolean is
      (S.Own (T) /= 0 and then S.Pos (T) > P.Frozen_Length (S.Own (T)));
    --  Active (in a tour) and not frozen.
@@ -727,8 +775,7 @@ package body Sancta.Allocation.Annealers is
          end if;
       end Moved;
    begin
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       Ok := True;
       if R1 /= R2 then
          Mv.A.Robot := R1;
@@ -816,8 +863,7 @@ package body Sancta.Allocation.Annealers is
       end if;
       R2 := S.Own (U);
       J := S.Pos (U);
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       if R1 = R2 then
          declare
             Lo, Hi : Natural;
@@ -847,7 +893,28 @@ package body Sancta.Allocation.Annealers is
       else
          Mv.A.Robot := R1;
          Mv.B.Robot := R2;
-         if Variant mod 2 = 0 then
+         if Variant mod 4 = 2 then
+            --  Crossed, new arc T -> U: R1: 1..I then R2's J..1 reversed;
+            --  R2: R1's I+1..end reversed then R2's J+1.. (tours through a
+            --  common depot are cycles: this is 2-opt across two of them).
+            if P.Frozen_Length (R2) > 0 or else I < P.Frozen_Length (R1) then
+               return;
+            end if;
+            Add (Mv.A, R1, 1, I);
+            Add (Mv.A, R2, 1, J, True);
+            Add (Mv.B, R1, I + 1, S.Len (R1), True);
+            Add (Mv.B, R2, J + 1, S.Len (R2));
+         elsif Variant mod 4 = 3 then
+            --  Crossed, new arc U -> T: R1: R2's end..J reversed then R1's
+            --  I..; R2: 1..J-1 then R1's 1..I-1 reversed.
+            if P.Frozen_Length (R1) > 0 or else J - 1 < P.Frozen_Length (R2) then
+               return;
+            end if;
+            Add (Mv.A, R2, J, S.Len (R2), True);
+            Add (Mv.A, R1, I, S.Len (R1));
+            Add (Mv.B, R2, 1, J - 1);
+            Add (Mv.B, R1, 1, I - 1, True);
+         elsif Variant mod 2 = 0 then
             --  R1: 1..I then R2's J..; R2: 1..J-1 then R1's I+1..
             if J - 1 < P.Frozen_Length (R2) then
                return;
@@ -869,6 +936,45 @@ package body Sancta.Allocation.Annealers is
          Ok := True;
       end if;
    end Gen_Two_Opt;
+
+   --  Or-3opt (segment exchange within a tour, any segment lengths), both
+   --  new arcs next to candidate neighbours: with T at position A and U at
+   --  B + 1 (U near T), the tour 1..A, A+1..B, B+1..C, C+1.. becomes
+   --  1..A, B+1..C, A+1..B, C+1.. where C is the position of V, a neighbour
+   --  of the task at A + 1 (Variant 0: arcs T-U, V-(A+1), B-(C+1)), or of
+   --  the task at B with A+1..B reversed (Variant 1: arcs T-U, V-B,
+   --  (A+1)-(C+1)).
+   procedure Gen_Or3
+     (P : Problem; S : State; T : Positive; U_Index, V_Index : Positive; Variant : Natural;
+      Mv : in out Move; Ok : out Boolean)
+   is
+      R  : constant Positive := S.Own (T);
+      A  : constant Positive := S.Pos (T);
+      U  : constant Natural := S.Near (T, U_Index);
+      B, C : Natural;
+      Pivot, V : Natural;
+   begin
+      Ok := False;
+      if U = 0 or else S.Own (U) /= R or else S.Pos (U) < A + 2
+        or else A < P.Frozen_Length (R)
+      then
+         return;
+      end if;
+      B := S.Pos (U) - 1;
+      Pivot := S.Tk (R, (if Variant mod 2 = 0 then A + 1 else B));
+      V := S.Near (Pivot, V_Index);
+      if V = 0 or else S.Own (V) /= R or else S.Pos (V) <= B then
+         return;
+      end if;
+      C := S.Pos (V);
+      Clear (Mv);
+      Mv.A.Robot := R;
+      Add (Mv.A, R, 1, A);
+      Add (Mv.A, R, B + 1, C);
+      Add (Mv.A, R, A + 1, B, Reversed => Variant mod 2 = 1);
+      Add (Mv.A, R, C + 1, S.Len (R));
+      Ok := True;
+   end Gen_Or3;
 
    procedure Gen_Cross
      (P : Problem; S : State; T : Positive; U_Index : Positive; L1, L2 : Natural;
@@ -892,8 +998,7 @@ package body Sancta.Allocation.Annealers is
       end if;
       E1 := Natural'Min (I + L1 - 1, S.Len (R1));
       E2 := Natural'Min (J + L2, S.Len (R2));
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       Mv.A.Robot := R1;
       Add (Mv.A, R1, 1, I - 1);
       Add (Mv.A, R2, J + 1, E2);
@@ -917,8 +1022,7 @@ package body Sancta.Allocation.Annealers is
       if T = U then
          return;
       end if;
-      Mv.A := (others => <>);
-      Mv.B := (others => <>);
+      Clear (Mv);
       if R1 = R2 then
          if J < I then
             declare
@@ -1090,7 +1194,7 @@ package body Sancta.Allocation.Annealers is
       Active_After : Natural := S.N_Active;
    begin
       Ok := False;
-      Mv := (others => <>);
+      Mv := No_Move;
       for Try in 1 .. 4 loop
          declare
             X : constant Positive := 1 + Random.Below (G, Or_Count (P));
@@ -1346,12 +1450,26 @@ package body Sancta.Allocation.Annealers is
       Elapsed : Duration := 0.0;
       Best_Time : Duration := 0.0;
       type Real_Array is array (Move_Kind) of Long_Float;
-      Weight : Real_Array := [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Cross_Near => 1.5,
+      Weight : Real_Array := [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Or3_Near => 2.0,
+                              Cross_Near => 1.5,
                               Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
                               Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
                               Segment_Move => 0.5, Random_Reverse => 0.5,
-                              Switch_Subtree => 0.5];
+                              Switch_Subtree => 0.5, Ruin_Recreate => 0.0];
+      --  Ruin_Recreate is not drawn: it runs on its share of evaluations.
       Score, Tries : Real_Array := [others => 0.0];
+      Kinds : Kind_Stats_Array;
+      Polish_Gain : Long_Float := 0.0;
+      Backup : Assignment (P.Robots, P.Tasks);
+      Runs : Positive := (if Opts.Runs > 0 then Opts.Runs else 1);
+      Run  : Natural := 0;
+      --  Geometric schedule: Runs independent anneals share the budget, each
+      --  from a fresh start; Run is the current one (from 0).
+      Runs_Decided : Boolean :=
+        Opts.Runs > 0 or else Opts.Schedule /= Geometric
+        or else (Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0);
+      Ruin_Evals : Long_Long_Integer := 0;
+      --  Move evaluations spent in ruin and recreate (best insertions).
       Has_Or : Boolean := False;
       D      : Pending_Access :=
         new Pending (P.Robots, P.Tasks + 1, P.Tasks, Under_Size (P));
@@ -1403,7 +1521,10 @@ package body Sancta.Allocation.Annealers is
                Gen_Or_Opt (P, S.all, G, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
                            Random.Below (G, 4), Mv, Ok);
             when Two_Opt_Near =>
-               Gen_Two_Opt (P, S.all, T, 1 + Random.Below (G, K), Random.Below (G, 2), Mv, Ok);
+               Gen_Two_Opt (P, S.all, T, 1 + Random.Below (G, K), Random.Below (G, 4), Mv, Ok);
+            when Or3_Near =>
+               Gen_Or3 (P, S.all, T, 1 + Random.Below (G, K), 1 + Random.Below (G, K),
+                        Random.Below (G, 2), Mv, Ok);
             when Cross_Near =>
                Gen_Cross (P, S.all, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
                           Random.Below (G, 4), Mv, Ok);
@@ -1480,8 +1601,7 @@ package body Sancta.Allocation.Annealers is
                   J  : constant Positive := I + Random.Below (G, S.Len (R1) - I + 1);
                begin
                   if J > I then
-                     Mv.A := (others => <>);
-                     Mv.B := (others => <>);
+                     Clear (Mv);
                      Mv.A.Robot := R1;
                      Add (Mv.A, R1, 1, I - 1);
                      Add (Mv.A, R1, I, J, True);
@@ -1497,6 +1617,8 @@ package body Sancta.Allocation.Annealers is
                      Gen_Swap (P, S.all, T, U, Mv, Ok);
                   end if;
                end;
+            when Ruin_Recreate =>
+               null;  --  Not a single move: see Ruin_And_Recreate.
             when Switch_Or =>
                --  Another alternative of an OR task, at the best of a few
                --  random places (its own place among them).
@@ -1546,6 +1668,126 @@ package body Sancta.Allocation.Annealers is
          Best_Saved := True;
       end Save_Best;
 
+      function True_Value return Long_Float is
+        (Value (Opts.Criterion, Current_Max (S.all), S.Sum, S.Comp, S.N_Active));
+
+      Only_Ruin : Boolean := False;
+      --  No drawn move kind is enabled: every move is a ruin and recreate.
+
+      function Ruin_Due return Boolean is
+        (Only_Ruin
+         or else (Opts.Ruin_Share > 0.0 and then Opts.Enabled (Ruin_Recreate)
+                  and then Long_Float (Ruin_Evals) < Opts.Ruin_Share * Long_Float (Moves)));
+
+      --  Ruin and recreate (a large neighbourhood move): a random task and
+      --  up to K of its candidate neighbours leave their tours and are put
+      --  back one by one, in random order, at their best places for the
+      --  search objective (any robot); the result is accepted or undone
+      --  like any move.
+      function Ruin_Seed return Natural is
+         --  Makespan criteria: half the time a task of the longest tour.
+      begin
+         if W.C.Max_Weight > 0.0 and then P.Robots > 1 and then Random.Below (G, 2) = 0 then
+            declare
+               Worst : Positive := 1;
+               N : Natural;
+            begin
+               for R in 2 .. S.NR loop
+                  if S.RC (R) > S.RC (Worst) then
+                     Worst := R;
+                  end if;
+               end loop;
+               N := S.Len (Worst) - P.Frozen_Length (Worst);
+               if N > 0 then
+                  return S.Tk (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (G, N));
+               end if;
+            end;
+         end if;
+         return Random_Task (P, S.all, G);
+      end Ruin_Seed;
+
+      procedure Ruin_And_Recreate is
+         Seed_T : constant Natural := Ruin_Seed;
+         List   : Count_Array (1 .. K + 1);
+         N      : Natural := 0;
+         Want   : Positive;
+         Old_Len : constant Count_Array (1 .. P.Robots) := S.Len;
+         Ok     : Boolean := True;
+         V, D, TV : Long_Float;
+         X : Kind_Stats renames Kinds (Ruin_Recreate);
+      begin
+         X.Tries := X.Tries + 1;
+         if Seed_T = 0 then
+            Ruin_Evals := Ruin_Evals + 1;
+            return;
+         end if;
+         Want := 2 + Random.Below (G, K);
+         N := 1;
+         List (1) := Seed_T;
+         for I in 1 .. S.Near_Count (Seed_T) loop
+            exit when N >= Want;
+            if Movable (P, S.all, S.Near (Seed_T, I)) then
+               N := N + 1;
+               List (N) := S.Near (Seed_T, I);
+            end if;
+         end loop;
+         for I in reverse 2 .. N loop
+            declare
+               J : constant Positive := 1 + Random.Below (G, I);
+               Y : constant Positive := List (I);
+            begin
+               List (I) := List (J);
+               List (J) := Y;
+            end;
+         end loop;
+         if not Best_Saved then
+            Save_Best;
+         end if;
+         Store (S.all, Backup);
+         Remove_Tasks (P, S.all, List (1 .. N));
+         for I in 1 .. N loop
+            Best_Insert (P, S.all, W, List (I));
+         end loop;
+         Ruin_Evals := Ruin_Evals + Long_Long_Integer (N * (S.N_Active + P.Robots));
+         for R in 1 .. P.Robots loop
+            if S.Len (R) < P.Min_Tasks and then S.Len (R) < Old_Len (R) then
+               Ok := False;
+            end if;
+         end loop;
+         V := Current_Value (P, S.all, W);
+         D := V - Cur;
+         if Ok and then (D <= 0.0 or else (D < 30.0 * Temp
+                                           and then Random.Uniform (G) < Exp (-D / Temp)))
+         then
+            X.Legal := X.Legal + 1;
+            X.Accepted := X.Accepted + 1;
+            Accepted := Accepted + 1;
+            Cur := V;
+            if D < 0.0 then
+               X.Improving := X.Improving + 1;
+            end if;
+            TV := Current_Value (P, S.all, WT);
+            if TV < Best_Value - 1.0E-9 then
+               Best_Value := TV;
+               Best_Saved := False;
+               Last_Best_Move := Moves;
+               Best_Time := To_Duration (Clock - Start);
+               X.New_Best := X.New_Best + 1;
+               if Opts.Target > 0.0 and then True_Value <= Opts.Target then
+                  Stop := True;
+               end if;
+            end if;
+         else
+            if Ok then
+               X.Legal := X.Legal + 1;
+            end if;
+            Load (P, S.all, Backup);
+         end if;
+         if Opts.Check then
+            Verify (P, S.all, No_Move, False);
+         end if;
+      end Ruin_And_Recreate;
+
       procedure Do_Apply (Mv : Move) is
       begin
          if Mv.Or_Node /= 0 then
@@ -1572,12 +1814,10 @@ package body Sancta.Allocation.Annealers is
                      Moves_Per_Second => (if Elapsed > 0.0
                                           then Long_Float (Moves) / Long_Float (Elapsed)
                                           else 0.0),
-                     Time_To_Best => Best_Time, Switches => Switches));
+                     Time_To_Best => Best_Time, Kinds => Kinds,
+                     Polish_Gain => Polish_Gain, Switches => Switches));
          end if;
       end Send_Report;
-
-      function True_Value return Long_Float is
-        (Value (Opts.Criterion, Current_Max (S.all), S.Sum, S.Comp, S.N_Active));
 
       --  Local descent with the neighbour moves until no improvement (or time).
       procedure Polish is
@@ -1597,16 +1837,18 @@ package body Sancta.Allocation.Annealers is
                end if;
                if Movable (P, S.all, T) then
                   for U in 1 .. K loop
-                     for V in 0 .. 11 loop
+                     for V in 0 .. 13 + 2 * K loop
                         if not Movable (P, S.all, T) then
                            exit;
                         end if;
                         if V < 8 then
                            Gen_Or_Opt (P, S.all, G, T, U, 1 + V / 4 * 2, V mod 4, Mv, Ok);
-                        elsif V < 10 then
-                           Gen_Two_Opt (P, S.all, T, U, V mod 2, Mv, Ok);
-                        else
+                        elsif V < 12 then
+                           Gen_Two_Opt (P, S.all, T, U, V mod 4, Mv, Ok);
+                        elsif V < 14 then
                            Gen_Cross (P, S.all, T, U, 1, (V mod 2), Mv, Ok);
+                        else
+                           Gen_Or3 (P, S.all, T, U, 1 + (V - 14) / 2, V mod 2, Mv, Ok);
                         end if;
                         Mv.Switch_Task := 0;
                         if Ok then
@@ -1648,6 +1890,17 @@ package body Sancta.Allocation.Annealers is
          Weight (Guided_Move) := 0.0;
          Weight (Cross_Near) := 0.0;
       end if;
+      for M in Move_Kind loop
+         if not Opts.Enabled (M) then
+            Weight (M) := 0.0;
+         end if;
+      end loop;
+      if (for all M in Move_Kind => Weight (M) = 0.0) then
+         if not Opts.Enabled (Ruin_Recreate) then
+            raise Constraint_Error with "annealer: no move kind enabled";
+         end if;
+         Only_Ruin := True;
+      end if;
       if Opts.Initial then
          declare
             V : constant String := Validate (P, Best);
@@ -1667,7 +1920,7 @@ package body Sancta.Allocation.Annealers is
          W.Tie := Long_Float'Max (WT.Tie, Guide0);
       end if;
       if Opts.Check then
-         Verify (P, S.all, (others => <>), False);
+         Verify (P, S.all, No_Move, False);
       end if;
       Cur := Current_Value (P, S.all, W);
       Best_Value := Current_Value (P, S.all, WT);
@@ -1738,7 +1991,33 @@ package body Sancta.Allocation.Annealers is
                end if;
                case Opts.Schedule is
                   when Geometric =>
-                     Temp := T0 * (T1 / T0) ** X;
+                     if not Runs_Decided and then X >= 0.02 then
+                        --  Automatic: as many runs (at most Max_Runs) as the
+                        --  budget gives Opts.Run_Moves x tasks ** 2 moves each.
+                        Runs_Decided := True;
+                        Runs := Positive (Long_Float'Max (1.0, Long_Float'Min
+                          (Long_Float (Max_Runs), Long_Float'Floor
+                             (Long_Float (Moves) / X
+                              / (Opts.Run_Moves * Long_Float (P.Tasks) ** 2)))));
+                     end if;
+                     declare
+                        XR : Long_Float := X * Long_Float (Runs) - Long_Float (Run);
+                     begin
+                        if XR >= 1.0 and then Run + 1 < Runs then
+                           if not Best_Saved then
+                              Save_Best;
+                           end if;
+                           Run := Natural'Min (Runs - 1, Natural (Long_Float'Floor
+                                                                   (X * Long_Float (Runs))));
+                           Construct (P, S.all, Opts.Criterion, G);
+                           if Opts.Check then
+                              Verify (P, S.all, No_Move, False);
+                           end if;
+                           Cur := Current_Value (P, S.all, W);
+                           XR := X * Long_Float (Runs) - Long_Float (Run);
+                        end if;
+                        Temp := T0 * (T1 / T0) ** Long_Float'Min (1.0, XR);
+                     end;
                   when Cyclic =>
                      --  Cycles of geometric cooling; each new cycle restarts
                      --  from the best so far, at a start temperature divided
@@ -1791,57 +2070,67 @@ package body Sancta.Allocation.Annealers is
             end;
          end if;
          Moves := Moves + 1;
-         declare
-            Kind : constant Move_Kind := Pick_Kind;
-            Mv   : Move;
-            Ok   : Boolean;
-            D, TV : Long_Float;
-         begin
-            Propose (Kind, Mv, Ok);
-            Tries (Kind) := Tries (Kind) + 1.0;
-            if Ok then
-               Evaluate_Move (P, S.all, W, Mv, Ok);
-            end if;
-            if Ok then
-               D := Mv.Value - Cur;
-               if D <= 0.0 or else (D < 30.0 * Temp
-                                     and then Random.Uniform (G) < Exp (-D / Temp))
-               then
-                  TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp, Mv.New_Active);
-                  if not Best_Saved and then TV > Best_Value then
-                     Save_Best;
-                  end if;
-                  Do_Apply (Mv);
-                  Accepted := Accepted + 1;
-                  if Mv.Or_Node /= 0 then
-                     Switches := Switches + 1;
-                  end if;
-                  Cur := Mv.Value;
-                  if D < 0.0 then
-                     Score (Kind) := Score (Kind) + 1.0;
-                  end if;
-                  if Cur < Cycle_Best then
-                     Cycle_Best := Cur;
-                     Since_Improve := 0;
+         if Ruin_Due then
+            Ruin_And_Recreate;
+         else
+            declare
+               Kind : constant Move_Kind := Pick_Kind;
+               Mv   : Move;
+               Ok   : Boolean;
+               D, TV : Long_Float;
+            begin
+               Propose (Kind, Mv, Ok);
+               Tries (Kind) := Tries (Kind) + 1.0;
+               Kinds (Kind).Tries := Kinds (Kind).Tries + 1;
+               if Ok then
+                  Evaluate_Move (P, S.all, W, Mv, Ok);
+               end if;
+               if Ok then
+                  Kinds (Kind).Legal := Kinds (Kind).Legal + 1;
+                  D := Mv.Value - Cur;
+                  if D <= 0.0 or else (D < 30.0 * Temp
+                                        and then Random.Uniform (G) < Exp (-D / Temp))
+                  then
+                     TV := Objective (WT, Mv.New_Max, Mv.New_Sum, Mv.New_Comp,
+                                     Mv.New_Active);
+                     if not Best_Saved and then TV > Best_Value then
+                        Save_Best;
+                     end if;
+                     Do_Apply (Mv);
+                     Accepted := Accepted + 1;
+                     if Mv.Or_Node /= 0 then
+                        Switches := Switches + 1;
+                     end if;
+                     Kinds (Kind).Accepted := Kinds (Kind).Accepted + 1;
+                     Cur := Mv.Value;
+                     if D < 0.0 then
+                        Score (Kind) := Score (Kind) + 1.0;
+                        Kinds (Kind).Improving := Kinds (Kind).Improving + 1;
+                     end if;
+                     if Cur < Cycle_Best then
+                        Cycle_Best := Cur;
+                        Since_Improve := 0;
+                     else
+                        Since_Improve := Since_Improve + 1;
+                     end if;
+                     if TV < Best_Value - 1.0E-9 then
+                        Best_Value := TV;
+                        Best_Saved := False;
+                        Last_Best_Move := Moves;
+                        Best_Time := To_Duration (Clock - Start);
+                        Score (Kind) := Score (Kind) + 2.0;
+                        Kinds (Kind).New_Best := Kinds (Kind).New_Best + 1;
+                        if Opts.Target > 0.0 and then True_Value <= Opts.Target then
+                           Stop := True;
+                           exit Main;
+                        end if;
+                     end if;
                   else
                      Since_Improve := Since_Improve + 1;
                   end if;
-                  if TV < Best_Value - 1.0E-9 then
-                     Best_Value := TV;
-                     Best_Saved := False;
-                     Last_Best_Move := Moves;
-                     Best_Time := To_Duration (Clock - Start);
-                     Score (Kind) := Score (Kind) + 2.0;
-                     if Opts.Target > 0.0 and then True_Value <= Opts.Target then
-                        Stop := True;
-                        exit Main;
-                     end if;
-                  end if;
-               else
-                  Since_Improve := Since_Improve + 1;
                end if;
-            end if;
-         end;
+            end;
+         end if;
       end loop Main;
       if not Best_Saved then
          Save_Best;
@@ -1851,6 +2140,7 @@ package body Sancta.Allocation.Annealers is
          Load (P, S.all, Best);
          Cur := Current_Value (P, S.all, W);
          Polish;
+         Polish_Gain := Long_Float'Max (0.0, Best_Value - Cur);
          if Cur < Best_Value then
             Best_Value := Cur;
             Best_Time := To_Duration (Clock - Start);
@@ -1866,7 +2156,8 @@ package body Sancta.Allocation.Annealers is
                 Accepted => Accepted, Elapsed => Elapsed,
                 Moves_Per_Second => (if Elapsed > 0.0
                                      then Long_Float (Moves) / Long_Float (Elapsed) else 0.0),
-                Time_To_Best => Best_Time, Switches => Switches);
+                Time_To_Best => Best_Time, Kinds => Kinds, Polish_Gain => Polish_Gain,
+                Switches => Switches);
       Free (S);
       Free (D);
    end Solve;

@@ -7,15 +7,21 @@
 --  from a max segment tree over robot costs (O(log R)).
 --
 --  Moves: relocate / Or-opt (segments of 1..3 tasks, possibly reversed) next
---  to a candidate neighbour (k nearest), 2-opt within a tour and 2-opt*
---  between tours, cross-exchange between tours, the old moves (random move,
---  move to another robot, guided move from the worst robot, swap any, log
---  auction, switch OR alternative), switch subtree for plan trees (another
---  alternative at an OR node: the leaving tasks are removed, the coming ones
---  inserted, cheapest or at random, the touched robots' costs recomputed
---  exactly); adaptive move weights; geometric,
---  cyclic or the old re-heating schedule; budgets by time, iterations and
---  convergence; a final descent (polish) with the neighbour moves.
+--  to a candidate neighbour (k nearest), 2-opt within a tour, Or-3opt
+--  (segment exchange of any lengths, both new arcs next to neighbours),
+--  2-opt* between tours (tails swapped, or crossed with reversal: 2-opt
+--  across two tours through a common depot), cross-exchange between tours,
+--  the old moves (random move, move to another robot, guided move from the
+--  worst robot, swap any, log auction, switch OR alternative), switch
+--  subtree for plan trees (another alternative at an OR node: the leaving
+--  tasks are removed, the coming ones inserted, cheapest or at random, the
+--  touched robots' costs recomputed exactly), and ruin and recreate (a task
+--  and some of its neighbours, for makespan often from the longest tour,
+--  taken out and put back at their best places) on a fixed share of the
+--  work; adaptive move weights; geometric (optionally as several
+--  independent runs sharing the budget), cyclic or the old re-heating
+--  schedule; budgets by time, iterations and convergence; a final descent
+--  (polish) with the neighbour moves. Per-kind statistics in Progress.Kinds.
 --
 --     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
 --     Solve (P.all, O, Best, Stats);
@@ -44,6 +50,16 @@ package Sancta.Allocation.Annealers is
       Posted : Boolean := False;
    end Best_Box;
 
+   type Move_Kind is
+     (Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Random_Move, Move_Owner,
+      Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse,
+      Switch_Subtree, Ruin_Recreate);
+   --  The annealer's neighbourhoods (see the package comment).
+
+   type Kind_Flags is array (Move_Kind) of Boolean;
+
+   Max_Runs : constant := 4;
+
    type Options is record
       Criterion    : Allocation.Criterion := Min_Sum;
       Seed         : Interfaces.Unsigned_64 := 1;
@@ -54,6 +70,12 @@ package Sancta.Allocation.Annealers is
       Convergence  : Long_Long_Integer := 0;
       --  Stop after this many moves without a new best; 0 = never.
       Schedule     : Schedule_Kind := Geometric;
+      Runs         : Natural := 0;
+      --  Geometric: independent anneals, each from a fresh start, sharing
+      --  the budget (the best is kept); 0 = automatic: as many (at most
+      --  Max_Runs) as give each Run_Moves x tasks ** 2 moves, from the move
+      --  rate measured over the first 2% of the budget.
+      Run_Moves    : Long_Float := 1000.0;
       Cycles       : Positive := 3;
       Cycle_Drop   : Long_Float := 3.0;
       --  Cyclic: each cycle restarts from the best at T0 / Cycle_Drop ** k.
@@ -77,11 +99,30 @@ package Sancta.Allocation.Annealers is
       --  Pure makespan only: weight of the total cost in the search
       --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
       Balance_Decay : Boolean := False;
+      Enabled      : Kind_Flags := [others => True];
+      --  The move kinds used (tests exercise one kind at a time).
+      Ruin_Share   : Long_Float := 0.2;
+      --  Share of the move evaluations spent in ruin and recreate moves
+      --  (a task and some of its neighbours taken out and put back at their
+      --  best places); 0 = none.
       Target       : Long_Float := 0.0;
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).
       --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
    end record;
+
+   type Kind_Stats is record
+      Tries     : Long_Long_Integer := 0;
+      --  Moves of this kind drawn.
+      Legal     : Long_Long_Integer := 0;
+      --  ... that gave a legal move (evaluated).
+      Accepted  : Long_Long_Integer := 0;
+      Improving : Long_Long_Integer := 0;
+      --  ... accepted with a strict decrease of the search objective.
+      New_Best  : Long_Long_Integer := 0;
+   end record;
+   type Kind_Stats_Array is array (Move_Kind) of Kind_Stats;
+   --  What each neighbourhood achieved in the annealing phase (profiling).
 
    type Progress is record
       Best          : Long_Float := 0.0;
@@ -92,6 +133,9 @@ package Sancta.Allocation.Annealers is
       Elapsed       : Duration := 0.0;
       Moves_Per_Second : Long_Float := 0.0;
       Time_To_Best  : Duration := 0.0;
+      Kinds         : Kind_Stats_Array;
+      Polish_Gain   : Long_Float := 0.0;
+      --  How much the final descent lowered the objective.
       Switches      : Long_Long_Integer := 0;
       --  Accepted switch subtree moves (plan trees).
    end record;

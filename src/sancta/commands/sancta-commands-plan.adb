@@ -46,10 +46,16 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --target V           stop as soon as the objective is <= V");
       Put_Line ("  --balance W          minmax: initial weight of the total cost in the");
       Put_Line ("                       search objective (default 0.05, 0 = none)");
+      Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
+      Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
+      Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
+      Put_Line ("                       (evaluations per move drawn; default 0.2, 0 = none)");
       Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
       Put_Line ("                       end temperature = start / R (2000)");
       Put_Line ("  --no-polish          skip the final local search");
       Put_Line ("  --check              expensive self-check after every move (slow)");
+      Put_Line ("  --profile            per move kind: drawn, legal, accepted, improving,");
+      Put_Line ("                       new best (on standard error)");
       Put_Line ("  --svg FILE           draw the tours");
       Put_Line ("  --json FILE|-        write the result as JSON (- = standard output)");
       Put_Line ("  --quiet              no tours on standard output, no progress line");
@@ -158,6 +164,36 @@ package body Sancta.Commands.Plan is
          Has_Progress := True;
       end if;
    end Show;
+
+   --  The annealer's per-move-kind statistics, on standard error.
+   procedure Show_Profile (Stats : Annealers.Progress) is
+      function Pct (A, B : Long_Long_Integer) return String is
+        (if B = 0 then "-" else Real_Img (100.0 * Long_Float (A) / Long_Float (B), 2));
+      procedure Cell (S : String; Width : Positive := 11) is
+      begin
+         Put (Standard_Error, [1 .. Integer'Max (0, Width - S'Length) => ' '] & S);
+      end Cell;
+   begin
+      Put_Line (Standard_Error, "move kind         drawn   legal%  accepted%  improving%"
+                & "   new best");
+      for K in Annealers.Move_Kind loop
+         declare
+            X : Annealers.Kind_Stats renames Stats.Kinds (K);
+            N : constant String := Annealers.Move_Kind'Image (K);
+         begin
+            if X.Tries > 0 then
+               Put (Standard_Error, N & [1 .. Integer'Max (1, 14 - N'Length) => ' ']);
+               Cell (Img (X.Tries));
+               Cell (Pct (X.Legal, X.Tries), 9);
+               Cell (Pct (X.Accepted, X.Legal));
+               Cell (Pct (X.Improving, X.Legal), 12);
+               Cell (Img (X.New_Best));
+               New_Line (Standard_Error);
+            end if;
+         end;
+      end loop;
+      Put_Line (Standard_Error, "final descent gained " & Real_Img (Stats.Polish_Gain, 2));
+   end Show_Profile;
 
    --  Parallel restarts: one task per run.
    type Run_Result (R, T : Positive) is record
@@ -321,6 +357,7 @@ package body Sancta.Commands.Plan is
       Crit       : Criterion := Min_Sum;
       Opts       : Annealers.Options;
       Restarts   : Positive := 1;
+      Profile    : Boolean := False;
       Solver     : Unbounded_String := To_Unbounded_String ("anneal");
       Real_Scale : Long_Float := 0.0;
       Open_Tours : Boolean := False;
@@ -440,6 +477,27 @@ package body Sancta.Commands.Plan is
                   when Constraint_Error =>
                      raise Usage_Error with "--target: '" & S & "' is not a positive value";
                end;
+            elsif A = "--runs" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Runs := Natural'Value (S);
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--runs: '" & S & "' is not a count (0 = automatic)";
+               end;
+            elsif A = "--ruin" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Ruin_Share := Long_Float'Value (S);
+                  if Opts.Ruin_Share not in 0.0 .. 10.0 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--ruin: '" & S & "' is not a number in 0 .. 10";
+               end;
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);
@@ -471,6 +529,8 @@ package body Sancta.Commands.Plan is
                Opts.Check := True;
             elsif A = "--quiet" then
                Quiet := True;
+            elsif A = "--profile" then
+               Profile := True;
             elsif A = "--svg" then
                SVG := To_Unbounded_String (Value_Of (A));
             elsif A = "--json" then
@@ -583,6 +643,9 @@ package body Sancta.Commands.Plan is
          end;
          if Has_Progress then
             New_Line (Standard_Error);
+         end if;
+         if Profile and then To_String (Solver) = "anneal" then
+            Show_Profile (Stats);
          end if;
 
          declare

@@ -657,6 +657,66 @@ package body Sancta.Allocation.Tests is
               and then Evaluate (P.all, A, Min_Sum).Max = 5, "open tour");
    end End_Depots;
 
+   ---------------------------------------------------------------------------
+   --  Each neighbourhood alone, as a near random walk with the expensive
+   --  check after every applied move (the move's predicted costs against a
+   --  recomputation): it must be applied often and never mispredict.
+
+   procedure Each_Move_Kind_Checked (Unused : in out Fixture) is
+      use Annealers;
+      Variants : constant array (1 .. 5) of Variant :=
+        [Variant'(others => <>),
+         (Asymmetric => True, Closed => False, others => <>),
+         (Frozen => True, Min_Tasks => 1, Infeasible => True, others => <>),
+         (End_Depot => True, Heterogeneous => True, Alternatives => True, others => <>),
+         (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
+          Alternatives => True, Frozen => True, Min_Tasks => 1, End_Depot => False)];
+      Kinds : constant array (1 .. 6) of Move_Kind :=
+        [Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Log_Auction, Ruin_Recreate];
+      Seed : Interfaces.Unsigned_64 := 3_000;
+   begin
+      for K of Kinds loop
+         for V of Variants loop
+            for C of Pure_Criteria loop
+               Seed := Seed + 1;
+               declare
+                  P : constant Problem_Access := Random_Problem (24, 3, V, Seed);
+                  A : Assignment (P.Robots, P.Tasks);
+                  S : Progress;
+                  O : Options :=
+                    (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 3_000,
+                     Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+                     Polish => False, Adaptive => False, Ruin_Share => 0.0,
+                     Enabled => [others => False], others => <>);
+               begin
+                  O.Enabled (K) := True;
+                  Solve (P.all, O, A, S);
+                  Assert (S.Kinds (K).Accepted > 10,
+                          K'Image & " applied only" & S.Kinds (K).Accepted'Image
+                          & " times of" & S.Kinds (K).Tries'Image);
+                  for Other in Move_Kind loop
+                     Assert (Other = K or else S.Kinds (Other).Tries = 0,
+                             Other'Image & " drawn while only " & K'Image & " is enabled");
+                  end loop;
+                  Assert (Validate (P.all, A) = "", K'Image & ": " & Validate (P.all, A));
+                  --  Then descending with this kind only (tiny temperature).
+                  O.Start_Temperature := 1.0E-6;
+                  O.End_Temperature := 1.0E-7;
+                  O.Initial := True;
+                  declare
+                     Before : constant Long_Float := Evaluate (P.all, A, C).Value;
+                  begin
+                     Solve (P.all, O, A, S);
+                     Assert (Validate (P.all, A) = "", K'Image & ": " & Validate (P.all, A));
+                     Assert (Evaluate (P.all, A, C).Value <= Before,
+                             K'Image & " descent made it worse");
+                  end;
+               end;
+            end loop;
+         end loop;
+      end loop;
+   end Each_Move_Kind_Checked;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -678,6 +738,7 @@ package body Sancta.Allocation.Tests is
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
       Add ("robots ending at their own depots", End_Depots'Access);
       Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
+      Add ("each move kind alone, checked after every move", Each_Move_Kind_Checked'Access);
       return Result;
    end Suite;
 
