@@ -1,9 +1,9 @@
 with Ada.Command_Line;
 with Ada.Directories;
 with Ada.Exceptions;
-with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
+with Sancta.Commands.Options;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 with Sancta.Team.Sim_Demos;
@@ -32,41 +32,15 @@ package body Sancta.Commands.Demo is
          return "share/config/sim-team.xml";
    end Default_Config;
 
-   function Check_Passed (R : Sancta.Team.Demos.Demo_Result) return Boolean is
-      Completed : Boolean := R.All_Done and then R.Duplicates = 0;
-   begin
-      if R.Killed /= Null_Unbounded_String then
-         Completed := Completed and then R.Replanned;
-         for O of R.Orphans loop
-            Completed := Completed and then O.Robot /= Null_Unbounded_String
-              and then O.Robot /= R.Killed;
-         end loop;
-      end if;
-      return Completed;
-   end Check_Passed;
-
    procedure Run is
       Config : Sancta.Team.Sim_Demos.Sim_Demo_Config;
       Check  : Boolean := False;
       I      : Positive := 2;
       Result : Sancta.Team.Demos.Demo_Result;
 
-      function Value return String is
-      begin
-         if I + 1 > Argument_Count then
-            raise Constraint_Error with "option " & Argument (I) & " needs a value";
-         end if;
-         I := I + 1;
-         return Argument (I);
-      end Value;
-
+      function Value return String is (Options.Next_Value (I));
       function Number (Text : String; Name : String) return Long_Float is
-      begin
-         return Long_Float'Value (Text);
-      exception
-         when Constraint_Error =>
-            raise Constraint_Error with "option " & Name & ": """ & Text & """ is not a number";
-      end Number;
+        (Options.Number (Name, Text));
    begin
       Config.Config_File := To_Unbounded_String (Default_Config);
       while I <= Argument_Count loop
@@ -77,17 +51,7 @@ package body Sancta.Commands.Demo is
                Usage;
                return;
             elsif A = "--set" then
-               declare
-                  Item  : constant String := Value;
-                  Equal : constant Natural := Ada.Strings.Fixed.Index (Item, "=");
-               begin
-                  if Equal <= Item'First then
-                     raise Constraint_Error with "option --set: expected NAME=VALUE, found """
-                       & Item & """";
-                  end if;
-                  Config.Overrides.Include
-                    (Item (Item'First .. Equal - 1), Item (Equal + 1 .. Item'Last));
-               end;
+               Options.Parse_Set (Value, Config.Overrides);
             elsif A = "--rate" then
                Config.Rate := Number (Value, A);
                if Config.Rate <= 0.0 or else Config.Rate > 100.0 then
@@ -128,7 +92,7 @@ package body Sancta.Commands.Demo is
       Sancta.Team.Sim_Demos.Run (Config, Result);
       Sancta.Team.Demos.Print_Summary (Result);
       if Check then
-         if Check_Passed (Result) then
+         if Sancta.Team.Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once"
                       & (if Result.Killed = Null_Unbounded_String then ")"
                          else "; the lost robot's unfinished tasks done by survivors)"));
@@ -140,7 +104,7 @@ package body Sancta.Commands.Demo is
          Set_Exit_Status (Failure);
       end if;
    exception
-      when E : Constraint_Error | Sancta.Team.Missions.Format_Error =>
+      when E : Constraint_Error | Options.Usage_Error | Sancta.Team.Missions.Format_Error =>
          Put_Line (Standard_Error, "sancta demo: " & Ada.Exceptions.Exception_Message (E));
          Set_Exit_Status (2);
    end Run;

@@ -10,4 +10,12 @@ private package Sancta.Commands.Options is
    --  "name=value" (name with or without "$") into Into; Usage_Error when
    --  malformed.
 
+   function Next_Value (Index : in out Positive) return String;
+   --  The value following the option at Ada.Command_Line.Argument (Index);
+   --  Index then designates that value. Usage_Error "option X needs a value"
+   --  when the command line ends there.
+
+   function Number (Option, Text : String) return Long_Float;
+   --  Text as a number; Usage_Error "option X: "T" is not a number".
+
 end Sancta.Commands.Options;

@@ -4,6 +4,7 @@ with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Team.Agents;
+with Sancta.Commands.Options;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 
@@ -35,22 +36,9 @@ package body Sancta.Commands.Team is
       I      : Positive := 2;
       Result : Sancta.Team.Demos.Demo_Result;
 
-      function Value return String is
-      begin
-         if I + 1 > Argument_Count then
-            raise Constraint_Error with "option " & Argument (I) & " needs a value";
-         end if;
-         I := I + 1;
-         return Argument (I);
-      end Value;
-
+      function Value return String is (Options.Next_Value (I));
       function Number (Text : String; Name : String) return Long_Float is
-      begin
-         return Long_Float'Value (Text);
-      exception
-         when Constraint_Error =>
-            raise Constraint_Error with "option " & Name & ": """ & Text & """ is not a number";
-      end Number;
+        (Options.Number (Name, Text));
    begin
       Config.Mission_File := To_Unbounded_String (Default_Mission);
       while I <= Argument_Count loop
@@ -73,6 +61,9 @@ package body Sancta.Commands.Team is
                Config.Kill := False;
             elsif A = "--kill-at" then
                Config.Kill_Fraction := Number (Value, A);
+               if Config.Kill_Fraction not in 0.0 .. 1.0 then
+                  raise Constraint_Error with "option --kill-at: expected a fraction in [0, 1]";
+               end if;
             elsif A = "--lease" then
                Config.Lease := Duration (Number (Value, A));
                if Config.Lease < 0.1 then
@@ -99,9 +90,7 @@ package body Sancta.Commands.Team is
       Sancta.Team.Demos.Run (Config, Result);
       Sancta.Team.Demos.Print_Summary (Result);
       if Check then
-         if Result.All_Done and then Result.Duplicates = 0
-           and then (Result.Killed = Null_Unbounded_String or else Result.Replanned)
-         then
+         if Sancta.Team.Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once)");
          else
             Put_Line ("check: FAILED");
@@ -109,7 +98,7 @@ package body Sancta.Commands.Team is
          end if;
       end if;
    exception
-      when E : Constraint_Error | Sancta.Team.Missions.Format_Error =>
+      when E : Constraint_Error | Options.Usage_Error | Sancta.Team.Missions.Format_Error =>
          Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
          Usage;
          Set_Exit_Status (2);

@@ -5,6 +5,7 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with RCL.Contexts;
+with Sancta.Commands.Options;
 with Sancta.Geometry;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
@@ -39,23 +40,12 @@ package body Sancta.Commands.Team_Agent is
       Run_For  : Duration := 120.0;
       I        : Positive := 2;
 
-      function Value return String is
-      begin
-         if I + 1 > Argument_Count then
-            raise Constraint_Error with "option " & Argument (I) & " needs a value";
-         end if;
-         I := I + 1;
-         return Argument (I);
-      end Value;
+      function Value return String is (Options.Next_Value (I));
 
       function Number return Real is
          Name : constant String := Argument (I);
-         Text : constant String := Value;
       begin
-         return Real'Value (Text);
-      exception
-         when Constraint_Error =>
-            raise Constraint_Error with "option " & Name & ": """ & Text & """ is not a number";
+         return Real (Options.Number (Name, Value));
       end Number;
    begin
       Config.Verbose := True;
@@ -204,7 +194,7 @@ package body Sancta.Commands.Team_Agent is
          end if;
       end;
    exception
-      when E : Constraint_Error | Missions.Format_Error =>
+      when E : Constraint_Error | Options.Usage_Error | Missions.Format_Error =>
          Put_Line (Standard_Error, "sancta team-agent: " & Ada.Exceptions.Exception_Message (E));
          Usage;
          Set_Exit_Status (2);

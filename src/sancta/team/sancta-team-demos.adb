@@ -97,6 +97,19 @@ package body Sancta.Team.Demos is
       return Result;
    end Unfinished;
 
+   function Check_Passed (Result : Demo_Result) return Boolean is
+      Passed : Boolean := Result.All_Done and then Result.Duplicates = 0;
+   begin
+      if Result.Killed /= Null_Unbounded_String then
+         Passed := Passed and then Result.Replanned;
+         for O of Result.Orphans loop
+            Passed := Passed and then O.Robot /= Null_Unbounded_String
+              and then O.Robot /= Result.Killed;
+         end loop;
+      end if;
+      return Passed;
+   end Check_Passed;
+
    procedure Resolve_Orphans (Result : in out Demo_Result) is
    begin
       for O of Result.Orphans loop

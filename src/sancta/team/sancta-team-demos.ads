@@ -135,6 +135,11 @@ package Sancta.Team.Demos is
 
    procedure Print_Summary (Result : Demo_Result);
 
+   function Check_Passed (Result : Demo_Result) return Boolean;
+   --  What "--check" asserts: every task done exactly once and, when a
+   --  robot was lost, a re-planning round and each of its unfinished tasks
+   --  done by a survivor.
+
    procedure Note_First_Plan
      (Result : in out Demo_Result;
       S      : Plans.Snapshot;
