@@ -627,6 +627,23 @@ package body Sancta.Allocation.Annealers is
    end Best_Insert;
 
    --  Takes the tasks of List out of their tours (they must be movable).
+   procedure Shuffle (G : in out Random.Generator; Items : in out Count_Array; Last : Natural)
+     with Pre => Items'First = 1 and then Last <= Items'Last;
+   --  Fisher-Yates shuffle of Items (1 .. Last).
+
+   procedure Shuffle (G : in out Random.Generator; Items : in out Count_Array; Last : Natural) is
+   begin
+      for I in reverse 2 .. Last loop
+         declare
+            J : constant Positive := 1 + Random.Below (G, I);
+            X : constant Natural := Items (I);
+         begin
+            Items (I) := Items (J);
+            Items (J) := X;
+         end;
+      end loop;
+   end Shuffle;
+
    procedure Remove_Tasks (P : Problem; S : in out State; List : Count_Array) is
       Gone : Boolean_Array (1 .. S.NT) := [others => False];
       First : Count_Array (1 .. S.NR) := [others => 0];
@@ -676,15 +693,7 @@ package body Sancta.Allocation.Annealers is
             Order (N) := T;
          end if;
       end loop;
-      for I in reverse 2 .. N loop
-         declare
-            J : constant Positive := 1 + Random.Below (G, I);
-            X : constant Positive := Order (I);
-         begin
-            Order (I) := Order (J);
-            Order (J) := X;
-         end;
-      end loop;
+      Shuffle (G, Order, N);
       --  Minimum counts first: the nearest free feasible task to each start.
       for R in 1 .. P.Robots loop
          while S.Len (R) < P.Min_Tasks loop
@@ -1254,15 +1263,7 @@ package body Sancta.Allocation.Annealers is
          D.Gone (D.Under (K)) := False;
       end loop;
       --  Insert the coming tasks in random order.
-      for I in reverse 2 .. NA loop
-         declare
-            J : constant Positive := 1 + Random.Below (G, I);
-            X : constant Positive := D.Added (I);
-         begin
-            D.Added (I) := D.Added (J);
-            D.Added (J) := X;
-         end;
-      end loop;
+      Shuffle (G, D.Added, NA);
       declare
          Cheapest : constant Boolean := Random.Below (G, 4) /= 0;
       begin
@@ -1731,15 +1732,7 @@ package body Sancta.Allocation.Annealers is
                List (N) := S.Near (Seed_T, I);
             end if;
          end loop;
-         for I in reverse 2 .. N loop
-            declare
-               J : constant Positive := 1 + Random.Below (G, I);
-               Y : constant Positive := List (I);
-            begin
-               List (I) := List (J);
-               List (J) := Y;
-            end;
-         end loop;
+         Shuffle (G, List, N);
          if not Best_Saved then
             Save_Best;
          end if;
