@@ -11,6 +11,8 @@ import signal
 import subprocess
 import time
 
+import pubsub_support  # noqa: F401  (loopback CYCLONEDDS_URI, own domain when run alone)
+
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SANCTA = REPO / "bin" / "sancta"
 MISSION = REPO / "share" / "missions" / "office-team.xml"
