@@ -1,0 +1,326 @@
+package body Sancta.Allocation.Annealers.Moves is
+
+   procedure Clear (Mv : in out Move) is
+   begin
+      Mv.A.Robot := 0;
+      Mv.A.Count := 0;
+      Mv.B.Robot := 0;
+      Mv.B.Count := 0;
+      Mv.Or_Node := 0;
+   end Clear;
+
+   function No_Move return Move is
+   begin
+      return M : Move do
+         Clear (M);
+      end return;
+   end No_Move;
+
+   procedure Add (T : in out Tour_Plan; Robot : Positive; First, Last : Natural;
+                  Reversed : Boolean := False) is
+   begin
+      if First <= Last then
+         T.Count := T.Count + 1;
+         T.Segments (T.Count) := (Kind => Span, Robot => Robot, First => First,
+                                  Last => Last, Reversed => Reversed, Task_Id => 0,
+                                  Location => 0);
+      end if;
+   end Add;
+
+   procedure Add_Single (T : in out Tour_Plan; Task_Id, Location : Positive) is
+   begin
+      T.Count := T.Count + 1;
+      T.Segments (T.Count) := (Kind => Single, Task_Id => Task_Id, Location => Location,
+                               Robot => 1, First => 1, Last => 0, Reversed => False);
+   end Add_Single;
+
+   function Make_Weights (P : Problem; C : Criterion; Scale_Sum : Cost) return Weights is
+   begin
+      if C.Sum_Weight = 0.0 and then C.Ave_Weight = 0.0 and then P.Robots > 1 then
+         --  Pure makespan: plateaus everywhere; a tiny total-cost term
+         --  breaks ties without ever trading a unit of makespan.
+         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)));
+      end if;
+      return (C, 0.0);
+   end Make_Weights;
+
+   --  The cost (length, sum of completion times, both with the multiplier
+   --  and Infinity per infeasible task) and task count of a planned tour.
+   procedure Evaluate_Tour
+     (P : Problem; S : State; T : Tour_Plan; Length, Completion : out Cost;
+      Count : out Natural)
+   is
+      R    : constant Positive := T.Robot;
+      Here : Natural := P.Start (R);
+      Time : Cost := 0;
+      Sum  : Cost := 0;
+      Bad  : Natural := 0;
+      M    : constant Cost := Cost (P.Multiplier (R));
+   begin
+      Count := 0;
+      for K in 1 .. T.Count loop
+         declare
+            G : Segment renames T.Segments (K);
+         begin
+            if G.Kind = Single then
+               Time := Time + Robot_Distance (P, R, Here, G.Location);
+               Sum := Sum + Time;
+               Here := G.Location;
+               Count := Count + 1;
+               if not P.Can_Do (R, G.Task_Id) then
+                  Bad := Bad + 1;
+               end if;
+            else
+               declare
+                  RS : constant Positive := G.Robot;
+                  N  : constant Cost := Cost (G.Last - G.First + 1);
+               begin
+                  if RS /= R and then (Has_Own_Costs (P, R) or else Has_Own_Costs (P, RS)) then
+                     --  Another robot's segment in a different metric: arc
+                     --  by arc in R's own costs (its prefix sums are RS's).
+                     for K2 in G.First .. G.Last loop
+                        declare
+                           I : constant Positive :=
+                             (if G.Reversed then G.Last - (K2 - G.First) else K2);
+                        begin
+                           Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, I));
+                           Sum := Sum + Time;
+                           Here := S.Location_At (RS, I);
+                        end;
+                     end loop;
+                  elsif not G.Reversed then
+                     Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, G.First));
+                     Sum := Sum + N * (Time - S.Forward_Cost (RS, G.First))
+                       + S.Forward_Sum (RS, G.Last) - S.Forward_Sum (RS, G.First - 1);
+                     Time := Time + S.Forward_Cost (RS, G.Last) - S.Forward_Cost (RS, G.First);
+                     Here := S.Location_At (RS, G.Last);
+                  else
+                     Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, G.Last));
+                     Sum := Sum + N * (Time + S.Backward_Cost (RS, G.Last))
+                       - (S.Backward_Sum (RS, G.Last) - S.Backward_Sum (RS, G.First - 1));
+                     Time := Time + S.Backward_Cost (RS, G.Last)
+                       - S.Backward_Cost (RS, G.First);
+                     Here := S.Location_At (RS, G.First);
+                  end if;
+                  Count := Count + Natural (N);
+                  if not P.All_Feasible then
+                     for I in G.First .. G.Last loop
+                        if not P.Can_Do (R, S.Task_At (RS, I)) then
+                           Bad := Bad + 1;
+                        end if;
+                     end loop;
+                  end if;
+               end;
+            end if;
+         end;
+      end loop;
+      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+      Length := M * Time + Cost (Bad) * Infinity;
+      Completion := M * Sum + Cost (Bad) * Infinity;
+   end Evaluate_Tour;
+
+   procedure Evaluate_Move
+     (P : Problem; S : State; W : Weights; Mv : in out Move; Valid : out Boolean)
+   is
+      A : constant Natural := Mv.A.Robot;
+      --  Positive but for a switch subtree move (no tour plans).
+      B : constant Natural := Mv.B.Robot;
+      Max, Sum, Completion : Cost;
+   begin
+      if Mv.Or_Node /= 0 then
+         --  Switch subtree: evaluated when proposed (Plan_Trees).
+         Valid := True;
+         return;
+      end if;
+      Mv.New_Active := S.Active_Tasks;
+      Evaluate_Tour (P, S, Mv.A, Mv.New_A_Cost, Mv.New_A_Completion, Mv.New_A_Length);
+      Valid := Mv.New_A_Length >= P.Min_Tasks or else Mv.New_A_Length >= S.Length (A);
+      Sum := S.Total_Cost - S.Robot_Cost (A) + Mv.New_A_Cost;
+      Completion := S.Total_Completion - S.Robot_Completion (A) + Mv.New_A_Completion;
+      Max := (if W.C.Max_Weight = 0.0 then 0
+              else Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost));
+      --  The makespan only when the criterion uses it (saves O (log R)).
+      if B /= 0 then
+         Evaluate_Tour (P, S, Mv.B, Mv.New_B_Cost, Mv.New_B_Completion, Mv.New_B_Length);
+         Valid := Valid and then
+           (Mv.New_B_Length >= P.Min_Tasks or else Mv.New_B_Length >= S.Length (B));
+         Sum := Sum - S.Robot_Cost (B) + Mv.New_B_Cost;
+         Completion := Completion - S.Robot_Completion (B) + Mv.New_B_Completion;
+         if W.C.Max_Weight /= 0.0 then
+            Max := Cost'Max (Max, Mv.New_B_Cost);
+         end if;
+      end if;
+      Mv.New_Max := Max;
+      Mv.New_Sum := Sum;
+      Mv.New_Completion := Completion;
+      Mv.Value := Objective (W, Max, Sum, Completion, S.Active_Tasks);
+   end Evaluate_Move;
+
+   --  Writes a planned tour into Buffer (tasks); Keep is the length of the
+   --  prefix it shares with the current tour of T.Robot.
+   procedure Render (S : State; T : Tour_Plan; Buffer : in out Count_Array;
+                     Length : out Natural; Keep : out Natural) is
+      First_Segment : Positive := 1;
+   begin
+      Length := 0;
+      Keep := 0;
+      if T.Count >= 1 and then T.Segments (1).Kind = Span
+        and then T.Segments (1).Robot = T.Robot
+        and then not T.Segments (1).Reversed and then T.Segments (1).First = 1
+      then
+         Keep := T.Segments (1).Last;
+         Length := Keep;
+         First_Segment := 2;
+      end if;
+      for K in First_Segment .. T.Count loop
+         declare
+            G : Segment renames T.Segments (K);
+         begin
+            if G.Kind = Single then
+               Length := Length + 1;
+               Buffer (Length) := G.Task_Id;
+            elsif not G.Reversed then
+               for I in G.First .. G.Last loop
+                  Length := Length + 1;
+                  Buffer (Length) := S.Task_At (G.Robot, I);
+               end loop;
+            else
+               for I in reverse G.First .. G.Last loop
+                  Length := Length + 1;
+                  Buffer (Length) := S.Task_At (G.Robot, I);
+               end loop;
+            end if;
+         end;
+      end loop;
+   end Render;
+
+   procedure Apply (P : Problem; S : in out State; Mv : Move) is
+      Length_A, Length_B, Keep_A, Keep_B : Natural := 0;
+      Buffer_A, Buffer_B : Count_Array (1 .. S.Positions);
+      A : constant Positive := Mv.A.Robot;
+      B : constant Natural := Mv.B.Robot;
+   begin
+      Render (S, Mv.A, Buffer_A, Length_A, Keep_A);
+      if B /= 0 then
+         Render (S, Mv.B, Buffer_B, Length_B, Keep_B);
+      end if;
+      if Mv.Switch_Task /= 0 then
+         S.Choice (Mv.Switch_Task) := Mv.Switch_To;
+      end if;
+      for I in Keep_A + 1 .. Length_A loop
+         S.Task_At (A, I) := Buffer_A (I);
+      end loop;
+      S.Length (A) := Length_A;
+      if B /= 0 then
+         for I in Keep_B + 1 .. Length_B loop
+            S.Task_At (B, I) := Buffer_B (I);
+         end loop;
+         S.Length (B) := Length_B;
+      end if;
+      Rebuild (P, S, A, Keep_A + 1);
+      if B /= 0 then
+         Rebuild (P, S, B, Keep_B + 1);
+      end if;
+   end Apply;
+
+   procedure Verify (P : Problem; S : State; Mv : Move; Predicted : Boolean) is
+      Sum, Completion, Max : Cost := 0;
+      Seen : Count_Array (1 .. S.Tasks) := [others => 0];
+
+      procedure Fail (What : String) with No_Return;
+      procedure Fail (What : String) is
+      begin
+         raise Program_Error with "annealer check failed: " & What;
+      end Fail;
+   begin
+      for R in 1 .. S.Robots loop
+         declare
+            Here : Natural := P.Start (R);
+            Time, Time_Sum : Cost := 0;
+            Bad : Natural := 0;
+            M : constant Cost := Cost (P.Multiplier (R));
+            RC, RCm : Cost;
+         begin
+            if S.Length (R) < P.Frozen_Length (R) then
+               Fail ("robot" & R'Image & " lost frozen tasks");
+            end if;
+            for I in 1 .. S.Length (R) loop
+               declare
+                  T : constant Positive := S.Task_At (R, I);
+                  L : constant Natural := Location_Of (P, T, S.Choice (T));
+               begin
+                  if I <= P.Frozen_Length (R) and then P.Frozen (R, I) /= T then
+                     Fail ("frozen prefix of robot" & R'Image & " changed");
+                  end if;
+                  Seen (T) := Seen (T) + 1;
+                  if S.Owner (T) /= R or else S.Position (T) /= I then
+                     Fail ("position index of task" & T'Image);
+                  end if;
+                  Time := Time + Robot_Distance (P, R, Here, L);
+                  Time_Sum := Time_Sum + Time;
+                  if not P.Can_Do (R, T) then
+                     Bad := Bad + 1;
+                  end if;
+                  Here := L;
+               end;
+            end loop;
+            Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+            RC := M * Time + Cost (Bad) * Infinity;
+            RCm := M * Time_Sum + Cost (Bad) * Infinity;
+            if RC /= S.Robot_Cost (R) or else RCm /= S.Robot_Completion (R) then
+               Fail ("robot" & R'Image & " cost" & S.Robot_Cost (R)'Image & " /"
+                     & S.Robot_Completion (R)'Image
+                     & " recomputed" & RC'Image & " /" & RCm'Image);
+            end if;
+            if Predicted then
+               if R = Mv.A.Robot
+                 and then (RC /= Mv.New_A_Cost or else RCm /= Mv.New_A_Completion)
+               then
+                  Fail ("move prediction for robot" & R'Image & ":" & Mv.New_A_Cost'Image
+                        & " /" & Mv.New_A_Completion'Image & " actual" & RC'Image & " /"
+                        & RCm'Image);
+               end if;
+               if R = Mv.B.Robot
+                 and then (RC /= Mv.New_B_Cost or else RCm /= Mv.New_B_Completion)
+               then
+                  Fail ("move prediction for robot" & R'Image & ":" & Mv.New_B_Cost'Image
+                        & " actual" & RC'Image);
+               end if;
+            end if;
+            Sum := Sum + RC;
+            Completion := Completion + RCm;
+            Max := Cost'Max (Max, RC);
+         end;
+      end loop;
+      for T in 1 .. S.Tasks loop
+         if S.Active (T) /= Is_Active (P, S.Selection, T) then
+            Fail ("active flag of task" & T'Image);
+         elsif Seen (T) /= (if S.Active (T) then 1 else 0) then
+            Fail ("task" & T'Image & " (active: " & S.Active (T)'Image & ") appears"
+                  & Seen (T)'Image & " times");
+         elsif not S.Active (T) and then S.Owner (T) /= 0 then
+            Fail ("inactive task" & T'Image & " has an owner");
+         end if;
+      end loop;
+      if Active_Count (P, S.Selection) /= S.Active_Tasks then
+         Fail ("active count" & S.Active_Tasks'Image);
+      end if;
+      if Predicted and then Mv.Or_Node /= 0
+        and then (Mv.New_Sum /= S.Total_Cost or else Mv.New_Completion /= S.Total_Completion
+                  or else Mv.New_Max /= Current_Max (S)
+                  or else Mv.New_Active /= S.Active_Tasks)
+      then
+         Fail ("switch subtree prediction: sum" & Mv.New_Sum'Image & " actual"
+               & S.Total_Cost'Image & ", completion" & Mv.New_Completion'Image & " actual"
+               & S.Total_Completion'Image & ", max" & Mv.New_Max'Image & " actual"
+               & Current_Max (S)'Image);
+      end if;
+      if Sum /= S.Total_Cost or else Completion /= S.Total_Completion
+        or else Max /= Current_Max (S)
+      then
+         Fail ("totals: sum" & S.Total_Cost'Image & " vs" & Sum'Image & ", max"
+               & Current_Max (S)'Image & " vs" & Max'Image);
+      end if;
+   end Verify;
+
+end Sancta.Allocation.Annealers.Moves;

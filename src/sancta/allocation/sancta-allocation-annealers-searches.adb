@@ -1,0 +1,819 @@
+with Ada.Numerics.Long_Elementary_Functions;
+with Sancta.Allocation.Annealers.Construction; use Sancta.Allocation.Annealers.Construction;
+with Sancta.Allocation.Annealers.Neighbourhoods;
+use Sancta.Allocation.Annealers.Neighbourhoods;
+
+package body Sancta.Allocation.Annealers.Searches is
+
+   use Ada.Numerics.Long_Elementary_Functions;
+   use Ada.Real_Time;
+
+   Initial_Weights : constant Kind_Reals :=
+     [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Or3_Near => 2.0, Cross_Near => 1.5,
+      Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
+      Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
+      Segment_Move => 0.5, Random_Reverse => 0.5,
+      Switch_Subtree => 0.5, Ruin_Recreate => 0.0];
+   --  Ruin_Recreate is not drawn: it runs on its share of evaluations.
+
+   overriding procedure Finalize (This : in out Search) is
+   begin
+      Free (This.Tours);
+      Free (This.Switch);
+   end Finalize;
+
+   ---------------------------------------------------------------------------
+   --  Small helpers.
+
+   function True_Value (This : Search) return Long_Float is
+     (Value (This.Opts.Criterion, Current_Max (This.Tours.all), This.Tours.Total_Cost,
+             This.Tours.Total_Completion, This.Tours.Active_Tasks));
+   --  The criterion itself (no tie-break).
+
+   procedure Save_Best (This : in out Search) is
+   begin
+      Store (This.Tours.all, This.Best);
+      This.Best_Saved := True;
+   end Save_Best;
+
+   procedure Check (This : Search; P : Problem; Mv : Move := No_Move;
+                    Predicted : Boolean := False) is
+   begin
+      if This.Opts.Check then
+         Verify (P, This.Tours.all, Mv, Predicted);
+      end if;
+   end Check;
+
+   procedure Restart_From_Current (This : in out Search; P : Problem) is
+   begin
+      This.Current := Current_Value (P, This.Tours.all, This.Guide);
+   end Restart_From_Current;
+
+   procedure Note_New_Best (This : in out Search; Kind : Move_Kind; Value : Long_Float) is
+   begin
+      This.Best_Value := Value;
+      This.Best_Saved := False;
+      This.Last_Best_Move := This.Moves;
+      This.Best_Time := To_Duration (Clock - This.Started);
+      This.Kinds (Kind).New_Best := This.Kinds (Kind).New_Best + 1;
+      if This.Opts.Target > 0.0 and then True_Value (This) <= This.Opts.Target then
+         This.Stop := True;
+      end if;
+   end Note_New_Best;
+
+   function Accepts (This : in out Search; Delta_Value : Long_Float) return Boolean is
+     (Delta_Value <= 0.0
+      or else (Delta_Value < 30.0 * This.Temperature
+               and then Random.Uniform (This.Generator)
+                        < Exp (-Delta_Value / This.Temperature)));
+   --  The Metropolis rule (never uphill by more than 30 temperatures).
+
+   function Statistics (This : Search) return Progress is
+     (Best => This.Best_Value, Current => This.Current, Temperature => This.Temperature,
+      Moves => This.Moves, Accepted => This.Accepted, Elapsed => This.Elapsed,
+      Moves_Per_Second => (if This.Elapsed > 0.0
+                           then Long_Float (This.Moves) / Long_Float (This.Elapsed)
+                           else 0.0),
+      Time_To_Best => This.Best_Time, Kinds => This.Kinds,
+      Polish_Gain => This.Polish_Gain, Switches => This.Switches);
+
+   procedure Send_Report (This : in out Search) is
+   begin
+      if This.Opts.Box /= null then
+         if not This.Best_Saved then
+            Save_Best (This);
+         end if;
+         This.Opts.Box.Post (This.Best, This.Best_Value);
+      end if;
+      if This.Report /= null then
+         This.Report (Statistics (This));
+      end if;
+   end Send_Report;
+
+   ---------------------------------------------------------------------------
+   --  Drawing and proposing moves.
+
+   function Pick_Kind (This : in out Search) return Move_Kind is
+      Total : Long_Float := 0.0;
+      X     : Long_Float;
+   begin
+      for M in Move_Kind loop
+         Total := Total + This.Weight (M);
+      end loop;
+      X := Random.Uniform (This.Generator) * Total;
+      for M in Move_Kind loop
+         X := X - This.Weight (M);
+         if X < 0.0 then
+            return M;
+         end if;
+      end loop;
+      return Or_Opt_Near;
+   end Pick_Kind;
+
+   function Worst_Robot (S : State) return Positive is
+      Worst : Positive := 1;
+   begin
+      for R in 2 .. S.Robots loop
+         if S.Robot_Cost (R) > S.Robot_Cost (Worst) then
+            Worst := R;
+         end if;
+      end loop;
+      return Worst;
+   end Worst_Robot;
+   --  The robot with the largest cost (the first of equals).
+
+   --  Guided move (from the worst robot to another) and log auction (task
+   --  T anywhere): the best of Log_Tries random re-insertions.
+   procedure Propose_Best_Insert
+     (This : in out Search; P : Problem; T : Positive; Guided : Boolean;
+      Mv : in out Move; Ok : out Boolean)
+   is
+      S : State renames This.Tours.all;
+      Source : Natural := T;
+      Best_Mv, Candidate : Move;
+      Found, Legal : Boolean := False;
+   begin
+      Ok := False;
+      if Guided then
+         --  A random movable task of the robot with the worst cost.
+         declare
+            Worst : constant Positive := Worst_Robot (S);
+            Free_Length : constant Natural := S.Length (Worst) - P.Frozen_Length (Worst);
+         begin
+            if Free_Length = 0 then
+               return;
+            end if;
+            Source := S.Task_At
+              (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (This.Generator, Free_Length));
+         end;
+      end if;
+      for Try in 1 .. This.Log_Tries loop
+         Random_Insert (P, S, This.Generator, Source, Guided, Candidate, Legal);
+         if Legal then
+            Evaluate_Move (P, S, This.Guide, Candidate, Legal);
+            if Legal and then (not Found or else Candidate.Value < Best_Mv.Value) then
+               Best_Mv := Candidate;
+               Found := True;
+            end if;
+         end if;
+      end loop;
+      if Found then
+         Mv := Best_Mv;
+         Ok := True;
+      end if;
+   end Propose_Best_Insert;
+
+   --  Another alternative of an OR task T, at the best of a few random
+   --  places (its own place among them).
+   procedure Propose_Switch_Or
+     (This : in out Search; P : Problem; T : Positive; Mv : in out Move; Ok : out Boolean)
+   is
+      S : State renames This.Tours.all;
+      G : Random.Generator renames This.Generator;
+      C : Positive := 1 + Random.Below (G, P.Alt_Count (T) - 1);
+      R : constant Positive := S.Owner (T);
+      I : constant Positive := S.Position (T);
+      Candidate, Best_Mv : Move;
+      Legal : Boolean;
+   begin
+      if C >= S.Choice (T) then
+         C := C + 1;
+      end if;
+      Relocate (S, Best_Mv, R, I, I, R, I, False, Legal,
+                New_Location => Location_Of (P, T, C));
+      Evaluate_Move (P, S, This.Guide, Best_Mv, Legal);
+      for Try in 1 .. This.Log_Tries loop
+         declare
+            R2 : constant Positive := 1 + Random.Below (G, S.Robots);
+            Q  : constant Natural := Random_Robot_Position (P, S, G, R2);
+         begin
+            if R2 /= R or else (Q /= I and then Q + 1 /= I) then
+               Relocate (S, Candidate, R, I, I, R2, Q, False, Legal,
+                         New_Location => Location_Of (P, T, C));
+               if Legal then
+                  Evaluate_Move (P, S, This.Guide, Candidate, Legal);
+                  if Legal and then Candidate.Value < Best_Mv.Value then
+                     Best_Mv := Candidate;
+                  end if;
+               end if;
+            end if;
+         end;
+      end loop;
+      Mv := Best_Mv;
+      Mv.Switch_Task := T;
+      Mv.Switch_To := C;
+      Ok := True;
+   end Propose_Switch_Or;
+
+   procedure Propose
+     (This : in out Search; P : Problem; Kind : Move_Kind; Mv : in out Move; Ok : out Boolean)
+   is
+      S : State renames This.Tours.all;
+      G : Random.Generator renames This.Generator;
+      K : constant Positive := This.Neighbours;
+      T : constant Natural := Random_Task (P, S, G);
+   begin
+      Ok := False;
+      Mv.Switch_Task := 0;
+      Mv.Or_Node := 0;
+      if T = 0 then
+         return;
+      end if;
+      case Kind is
+         when Switch_Subtree =>
+            Propose_Switch (P, S, G, This.Guide, This.Locked, This.Switch.all, Mv, Ok);
+         when Or_Opt_Near =>
+            Or_Opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
+                    Random.Below (G, 4), Mv, Ok);
+         when Two_Opt_Near =>
+            Two_Opt (P, S, T, 1 + Random.Below (G, K), Random.Below (G, 4), Mv, Ok);
+         when Or3_Near =>
+            Or_3opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, K),
+                     Random.Below (G, 2), Mv, Ok);
+         when Cross_Near =>
+            Cross_Exchange (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
+                            Random.Below (G, 4), Mv, Ok);
+         when Random_Move =>
+            declare
+               R : constant Positive := S.Owner (T);
+               Q : constant Natural := Random_Robot_Position (P, S, G, R);
+            begin
+               if Q /= S.Position (T) and then Q + 1 /= S.Position (T) then
+                  Relocate (S, Mv, R, S.Position (T), S.Position (T), R, Q, False, Ok);
+               end if;
+            end;
+         when Move_Owner =>
+            Random_Insert (P, S, G, T, True, Mv, Ok);
+         when Guided_Move | Log_Auction =>
+            Propose_Best_Insert (This, P, T, Kind = Guided_Move, Mv, Ok);
+         when Segment_Move =>
+            --  A random segment (any length) of T's tour, moved to a
+            --  random place of a random robot, maybe reversed.
+            declare
+               R1 : constant Positive := S.Owner (T);
+               I  : constant Positive := S.Position (T);
+               J  : constant Positive := I + Random.Below (G, S.Length (R1) - I + 1);
+               R2 : constant Positive := 1 + Random.Below (G, S.Robots);
+               Q  : constant Natural := Random_Robot_Position (P, S, G, R2);
+            begin
+               if R2 /= R1 or else Q + 1 < I or else Q > J then
+                  Relocate (S, Mv, R1, I, J, R2, Q, Random.Below (G, 2) = 0, Ok);
+               end if;
+            end;
+         when Random_Reverse =>
+            declare
+               R1 : constant Positive := S.Owner (T);
+               I  : constant Positive := S.Position (T);
+               J  : constant Positive := I + Random.Below (G, S.Length (R1) - I + 1);
+            begin
+               if J > I then
+                  Clear (Mv);
+                  Mv.A.Robot := R1;
+                  Add (Mv.A, R1, 1, I - 1);
+                  Add (Mv.A, R1, I, J, True);
+                  Add (Mv.A, R1, J + 1, S.Length (R1));
+                  Ok := True;
+               end if;
+            end;
+         when Swap_Any =>
+            declare
+               U : constant Natural := Random_Task (P, S, G);
+            begin
+               if U /= 0 then
+                  Swap (S, T, U, Mv, Ok);
+               end if;
+            end;
+         when Ruin_Recreate =>
+            null;  --  Not a single move: see Ruin_And_Recreate.
+         when Switch_Or =>
+            if P.Alt_Count (T) > 1 then
+               Propose_Switch_Or (This, P, T, Mv, Ok);
+            end if;
+      end case;
+   end Propose;
+
+   procedure Apply_Move (This : in out Search; P : Problem; Mv : Move) is
+   begin
+      if Mv.Or_Node /= 0 then
+         Apply_Switch (P, This.Tours.all, This.Switch.all);
+      else
+         Apply (P, This.Tours.all, Mv);
+      end if;
+      Check (This, P, Mv, Predicted => True);
+   end Apply_Move;
+
+   ---------------------------------------------------------------------------
+   --  One step: a drawn move, or ruin and recreate.
+
+   function Ruin_Due (This : Search) return Boolean is
+     (This.Only_Ruin
+      or else (This.Opts.Ruin_Share > 0.0 and then This.Opts.Enabled (Ruin_Recreate)
+               and then Long_Float (This.Ruin_Evaluations)
+                        < This.Opts.Ruin_Share * Long_Float (This.Moves)));
+
+   function Ruin_Seed (This : in out Search; P : Problem) return Natural is
+      --  Makespan criteria: half the time a task of the longest tour.
+      S : State renames This.Tours.all;
+   begin
+      if This.Guide.C.Max_Weight > 0.0 and then P.Robots > 1
+        and then Random.Below (This.Generator, 2) = 0
+      then
+         declare
+            Worst : constant Positive := Worst_Robot (S);
+            N : constant Natural := S.Length (Worst) - P.Frozen_Length (Worst);
+         begin
+            if N > 0 then
+               return S.Task_At
+                 (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (This.Generator, N));
+            end if;
+         end;
+      end if;
+      return Random_Task (P, S, This.Generator);
+   end Ruin_Seed;
+
+   --  Ruin and recreate (a large neighbourhood move): a random task and up
+   --  to Neighbours of its candidate neighbours leave their tours and are
+   --  put back one by one, in random order, at their best places for the
+   --  search objective (any robot); the result is accepted or undone like
+   --  any move.
+   procedure Ruin_And_Recreate (This : in out Search; P : Problem) is
+      S      : State renames This.Tours.all;
+      Seed_T : constant Natural := Ruin_Seed (This, P);
+      List   : Count_Array (1 .. This.Neighbours + 1);
+      N      : Natural := 0;
+      Want   : Positive;
+      Old_Length : constant Count_Array (1 .. P.Robots) := S.Length;
+      Ok     : Boolean := True;
+      V, Delta_Value : Long_Float;
+      X : Kind_Stats renames This.Kinds (Ruin_Recreate);
+   begin
+      X.Tries := X.Tries + 1;
+      if Seed_T = 0 then
+         This.Ruin_Evaluations := This.Ruin_Evaluations + 1;
+         return;
+      end if;
+      Want := 2 + Random.Below (This.Generator, This.Neighbours);
+      N := 1;
+      List (1) := Seed_T;
+      for I in 1 .. S.Near_Count (Seed_T) loop
+         exit when N >= Want;
+         if Movable (P, S, S.Near (Seed_T, I)) then
+            N := N + 1;
+            List (N) := S.Near (Seed_T, I);
+         end if;
+      end loop;
+      Shuffle (This.Generator, List, N);
+      if not This.Best_Saved then
+         Save_Best (This);
+      end if;
+      Store (S, This.Backup);
+      Remove_Tasks (P, S, List (1 .. N));
+      for I in 1 .. N loop
+         Best_Insert (P, S, This.Guide, List (I));
+      end loop;
+      This.Ruin_Evaluations :=
+        This.Ruin_Evaluations + Long_Long_Integer (N * (S.Active_Tasks + P.Robots));
+      for R in 1 .. P.Robots loop
+         if S.Length (R) < P.Min_Tasks and then S.Length (R) < Old_Length (R) then
+            Ok := False;
+         end if;
+      end loop;
+      V := Current_Value (P, S, This.Guide);
+      Delta_Value := V - This.Current;
+      if Ok and then Accepts (This, Delta_Value) then
+         X.Legal := X.Legal + 1;
+         X.Accepted := X.Accepted + 1;
+         This.Accepted := This.Accepted + 1;
+         This.Current := V;
+         if Delta_Value < 0.0 then
+            X.Improving := X.Improving + 1;
+         end if;
+         declare
+            Goal_Value : constant Long_Float := Current_Value (P, S, This.Goal);
+         begin
+            if Goal_Value < This.Best_Value - 1.0E-9 then
+               Note_New_Best (This, Ruin_Recreate, Goal_Value);
+            end if;
+         end;
+      else
+         if Ok then
+            X.Legal := X.Legal + 1;
+         end if;
+         Load (P, S, This.Backup);
+      end if;
+      Check (This, P);
+   end Ruin_And_Recreate;
+
+   --  A drawn move: proposed, evaluated, accepted by the Metropolis rule
+   --  (the best is saved before leaving a better solution).
+   procedure Try_Move (This : in out Search; P : Problem) is
+      Kind : constant Move_Kind := Pick_Kind (This);
+      Mv   : Move;
+      Ok   : Boolean;
+      Delta_Value, Goal_Value : Long_Float;
+      X    : Kind_Stats renames This.Kinds (Kind);
+   begin
+      Propose (This, P, Kind, Mv, Ok);
+      This.Tries (Kind) := This.Tries (Kind) + 1.0;
+      X.Tries := X.Tries + 1;
+      if Ok then
+         Evaluate_Move (P, This.Tours.all, This.Guide, Mv, Ok);
+      end if;
+      if not Ok then
+         return;
+      end if;
+      X.Legal := X.Legal + 1;
+      Delta_Value := Mv.Value - This.Current;
+      if not Accepts (This, Delta_Value) then
+         This.Since_Improve := This.Since_Improve + 1;
+         return;
+      end if;
+      Goal_Value := Objective (This.Goal, Mv.New_Max, Mv.New_Sum, Mv.New_Completion,
+                               Mv.New_Active);
+      if not This.Best_Saved and then Goal_Value > This.Best_Value then
+         Save_Best (This);
+      end if;
+      Apply_Move (This, P, Mv);
+      This.Accepted := This.Accepted + 1;
+      if Mv.Or_Node /= 0 then
+         This.Switches := This.Switches + 1;
+      end if;
+      X.Accepted := X.Accepted + 1;
+      This.Current := Mv.Value;
+      if Delta_Value < 0.0 then
+         This.Score (Kind) := This.Score (Kind) + 1.0;
+         X.Improving := X.Improving + 1;
+      end if;
+      if This.Current < This.Cycle_Best then
+         This.Cycle_Best := This.Current;
+         This.Since_Improve := 0;
+      else
+         This.Since_Improve := This.Since_Improve + 1;
+      end if;
+      if Goal_Value < This.Best_Value - 1.0E-9 then
+         This.Score (Kind) := This.Score (Kind) + 2.0;
+         Note_New_Best (This, Kind, Goal_Value);
+      end if;
+   end Try_Move;
+
+   ---------------------------------------------------------------------------
+   --  Set-up.
+
+   procedure Choose_Move_Kinds (This : in out Search; P : Problem) is
+      W : Kind_Reals renames This.Weight;
+   begin
+      W := Initial_Weights;
+      if not (for some T in 1 .. P.Tasks => P.Alt_Count (T) > 1) then
+         W (Switch_Or) := 0.0;
+      end if;
+      if not (for some O in 1 .. Or_Count (P) =>
+                not This.Locked (O) and then Alternatives (P, O) > 1)
+      then
+         W (Switch_Subtree) := 0.0;
+      end if;
+      if P.Robots = 1 then
+         W (Move_Owner) := 0.0;
+         W (Guided_Move) := 0.0;
+         W (Cross_Near) := 0.0;
+      end if;
+      for M in Move_Kind loop
+         if not This.Opts.Enabled (M) then
+            W (M) := 0.0;
+         end if;
+      end loop;
+      if (for all M in Move_Kind => W (M) = 0.0) then
+         if not This.Opts.Enabled (Ruin_Recreate) then
+            raise Constraint_Error with "annealer: no move kind enabled";
+         end if;
+         This.Only_Ruin := True;
+      end if;
+   end Choose_Move_Kinds;
+
+   --  Temperatures from the mean uphill delta of 300 sampled moves.
+   procedure Sample_Temperatures (This : in out Search; P : Problem) is
+      Sum_Up : Long_Float := 0.0;
+      N_Up   : Natural := 0;
+      Mv     : Move;
+      Ok     : Boolean;
+      T0, T1 : Long_Float;
+   begin
+      for I in 1 .. 300 loop
+         Propose (This, P, Pick_Kind (This), Mv, Ok);
+         if Ok then
+            Evaluate_Move (P, This.Tours.all, This.Guide, Mv, Ok);
+            if Ok and then Mv.Value > This.Current
+              and then Mv.Value - This.Current < 0.5 * Long_Float (Infinity)
+            then
+               Sum_Up := Sum_Up + (Mv.Value - This.Current);
+               N_Up := N_Up + 1;
+            end if;
+         end if;
+      end loop;
+      T0 := (if N_Up > 0 then This.Opts.Start_Factor * Sum_Up / Long_Float (N_Up) else 1.0);
+      if This.Opts.Start_Temperature > 0.0 then
+         T0 := This.Opts.Start_Temperature;
+      end if;
+      T1 := (if This.Opts.End_Temperature > 0.0 then This.Opts.End_Temperature
+             else T0 / This.Opts.End_Ratio);
+      This.Start_Temperature := T0;
+      This.End_Temperature := Long_Float'Min (T1, T0);
+      This.Temperature := T0;
+      This.Reheat_Temperature := T0;
+   end Sample_Temperatures;
+
+   procedure Start
+     (This   : in out Search;
+      P      : Problem;
+      Opts   : Options;
+      Best   : Assignment;
+      Report : Reporter) is
+   begin
+      if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 and then Opts.Convergence <= 0 then
+         raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
+      end if;
+      This.Opts := Opts;
+      This.Report := Report;
+      This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
+      This.Tours := New_State (P, This.Neighbours);
+      This.Generator := Random.Seeded (Opts.Seed);
+      This.Started := Clock;
+      This.Next_Report := This.Started + To_Time_Span (Opts.Report_Every);
+      This.Runs := (if Opts.Runs > 0 then Opts.Runs else 1);
+      This.Runs_Decided := Opts.Runs > 0 or else Opts.Schedule /= Geometric
+        or else (Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0);
+      This.Switch := New_Switch (P);
+      This.Log_Tries := Natural (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
+      Compute_Neighbours (P, This.Tours.all);
+      for O in 1 .. Or_Count (P) loop
+         This.Locked (O) := Is_Locked (P, O);
+      end loop;
+      Choose_Move_Kinds (This, P);
+      if Opts.Initial then
+         declare
+            V : constant String := Validate (P, Best);
+         begin
+            if V /= "" and then (V'Length < 6 or else V (V'First .. V'First + 5) /= "robot ") then
+               raise Constraint_Error with "annealer: bad initial assignment: " & V;
+            end if;
+         end;
+         Load (P, This.Tours.all, Best);
+      else
+         Construct (P, This.Tours.all, Opts.Criterion, This.Generator);
+      end if;
+      This.Goal := Make_Weights (P, Opts.Criterion, This.Tours.Total_Cost);
+      This.Guide := This.Goal;
+      if This.Goal.Tie > 0.0 then
+         This.Initial_Balance :=
+           (if Opts.Balance >= 0.0 then Opts.Balance else 1.0 / Long_Float (P.Robots));
+         This.Guide.Tie := Long_Float'Max (This.Goal.Tie, This.Initial_Balance);
+      end if;
+      Check (This, P);
+      Restart_From_Current (This, P);
+      This.Best_Value := Current_Value (P, This.Tours.all, This.Goal);
+      Save_Best (This);
+      Sample_Temperatures (This, P);
+      This.Cycle_Best := This.Current;
+   end Start;
+
+   ---------------------------------------------------------------------------
+   --  Budget and schedule (every 128 moves).
+
+   --  The share of the budget used (0 .. 1; may exceed 1), setting Stop
+   --  when it is spent.
+   function Budget_Used (This : in out Search; Now : Time) return Long_Float is
+      O : Options renames This.Opts;
+      X : Long_Float := 0.0;
+   begin
+      This.Elapsed := To_Duration (Now - This.Started);
+      if O.Time_Limit > 0.0 then
+         X := Long_Float (This.Elapsed) / Long_Float (O.Time_Limit);
+         This.Stop := This.Stop
+           or else This.Elapsed >= O.Time_Limit * (if O.Polish then 0.97 else 1.0);
+      end if;
+      if O.Iterations > 0 then
+         X := Long_Float'Max (X, Long_Float (This.Moves) / Long_Float (O.Iterations));
+         This.Stop := This.Stop or else This.Moves >= O.Iterations;
+      end if;
+      if O.Convergence > 0 then
+         This.Stop := This.Stop or else
+           (This.Moves - This.Last_Best_Move >= O.Convergence
+            and then (O.Time_Limit > 0.0 or else O.Iterations > 0
+                      or else This.Moves >= 10 * O.Convergence));
+         --  Alone, it applies once the schedule is half way down.
+         if O.Time_Limit <= 0.0 and then O.Iterations <= 0 then
+            --  Convergence only: cool over 20 stagnation windows.
+            X := Long_Float (This.Moves) / (20.0 * Long_Float (O.Convergence));
+         end if;
+      end if;
+      return X;
+   end Budget_Used;
+
+   --  Geometric: T0 -> T1 over each of Runs independent runs sharing the
+   --  budget (their number decided after 2% of it when automatic).
+   procedure Geometric_Step (This : in out Search; P : Problem; X : Long_Float) is
+      T0 : constant Long_Float := This.Start_Temperature;
+      T1 : constant Long_Float := This.End_Temperature;
+      Run_Share : Long_Float;
+   begin
+      if not This.Runs_Decided and then X >= 0.02 then
+         --  As many runs (at most Max_Runs) as the budget gives
+         --  Opts.Run_Moves x tasks ** 2 moves each.
+         This.Runs_Decided := True;
+         This.Runs := Positive (Long_Float'Max (1.0, Long_Float'Min
+           (Long_Float (Max_Runs), Long_Float'Floor
+              (Long_Float (This.Moves) / X
+               / (This.Opts.Run_Moves * Long_Float (P.Tasks) ** 2)))));
+      end if;
+      Run_Share := X * Long_Float (This.Runs) - Long_Float (This.Run);
+      if Run_Share >= 1.0 and then This.Run + 1 < This.Runs then
+         if not This.Best_Saved then
+            Save_Best (This);
+         end if;
+         This.Run := Natural'Min (This.Runs - 1, Natural (Long_Float'Floor
+                                                            (X * Long_Float (This.Runs))));
+         Construct (P, This.Tours.all, This.Opts.Criterion, This.Generator);
+         Check (This, P);
+         Restart_From_Current (This, P);
+         Run_Share := X * Long_Float (This.Runs) - Long_Float (This.Run);
+      end if;
+      This.Temperature := T0 * (T1 / T0) ** Long_Float'Min (1.0, Run_Share);
+   end Geometric_Step;
+
+   --  Cyclic: cycles of geometric cooling; each new cycle restarts from the
+   --  best so far, at a start temperature divided by Cycle_Drop per cycle.
+   procedure Cyclic_Step (This : in out Search; P : Problem; X : Long_Float) is
+      T0 : constant Long_Float := This.Start_Temperature;
+      T1 : constant Long_Float := This.End_Temperature;
+      C : constant Long_Float := X * Long_Float (This.Opts.Cycles);
+      K : constant Natural :=
+        Natural (Long_Float'Min (Long_Float (This.Opts.Cycles - 1), Long_Float'Floor (C)));
+      F : constant Long_Float := Long_Float'Min (1.0, C - Long_Float (K));
+      Cycle_Start : constant Long_Float := Long_Float'Max (T1, T0 / This.Opts.Cycle_Drop ** K);
+   begin
+      if K /= This.Cycle then
+         This.Cycle := K;
+         if not This.Best_Saved then
+            Save_Best (This);
+         end if;
+         Load (P, This.Tours.all, This.Best);
+         Restart_From_Current (This, P);
+      end if;
+      This.Temperature := Cycle_Start * (T1 / Cycle_Start) ** F;
+   end Cyclic_Step;
+
+   --  Reheat: divide the temperature by 1.85 after a stretch without
+   --  improvement, back to T0 after a long stretch without a new best.
+   procedure Reheat_Step (This : in out Search) is
+   begin
+      if This.Since_Improve > 20_000 then
+         This.Reheat_Temperature :=
+           Long_Float'Max (This.End_Temperature, This.Reheat_Temperature / 1.85);
+         This.Since_Improve := 0;
+         This.Cycle_Best := This.Current;
+      end if;
+      if This.Moves - This.Last_Best_Move > 1_000_000
+        and then This.Reheat_Temperature <= This.End_Temperature
+      then
+         This.Reheat_Temperature := This.Start_Temperature;
+         This.Last_Best_Move := This.Moves;
+      end if;
+      This.Temperature := This.Reheat_Temperature;
+   end Reheat_Step;
+
+   procedure Adapt_Weights (This : in out Search) is
+   begin
+      for M in Move_Kind loop
+         if This.Tries (M) > 0.0 and then This.Weight (M) > 0.0 then
+            This.Weight (M) := 0.8 * This.Weight (M) + 0.2 * Long_Float'Max
+              (0.05, 20.0 * This.Score (M) / This.Tries (M));
+         end if;
+         This.Score (M) := 0.0;
+         This.Tries (M) := 0.0;
+      end loop;
+   end Adapt_Weights;
+
+   --  Everything done every 128 moves: budget, balance decay, temperature,
+   --  reports, move weights.
+   procedure Checkpoint (This : in out Search; P : Problem) is
+      Now : constant Time := Clock;
+      X   : Long_Float := Budget_Used (This, Now);
+   begin
+      if This.Stop then
+         return;
+      end if;
+      X := Long_Float'Min (1.0, X);
+      if This.Initial_Balance > This.Goal.Tie and then This.Opts.Balance_Decay then
+         This.Guide.Tie := Long_Float'Max
+           (This.Goal.Tie, This.Initial_Balance * (This.Goal.Tie / This.Initial_Balance) ** X);
+         Restart_From_Current (This, P);
+      end if;
+      case This.Opts.Schedule is
+         when Geometric => Geometric_Step (This, P, X);
+         when Cyclic    => Cyclic_Step (This, P, X);
+         when Reheat    => Reheat_Step (This);
+      end case;
+      if Now >= This.Next_Report then
+         This.Next_Report := Now + To_Time_Span (This.Opts.Report_Every);
+         Send_Report (This);
+      end if;
+      if This.Opts.Adaptive and then This.Moves mod 8192 = 0 and then This.Moves > 0 then
+         Adapt_Weights (This);
+      end if;
+   end Checkpoint;
+
+   procedure Anneal (This : in out Search; P : Problem) is
+   begin
+      loop
+         if This.Moves mod 128 = 0 then
+            Checkpoint (This, P);
+            exit when This.Stop;
+         end if;
+         This.Moves := This.Moves + 1;
+         if Ruin_Due (This) then
+            Ruin_And_Recreate (This, P);
+            --  A target reached here stops at the next checkpoint.
+         else
+            Try_Move (This, P);
+            exit when This.Stop;
+         end if;
+      end loop;
+   end Anneal;
+
+   ---------------------------------------------------------------------------
+   --  The end.
+
+   --  Local descent with the neighbour moves until no improvement (or time).
+   procedure Polish (This : in out Search; P : Problem) is
+      S : State renames This.Tours.all;
+      K : constant Positive := This.Neighbours;
+      Improved : Boolean := True;
+      Mv : Move;
+      Ok : Boolean;
+      Rounds : Natural := 0;
+   begin
+      while Improved and then Rounds < 50 loop
+         Improved := False;
+         Rounds := Rounds + 1;
+         for T in 1 .. P.Tasks loop
+            if This.Opts.Time_Limit > 0.0 and then T mod 16 = 0
+              and then To_Duration (Clock - This.Started) > This.Opts.Time_Limit * 1.02
+            then
+               return;
+            end if;
+            if Movable (P, S, T) then
+               for U in 1 .. K loop
+                  for V in 0 .. 13 + 2 * K loop
+                     exit when not Movable (P, S, T);
+                     if V < 8 then
+                        Or_Opt (P, S, T, U, 1 + V / 4 * 2, V mod 4, Mv, Ok);
+                     elsif V < 12 then
+                        Two_Opt (P, S, T, U, V mod 4, Mv, Ok);
+                     elsif V < 14 then
+                        Cross_Exchange (P, S, T, U, 1, (V mod 2), Mv, Ok);
+                     else
+                        Or_3opt (P, S, T, U, 1 + (V - 14) / 2, V mod 2, Mv, Ok);
+                     end if;
+                     Mv.Switch_Task := 0;
+                     if Ok then
+                        Evaluate_Move (P, S, This.Guide, Mv, Ok);
+                        if Ok and then Mv.Value < This.Current - 1.0E-9 then
+                           Apply_Move (This, P, Mv);
+                           Restart_From_Current (This, P);
+                           Improved := True;
+                        end if;
+                     end if;
+                  end loop;
+               end loop;
+            end if;
+         end loop;
+      end loop;
+   end Polish;
+
+   procedure Finish
+     (This : in out Search; P : Problem; Best : in out Assignment; Stats : out Progress) is
+   begin
+      if not This.Best_Saved then
+         Save_Best (This);
+      end if;
+      This.Guide := This.Goal;
+      if This.Opts.Polish then
+         Load (P, This.Tours.all, This.Best);
+         Restart_From_Current (This, P);
+         Polish (This, P);
+         This.Polish_Gain := Long_Float'Max (0.0, This.Best_Value - This.Current);
+         if This.Current < This.Best_Value then
+            This.Best_Value := This.Current;
+            This.Best_Time := To_Duration (Clock - This.Started);
+            Store (This.Tours.all, This.Best);
+         end if;
+      end if;
+      Load (P, This.Tours.all, This.Best);
+      This.Elapsed := To_Duration (Clock - This.Started);
+      This.Best_Value := True_Value (This);
+      This.Current := This.Best_Value;
+      Send_Report (This);
+      Best := This.Best;
+      Stats := Statistics (This);
+   end Finish;
+
+end Sancta.Allocation.Annealers.Searches;

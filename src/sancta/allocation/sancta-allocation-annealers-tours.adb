@@ -1,0 +1,186 @@
+package body Sancta.Allocation.Annealers.Tours is
+
+   --  The max segment tree in its iterative form: leaf of robot R at
+   --  Robots + R - 1, node I the max of nodes 2 I and 2 I + 1.
+
+   procedure Set_Tree_Cost (S : in out State; R : Positive; V : Cost) is
+      I : Positive := S.Robots + R - 1;
+   begin
+      S.Max_Tree (I) := V;
+      while I > 1 loop
+         I := I / 2;
+         S.Max_Tree (I) := Cost'Max (S.Max_Tree (2 * I), S.Max_Tree (2 * I + 1));
+      end loop;
+   end Set_Tree_Cost;
+
+   function Max_Between (S : State; Lo, Hi : Natural) return Cost is
+      --  Max over robots Lo .. Hi (0 when empty).
+      L : Natural := S.Robots + Lo - 1;
+      H : Natural := S.Robots + Hi;  --  half-open
+      M : Cost := 0;
+   begin
+      if Lo > Hi or else Lo < 1 then
+         return 0;
+      end if;
+      while L < H loop
+         if L mod 2 = 1 then
+            M := Cost'Max (M, S.Max_Tree (L));
+            L := L + 1;
+         end if;
+         if H mod 2 = 1 then
+            H := H - 1;
+            M := Cost'Max (M, S.Max_Tree (H));
+         end if;
+         L := L / 2;
+         H := H / 2;
+      end loop;
+      return M;
+   end Max_Between;
+
+   function Max_Except (S : State; A, B : Natural) return Cost is
+      Lo : constant Natural := (if B = 0 then A else Natural'Min (A, B));
+      Hi : constant Natural := (if B = 0 then A else Natural'Max (A, B));
+   begin
+      if S.Robots = 1 then
+         return (if A = 0 then S.Max_Tree (1) else 0);
+      end if;
+      return Cost'Max (Max_Between (S, 1, Lo - 1),
+                       Cost'Max (Max_Between (S, Lo + 1, Hi - 1),
+                                 Max_Between (S, Hi + 1, S.Robots)));
+   end Max_Except;
+
+   procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive) is
+      N : constant Natural := S.Length (R);
+      M : constant Cost := Cost (P.Multiplier (R));
+      F : constant Positive := Positive'Min (From, N + 1);
+      Old_Cost       : constant Cost := S.Robot_Cost (R);
+      Old_Completion : constant Cost := S.Robot_Completion (R);
+      Bad : Natural := 0;
+   begin
+      S.Location_At (R, 0) := P.Start (R);
+      for I in F .. N loop
+         declare
+            T : constant Positive := S.Task_At (R, I);
+            L : constant Natural := Location_Of (P, T, S.Choice (T));
+         begin
+            S.Location_At (R, I) := L;
+            S.Owner (T) := R;
+            S.Position (T) := I;
+            S.Forward_Cost (R, I) :=
+              S.Forward_Cost (R, I - 1) + Robot_Distance (P, R, S.Location_At (R, I - 1), L);
+            S.Backward_Cost (R, I) :=
+              S.Backward_Cost (R, I - 1) + Robot_Distance (P, R, L, S.Location_At (R, I - 1));
+            S.Forward_Sum (R, I) := S.Forward_Sum (R, I - 1) + S.Forward_Cost (R, I);
+            S.Backward_Sum (R, I) := S.Backward_Sum (R, I - 1) + S.Backward_Cost (R, I);
+         end;
+      end loop;
+      S.Location_At (R, N + 1) := P.Finish (R);
+      S.Forward_Cost (R, N + 1) :=
+        S.Forward_Cost (R, N) + Robot_Distance (P, R, S.Location_At (R, N), P.Finish (R));
+      S.Backward_Cost (R, N + 1) :=
+        S.Backward_Cost (R, N) + Robot_Distance (P, R, P.Finish (R), S.Location_At (R, N));
+      if not P.All_Feasible then
+         for I in 1 .. N loop
+            if not P.Can_Do (R, S.Task_At (R, I)) then
+               Bad := Bad + 1;
+            end if;
+         end loop;
+      end if;
+      S.Infeasible (R) := Bad;
+      S.Robot_Cost (R) := M * S.Forward_Cost (R, N + 1) + Cost (Bad) * Infinity;
+      S.Robot_Completion (R) := M * S.Forward_Sum (R, N) + Cost (Bad) * Infinity;
+      S.Total_Cost := S.Total_Cost - Old_Cost + S.Robot_Cost (R);
+      S.Total_Completion := S.Total_Completion - Old_Completion + S.Robot_Completion (R);
+      Set_Tree_Cost (S, R, S.Robot_Cost (R));
+   end Rebuild;
+
+   procedure Compute_Neighbours (P : Problem; S : in out State) is
+      K : constant Positive := S.Neighbours;
+      Dist : Cost_Array (1 .. K) := [others => 0];
+   begin
+      for T in 1 .. S.Tasks loop
+         declare
+            LT : constant Natural := Location_Of (P, T);
+            N  : Natural := 0;
+         begin
+            for U in 1 .. S.Tasks loop
+               if U /= T then
+                  declare
+                     LU : constant Natural := Location_Of (P, U);
+                     D  : constant Cost :=
+                       Cost'Min (P.Distance (LT, LU), P.Distance (LU, LT));
+                     I  : Natural;
+                  begin
+                     if N < K or else D < Dist (N) then
+                        if N < K then
+                           N := N + 1;
+                        end if;
+                        I := N;
+                        while I > 1 and then Dist (I - 1) > D loop
+                           Dist (I) := Dist (I - 1);
+                           S.Near (T, I) := S.Near (T, I - 1);
+                           I := I - 1;
+                        end loop;
+                        Dist (I) := D;
+                        S.Near (T, I) := U;
+                     end if;
+                  end;
+               end if;
+            end loop;
+            S.Near_Count (T) := N;
+         end;
+      end loop;
+   end Compute_Neighbours;
+
+   procedure Load (P : Problem; S : in out State; A : Assignment) is
+   begin
+      S.Choice := A.Choice;
+      S.Selection := A.Branch;
+      S.Active_Tasks := 0;
+      for T in 1 .. S.Tasks loop
+         S.Active (T) := Is_Active (P, S.Selection, T);
+         if S.Active (T) then
+            S.Active_Tasks := S.Active_Tasks + 1;
+         end if;
+         S.Owner (T) := 0;
+         S.Position (T) := 0;
+      end loop;
+      S.Total_Cost := 0;
+      S.Total_Completion := 0;
+      S.Robot_Cost := [others => 0];
+      S.Robot_Completion := [others => 0];
+      for R in 1 .. S.Robots loop
+         S.Length (R) := A.Length (R);
+         for I in 1 .. A.Length (R) loop
+            S.Task_At (R, I) := A.Tour (R, I);
+         end loop;
+         Rebuild (P, S, R, 1);
+      end loop;
+   end Load;
+
+   procedure Store (S : State; A : in out Assignment) is
+   begin
+      A.Choice := S.Choice;
+      A.Branch := S.Selection;
+      for R in 1 .. S.Robots loop
+         A.Length (R) := S.Length (R);
+         for I in 1 .. S.Length (R) loop
+            A.Tour (R, I) := S.Task_At (R, I);
+         end loop;
+      end loop;
+   end Store;
+
+   procedure Shuffle (G : in out Generator; Items : in out Count_Array; Last : Natural) is
+   begin
+      for I in reverse 2 .. Last loop
+         declare
+            J : constant Positive := 1 + Random.Below (G, I);
+            X : constant Natural := Items (I);
+         begin
+            Items (I) := Items (J);
+            Items (J) := X;
+         end;
+      end loop;
+   end Shuffle;
+
+end Sancta.Allocation.Annealers.Tours;

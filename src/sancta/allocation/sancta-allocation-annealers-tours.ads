@@ -1,0 +1,95 @@
+--  The annealer's current solution: one tour per robot held in arrays with
+--  prefix sums of forward and reverse arc costs and of arrival times, the
+--  robots' costs, their total and (in a max segment tree) their maximum,
+--  the position of every task, and the candidate neighbours of every task.
+--
+--     S : State_Access := new State (P.Robots, P.Tasks, K, P.Tasks + 1, 2 * P.Robots);
+--     Compute_Neighbours (P, S.all);
+--     Load (P, S.all, A);        --  from an allocation; Store writes one back
+--     S.Task_At (R, I) := T;  Rebuild (P, S.all, R, From => I);
+with Ada.Unchecked_Deallocation;
+with Sancta.Allocation.Random;
+
+private package Sancta.Allocation.Annealers.Tours is
+
+   subtype Generator is Sancta.Allocation.Random.Generator;
+
+   type Position_Grid is array (Positive range <>, Natural range <>) of Natural;
+   type Cost_Grid is array (Positive range <>, Natural range <>) of Cost;
+   type Neighbour_Grid is array (Positive range <>, Positive range <>) of Natural;
+
+   type State (Robots, Tasks, Neighbours, Positions, Tree_Size : Positive) is record
+      --  Positions = Tasks + 1, Tree_Size = 2 Robots (discriminants must
+      --  appear alone in component constraints).
+      Task_At         : Position_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      --  The task at each position 1 .. Length of each robot's tour.
+      Location_At     : Position_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      --  Location at each position; 0 = start, Length + 1 = finish.
+      Forward_Cost    : Cost_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      --  Base cost from the start to each position, forward.
+      Backward_Cost   : Cost_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      --  Backward_Cost (I) = sum over K < I of D (Location_At (K + 1),
+      --  Location_At (K)): the same arcs travelled in reverse.
+      Forward_Sum     : Cost_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      Backward_Sum    : Cost_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
+      --  Prefix sums of Forward_Cost and Backward_Cost over positions 1 .. I.
+      Length          : Count_Array (1 .. Robots) := [others => 0];
+      Infeasible      : Count_Array (1 .. Robots) := [others => 0];
+      --  Tasks in the tour that the robot cannot do.
+      Owner           : Count_Array (1 .. Tasks) := [others => 0];
+      Position        : Count_Array (1 .. Tasks) := [others => 0];
+      Choice          : Location_Array (1 .. Tasks) := [others => 1];
+      --  Where each task is (Owner 0: not in a tour) and which of its
+      --  alternative locations it uses.
+      Robot_Cost      : Cost_Array (1 .. Robots) := [others => 0];
+      Robot_Completion : Cost_Array (1 .. Robots) := [others => 0];
+      --  Tour cost and sum of completion times (times the multiplier,
+      --  Infinity per infeasible task).
+      Total_Cost, Total_Completion : Cost := 0;
+      Max_Tree        : Cost_Array (1 .. Tree_Size) := [others => 0];
+      --  Robot costs in a max segment tree: leaves Robots .. 2 Robots - 1.
+      Near            : Neighbour_Grid (1 .. Tasks, 1 .. Neighbours) :=
+        [others => [others => 0]];
+      Near_Count      : Count_Array (1 .. Tasks) := [others => 0];
+      --  The candidate neighbours of each task, nearest first.
+      Selection       : Location_Array (1 .. Tasks) := [others => 1];
+      --  Plan trees: the alternative chosen at each OR ordinal ...
+      Active          : Boolean_Array (1 .. Tasks) := [others => True];
+      --  ... the tasks it makes active (only they are in tours; Owner = 0
+      --  for the others) ...
+      Active_Tasks    : Natural := Tasks;
+      --  ... and their number.
+   end record;
+
+   type State_Access is access State;
+   procedure Free is new Ada.Unchecked_Deallocation (State, State_Access);
+
+   function New_State (P : Problem; Neighbours : Positive) return State_Access
+   is (new State (P.Robots, P.Tasks, Neighbours, P.Tasks + 1, 2 * P.Robots));
+
+   function Max_Except (S : State; A, B : Natural) return Cost with Inline;
+   --  The largest robot cost but those of robots A and B (0: none).
+
+   function Current_Max (S : State) return Cost is (S.Max_Tree (1));
+   --  The makespan (with one robot the single leaf is Max_Tree (1) itself).
+
+   procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive);
+   --  Recomputes the caches of robot R from position From on (its tasks in
+   --  Task_At (R, 1 .. Length (R))), its costs, the totals and the tree.
+
+   procedure Compute_Neighbours (P : Problem; S : in out State);
+   --  The Neighbours nearest tasks of each task (by the shorter direction).
+
+   procedure Load (P : Problem; S : in out State; A : Assignment);
+   procedure Store (S : State; A : in out Assignment);
+   --  From / to an allocation.
+
+   function Movable (P : Problem; S : State; T : Positive) return Boolean is
+     (S.Owner (T) /= 0 and then S.Position (T) > P.Frozen_Length (S.Owner (T)));
+   --  Active (in a tour) and not frozen.
+
+   procedure Shuffle (G : in out Generator; Items : in out Count_Array; Last : Natural)
+     with Pre => Items'First = 1 and then Last <= Items'Last;
+   --  Fisher-Yates shuffle of Items (1 .. Last).
+
+end Sancta.Allocation.Annealers.Tours;
