@@ -20,6 +20,8 @@ with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
 with ROSIDL.Type_Hashes.Tests;
+with Sancta.Allocation.Branch_And_Cut.Tests;
+with Sancta.Allocation.Local_Search.Tests;
 with Sancta.Allocation.Plan_Tests;
 with Sancta.Allocation.Tests;
 with Sancta.Team.Tests;
@@ -55,6 +57,8 @@ package body All_Suites is
       Result.Add_Test (RCL.Parameters.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Plan_Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Branch_And_Cut.Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Local_Search.Tests.Suite);
       Result.Add_Test (Sancta.Team.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);

@@ -2,6 +2,7 @@ with Sancta.Allocation.Random;
 with Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Searches;
 with Sancta.Allocation.Annealers.Tours;
+with Sancta.Allocation.Local_Search;
 
 package body Sancta.Allocation.Annealers is
 
@@ -37,6 +38,26 @@ package body Sancta.Allocation.Annealers is
       end return;
    end Greedy_Start;
 
+   --  The local search after the anneal, in the rest of the budget.
+   procedure Improve_Tour
+     (P : Problem; Opts : Options; Best : in out Assignment; Stats : in out Progress)
+   is
+      Search : Local_Search.Statistics;
+      Before : constant Duration := Stats.Elapsed;
+   begin
+      Local_Search.Improve (P, Best, Duration'Max (0.0, Opts.Time_Limit - Before), Opts.Seed,
+                            Search, Neighbours => Opts.Neighbours, Check => Opts.Check);
+      Stats.Elapsed := Before + Search.Elapsed;
+      if Search.After < Search.Before then
+         Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
+         Stats.Current := Stats.Best;
+         Stats.Time_To_Best := Before + Search.Time_To_Best;
+      end if;
+      if Opts.Box /= null then
+         Opts.Box.Post (Best, Stats.Best);
+      end if;
+   end Improve_Tour;
+
    procedure Solve
      (P      : Problem;
       Opts   : Options;
@@ -44,11 +65,20 @@ package body Sancta.Allocation.Annealers is
       Stats  : out Progress;
       Report : Reporter := null)
    is
+      Share : constant Long_Float :=
+        (if Opts.Local_Search > 0.0 and then Opts.Time_Limit > 0.0
+           and then Local_Search.Applies (P)
+         then Long_Float'Min (0.95, Opts.Local_Search) else 0.0);
+      Anneal_Opts : Options := Opts;
       Run : Searches.Search (P.Robots, P.Tasks);
    begin
-      Searches.Start (Run, P, Opts, Best, Report);
+      Anneal_Opts.Time_Limit := Duration (Long_Float (Opts.Time_Limit) * (1.0 - Share));
+      Searches.Start (Run, P, Anneal_Opts, Best, Report);
       Searches.Anneal (Run, P);
       Searches.Finish (Run, P, Best, Stats);
+      if Share > 0.0 then
+         Improve_Tour (P, Opts, Best, Stats);
+      end if;
    end Solve;
 
 end Sancta.Allocation.Annealers;

@@ -22,6 +22,8 @@
 --  independent runs sharing the budget), cyclic or the old re-heating
 --  schedule; budgets by time, iterations and convergence; a final descent
 --  (polish) with the neighbour moves. Per-kind statistics in Progress.Kinds.
+--  On single closed tours, a share of the time may then go to iterated
+--  local search (Opts.Local_Search, package Local_Search).
 --
 --     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
 --     Solve (P.all, O, Best, Stats);
@@ -105,6 +107,10 @@ package Sancta.Allocation.Annealers is
       --  Share of the move evaluations spent in ruin and recreate moves
       --  (a task and some of its neighbours taken out and put back at their
       --  best places); 0 = none.
+      Local_Search : Long_Float := 0.0;
+      --  One robot on a closed symmetric tour (Local_Search.Applies): the
+      --  share of Time_Limit given, after the anneal, to iterated 2-opt /
+      --  Or-opt search with candidate lists and don't-look bits; 0 = none.
       Target       : Long_Float := 0.0;
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).

@@ -8,6 +8,7 @@ with Sancta.Allocation;             use Sancta.Allocation;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
+with Sancta.Allocation.Branch_And_Cut;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Missions;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
@@ -40,6 +41,10 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --cycles N           cyclic schedule: cycles, each from the best (3)");
       Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
       Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
+      Put_Line ("                       exact: Held-Karp up to 12 tasks, else branch and cut");
+      Put_Line ("                       (LP with subtour cuts on GLPK; minsum, or one robot)");
+      Put_Line ("                       from an anneal of a tenth of --time; prints the");
+      Put_Line ("                       proof or, at the time limit, the lower bound and gap");
       Put_Line ("  --real SCALE         real Euclidean distances in fixed point, x SCALE");
       Put_Line ("  --open               open tours (robots do not return)");
       Put_Line ("  --min-tasks N        each robot visits at least N cities (default 1)");
@@ -50,6 +55,9 @@ package body Sancta.Commands.Plan is
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
       Put_Line ("                       (evaluations per move drawn; default 0.2, 0 = none)");
+      Put_Line ("  --lk F               one robot on a closed symmetric tour: share of the");
+      Put_Line ("                       budget for iterated 2-opt/Or-opt local search after");
+      Put_Line ("                       the anneal (default 0.8, 0 = none)");
       Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
       Put_Line ("                       end temperature = start / R (2000)");
       Put_Line ("  --no-polish          skip the final local search");
@@ -350,6 +358,42 @@ package body Sancta.Commands.Plan is
       Close (F);
    end Write_SVG;
 
+   --  --solver exact beyond Held-Karp's size: an anneal of a tenth of the
+   --  budget (at most 5 s) gives the first tour, branch and cut the rest.
+   procedure Solve_By_Branch_And_Cut
+     (P : Problem; Free_Tasks : Natural; Crit : Criterion; Opts : Annealers.Options;
+      Result : out Assignment; Stats : out Annealers.Progress;
+      Proven : out Boolean; Lower_Bound : out Cost; Note : out Unbounded_String)
+   is
+      Why : constant String := Sancta.Allocation.Branch_And_Cut.Supports (P);
+      Budget : constant Duration := (if Opts.Time_Limit > 0.0 then Opts.Time_Limit else 86_400.0);
+      Outcome : Sancta.Allocation.Branch_And_Cut.Result (P.Robots, P.Tasks);
+      O : Annealers.Options := Opts;
+   begin
+      if Why /= "" then
+         raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
+           & " tasks (Held-Karp takes at most" & Sancta.Allocation.Exact.Max_Tasks'Image
+           & ") and branch and cut cannot take it: " & Why;
+      elsif Crit /= Min_Sum and then (P.Robots > 1 or else Crit = Min_Ave) then
+         raise Usage_Error with "--solver exact: branch and cut minimises the total cost "
+           & "(minsum; with one robot also minmax)";
+      end if;
+      O.Criterion := Min_Sum;
+      O.Time_Limit := Duration'Max (0.05, Duration'Min (5.0, Budget / 10));
+      O.Iterations := 0;
+      O.Convergence := 0;
+      Annealers.Solve (P, O, Result, Stats);
+      Sancta.Allocation.Branch_And_Cut.Solve
+        (P, Result, Duration'Max (0.01, Budget - Stats.Elapsed), Outcome);
+      Result := Outcome.Best;
+      Proven := Outcome.Proven;
+      Lower_Bound := Outcome.Lower;
+      Note := To_Unbounded_String
+        ("branch and cut:" & Outcome.Nodes'Image & " nodes," & Outcome.Cuts'Image & " cuts,"
+         & Outcome.Edges'Image & " edges, " & Real_Img (Long_Float (Outcome.Elapsed), 2)
+         & " s after an anneal of " & Real_Img (Long_Float (Stats.Elapsed), 2) & " s");
+   end Solve_By_Branch_And_Cut;
+
    procedure Run (First_Argument : Positive := 2) is
       File       : Unbounded_String;
       Robots     : Positive := 1;
@@ -365,6 +409,10 @@ package body Sancta.Commands.Plan is
       SVG, JSON  : Unbounded_String;
       I          : Natural := First_Argument;
       Time_Set   : Boolean := False;
+      Proven     : Boolean := False;
+      Lower_Bound : Cost := 0;
+      Exact_Note : Unbounded_String;
+      --  --solver exact: the proof or the bound, and how it was obtained.
 
       function Value_Of (Option : String) return String is
       begin
@@ -374,8 +422,24 @@ package body Sancta.Commands.Plan is
          I := I + 1;
          return CL.Argument (I);
       end Value_Of;
+
+      function Number_In (Option : String; Low, High : Long_Float) return Long_Float is
+         S : constant String := Value_Of (Option);
+         X : Long_Float;
+      begin
+         X := Long_Float'Value (S);
+         if X not in Low .. High then
+            raise Constraint_Error;
+         end if;
+         return X;
+      exception
+         when Constraint_Error =>
+            raise Usage_Error with Option & ": '" & S & "' is not a number in "
+              & Real_Img (Low, 1) & " .. " & Real_Img (High, 2);
+      end Number_In;
    begin
       Opts.Time_Limit := 10.0;
+      Opts.Local_Search := 0.8;
       while I <= CL.Argument_Count loop
          declare
             A : constant String := CL.Argument (I);
@@ -487,17 +551,9 @@ package body Sancta.Commands.Plan is
                      raise Usage_Error with "--runs: '" & S & "' is not a count (0 = automatic)";
                end;
             elsif A = "--ruin" then
-               declare
-                  S : constant String := Value_Of (A);
-               begin
-                  Opts.Ruin_Share := Long_Float'Value (S);
-                  if Opts.Ruin_Share not in 0.0 .. 10.0 then
-                     raise Constraint_Error;
-                  end if;
-               exception
-                  when Constraint_Error =>
-                     raise Usage_Error with "--ruin: '" & S & "' is not a number in 0 .. 10";
-               end;
+               Opts.Ruin_Share := Number_In (A, 0.0, 10.0);
+            elsif A = "--lk" then
+               Opts.Local_Search := Number_In (A, 0.0, 0.95);
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);
@@ -623,17 +679,18 @@ package body Sancta.Commands.Plan is
                         Free_Tasks := Free_Tasks + 1;
                      end if;
                   end loop;
-                  if Free_Tasks > Sancta.Allocation.Exact.Max_Tasks
-                    and then not Has_Plan (P.all)
+                  if Free_Tasks <= Sancta.Allocation.Exact.Max_Tasks or else Has_Plan (P.all)
                   then
                      --  (With a plan, the active tasks of each selection
-                     --  count: the solver itself says when too many.)
-                     raise Usage_Error with "--solver exact: the instance has" & Free_Tasks'Image
-                       & " tasks; the exact solver takes at most"
-                       & Sancta.Allocation.Exact.Max_Tasks'Image;
+                     --  count: Held-Karp itself says when too many.)
+                     Result := Sancta.Allocation.Exact.Solve (P.all, Crit);
+                     Proven := True;
+                     Exact_Note := To_Unbounded_String ("Held-Karp");
+                  else
+                     Solve_By_Branch_And_Cut (P.all, Free_Tasks, Crit, Opts, Result, Stats,
+                                              Proven, Lower_Bound, Exact_Note);
                   end if;
                end;
-               Result := Sancta.Allocation.Exact.Solve (P.all, Crit);
             else
                Result := Sancta.Allocation.Baselines.Solve
                  (P.all, (if S = "greedy" then Sancta.Allocation.Baselines.Best_Pair
@@ -695,6 +752,16 @@ package body Sancta.Commands.Plan is
                          & Real_Img (E.Value / Scale_Factor, 3)
                          & "  makespan " & Cost_Img (E.Max) & "  total " & Cost_Img (E.Sum)
                          & "  mean completion " & Real_Img (Ave, 2));
+               if To_String (Solver) = "exact" then
+                  Put_Line ("exact: "
+                            & (if Proven then "proven optimal"
+                               elsif Lower_Bound = 0 then "time limit reached before a bound"
+                               else "time limit reached: lower bound "
+                                    & Cost_Img (Lower_Bound) & ", gap "
+                                    & Real_Img (100.0 * Long_Float (E.Sum - Lower_Bound)
+                                                / Long_Float (Lower_Bound), 3) & "%")
+                            & " (" & To_String (Exact_Note) & ")");
+               end if;
                if To_String (Solver) = "anneal" then
                   Put_Line ("moves " & Img (Stats.Moves) & "  ("
                             & Real_Img (Stats.Moves_Per_Second / 1.0E6, 2)
@@ -722,6 +789,9 @@ package body Sancta.Commands.Plan is
                           & ", ""total"": " & Cost_Img (E.Sum)
                           & ", ""mean_completion"": " & Real_Img (Ave, 4)
                           & ", ""valid"": " & (if V = "" then "true" else "false")
+                          & ", ""proven"": " & (if Proven then "true" else "false")
+                          & ", ""lower_bound"": "
+                          & (if Lower_Bound > 0 then Cost_Img (Lower_Bound) else "null")
                           & ", ""time_used"": " & Real_Img (Long_Float (Stats.Elapsed), 3)
                           & ", ""time_to_best"": " & Real_Img (Long_Float (Stats.Time_To_Best), 3)
                           & ", ""moves"": " & Img (Stats.Moves)

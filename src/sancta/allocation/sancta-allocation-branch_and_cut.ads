@@ -1,0 +1,67 @@
+--  An exact solver by branch and cut (the role Concorde played for the
+--  original SANCTA): the LP relaxation of the symmetric TSP (degree
+--  equations, subtour-elimination cuts found by minimum-cut separation:
+--  connected components, then every cut of the phase of Stoer-Wagner below
+--  2; then blossoms by the odd-component heuristic), solved by GLPK's
+--  simplex on a sparse edge set priced against all edges, reduced-cost
+--  fixing against the heuristic's tour, and depth-first branching on the
+--  most fractional edge. It returns the best tour with a
+--  proof (lower bound = tour cost) or, at its time limit, the best tour
+--  and the lower bound reached (the gap).
+--
+--  Transformations (as the paper did): robots become depot nodes of one
+--  Hamiltonian cycle (arc robot -> task from the robot's start, arc task ->
+--  depot to the common finish; depot -> depot = an idle robot, forbidden
+--  when every robot must work); open tours end "nowhere" at cost 0; an
+--  asymmetric cycle is solved as a symmetric one on 2 N nodes (each node an
+--  in/out pair joined by a fixed edge).
+--
+--     R : Result (P.Robots, P.Tasks);
+--     Solve (P.all, Start => Greedy, Time_Limit => 60.0, Outcome => R);
+--     --  R.Proven, R.Upper, R.Lower, R.Best
+--
+--  Supported (Supports returns ""): the MinSum criterion (for one robot
+--  every pure criterion but MinAve), no OR alternatives or plan tree, no
+--  frozen prefix, Min_Tasks <= 1; with several robots also one shared cost
+--  function, equal multipliers, all pairs feasible and one finish for all
+--  (the same depot, or open tours). Limit: Max_Nodes cycle nodes.
+with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+
+package Sancta.Allocation.Branch_And_Cut is
+
+   Max_Nodes : constant := 1_200;
+   --  Nodes of the symmetric cycle (2 x (tasks + robots) when asymmetric).
+
+   function Supports (P : Problem) return String;
+   --  "" when P can be solved here; else why not.
+
+   type Result (Robots, Tasks : Positive) is record
+      Best    : Assignment (Robots, Tasks);
+      Upper   : Cost := 0;
+      --  The cost (total of the tours) of Best.
+      Lower   : Cost := 0;
+      --  A proven lower bound on every allocation's total (0: none yet).
+      Proven  : Boolean := False;
+      --  Lower = Upper: Best is optimal.
+      Nodes   : Natural := 0;
+      --  Branch-and-bound nodes solved.
+      Cuts    : Natural := 0;
+      --  Subtour cuts added.
+      Edges   : Natural := 0;
+      --  Edges in the LP at the end (after reduced-cost fixing).
+      Elapsed : Duration := 0.0;
+   end record;
+
+   procedure Solve
+     (P          : Problem;
+      Start      : Assignment;
+      Time_Limit : Duration;
+      Outcome    : out Result)
+     with Pre => Supports (P) = "" and then Start.Robots = P.Robots
+                 and then Start.Tasks = P.Tasks
+                 and then Outcome.Robots = P.Robots and then Outcome.Tasks = P.Tasks;
+   --  Start is a complete allocation (the first upper bound; a good one
+   --  from the annealer makes reduced-cost fixing effective).
+
+end Sancta.Allocation.Branch_And_Cut;
