@@ -7,7 +7,8 @@ repo_root=$(cd "$(dirname "$0")/.." && pwd)
 
 debian_packages=(make gnat gprbuild libxmlada-dom12-dev libxmlada-sax12-dev
                  libaunit22-dev cyclonedds-dev cyclonedds-tools
-                 python3 python3-venv graphviz iproute2)
+                 python3 python3-venv graphviz iproute2
+                 alire)
 [ "${1:-}" = "--bench" ] && debian_packages+=(rt-tests)
 
 missing=()

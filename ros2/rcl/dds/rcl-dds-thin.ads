@@ -1,13 +1,12 @@
---  Not for users: the thin binding to the part of Cyclone DDS's C API that
+--  Private child: the thin binding to the part of Cyclone DDS's C API that
 --  RCL.DDS uses, plus the raw-CDR shim of csrc/rclada_raw_cdr.c. C return
 --  codes stay integers here; RCL.DDS checks them and raises.
 with Interfaces.C;
 with Interfaces.C.Strings;
 with System;
 
-package RCL.DDS.Thin is
+private package RCL.DDS.Thin is
 
-   use Interfaces;
    use type C.int;
 
    subtype Entity_T is C.int;
