@@ -13,7 +13,6 @@ with ROSIDL.Typesupport;
 with Sancta.Geometry;
 with Sancta.Robot.Grids;
 with Sancta.Simulation.Map_Files;
-with Sancta.Simulation.Sim_Tool;
 with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
@@ -453,7 +452,7 @@ package body Sancta.Views.Feeds is
       Scene_Store.Set_Lost_After (Config.Lost_After);
       if World_Name /= "" then
          declare
-            File : constant String := Sancta.Simulation.Sim_Tool.World_File (World_Name);
+            File : constant String := Sancta.Simulation.Map_Files.World_File (World_Name);
          begin
             if File = "" then
                raise Constraint_Error with "--world " & World_Name
