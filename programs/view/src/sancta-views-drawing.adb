@@ -51,14 +51,7 @@ package body Sancta.Views.Drawing is
       Set_Source_Rgba (Cr, Gdouble (C.R), Gdouble (C.G), Gdouble (C.B), Gdouble (Alpha));
    end Set;
 
-   function Img (X : Real) return String is
-      Tenths : constant Long_Long_Integer := Long_Long_Integer (X * 10.0);
-      Units  : constant String := Long_Long_Integer'Image (abs Tenths / 10);
-   begin
-      return (if Tenths < 0 then "-" else "") & Units (Units'First + 1 .. Units'Last) & "."
-        & Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Tenths mod 10),
-                                  Ada.Strings.Left);
-   end Img;
+   function Img (X : Real) return String renames Scenes.Image;
 
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
@@ -573,9 +566,19 @@ package body Sancta.Views.Drawing is
                Words : constant String := Line (K);
             begin
                if Words'Length > Fits then
-                  Row (Words (Words'First .. Words'First + Fits - 1), 10.0);
-                  Y := Y - 1.0;
-                  Row ("      " & Words (Words'First + Fits .. Words'Last), 10.0);
+                  declare
+                     Cut : Natural := Ada.Strings.Fixed.Index
+                       (Words (Words'First .. Words'First + Fits - 1), " ",
+                        Going => Ada.Strings.Backward);
+                     --  The line breaks at the last space that fits.
+                  begin
+                     if Cut <= Words'First + 8 then
+                        Cut := Words'First + Fits - 1;
+                     end if;
+                     Row (Words (Words'First .. Cut), 10.0);
+                     Y := Y - 1.0;
+                     Row ("      " & Words (Cut + 1 .. Words'Last), 10.0);
+                  end;
                else
                   Row (Words, 10.0);
                end if;

@@ -183,6 +183,9 @@ package Sancta.Views.Scenes is
       Mission_Over : Boolean := False;
    end Store;
 
+   function Image (X : Real) return String;
+   --  X with one decimal ("12.3", "-0.5").
+
    function Elapsed return Duration;
    --  Seconds since the program started.
 
