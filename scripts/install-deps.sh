@@ -8,7 +8,12 @@ repo_root=$(cd "$(dirname "$0")/.." && pwd)
 debian_packages=(make gnat gprbuild libxmlada-dom12-dev libxmlada-sax12-dev
                  libaunit22-dev cyclonedds-dev cyclonedds-tools
                  python3 python3-venv graphviz iproute2
-                 libglpk-dev)
+                 libgtkada22-dev fonts-dejavu-core xvfb x11-utils imagemagick
+                 alire libglpk-dev)
+# libgtkada22-dev: sancta-view (GtkAda, Cairo); fonts-dejavu-core: its text;
+# xvfb, x11-utils (xwininfo), imagemagick (import): its tests on a virtual display.
+# alire: the Alire crates' test (scripts/alire-build.sh).
+# libglpk-dev: the branch-and-cut solver (Sancta.Allocation.GLPK).
 [ "${1:-}" = "--bench" ] && debian_packages+=(rt-tests)
 
 missing=()

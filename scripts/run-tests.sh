@@ -4,6 +4,13 @@
 # line "N passed, N failed" summed over all suites. Exits non-zero when any
 # test failed or a suite could not run.
 set -uo pipefail
+# On a shared development machine, full runs queue behind each other (runs in
+# parallel on 2 cores make timing-sensitive suites fail); CI runs alone.
+if [ "${CI:-}" != "true" ] && [ -z "${SANCTA_TESTS_LOCKED:-}" ] && command -v flock >/dev/null; then
+   export SANCTA_TESTS_LOCKED=1
+   echo "run-tests: waiting for /tmp/sancta-run-tests.lock (one full run at a time on this machine)"
+   exec flock /tmp/sancta-run-tests.lock "$0" "$@"
+fi
 source "$(dirname "$0")/env.sh"
 cd "$repo_root"
 
@@ -54,6 +61,17 @@ if [ -d tests/interop ] && ls tests/interop/test_*.py >/dev/null 2>&1; then
          failed=$((failed + 1))
       fi
    fi
+fi
+
+# The Alire crates (ros2/, sancta/) with Debian's alr, offline: one test each.
+echo "== Alire crates (alr build, offline, repository index)"
+scripts/alire-build.sh 2>&1 | tee "$log_dir/alire.txt"
+alire_passed=$(grep -c '^alire: PASS' "$log_dir/alire.txt")
+alire_failed=$(grep -c '^alire: FAIL' "$log_dir/alire.txt")
+passed=$((passed + alire_passed))
+failed=$((failed + alire_failed))
+if [ "$alire_passed" -eq 0 ] && [ "$alire_failed" -eq 0 ]; then
+   failed=$((failed + 1))
 fi
 
 [ "$failed" -gt 0 ] && status=1

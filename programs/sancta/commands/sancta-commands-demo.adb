@@ -4,6 +4,7 @@ with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Commands.Options;
+with Sancta.Installation;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 with Sancta.Team.Sim_Demos;
@@ -18,19 +19,13 @@ package body Sancta.Commands.Demo is
    begin
       Put_Line ("usage: sancta demo [CONFIG.xml] [--set NAME=VALUE]... [--rate X] [--wall-clock]");
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--max SECONDS]");
-      Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check]");
+      Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check] [--view]");
       Put_Line ("  sancta-sim + one 'sancta run CONFIG --agent ID' process per agent;");
       Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
+      Put_Line ("  --view: also open the live view (sancta-view) when a display is set");
    end Usage;
 
-   function Default_Config return String is
-      Exe : constant String := Ada.Directories.Containing_Directory (Command_Name);
-   begin
-      return Exe & "/../share/config/sim-team.xml";
-   exception
-      when others =>
-         return "share/config/sim-team.xml";
-   end Default_Config;
+   function Default_Config return String is (Installation.Share_File ("config/sim-team.xml"));
 
    procedure Run is
       Config : Sancta.Team.Sim_Demos.Sim_Demo_Config;
@@ -78,6 +73,8 @@ package body Sancta.Commands.Demo is
                Config.Verbose := False;
             elsif A = "--check" then
                Check := True;
+            elsif A = "--view" then
+               Config.View := True;
             elsif A'Length > 0 and then A (A'First) = '-' then
                raise Constraint_Error with "unknown option " & A;
             else

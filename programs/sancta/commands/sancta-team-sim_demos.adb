@@ -2,6 +2,7 @@ with Ada.Command_Line;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Indefinite_Vectors;
 with Ada.Directories;
+with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
@@ -315,6 +316,26 @@ package body Sancta.Team.Sim_Demos is
                  False));
       end Start_Agent;
 
+      procedure Start_View is
+         --  Not a child to stop at the end: the window stays open.
+         Display : constant Boolean :=
+           Ada.Environment_Variables.Value ("DISPLAY", "") /= ""
+           or else Ada.Environment_Variables.Value ("WAYLAND_DISPLAY", "") /= "";
+         Args    : Text_Vectors.Vector;
+         Pid     : GNAT.OS_Lib.Process_Id with Unreferenced;
+      begin
+         if not Display then
+            Put_Line ("demo: --view: no display (DISPLAY unset), running without the live view");
+            return;
+         end if;
+         Args.Append ("--world");
+         Args.Append (To_String (View.World));
+         Args.Append ("--team");
+         Args.Append (To_String (View.Team));
+         Pid := Spawn (Program (Config, "sancta-view"), Args, Log_Dir & "/view.log");
+         Put_Line ("demo: live view started (sancta-view, log " & Log_Dir & "/view.log)");
+      end Start_View;
+
       procedure Start_Processes is
          Args : Text_Vectors.Vector;
       begin
@@ -341,6 +362,9 @@ package body Sancta.Team.Sim_Demos is
          for R of View.Non_Robots loop
             Start_Agent (To_String (R.Id));
          end loop;
+         if Config.View then
+            Start_View;
+         end if;
       end Start_Processes;
    begin
       Result := (others => <>);

@@ -57,6 +57,11 @@ package Sancta.Team.Sim_Demos is
       --  Where sancta and sancta-sim are; empty: next to this program,
       --  else on PATH.
       Verbose       : Boolean := True;
+      View          : Boolean := False;
+      --  Also start the live view (sancta-view --world WORLD, its output in
+      --  Out_Dir/view.log) when a display is set (DISPLAY or
+      --  WAYLAND_DISPLAY), else say so and run without it; the view is
+      --  left open at the end (closing it is the user's).
    end record;
 
    procedure Run (Config : Sim_Demo_Config; Result : out Demos.Demo_Result);
