@@ -30,7 +30,7 @@ package body RCL.Services is
    function "<" (L, R : RCL.DDS.GUID) return Boolean is
      (RCL.DDS.Image (L) < RCL.DDS.Image (R));
 
-   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", RCL.DDS."=");
+   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", ROSIDL."=");
 
    protected type GUID_Set is
       --  Deliver may run in several executor tasks at once.
