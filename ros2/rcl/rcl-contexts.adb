@@ -6,6 +6,7 @@ with Ada.Interrupts.Names;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with GNAT.OS_Lib;
+with RCL.Arguments;
 
 package body RCL.Contexts is
 
@@ -32,6 +33,7 @@ package body RCL.Contexts is
       function Localhost_Only return Boolean;
       procedure Set_Shutdown (Wakers : out Waker_Array);
       function Down return Boolean;
+      function Current_Wakers return Waker_Array;
       procedure Register (Hook : Waitset_Access; Key : out Positive);
       procedure Unregister (Key : Positive);
    private
@@ -76,7 +78,8 @@ package body RCL.Contexts is
          New_Part : Participant_Access := new RCL.DDS.Participant;
       begin
          if Part = null then
-            RCL.DDS.Create (New_Part.all, Dom, Local);
+            RCL.DDS.Create (New_Part.all, Dom, Local,
+                            User_Data => "enclave=" & RCL.Arguments.Enclave & ";");
             Part := New_Part;
             Dom_Id := Dom;
             State.Local := Local;
@@ -97,6 +100,7 @@ package body RCL.Contexts is
       end Set_Shutdown;
 
       function Down return Boolean is (Is_Down);
+      function Current_Wakers return Waker_Array is (Hooks);
 
       procedure Register (Hook : Waitset_Access; Key : out Positive) is
       begin
@@ -121,6 +125,7 @@ package body RCL.Contexts is
    procedure Init is
       P : Participant_Access;
    begin
+      RCL.Arguments.Load;
       Install_Signal_Handlers;
       State.Init (P);
    end Init;
@@ -128,6 +133,7 @@ package body RCL.Contexts is
    procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean) is
       P : Participant_Access;
    begin
+      RCL.Arguments.Load;
       Install_Signal_Handlers;
       State.Init (P, Domain, Localhost_Only);
    end Init;
@@ -151,6 +157,18 @@ package body RCL.Contexts is
    end Shutdown;
 
    function Is_Shutdown return Boolean is (State.Down);
+
+   procedure Wake_Executors is
+      Wakers : constant Waker_Array := State.Current_Wakers;
+   begin
+      for W of Wakers loop
+         if W /= null then
+            RCL.DDS.Wake (W.all);
+         end if;
+      end loop;
+   end Wake_Executors;
+
+   function Enclave return String is (RCL.Arguments.Enclave);
 
    procedure Register_Waker (Set : not null Waitset_Access; Key : out Positive) is
    begin
