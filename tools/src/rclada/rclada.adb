@@ -42,6 +42,8 @@ begin
       Param_Command (Args);
    elsif Verb = "interface" then
       Interface_Command (Args);
+   elsif Verb = "security" then
+      Security_Command (Args);
    else
       raise Usage_Error with "unknown verb '" & Verb & "'";
    end if;
@@ -50,7 +52,7 @@ exception
    when E : Usage_Error =>
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       Put_Line (Standard_Error, Usage ((if Verb in "node" | "topic" | "service" | "param"
-                                          | "interface" then Verb else "")));
+                                          | "interface" | "security" then Verb else "")));
       CL.Set_Exit_Status (2);
    when E : Command_Error | RCL.ROS_Exception | RCL.RCL_Timeout | ROSIDL.Unknown_Type
       | ROSIDL.Definition_Error | RCL.Names.Name_Error =>

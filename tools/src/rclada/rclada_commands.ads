@@ -20,6 +20,7 @@ package Rclada_Commands is
    procedure Service_Command (Args : Arguments);
    procedure Param_Command (Args : Arguments);
    procedure Interface_Command (Args : Arguments);
+   procedure Security_Command (Args : Arguments);
 
    function Usage (Verb : String) return String;
    --  The help text of a verb ("" for the command itself).
