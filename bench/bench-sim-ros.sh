@@ -11,7 +11,7 @@ source "$(dirname "$0")/../scripts/env.sh"
 cd "$repo_root"
 mkdir -p out/bench
 rm -f bin/sancta-sim  # may be a debug build from build_all.gpr: relink in release
-gprbuild -P tools/tools.gpr -XBUILD_MODE=release -p -j2 -q sancta_sim.adb 2>&1 \
+gprbuild -P programs/programs.gpr -XBUILD_MODE=release -p -j2 -q sancta_sim.adb 2>&1 \
    | grep -v "no sources of language" || true
 seconds=${SIM_ROS_SECONDS:-30}
 csv=out/bench/sim-ros.csv

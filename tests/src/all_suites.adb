@@ -6,7 +6,7 @@ with Sancta.Logging.Tests;
 with Sancta.Runtime.Configurations.Tests;
 with Sancta.Runtime.Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
-with Sancta.Runtime.ROS_Clocks.Tests;
+with Sancta.Components.ROS_Clocks.Tests;
 with RCL.Clocks.Tests;
 with RCL.Graph.Tests;
 with RCL.Logging.Tests;
@@ -44,7 +44,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
-      Result.Add_Test (Sancta.Runtime.ROS_Clocks.Tests.Suite);
+      Result.Add_Test (Sancta.Components.ROS_Clocks.Tests.Suite);
       Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (RCL.Graph.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);

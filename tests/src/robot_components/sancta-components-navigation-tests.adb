@@ -24,7 +24,6 @@ with Sancta.Runtime.Nodes;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Robot_Lists;
-with Sancta.Simulation.Sim_Tool;
 with Sancta.Simulation.Simulators;
 
 package body Sancta.Components.Navigation.Tests is
@@ -112,7 +111,7 @@ package body Sancta.Components.Navigation.Tests is
       Robot.Odometry.Angular_Bias := 0.003;
       Robot.GPS := (Enabled => True, Rate => 1.0, Std_Dev => 0.3);
       Sim.Initialize
-        (Simulation.Map_Files.Load_World (Simulation.Sim_Tool.World_File ("office")), Seed => 5);
+        (Simulation.Map_Files.Load_World (Simulation.Map_Files.World_File ("office")), Seed => 5);
       Sim.Add_Robot (Robot, Start, Id, "robot1");
       Load_Checked ("tests/data/config/robot-closed-loop.xml", Config);
       N.Create (Config, 1, Clock'Unchecked_Access);

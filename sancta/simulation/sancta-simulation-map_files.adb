@@ -1,9 +1,12 @@
 with Ada.Characters.Handling;
+with Ada.Command_Line;
 with Ada.Containers.Vectors;
 with Ada.Directories;
+with Ada.Environment_Variables;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Ada.Unchecked_Deallocation;
+with GNAT.OS_Lib;
 
 package body Sancta.Simulation.Map_Files is
 
@@ -423,5 +426,50 @@ package body Sancta.Simulation.Map_Files is
          return Load_Walls (File_Name);
       end if;
    end Load_World;
+
+   function Executable_Folder return String is
+      use type GNAT.OS_Lib.String_Access;
+      Found : GNAT.OS_Lib.String_Access :=
+        GNAT.OS_Lib.Locate_Exec_On_Path (Ada.Command_Line.Command_Name);
+   begin
+      if Found = null then
+         return "";
+      end if;
+      declare
+         Result : constant String :=
+           Ada.Directories.Containing_Directory (Ada.Directories.Full_Name (Found.all));
+      begin
+         GNAT.OS_Lib.Free (Found);
+         return Result;
+      end;
+   exception
+      when others =>
+         return "";
+   end Executable_Folder;
+
+   function World_File (Name : String) return String is
+      function Share return String is
+      begin
+         if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
+           and then Ada.Environment_Variables.Value ("SANCTA_ROOT") /= ""
+         then
+            return Ada.Environment_Variables.Value ("SANCTA_ROOT") & "/share/worlds/";
+         end if;
+         return Executable_Folder & "/../share/worlds/";
+      end Share;
+   begin
+      if Name = "" then
+         return "";
+      elsif Ada.Directories.Exists (Name) then
+         return Name;
+      elsif Ada.Strings.Fixed.Index (Name, "/") = 0 then
+         if Ada.Directories.Exists (Share & Name & ".yaml") then
+            return Share & Name & ".yaml";
+         elsif Ada.Directories.Exists (Share & Name & ".walls") then
+            return Share & Name & ".walls";
+         end if;
+      end if;
+      return "";
+   end World_File;
 
 end Sancta.Simulation.Map_Files;

@@ -1,5 +1,4 @@
 with Ada.Real_Time;
-with Ada.Strings.Unbounded;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
@@ -13,7 +12,7 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Schedulers;
 
-package body Sancta.Runtime.ROS_Clocks.Tests is
+package body Sancta.Components.ROS_Clocks.Tests is
 
    use AUnit.Assertions;
    use Ada.Real_Time;
@@ -23,13 +22,13 @@ package body Sancta.Runtime.ROS_Clocks.Tests is
    package Caller is new AUnit.Test_Caller (Fixture);
 
    --  Counts its calls; period 100 ms.
-   type Counter is new Components.Component with record
+   type Counter is new Runtime.Components.Component with record
       Calls : Natural := 0;
    end record;
 
-   overriding procedure Run (This : in out Counter; Next : in out Clocks.Time);
+   overriding procedure Run (This : in out Counter; Next : in out Runtime.Clocks.Time);
 
-   overriding procedure Run (This : in out Counter; Next : in out Clocks.Time) is
+   overriding procedure Run (This : in out Counter; Next : in out Runtime.Clocks.Time) is
    begin
       This.Calls := This.Calls + 1;
       Next := Next + Milliseconds (100);
@@ -43,15 +42,15 @@ package body Sancta.Runtime.ROS_Clocks.Tests is
       Node    : RCL.Nodes.Node := RCL.Nodes.Init ("ros_clock_test_publisher");
       Pub     : RCL.Publishers.Publisher := Node.Publish (Support, "/clock", RCL.QoS.Clock);
       Sim     : aliased ROS_Clock;
-      DB      : aliased Databases.Database;
-      S       : Schedulers.Scheduler;
+      DB      : aliased Runtime.Databases.Database;
+      S       : Runtime.Schedulers.Scheduler;
       C       : constant Counter_Access := new Counter;
-      Base    : constant Clocks.Time := Clocks.Epoch + Seconds (100);
+      Base    : constant Runtime.Clocks.Time := Runtime.Clocks.Epoch + Seconds (100);
 
       procedure Publish_Until (Millis : Natural) is
          --  Publishes /clock = 100 s + Millis until Sim.Now shows it.
          Msg  : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
-         Want : constant Clocks.Time := Base + Milliseconds (Millis);
+         Want : constant Runtime.Clocks.Time := Base + Milliseconds (Millis);
       begin
          Msg ("clock") ("sec").As_Int32 := ROSIDL.Int32 (100 + Millis / 1000);
          Msg ("clock") ("nanosec").As_UInt32 := ROSIDL.UInt32 ((Millis mod 1000) * 1_000_000);
@@ -70,7 +69,7 @@ package body Sancta.Runtime.ROS_Clocks.Tests is
           Instance_Name => Ada.Strings.Unbounded.To_Unbounded_String ("counter"),
           Database => DB'Unchecked_Access, Clock => Sim'Unchecked_Access, others => <>));
       S.Initialize (Sim'Unchecked_Access, "sim");
-      S.Add (Components.Component_Access (C), Base);
+      S.Add (Runtime.Components.Component_Access (C), Base);
       Publish_Until (0);
       S.Run_Due;
       Assert (C.Calls = 1, "first call at 100 s, calls:" & C.Calls'Image);
@@ -105,4 +104,4 @@ package body Sancta.Runtime.ROS_Clocks.Tests is
       return Result;
    end Suite;
 
-end Sancta.Runtime.ROS_Clocks.Tests;
+end Sancta.Components.ROS_Clocks.Tests;

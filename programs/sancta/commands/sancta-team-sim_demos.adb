@@ -17,7 +17,6 @@ with Sancta.Runtime.Configurations;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Rendering;
-with Sancta.Simulation.Sim_Tool;
 with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
@@ -139,7 +138,7 @@ package body Sancta.Team.Sim_Demos is
       if Result.World = Null_Unbounded_String then
          Result.World := Result.Mission.World;
       end if;
-      if Sancta.Simulation.Sim_Tool.World_File (To_String (Result.World)) = "" then
+      if Sancta.Simulation.Map_Files.World_File (To_String (Result.World)) = "" then
          raise Constraint_Error with File & ": world '" & To_String (Result.World)
            & "' is neither a file nor a bundled world";
       end if;
@@ -288,7 +287,7 @@ package body Sancta.Team.Sim_Demos is
       Dir      : constant String := To_String (Config.Out_Dir);
       Log_Dir  : constant String := (if Dir = "" then "out/demo" else Dir);
       World_F  : constant String :=
-        Sancta.Simulation.Sim_Tool.World_File (To_String (View.World));
+        Sancta.Simulation.Map_Files.World_File (To_String (View.World));
       World    : constant Sancta.Simulation.Worlds.World :=
         Sancta.Simulation.Map_Files.Load_World (World_F);
       Children : Child_Maps.Map;

@@ -55,4 +55,9 @@ package Sancta.Simulation.Map_Files is
      (Img : Images.Image; Info : Map_Info) return Worlds.World;
    --  The map-server rule applied to an image.
 
+   function World_File (Name : String) return String;
+   --  Name when it names a file; else the bundled world of that name
+   --  (share/worlds/NAME.yaml, then .walls, under $SANCTA_ROOT or next to
+   --  the program); "" when none.
+
 end Sancta.Simulation.Map_Files;

@@ -12,7 +12,6 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Map_Files;
-with Sancta.Simulation.Sim_Tool;
 with Sancta.Simulation.Worlds;
 
 package body Sancta.Components.Navigation is
@@ -229,7 +228,7 @@ package body Sancta.Components.Navigation is
 
    overriding procedure Start (This : in out Path_Cost) is
       Name : constant String := This.Option_Text ("world");
-      File : constant String := Simulation.Sim_Tool.World_File (Name);
+      File : constant String := Simulation.Map_Files.World_File (Name);
    begin
       if File = "" then
          raise Constraint_Error with "world " & Name & ": no such file or bundled world";
@@ -371,7 +370,7 @@ package body Sancta.Components.Navigation is
      (if Long_Float'Value (Text) > 0.0 then "" else "expected a positive value, found " & Text);
 
    function World_Check (Text : String) return String is
-     (if Simulation.Sim_Tool.World_File (Text) /= "" then ""
+     (if Simulation.Map_Files.World_File (Text) /= "" then ""
       else "no such world file or bundled world: '" & Text & "'");
 
    function Goals_Check (Text : String) return String is (RM.Goals_Problem (Text));

@@ -11,7 +11,7 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Nodes;
-with Sancta.Runtime.ROS_Clocks;
+with Sancta.Components.ROS_Clocks;
 with RCL.Clocks;
 with Sancta.Runtime.Shutdown;
 
@@ -33,7 +33,7 @@ package body Sancta.Commands.Run is
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
 
-   Sim_Clock : aliased Sancta.Runtime.ROS_Clocks.ROS_Clock;
+   Sim_Clock : aliased Sancta.Components.ROS_Clocks.ROS_Clock;
    --  With --sim-time (or use_sim_time:=true): the agents run on ROS time
    --  following /clock (a simulator's time), not on the wall clock.
 

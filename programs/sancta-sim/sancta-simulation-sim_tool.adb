@@ -1,14 +1,11 @@
 with Ada.Command_Line;
 with Ada.Containers.Vectors;
-with Ada.Directories;
-with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
-with GNAT.OS_Lib;
 with Interfaces;
 with RCL.Contexts;
 with RCL.DDS;
@@ -71,51 +68,6 @@ package body Sancta.Simulation.Sim_Tool is
       when Constraint_Error =>
          raise Usage_Error with Option & ": expected a number, found """ & Text & """";
    end To_Real;
-
-   function Executable_Folder return String is
-      use type GNAT.OS_Lib.String_Access;
-      Found : GNAT.OS_Lib.String_Access :=
-        GNAT.OS_Lib.Locate_Exec_On_Path (Command_Name);
-   begin
-      if Found = null then
-         return "";
-      end if;
-      declare
-         Result : constant String :=
-           Ada.Directories.Containing_Directory (Ada.Directories.Full_Name (Found.all));
-      begin
-         GNAT.OS_Lib.Free (Found);
-         return Result;
-      end;
-   exception
-      when others =>
-         return "";
-   end Executable_Folder;
-
-   function World_File (Name : String) return String is
-      function Share return String is
-      begin
-         if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
-           and then Ada.Environment_Variables.Value ("SANCTA_ROOT") /= ""
-         then
-            return Ada.Environment_Variables.Value ("SANCTA_ROOT") & "/share/worlds/";
-         end if;
-         return Executable_Folder & "/../share/worlds/";
-      end Share;
-   begin
-      if Name = "" then
-         return "";
-      elsif Ada.Directories.Exists (Name) then
-         return Name;
-      elsif Ada.Strings.Fixed.Index (Name, "/") = 0 then
-         if Ada.Directories.Exists (Share & Name & ".yaml") then
-            return Share & Name & ".yaml";
-         elsif Ada.Directories.Exists (Share & Name & ".walls") then
-            return Share & Name & ".walls";
-         end if;
-      end if;
-      return "";
-   end World_File;
 
    --  ROS 2 side of one robot --
 
@@ -707,7 +659,7 @@ package body Sancta.Simulation.Sim_Tool is
          raise Usage_Error with "no world given (a bundled name, a .yaml or a .walls file)";
       end if;
       declare
-         File : constant String := World_File (To_String (World_Name));
+         File : constant String := Map_Files.World_File (To_String (World_Name));
       begin
          if File = "" then
             raise Usage_Error with To_String (World_Name)

@@ -8,7 +8,7 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Shutdown;
 with Sancta.Runtime.Values;
-with Sancta.Simulation.Sim_Tool;
+with Sancta.Simulation.Map_Files;
 with Sancta.Team.Agents;
 with Sancta.Team.Grid_Costs;
 with Sancta.Team.Goal_Trackers;
@@ -55,11 +55,11 @@ package body Sancta.Team.Components is
    begin
       if This.Option_Text ("costs") = "straight" then
          return null;
-      elsif World = "" or else Simulation.Sim_Tool.World_File (World) = "" then
+      elsif World = "" or else Simulation.Map_Files.World_File (World) = "" then
          raise Constraint_Error with "team_member: costs=""grid"" needs world= (a bundled"
            & " world or a map file), found '" & World & "'";
       end if;
-      return Grid_Costs.Create (Simulation.Sim_Tool.World_File (World),
+      return Grid_Costs.Create (Simulation.Map_Files.World_File (World),
                                 Robot_Radius => Real (This.Option_Real ("robot_radius")));
    end Leg_Costs;
 

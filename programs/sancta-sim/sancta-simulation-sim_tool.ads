@@ -28,9 +28,4 @@ package Sancta.Simulation.Sim_Tool is
    --  with a message on standard error for bad arguments or files). Ends
    --  after --duration simulated seconds, on Ctrl-C / SIGTERM.
 
-   function World_File (Name : String) return String;
-   --  Name when it names a file; else the bundled world of that name
-   --  (share/worlds/NAME.yaml, then .walls, under $SANCTA_ROOT or next to
-   --  the program); "" when none.
-
 end Sancta.Simulation.Sim_Tool;

@@ -11,15 +11,15 @@
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Clocks;
 
-package Sancta.Runtime.ROS_Clocks is
+package Sancta.Components.ROS_Clocks is
 
-   type ROS_Clock is limited new Clocks.Clock with private;
+   type ROS_Clock is limited new Runtime.Clocks.Clock with private;
 
-   overriding function Now (This : ROS_Clock) return Clocks.Time;
-   --  Clocks.Epoch + the ROS time (RCL.Clocks.Now (ROS)): with simulated
+   overriding function Now (This : ROS_Clock) return Runtime.Clocks.Time;
+   --  Runtime.Clocks.Epoch + the ROS time (RCL.Clocks.Now (ROS)): with simulated
    --  time, 0 (Epoch) before the first /clock message.
 
-   overriding procedure Wait_Until (This : in out ROS_Clock; Deadline : Clocks.Time);
+   overriding procedure Wait_Until (This : in out ROS_Clock; Deadline : Runtime.Clocks.Time);
    --  Polls the ROS time (every millisecond of wall time) and returns when
    --  Now >= Deadline, or after at most Max_Wait of wall time even if it is
    --  not (when /clock stops): a scheduler then finds nothing due, notices a
@@ -44,10 +44,10 @@ private
 
    type Spinner_Access is access Spinner;
 
-   type ROS_Clock is limited new Clocks.Clock with record
+   type ROS_Clock is limited new Runtime.Clocks.Clock with record
       Name     : Ada.Strings.Unbounded.Unbounded_String;
       Stopping : Boolean := False with Atomic;
       Worker   : Spinner_Access;
    end record;
 
-end Sancta.Runtime.ROS_Clocks;
+end Sancta.Components.ROS_Clocks;

@@ -3,8 +3,8 @@
 --  time, not as the wall clock does.
 with AUnit.Test_Suites;
 
-package Sancta.Runtime.ROS_Clocks.Tests is
+package Sancta.Components.ROS_Clocks.Tests is
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite;
 
-end Sancta.Runtime.ROS_Clocks.Tests;
+end Sancta.Components.ROS_Clocks.Tests;

@@ -7,15 +7,15 @@ with RCL.Nodes;
 with RCL.QoS;
 with Sancta.Logging;
 
-package body Sancta.Runtime.ROS_Clocks is
+package body Sancta.Components.ROS_Clocks is
 
    use type Ada.Real_Time.Time;
 
-   overriding function Now (This : ROS_Clock) return Clocks.Time is
-     (Clocks.Epoch + Ada.Real_Time.To_Time_Span
+   overriding function Now (This : ROS_Clock) return Runtime.Clocks.Time is
+     (Runtime.Clocks.Epoch + Ada.Real_Time.To_Time_Span
         (RCL.Clocks.To_Duration (RCL.Clocks.Now (RCL.Clocks.ROS))));
 
-   overriding procedure Wait_Until (This : in out ROS_Clock; Deadline : Clocks.Time) is
+   overriding procedure Wait_Until (This : in out ROS_Clock; Deadline : Runtime.Clocks.Time) is
       Give_Up : constant Ada.Real_Time.Time :=
         Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Max_Wait);
    begin
@@ -83,4 +83,4 @@ package body Sancta.Runtime.ROS_Clocks is
       end if;
    end Stop;
 
-end Sancta.Runtime.ROS_Clocks;
+end Sancta.Components.ROS_Clocks;
