@@ -313,7 +313,7 @@ package body RCL.Security.Keystores is
          return Image;
       end Stamp;
 
-      function Section (Allow : Boolean) return String is
+      function Section (Allow : Boolean; Rules : Topic_Rules) return String is
          Result : Unbounded_String;
       begin
          for Kind in Access_Kind loop
@@ -347,7 +347,30 @@ package body RCL.Security.Keystores is
               & To_String (Result) & "      </" & Tag & ">" & LF;
          end;
       end Section;
+      Has_Deny : constant Boolean := (for some R of Rules => not R.Allow);
+      Deny_Reading : constant Boolean :=
+        (for some R of Rules => not R.Allow and then R.Kind = Subscribe);
+      First : Topic_Rules (1 .. Rules'Length + 2);
+      Last  : Natural := 0;
+      --  Cyclone lets a participant join a domain only when the first rule
+      --  of its grant on that domain allows, and lets it create a topic only
+      --  when the first rule naming the topic allows: with deny rules (which
+      --  must come before the allow rules they carve out of, "*"), a first
+      --  allow rule with ros_discovery_info (which SROS2 always allows) and,
+      --  unless some reading is denied, every allowed subscription.
    begin
+      for Kind in Access_Kind loop
+         Last := Last + 1;
+         First (Last) := (True, Kind, To_Unbounded_String ("ros_discovery_info"));
+      end loop;
+      if not Deny_Reading then
+         for R of Rules loop
+            if R.Allow and then R.Kind = Subscribe then
+               Last := Last + 1;
+               First (Last) := R;
+            end if;
+         end loop;
+      end if;
       return "<?xml version=""1.0"" encoding=""UTF-8""?>" & LF
         & "<dds xmlns:xsi=""http://www.w3.org/2001/XMLSchema-instance"""
         & " xsi:noNamespaceSchemaLocation="""
@@ -359,8 +382,9 @@ package body RCL.Security.Keystores is
         & "        <not_before>" & Stamp (Today) & "</not_before>" & LF
         & "        <not_after>" & Stamp (Today + 3650 * Duration'(86_400.0)) & "</not_after>" & LF
         & "      </validity>" & LF
-        & Section (Allow => False)
-        & Section (Allow => True)
+        & (if Has_Deny then Section (Allow => True, Rules => First (1 .. Last)) else "")
+        & Section (Allow => False, Rules => Rules)
+        & Section (Allow => True, Rules => Rules)
         & "      <default>DENY</default>" & LF
         & "    </grant>" & LF
         & "  </permissions>" & LF

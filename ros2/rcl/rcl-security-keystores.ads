@@ -47,7 +47,11 @@ package RCL.Security.Keystores is
    procedure Create_Permission (Keystore, Enclave : String; Rules : Topic_Rules);
    --  Writes and signs the enclave's permissions: one grant for
    --  CN=<Enclave>, valid ten years from today, on domains 0 .. 230; its
-   --  deny rules, then its allow rules; everything else denied.
+   --  deny rules, then its allow rules; everything else denied. With deny
+   --  rules, a first allow rule with ros_discovery_info and (unless some
+   --  reading is denied) the allowed subscriptions: Cyclone refuses to join
+   --  a participant whose grant starts with a deny rule, and to create a
+   --  topic whose first rule denies.
 
    function Permissions_Document (Enclave : String; Rules : Topic_Rules) return String;
    --  The permissions.xml Create_Permission signs.
