@@ -1,5 +1,6 @@
 # Build, run, test and benchmark SANCTA for ROS 2.
 #   make run    build everything and run the main job on its embedded default
+#   make view   the same, watched live in a window (sancta-view)
 #   make test   build everything and run every test suite
 #   make bench  build in release mode and run the benchmarks
 # Every target installs what it lacks first (Debian packages, Python venv).
@@ -7,7 +8,7 @@
 BUILD_MODE ?= debug
 GPRBUILD    = gprbuild -P build_all.gpr -p -j0 -XBUILD_MODE=$(BUILD_MODE)
 
-.PHONY: all deps bench-deps build run test bench clean
+.PHONY: all deps bench-deps build run view test bench clean
 
 all: build
 
@@ -27,6 +28,11 @@ build: deps
 
 run: build
 	@scripts/demo.sh
+
+# The demo with its live view (sancta-view) in a window; without a display
+# the demo runs as for "run".
+view: build
+	@scripts/demo.sh --view
 
 test: build
 	@scripts/run-tests.sh

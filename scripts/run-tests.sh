@@ -4,6 +4,13 @@
 # line "N passed, N failed" summed over all suites. Exits non-zero when any
 # test failed or a suite could not run.
 set -uo pipefail
+# On a shared development machine, full runs queue behind each other (runs in
+# parallel on 2 cores make timing-sensitive suites fail); CI runs alone.
+if [ "${CI:-}" != "true" ] && [ -z "${SANCTA_TESTS_LOCKED:-}" ] && command -v flock >/dev/null; then
+   export SANCTA_TESTS_LOCKED=1
+   echo "run-tests: waiting for /tmp/sancta-run-tests.lock (one full run at a time on this machine)"
+   exec flock /tmp/sancta-run-tests.lock "$0" "$@"
+fi
 source "$(dirname "$0")/env.sh"
 cd "$repo_root"
 

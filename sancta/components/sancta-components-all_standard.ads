@@ -4,6 +4,7 @@
 --  itself at elaboration: without this "with", the factory would not know
 --  the standard components.
 pragma Warnings (Off, "unit * is not referenced");
+with Sancta.Components.GUI_Relay;
 with Sancta.Components.Localization;
 with Sancta.Components.Logger;
 with Sancta.Components.Navigation;

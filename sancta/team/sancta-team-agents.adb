@@ -1,3 +1,4 @@
+with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
@@ -534,6 +535,27 @@ package body Sancta.Team.Agents is
 
    --  The agent -----------------------------------------------------------------------
 
+   package Agent_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Agent_Access);
+
+   protected Registry is
+      procedure Add (A : Agent_Access);
+      function Find (Id : String) return Agent_Access;
+   private
+      Known : Agent_Maps.Map;
+   end Registry;
+
+   protected body Registry is
+      procedure Add (A : Agent_Access) is
+      begin
+         Known.Include (A.Id, A);
+      end Add;
+
+      function Find (Id : String) return Agent_Access is
+        (if Known.Contains (Id) then Known.Element (Id) else null);
+   end Registry;
+
+   function Find (Id : String) return Agent_Access is (Registry.Find (Id));
+
    function Create (Config : Agent_Config) return Agent_Access is
       A : constant Agent_Access := new Agent;
    begin
@@ -550,6 +572,7 @@ package body Sancta.Team.Agents is
       end if;
       A.Runner := new Worker (A);
       A.Runner.Go;
+      Registry.Add (A);
       return A;
    end Create;
 

@@ -85,6 +85,11 @@ package Sancta.Team.Agents is
    function Database (This : Agent) return Databases.Team_Database_Access;
    function Network (This : Agent) return Networks.Network_Access;
 
+   function Find (Id : String) return Agent_Access;
+   --  The agent of this process made by Create with that id, or null: how
+   --  another component of the same SANCTA agent reaches its team agent
+   --  (gui_relay reads the plan of team_member's agent).
+
    procedure Stop (This : in out Agent);
    --  Stops everything (the team sees the node lost after its lease).
 

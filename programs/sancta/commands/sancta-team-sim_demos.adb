@@ -2,6 +2,7 @@ with Ada.Command_Line;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Indefinite_Vectors;
 with Ada.Directories;
+with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
@@ -323,7 +324,7 @@ package body Sancta.Team.Sim_Demos is
       procedure Secure_Team is
          --  The keystore (Log_Dir/keystore) and this process's settings.
          Writers         : Security.Id_List (1 .. Natural (View.Non_Robots.Length));
-         Robot_Ids       : Security.Id_List (1 .. N + 1);
+         Robot_Ids       : Security.Id_List (1 .. N + 2);
       begin
          for I in Writers'Range loop
             Writers (I) := View.Non_Robots (I).Id;
@@ -332,11 +333,35 @@ package body Sancta.Team.Sim_Demos is
             Robot_Ids (I) := View.Robots (I).Id;
          end loop;
          Robot_Ids (N + 1) := To_Unbounded_String ("demo_monitor");
+         Robot_Ids (N + 2) := To_Unbounded_String ("view");  --  sancta-view (--view)
          Security.Create_Keystore (Log_Dir & "/keystore", To_String (View.Team),
                                    Task_Writers => Writers, Other_Nodes => Robot_Ids);
          Security.Enable (Log_Dir & "/keystore");
          RCL.Security.Set_Enclave (Security.Enclave (To_String (View.Team), "demo_monitor"));
       end Secure_Team;
+
+      procedure Start_View is
+         --  Not a child to stop at the end: the window stays open.
+         Display : constant Boolean :=
+           Ada.Environment_Variables.Value ("DISPLAY", "") /= ""
+           or else Ada.Environment_Variables.Value ("WAYLAND_DISPLAY", "") /= "";
+         Args    : Text_Vectors.Vector;
+         Pid     : GNAT.OS_Lib.Process_Id with Unreferenced;
+      begin
+         if not Display then
+            Put_Line ("demo: --view: no display (DISPLAY unset), running without the live view");
+            return;
+         end if;
+         Args.Append ("--world");
+         Args.Append (To_String (View.World));
+         Args.Append ("--team");
+         Args.Append (To_String (View.Team));
+         if Config.Secure then
+            Security.Set_Child_Enclave (Security.Enclave (To_String (View.Team), "view"));
+         end if;
+         Pid := Spawn (Program (Config, "sancta-view"), Args, Log_Dir & "/view.log");
+         Put_Line ("demo: live view started (sancta-view, log " & Log_Dir & "/view.log)");
+      end Start_View;
 
       procedure Start_Processes is
          Args : Text_Vectors.Vector;
@@ -368,6 +393,9 @@ package body Sancta.Team.Sim_Demos is
          for R of View.Non_Robots loop
             Start_Agent (To_String (R.Id));
          end loop;
+         if Config.View then
+            Start_View;
+         end if;
          if Config.Secure then
             Security.Set_Child_Enclave ("");
          end if;

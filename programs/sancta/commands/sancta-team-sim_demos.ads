@@ -61,6 +61,11 @@ package Sancta.Team.Sim_Demos is
       --  DDS-Security (Sancta.Team.Security): a keystore in Out_Dir/keystore,
       --  an enclave per process; only the non-robot agents (the operator)
       --  may publish the mission's tasks.
+      View          : Boolean := False;
+      --  Also start the live view (sancta-view --world WORLD, its output in
+      --  Out_Dir/view.log) when a display is set (DISPLAY or
+      --  WAYLAND_DISPLAY), else say so and run without it; the view is
+      --  left open at the end (closing it is the user's).
    end record;
 
    procedure Run (Config : Sim_Demo_Config; Result : out Demos.Demo_Result);
