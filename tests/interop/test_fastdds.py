@@ -39,7 +39,7 @@ def rclada(*args, timeout=40):
 def stop(proc):
     if proc.poll() is None:
         proc.kill()
-    proc.communicate()
+    return proc.communicate()[0]
 
 
 def padded(data):
@@ -181,3 +181,20 @@ def test_echo_escapes_control_characters_as_ros2(tmp_path):
     expected = yaml.dump({"data": text}, allow_unicode=True, width=2**31 - 1) + "---\n"
     assert out == expected
     assert yaml.safe_load(out.split("---")[0])["data"] == text
+
+
+def test_fast_dds_client_is_refused_clearly_by_an_ada_server():
+    # Services do not interoperate with rmw_fastrtps on Cyclone 0.10 (it
+    # cannot write the related-sample-identity a Fast DDS client needs; see
+    # README): the Ada server drops the headerless request with a warning
+    # naming the offset instead of misreading it.
+    server = ps.start("server")
+    try:
+        with Peer("--node", "fd_client", "--call", "/add_two_ints", 2, 3, "--exit-after", 1,
+                  "--duration", 6) as peer:
+            peer.proc.wait(timeout=30)
+            peer.stop()
+    finally:
+        out = stop(server)
+    assert not [line for line in peer.lines if line.startswith("reply")]
+    assert "malformed request dropped" in out and "byte offset" in out, out
