@@ -206,7 +206,7 @@ package body RCL.DDS is
    function Plugin_Directory return String is
       Size : constant := 4096;
       function Find (Dir : out C.char_array; Length : C.size_t) return C.int
-        with Import, Convention => C, External_Name => "sancta_security_plugin_dir";
+        with Import, Convention => C, External_Name => "rclada_security_plugin_dir";
       Dir : C.char_array (1 .. Size);
    begin
       if Find (Dir, Size) /= 0 then

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "dds/dds.h"
-#include "sancta_security.h"
+#include "rclada_security.h"
 
 static int holds_plugins (const char *dir)
 {
@@ -19,7 +19,7 @@ static int holds_plugins (const char *dir)
   return access (path, R_OK) == 0;
 }
 
-int sancta_security_plugin_dir (char *dir, size_t size)
+int rclada_security_plugin_dir (char *dir, size_t size)
 {
   Dl_info info;
   char own[4096];

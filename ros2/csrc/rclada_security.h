@@ -1,9 +1,9 @@
 /*
  * Where Cyclone's DDS-Security plugins are (not for users: bound by
- * RCL.DDS). See sancta_security.c.
+ * RCL.DDS). See rclada_security.c.
  */
-#ifndef SANCTA_SECURITY_H
-#define SANCTA_SECURITY_H
+#ifndef RCLADA_SECURITY_H
+#define RCLADA_SECURITY_H
 
 #include <stddef.h>
 
@@ -12,6 +12,6 @@
    libdds_security_crypto.so: "libddsc0debian" beside the libddsc that is
    loaded (Debian's layout), else libddsc's own directory. Returns 0, or -1
    when neither holds the plugins or "dir" is too small. */
-int sancta_security_plugin_dir (char *dir, size_t size);
+int rclada_security_plugin_dir (char *dir, size_t size);
 
 #endif
