@@ -10,4 +10,8 @@ if [ -z "${ROS_DOMAIN_ID:-}" ]; then
    export ROS_DOMAIN_ID=$(( ( $$ + $(date +%s) ) % 200 + 1 ))
 fi
 export SANCTA_ROOT="$repo_root"
+# The ROS 2 library finds its bundled interfaces under $RCLADA_ROOT/share;
+# SANCTA's sancta_msgs are on its path for the rclada CLI too.
+export RCLADA_ROOT="$repo_root"
+export RCLADA_INTERFACE_PATH="$repo_root/share/interfaces${RCLADA_INTERFACE_PATH:+:$RCLADA_INTERFACE_PATH}"
 export PATH="$repo_root/bin:$PATH"

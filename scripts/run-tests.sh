@@ -63,6 +63,17 @@ if [ -d tests/interop ] && ls tests/interop/test_*.py >/dev/null 2>&1; then
    fi
 fi
 
+# The Alire crates (ros2/, sancta/) with Debian's alr, offline: one test each.
+echo "== Alire crates (alr build, offline, repository index)"
+scripts/alire-build.sh 2>&1 | tee "$log_dir/alire.txt"
+alire_passed=$(grep -c '^alire: PASS' "$log_dir/alire.txt")
+alire_failed=$(grep -c '^alire: FAIL' "$log_dir/alire.txt")
+passed=$((passed + alire_passed))
+failed=$((failed + alire_failed))
+if [ "$alire_passed" -eq 0 ] && [ "$alire_failed" -eq 0 ]; then
+   failed=$((failed + 1))
+fi
+
 [ "$failed" -gt 0 ] && status=1
 echo "$passed passed, $failed failed"
 exit $status

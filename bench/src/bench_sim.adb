@@ -11,7 +11,7 @@ with Ada.Execution_Time;
 with Ada.Real_Time;             use Ada.Real_Time;
 with Ada.Text_IO;               use Ada.Text_IO;
 with Sancta.Geometry;           use Sancta.Geometry;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Navigators;
 with Sancta.Robot.Path_Costs;
@@ -130,7 +130,7 @@ procedure Bench_Sim is
       M      : constant Robot.Scan_Matchers.Matcher_Config := (others => <>);
       C      : Robot.Scan_Matchers.Corrector;
       Nav    : Robot.Navigators.Navigator;
-      E      : Robot.Executors.Executor;
+      E      : Robot.Goal_Sequencers.Sequencer;
       Last   : Natural := 0;
       Samples, Converged : Natural := 0;
       Odom_Sum, ICP_Sum, Odom_Final, ICP_Final : Real := 0.0;

@@ -6,6 +6,8 @@
 --     sancta team-agent ...    one team node per process
 --     sancta demo [CONFIG]     the team demo, an agent process per robot
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
+--  Those that look up ROS 2 types first put SANCTA's interfaces on the
+--  ROS 2 library's search path (Sancta.Team.Interfaces.Ensure).
 pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
@@ -17,6 +19,7 @@ with Sancta.Commands.Run;
 with Sancta.Commands.Plan;
 with Sancta.Commands.Team;
 with Sancta.Commands.Team_Agent;
+with Sancta.Team.Interfaces;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -50,8 +53,10 @@ begin
          Usage;
       end if;
    elsif Command = "check" then
+      Sancta.Team.Interfaces.Ensure;
       Sancta.Commands.Check.Run;
    elsif Command = "run" then
+      Sancta.Team.Interfaces.Ensure;
       Sancta.Commands.Run.Run;
    elsif Command = "plan" then
       Sancta.Commands.Plan.Run;
@@ -60,6 +65,7 @@ begin
    elsif Command = "team-agent" then
       Sancta.Commands.Team_Agent.Run;
    elsif Command = "demo" then
+      Sancta.Team.Interfaces.Ensure;
       Sancta.Commands.Demo.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");

@@ -241,7 +241,7 @@ package body RCL.Contexts is
 
    procedure Install_Signal_Handlers is
       procedure Block_Stop_Signals
-        with Import, Convention => C, External_Name => "sancta_block_stop_signals";
+        with Import, Convention => C, External_Name => "rclada_block_stop_signals";
       Done : Boolean;
    begin
       Signals.Installed (Done);

@@ -1,7 +1,7 @@
---  Not for users: republishes log records on /rosout
+--  Private child of RCL: republishes log records on /rosout
 --  (rcl_interfaces/msg/Log, rosout QoS: reliable, transient local, keep
 --  last 1000, lifespan 10 s), as rcl does. Enabled by the first node.
-package RCL.Rosout is
+private package RCL.Rosout is
 
    procedure Enable;
    --  Idempotent; errors are logged to the console only.

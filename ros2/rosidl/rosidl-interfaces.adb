@@ -189,7 +189,6 @@ package body ROSIDL.Interfaces is
    end Executable_Folder;
 
    function Bundled_Folder (Name : String := "ros2_interfaces") return String is
-      Root_Variable : constant String := "SANCTA_ROOT";
    begin
       if Ada.Environment_Variables.Exists (Root_Variable)
         and then Ada.Environment_Variables.Value (Root_Variable) /= ""
@@ -234,23 +233,34 @@ package body ROSIDL.Interfaces is
          end if;
       end Add;
 
-   begin
-      Add (Bundled_Folder);
-      Add (Bundled_Folder ("interfaces"));
-      if Ada.Environment_Variables.Exists (Path_Variable) then
+      procedure Add_Each (Variable : String; Suffix : String := "") is
+         --  Each folder of a colon-separated list in Variable, + Suffix.
+      begin
+         if not Ada.Environment_Variables.Exists (Variable) then
+            return;
+         end if;
          declare
-            Value : constant String := Ada.Environment_Variables.Value (Path_Variable);
+            Value : constant String := Ada.Environment_Variables.Value (Variable);
             First : Positive := Value'First;
          begin
             for I in Value'Range loop
                if Value (I) = ':' then
-                  Add (Value (First .. I - 1));
+                  if I > First then
+                     Add (Value (First .. I - 1) & Suffix);
+                  end if;
                   First := I + 1;
                end if;
             end loop;
-            Add (Value (First .. Value'Last));
+            if First <= Value'Last then
+               Add (Value (First .. Value'Last) & Suffix);
+            end if;
          end;
-      end if;
+      end Add_Each;
+
+   begin
+      Add (Bundled_Folder);
+      Add_Each (Ament_Variable, Suffix => "/share");
+      Add_Each (Path_Variable);
       for F of Registry.Added_Folders loop
          Add (F);
       end loop;

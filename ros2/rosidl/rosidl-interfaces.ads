@@ -1,16 +1,16 @@
 --  The search path of interface folders and the cache of parsed definitions.
 --
 --  A folder on the path holds one sub-folder per interface package, each with
---  msg/, srv/ and action/ (the layout of a ROS 2 share/ directory). The
---  bundled folder (share/ros2_interfaces of the installation) comes first,
---  then the project's own bundled folder share/interfaces (sancta_msgs);
---  folders named in the environment variable SANCTA_INTERFACE_PATH
---  (colon-separated) and through Add_Folder follow. The first folder holding
---  a package wins. The bundled folder is $SANCTA_ROOT/share/ros2_interfaces
---  when SANCTA_ROOT is set, else <folder of the running program>/../share/
---  ros2_interfaces. SANCTA_INTERFACE_PATH is read at every look-up of the
---  path; folders that do not exist are skipped. Definitions are cached (and
---  never freed) on first use; every operation is task-safe.
+--  msg/, srv/ and action/ (the layout of a ROS 2 share/ directory). In
+--  order: the bundled folder (share/ros2_interfaces of the installation:
+--  $RCLADA_ROOT/share/ros2_interfaces when RCLADA_ROOT is set, else <folder
+--  of the running program>/../share/ros2_interfaces); the share/ folder of
+--  each prefix of AMENT_PREFIX_PATH (a ROS 2 installation or workspace, when
+--  one is sourced); the folders of RCLADA_INTERFACE_PATH; the folders given
+--  to Add_Folder. All lists are colon-separated and read at every look-up
+--  of the path; folders that do not exist are skipped. The first folder
+--  holding a package wins. Definitions are cached (and never freed) on
+--  first use; every operation is task-safe.
 --
 --     Def : constant Message_Access := Message ("geometry_msgs", "Twist");
 with ROSIDL.Definitions;
@@ -19,7 +19,14 @@ package ROSIDL.Interfaces is
 
    use ROSIDL.Definitions;
 
-   Path_Variable : constant String := "SANCTA_INTERFACE_PATH";
+   Root_Variable : constant String := "RCLADA_ROOT";
+   --  The installation prefix holding share/ros2_interfaces.
+
+   Path_Variable : constant String := "RCLADA_INTERFACE_PATH";
+   --  Extra interface folders, colon-separated.
+
+   Ament_Variable : constant String := "AMENT_PREFIX_PATH";
+   --  ROS 2 install prefixes, colon-separated: <prefix>/share is searched.
 
    procedure Add_Folder (Folder : String);
    --  Appends a folder to the search path. Raises Definition_Error when the

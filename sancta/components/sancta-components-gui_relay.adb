@@ -20,6 +20,7 @@ with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
 with Sancta.Team.Plans;
+with Sancta.Team.Interfaces;
 
 package body Sancta.Components.GUI_Relay is
 
@@ -87,7 +88,10 @@ package body Sancta.Components.GUI_Relay is
    end Node_Name;
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
-     (ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name));
+   begin
+      Sancta.Team.Interfaces.Ensure;  --  sancta_msgs on the ROS 2 library's path
+      return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
+   end Support;
 
    overriding procedure Start (This : in out Relay) is
       Prefix : constant String := "/sancta/" & This.Option_Text ("team") & "/";
@@ -374,12 +378,7 @@ package body Sancta.Components.GUI_Relay is
       end if;
    end Run;
 
-   function Create (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Relay;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create;
+   function Create is new Factory.Create_Component (Relay);
 
 begin
    Factory.Register

@@ -94,12 +94,7 @@ package body Sancta.Components.Localization is
       end if;
    end On_Input;
 
-   function Create_Scan_Matcher (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Scan_Matcher;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Scan_Matcher;
+   function Create_Scan_Matcher is new Factory.Create_Component (Scan_Matcher);
 
    type Scan_Matcher_Access is access all Scan_Matcher;
 
@@ -158,12 +153,7 @@ package body Sancta.Components.Localization is
       end if;
    end On_Input;
 
-   function Create_Aligner (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Aligner;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Aligner;
+   function Create_Aligner is new Factory.Create_Component (Aligner);
 
    ----------------
    -- gps_fusion --
@@ -200,12 +190,7 @@ package body Sancta.Components.Localization is
       This.Output ("variance", Values.Real_Value'(Data => Long_Float (This.Filter.Variance)));
    end On_Input;
 
-   function Create_GPS_Fuser (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new GPS_Fuser;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_GPS_Fuser;
+   function Create_GPS_Fuser is new Factory.Create_Component (GPS_Fuser);
 
    ------------
    -- mapper --
@@ -275,12 +260,7 @@ package body Sancta.Components.Localization is
       Next := Next + This.Period;
    end Run;
 
-   function Create_Mapper (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Mapper;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Mapper;
+   function Create_Mapper is new Factory.Create_Component (Mapper);
 
    function Positive_Check (Text : String) return String is
      (if Long_Float'Value (Text) > 0.0 then "" else "expected a positive value, found " & Text);

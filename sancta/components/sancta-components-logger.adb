@@ -136,12 +136,7 @@ package body Sancta.Components.Logger is
       end if;
    end Stop;
 
-   function Create (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Logger_Component;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create;
+   function Create is new Factory.Create_Component (Logger_Component);
 
 begin
    Factory.Register

@@ -5,7 +5,7 @@ with Sancta.Components.Robot_Messages;
 with Sancta.Components.ROS2;
 with Sancta.Logging;
 with Sancta.Robot.Controllers;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Path_Costs;
 with Sancta.Robot.Sensors;
 with Sancta.Runtime.Components;
@@ -62,19 +62,14 @@ package body Sancta.Components.Navigation is
       Put_Pose (This, "pose", Compose (Origin, Pose_Of (Item)));
    end On_Input;
 
-   function Create_Transformer (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Transformer;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Transformer;
+   function Create_Transformer is new Factory.Create_Component (Transformer);
 
    --------------
    -- executor --
    --------------
 
    type Executor is new Base_Component with record
-      Plan      : Robot.Executors.Executor;
+      Plan      : Robot.Goal_Sequencers.Sequencer;
       Tolerance : Real := 0.3;
       Last_Goal : Integer := -1;
       Last_Done : Integer := -1;
@@ -96,7 +91,7 @@ package body Sancta.Components.Navigation is
    end Assign;
 
    procedure Report (This : in out Executor'Class) is
-      P : Robot.Executors.Executor renames This.Plan;
+      P : Robot.Goal_Sequencers.Sequencer renames This.Plan;
    begin
       if P.Completed /= This.Last_Done then
          This.Last_Done := P.Completed;
@@ -145,12 +140,7 @@ package body Sancta.Components.Navigation is
       end if;
    end On_Input;
 
-   function Create_Executor (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Executor;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Executor;
+   function Create_Executor is new Factory.Create_Component (Executor);
 
    ----------------
    -- path_costs --
@@ -305,12 +295,7 @@ package body Sancta.Components.Navigation is
       end if;
    end On_Input;
 
-   function Create_Path_Cost (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Path_Cost;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Path_Cost;
+   function Create_Path_Cost is new Factory.Create_Component (Path_Cost);
 
    ----------------
    -- go_to_goal --
@@ -359,12 +344,7 @@ package body Sancta.Components.Navigation is
       This.Output ("reached", Values.Boolean_Value'(Data => Reached));
    end On_Input;
 
-   function Create_Go_To_Goal (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Go_To_Goal;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Go_To_Goal;
+   function Create_Go_To_Goal is new Factory.Create_Component (Go_To_Goal);
 
    function Positive_Check (Text : String) return String is
      (if Long_Float'Value (Text) > 0.0 then "" else "expected a positive value, found " & Text);

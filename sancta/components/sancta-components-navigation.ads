@@ -9,7 +9,7 @@
 --  pose to the world given the robot's world pose.)
 --
 --  "executor" (event-driven on "pose" and "tasks"): the robot's task list
---  as successive goals (Sancta.Robot.Executors). Requires "pose"
+--  as successive goals (Sancta.Robot.Goal_Sequencers). Requires "pose"
 --  (types.pose, world); optional "tasks" (types.string "x1,y1; x2,y2",
 --  replaces the list; option goals gives the initial list). Provides
 --  "goal" (types.pose; yaw 0), "progress" (types.real, 0 .. 1),

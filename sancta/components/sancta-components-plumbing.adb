@@ -34,12 +34,7 @@ package body Sancta.Components.Plumbing is
       This.Output ("output", Item);
    end On_Input;
 
-   function Create_Forwarder (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Forwarder;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Forwarder;
+   function Create_Forwarder is new Factory.Create_Component (Forwarder);
 
    --  switch --
 
@@ -78,12 +73,7 @@ package body Sancta.Components.Plumbing is
       end if;
    end On_Input;
 
-   function Create_Switch (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Switch;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Switch;
+   function Create_Switch is new Factory.Create_Component (Switch);
 
 begin
    Factory.Register

@@ -59,12 +59,7 @@ package body Sancta.Components.Pose_Chain is
       Next := Next + This.Period;
    end Run;
 
-   function Create_Odometry (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Odometry;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Odometry;
+   function Create_Odometry is new Factory.Create_Component (Odometry);
 
    --  transform --
 
@@ -92,12 +87,7 @@ package body Sancta.Components.Pose_Chain is
       end if;
    end On_Input;
 
-   function Create_Transform (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Transform;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Transform;
+   function Create_Transform is new Factory.Create_Component (Transform);
 
 begin
    Factory.Register

@@ -144,11 +144,11 @@ package body Sancta.Components.Robot_Messages is
       return Result;
    end Grid_Message;
 
-   function Parse_Goals (Text : String) return Robot.Executors.Point_Array is
+   function Parse_Goals (Text : String) return Robot.Goal_Sequencers.Point_Array is
       use Ada.Strings.Fixed;
       Count : constant Natural :=
         (if Trim (Text, Ada.Strings.Both) = "" then 0 else Ada.Strings.Fixed.Count (Text, ";") + 1);
-      Result : Robot.Executors.Point_Array (1 .. Count);
+      Result : Robot.Goal_Sequencers.Point_Array (1 .. Count);
       First  : Positive := Text'First;
    begin
       for G in 1 .. Count loop
@@ -197,7 +197,7 @@ package body Sancta.Components.Robot_Messages is
          return Ada.Exceptions.Exception_Message (E);
    end Goals_Problem;
 
-   function Goals_Image (Goals : Robot.Executors.Point_Array) return String is
+   function Goals_Image (Goals : Robot.Goal_Sequencers.Point_Array) return String is
       function Img (X : Real) return String is
         (Runtime.Values.Real_Image (Long_Float (X)));
    begin

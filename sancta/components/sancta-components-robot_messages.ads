@@ -8,7 +8,7 @@
 --     This.Output ("cmd_vel", Message_Value'(Message => Twist_Message (Cmd)));
 with ROSIDL.Dynamic;
 with Sancta.Geometry;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Mappers;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
@@ -64,13 +64,13 @@ package Sancta.Components.Robot_Messages is
    Goal_Error : exception;
    --  Message: "goal N (column C): what was expected, what was found".
 
-   function Parse_Goals (Text : String) return Robot.Executors.Point_Array;
+   function Parse_Goals (Text : String) return Robot.Goal_Sequencers.Point_Array;
    --  "x1,y1; x2,y2; ..." (blanks allowed; "" gives no goal).
 
    function Goals_Problem (Text : String) return String;
    --  "" when Parse_Goals accepts Text, else its Goal_Error message.
 
-   function Goals_Image (Goals : Robot.Executors.Point_Array) return String;
+   function Goals_Image (Goals : Robot.Goal_Sequencers.Point_Array) return String;
    --  The inverse of Parse_Goals.
 
 end Sancta.Components.Robot_Messages;

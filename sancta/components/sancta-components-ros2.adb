@@ -425,12 +425,7 @@ package body Sancta.Components.ROS2 is
       end if;
    end Stop;
 
-   function Create_Subscriber (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Subscriber;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Subscriber;
+   function Create_Subscriber is new Factory.Create_Component (Subscriber);
 
    --  ros2_publisher --
 
@@ -480,12 +475,7 @@ package body Sancta.Components.ROS2 is
       Free (This.Node);
    end Stop;
 
-   function Create_Publisher (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Publisher;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Publisher;
+   function Create_Publisher is new Factory.Create_Component (Publisher);
 
 begin
    Values.Register_Family ("ros2:", Is_Message_Family'Access);

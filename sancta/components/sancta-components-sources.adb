@@ -99,12 +99,7 @@ package body Sancta.Components.Sources is
                else Never);
    end Run;
 
-   function Create (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Source;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create;
+   function Create is new Factory.Create_Component (Source);
 
 begin
    Factory.Register

@@ -85,12 +85,7 @@ package body Sancta.Components.Watchdog is
       Next := Next + This.Check;
    end Run;
 
-   function Create (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Watchdog_Component;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create;
+   function Create is new Factory.Create_Component (Watchdog_Component);
 
 begin
    Factory.Register

@@ -4,6 +4,13 @@ with Ada.Strings.Unbounded;
 
 package body Sancta.Runtime.Factory is
 
+   function Create_Component (Ctx : Components.Context) return Components.Component_Access is
+      Result : constant Components.Component_Access := new Kind;
+   begin
+      Result.Initialize (Ctx);
+      return Result;
+   end Create_Component;
+
    use Ada.Strings.Unbounded;
 
    type Registration is record

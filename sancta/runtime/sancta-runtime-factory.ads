@@ -20,6 +20,13 @@ package Sancta.Runtime.Factory is
      (Ctx : Components.Context) return Components.Component_Access;
    --  Allocates a component and calls its Initialize (This, Ctx).
 
+   generic
+      type Kind is new Components.Component with private;
+   function Create_Component (Ctx : Components.Context) return Components.Component_Access;
+   --  The usual Creator: a new Kind, initialized from Ctx.
+   --     function Create is new Factory.Create_Component (Logger_Component);
+   --     Factory.Register (Info, Create'Access);
+
    procedure Register (Info : Components.Descriptor; Create : not null Creator);
    --  Raises Program_Error when the name is already registered.
 

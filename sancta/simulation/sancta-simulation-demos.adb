@@ -1,5 +1,5 @@
 with Ada.Strings.Fixed;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Navigators;
 with Sancta.Robot.Path_Costs;
@@ -21,7 +21,7 @@ package body Sancta.Simulation.Demos is
       Random  : Generators.Generator := Generators.Create (Config.Seed, 16#DE30#);
       Sim     : Simulator;
       N       : constant Positive := Config.Robots;
-      Execs   : array (1 .. N) of Executors.Executor;
+      Execs   : array (1 .. N) of Goal_Sequencers.Sequencer;
       Navs    : array (1 .. N) of Navigators.Navigator;
       Started : array (1 .. N) of Real := [others => 0.0];
       Goal_No : array (1 .. N) of Natural := [others => 0];
@@ -81,7 +81,7 @@ package body Sancta.Simulation.Demos is
       for R in 1 .. N loop
          declare
             Last  : Point := Starts (R);
-            Goals : Executors.Point_Array (1 .. Config.Goals_Per_Robot);
+            Goals : Goal_Sequencers.Point_Array (1 .. Config.Goals_Per_Robot);
             G     : Point;
          begin
             for K in Goals'Range loop

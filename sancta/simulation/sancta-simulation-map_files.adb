@@ -1,12 +1,10 @@
 with Ada.Characters.Handling;
-with Ada.Command_Line;
 with Ada.Containers.Vectors;
 with Ada.Directories;
-with Ada.Environment_Variables;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Ada.Unchecked_Deallocation;
-with GNAT.OS_Lib;
+with Sancta.Installation;
 
 package body Sancta.Simulation.Map_Files is
 
@@ -427,36 +425,8 @@ package body Sancta.Simulation.Map_Files is
       end if;
    end Load_World;
 
-   function Executable_Folder return String is
-      use type GNAT.OS_Lib.String_Access;
-      Found : GNAT.OS_Lib.String_Access :=
-        GNAT.OS_Lib.Locate_Exec_On_Path (Ada.Command_Line.Command_Name);
-   begin
-      if Found = null then
-         return "";
-      end if;
-      declare
-         Result : constant String :=
-           Ada.Directories.Containing_Directory (Ada.Directories.Full_Name (Found.all));
-      begin
-         GNAT.OS_Lib.Free (Found);
-         return Result;
-      end;
-   exception
-      when others =>
-         return "";
-   end Executable_Folder;
-
    function World_File (Name : String) return String is
-      function Share return String is
-      begin
-         if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
-           and then Ada.Environment_Variables.Value ("SANCTA_ROOT") /= ""
-         then
-            return Ada.Environment_Variables.Value ("SANCTA_ROOT") & "/share/worlds/";
-         end if;
-         return Executable_Folder & "/../share/worlds/";
-      end Share;
+      Share : constant String := Installation.Share_File ("worlds/");
    begin
       if Name = "" then
          return "";

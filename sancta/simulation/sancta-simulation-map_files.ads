@@ -57,7 +57,7 @@ package Sancta.Simulation.Map_Files is
 
    function World_File (Name : String) return String;
    --  Name when it names a file; else the bundled world of that name
-   --  (share/worlds/NAME.yaml, then .walls, under $SANCTA_ROOT or next to
-   --  the program); "" when none.
+   --  (Installation.Share_File ("worlds/NAME.yaml"), then .walls); ""
+   --  when none.
 
 end Sancta.Simulation.Map_Files;

@@ -79,11 +79,16 @@ package body Sancta.Team.Components is
       This.Subscribe ("pose");
    end Start;
 
+   procedure Stop_Agent (Agent : Agents.Agent_Access) is
+   begin
+      if Agent /= null then
+         Agent.Stop;
+      end if;
+   end Stop_Agent;
+
    overriding procedure Stop (This : in out Member_Component) is
    begin
-      if This.Agent /= null then
-         This.Agent.Stop;
-      end if;
+      Stop_Agent (This.Agent);
       Base_Component (This).Stop;
    end Stop;
 
@@ -133,12 +138,7 @@ package body Sancta.Team.Components is
       end case;
    end Run;
 
-   function Create_Member (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Member_Component;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Member;
+   function Create_Member is new Factory.Create_Component (Member_Component);
 
    --  team_operator ----------------------------------------------------------------
 
@@ -170,9 +170,7 @@ package body Sancta.Team.Components is
 
    overriding procedure Stop (This : in out Operator_Component) is
    begin
-      if This.Agent /= null then
-         This.Agent.Stop;
-      end if;
+      Stop_Agent (This.Agent);
       Base_Component (This).Stop;
    end Stop;
 
@@ -193,12 +191,7 @@ package body Sancta.Team.Components is
       end if;
    end Run;
 
-   function Create_Operator (Ctx : Context) return Component_Access is
-      Result : constant Component_Access := new Operator_Component;
-   begin
-      Result.Initialize (Ctx);
-      return Result;
-   end Create_Operator;
+   function Create_Operator is new Factory.Create_Component (Operator_Component);
 
 begin
    Factory.Register

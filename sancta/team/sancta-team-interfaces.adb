@@ -1,7 +1,7 @@
 with Ada.Directories;
-with Ada.Strings.Fixed;
-with ROSIDL.Definitions;
+with Ada.Environment_Variables;
 with ROSIDL.Interfaces;
+with Sancta.Installation;
 
 package body Sancta.Team.Interfaces is
 
@@ -19,6 +19,30 @@ package body Sancta.Team.Interfaces is
       end Mark;
    end Once;
 
+   procedure Add_Variable_Folders;
+   --  Each existing folder of $SANCTA_INTERFACE_PATH.
+
+   procedure Add_Variable_Folders is
+      Variable : constant String := Installation.Interface_Path_Variable;
+   begin
+      if not Ada.Environment_Variables.Exists (Variable) then
+         return;
+      end if;
+      declare
+         Value : constant String := Ada.Environment_Variables.Value (Variable) & ":";
+         First : Positive := Value'First;
+      begin
+         for I in Value'Range loop
+            if Value (I) = ':' then
+               if I > First and then Ada.Directories.Exists (Value (First .. I - 1)) then
+                  ROSIDL.Interfaces.Add_Folder (Value (First .. I - 1));
+               end if;
+               First := I + 1;
+            end if;
+         end loop;
+      end;
+   end Add_Variable_Folders;
+
    procedure Ensure is
       First : Boolean;
    begin
@@ -27,29 +51,21 @@ package body Sancta.Team.Interfaces is
          return;
       end if;
       declare
-         Path    : constant ROSIDL.Definitions.String_Vectors.Vector :=
-           ROSIDL.Interfaces.Search_Path;
-         Bundled : constant String := (if Path.Is_Empty then "" else Path.First_Element);
-         Suffix  : constant String := "ros2_interfaces";
-         Cut     : constant Natural :=
-           Ada.Strings.Fixed.Index (Bundled, Suffix, Going => Ada.Strings.Backward);
-         Folder  : constant String :=
-           (if Cut = 0 then "share/interfaces"
-            else Bundled (Bundled'First .. Cut - 1) & "interfaces");
+         Folder : constant String := Installation.Share_File ("interfaces");
+         Found  : Boolean := False;
       begin
-         for P of Path loop
-            if Ada.Directories.Exists (P)
-              and then Ada.Directories.Exists (P & "/sancta_msgs/msg/Envelope.msg")
-            then
-               return;  --  already searched (the project's folder is on the path)
-            end if;
+         for P of ROSIDL.Interfaces.Search_Path loop
+            Found := Found or else Ada.Directories.Exists (P & "/sancta_msgs/msg/Envelope.msg");
          end loop;
-         if not Ada.Directories.Exists (Folder) then
-            raise Program_Error with
-              Folder & ": the project's interface folder (sancta_msgs) is missing";
+         if not Found then
+            if not Ada.Directories.Exists (Folder) then
+               raise Program_Error with
+                 Folder & ": the project's interface folder (sancta_msgs) is missing";
+            end if;
+            ROSIDL.Interfaces.Add_Folder (Folder);
          end if;
-         ROSIDL.Interfaces.Add_Folder (Folder);
       end;
+      Add_Variable_Folders;
    end Ensure;
 
 end Sancta.Team.Interfaces;

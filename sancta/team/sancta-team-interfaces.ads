@@ -1,12 +1,18 @@
---  The project's own ROS 2 interfaces (share/interfaces, package sancta_msgs)
---  on the ROSIDL search path.
+--  SANCTA's own ROS 2 interfaces on the search path of the ROS 2 library:
+--  the sancta_msgs package (Installation.Share_File ("interfaces")) and the
+--  folders of $SANCTA_INTERFACE_PATH (colon-separated). The ROS 2 library
+--  knows nothing of SANCTA: every SANCTA program calls Ensure before it
+--  looks up a type.
+--
+--     Sancta.Team.Interfaces.Ensure;
+--     Support := ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", "Envelope");
 package Sancta.Team.Interfaces is
 
    procedure Ensure;
-   --  Makes sure sancta_msgs is found: when no folder of the search path
-   --  holds it (ROSIDL.Interfaces searches share/interfaces itself since
-   --  the simros merge), adds <installation>/share/interfaces, the sibling
-   --  of the bundled share/ros2_interfaces. Raises Program_Error naming the
-   --  folder when it does not exist.
+   --  Adds the folders (once per process) with ROSIDL.Interfaces.Add_Folder:
+   --  share/interfaces unless a folder of the path already holds
+   --  sancta_msgs, then each existing folder of $SANCTA_INTERFACE_PATH.
+   --  Raises Program_Error naming the folder when share/interfaces is
+   --  needed and missing.
 
 end Sancta.Team.Interfaces;

@@ -59,10 +59,7 @@ package body Sancta.Commands.Check is
          raise Options.Usage_Error with "missing configuration FILE";
       end if;
 
-      Configurations.Load (To_String (File), Config, Overrides);
-      for D of Config.Diagnostics loop
-         Put_Line (Standard_Error, Configurations.Image (D));
-      end loop;
+      Options.Load_Reporting (To_String (File), Config, Overrides);
       if Configurations.Error_Count (Config) > 0 then
          Put_Line (Standard_Error,
                    To_String (File) & ":" & Configurations.Error_Count (Config)'Image

@@ -4,6 +4,7 @@ with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Commands.Options;
+with Sancta.Installation;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 with Sancta.Team.Sim_Demos;
@@ -27,14 +28,7 @@ package body Sancta.Commands.Demo is
       Put_Line ("  only the operator may publish tasks");
    end Usage;
 
-   function Default_Config return String is
-      Exe : constant String := Ada.Directories.Containing_Directory (Command_Name);
-   begin
-      return Exe & "/../share/config/sim-team.xml";
-   exception
-      when others =>
-         return "share/config/sim-team.xml";
-   end Default_Config;
+   function Default_Config return String is (Installation.Share_File ("config/sim-team.xml"));
 
    procedure Run is
       Config : Sancta.Team.Sim_Demos.Sim_Demo_Config;

@@ -1,5 +1,6 @@
 with Ada.Command_Line;
 with Ada.Strings.Fixed;
+with Ada.Text_IO;
 
 package body Sancta.Commands.Options is
 
@@ -31,5 +32,17 @@ package body Sancta.Commands.Options is
       when Constraint_Error =>
          raise Usage_Error with "option " & Option & ": """ & Text & """ is not a number";
    end Number;
+
+   procedure Load_Reporting
+     (File      : String;
+      Result    : out Sancta.Runtime.Configurations.Configuration;
+      Overrides : Sancta.Runtime.Components.String_Maps.Map) is
+      package Configurations renames Sancta.Runtime.Configurations;
+   begin
+      Configurations.Load (File, Result, Overrides);
+      for D of Result.Diagnostics loop
+         Ada.Text_IO.Put_Line (Ada.Text_IO.Standard_Error, Configurations.Image (D));
+      end loop;
+   end Load_Reporting;
 
 end Sancta.Commands.Options;

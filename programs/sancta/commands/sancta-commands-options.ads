@@ -1,5 +1,6 @@
---  Command-line helpers shared by the runtime commands (not for users).
+--  Command-line helpers shared by the runtime commands (a private child).
 with Sancta.Runtime.Components;
+with Sancta.Runtime.Configurations;
 
 private package Sancta.Commands.Options is
 
@@ -17,5 +18,11 @@ private package Sancta.Commands.Options is
 
    function Number (Option, Text : String) return Long_Float;
    --  Text as a number; Usage_Error "option X: "T" is not a number".
+
+   procedure Load_Reporting
+     (File      : String;
+      Result    : out Sancta.Runtime.Configurations.Configuration;
+      Overrides : Sancta.Runtime.Components.String_Maps.Map);
+   --  Configurations.Load, then each diagnostic on standard error.
 
 end Sancta.Commands.Options;

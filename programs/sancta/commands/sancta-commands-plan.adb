@@ -9,7 +9,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
-with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.TSPLIB;
 with Sancta.Geometry;
@@ -556,7 +556,7 @@ package body Sancta.Commands.Plan is
          Is_XML : constant Boolean :=
            Name'Length > 4 and then Name (Name'Last - 3 .. Name'Last) = ".xml";
          P : constant Problem_Access :=
-           (if Is_XML then Sancta.Allocation.Missions.Read (Name, Real_Scale)
+           (if Is_XML then Sancta.Allocation.Problem_Files.Read (Name, Real_Scale)
             else TSPLIB.To_MTSP (TSPLIB.Read (Name, Real_Scale).all, Robots,
                                  Min_Tasks => Min_Tasks));
          Result : Assignment (P.Robots, P.Tasks);

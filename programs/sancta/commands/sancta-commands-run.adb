@@ -139,10 +139,7 @@ package body Sancta.Commands.Run is
          raise Options.Usage_Error with "give either --agent ID or --all";
       end if;
 
-      Configurations.Load (To_String (File), Config, Overrides);
-      for D of Config.Diagnostics loop
-         Put_Line (Standard_Error, Configurations.Image (D));
-      end loop;
+      Options.Load_Reporting (To_String (File), Config, Overrides);
       if Configurations.Error_Count (Config) > 0 then
          Put_Line (Standard_Error, "sancta run: configuration has errors; nothing started");
          Set_Exit_Status (Failure);

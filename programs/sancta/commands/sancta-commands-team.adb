@@ -1,10 +1,10 @@
 with Ada.Command_Line;
-with Ada.Directories;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Team.Agents;
 with Sancta.Commands.Options;
+with Sancta.Installation;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 
@@ -21,14 +21,7 @@ package body Sancta.Commands.Team is
       Put_Line ("          [--max SECONDS] [--world FILE] [--out DIR] [--quiet] [--check]");
    end Usage;
 
-   function Default_Mission return String is
-      Exe : constant String := Ada.Directories.Containing_Directory (Command_Name);
-   begin
-      return Exe & "/../share/missions/office-team.xml";
-   exception
-      when others =>
-         return "share/missions/office-team.xml";
-   end Default_Mission;
+   function Default_Mission return String is (Installation.Share_File ("missions/office-team.xml"));
 
    procedure Run is
       Config : Sancta.Team.Demos.Demo_Config;

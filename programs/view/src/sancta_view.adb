@@ -1,7 +1,9 @@
 --  sancta-view: the live mission view; see Sancta.Views.Main.
+with Sancta.Team.Interfaces;
 with Sancta.Views.Main;
 
 procedure Sancta_View is
 begin
+   Sancta.Team.Interfaces.Ensure;  --  sancta_msgs on the ROS 2 library's path
    Sancta.Views.Main;
 end Sancta_View;

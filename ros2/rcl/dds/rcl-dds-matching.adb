@@ -37,7 +37,7 @@ package body RCL.DDS.Matching is
       function Lookup
         (R : C.int; G : Guid_Bytes; K : C.char_array; V : out C.char_array;
          Cap : C.size_t) return C.int
-        with Import, Convention => C, External_Name => "sancta_match_writer_key";
+        with Import, Convention => C, External_Name => "rclada_match_writer_key";
       Buffer : C.char_array (0 .. 255);
       Code   : constant C.int :=
         Lookup (C.int (This.Handle), Guid_Bytes (Writer_GUID), C.To_C (Key), Buffer,
@@ -64,7 +64,7 @@ package body RCL.DDS.Matching is
 
    function Has_Matched_Reader (This : Writer; Key, Value : String) return Boolean is
       function Has (W : C.int; K, V : C.char_array) return C.int
-        with Import, Convention => C, External_Name => "sancta_match_has_reader";
+        with Import, Convention => C, External_Name => "rclada_match_has_reader";
       Code : constant C.int := Has (C.int (This.Handle), C.To_C (Key), C.To_C (Value));
    begin
       Check (Integer (Code), "reading the matched readers of """ & This.Topic_Name.all & """");
@@ -79,7 +79,7 @@ package body RCL.DDS.Matching is
      (Request_Writer : Writer; Reply_Reader : Reader) return Boolean
    is
       function Available (W, R : C.int) return C.int
-        with Import, Convention => C, External_Name => "sancta_match_service_available";
+        with Import, Convention => C, External_Name => "rclada_match_service_available";
       Code : constant C.int :=
         Available (C.int (Request_Writer.Handle), C.int (Reply_Reader.Handle));
    begin
@@ -136,7 +136,7 @@ package body RCL.DDS.Matching is
         with Convention => C;
       function Read (P : C.int; W : C.int; CB : Callback; Context : System.Address)
                      return C.int
-        with Import, Convention => C, External_Name => "sancta_match_builtin";
+        with Import, Convention => C, External_Name => "rclada_match_builtin";
       Found : aliased Endpoint_Vectors.Vector;
       Code  : constant C.int :=
         Read (C.int (Owner.Handle), Builtin_Topic'Pos (Which), Collect'Access, Found'Address);

@@ -1,7 +1,7 @@
 --  Not for users: what services, clients and graph queries learn from the
 --  DDS discovery data (matched endpoints' USER_DATA, the built-in topics
 --  DCPSParticipant / DCPSPublication / DCPSSubscription). Wraps
---  csrc/sancta_matching.c.
+--  csrc/rclada_matching.c.
 with Ada.Strings.Unbounded;
 
 package RCL.DDS.Matching is

@@ -1,13 +1,12 @@
---  Not for users: the thin binding to the part of Cyclone DDS's C API that
---  RCL.DDS uses, plus the raw-CDR shim of csrc/sancta_raw_cdr.c. C return
+--  Private child: the thin binding to the part of Cyclone DDS's C API that
+--  RCL.DDS uses, plus the raw-CDR shim of csrc/rclada_raw_cdr.c. C return
 --  codes stay integers here; RCL.DDS checks them and raises.
 with Interfaces.C;
 with Interfaces.C.Strings;
 with System;
 
-package RCL.DDS.Thin is
+private package RCL.DDS.Thin is
 
-   use Interfaces;
    use type C.int;
 
    subtype Entity_T is C.int;
@@ -58,7 +57,7 @@ package RCL.DDS.Thin is
       Publication_Handle : Unsigned_64;
    end record
      with Convention => C;
-   --  struct sancta_raw_info.
+   --  struct rclada_raw_info.
 
    type Guid_Bytes is array (1 .. 16) of Unsigned_8
      with Convention => C;
@@ -71,11 +70,11 @@ package RCL.DDS.Thin is
 
    function Create_Domain
      (Domain : Domain_Id_T; Config : C.Strings.chars_ptr) return Entity_T
-     with Import, Convention => C, External_Name => "sancta_dds_create_domain";
+     with Import, Convention => C, External_Name => "rclada_dds_create_domain";
    --  dds_create_domain with SIGINT/SIGTERM blocked meanwhile (shim).
 
    function Create_Participant (Domain : Domain_Id_T; Qos : Qos_Ptr) return Entity_T
-     with Import, Convention => C, External_Name => "sancta_dds_create_participant";
+     with Import, Convention => C, External_Name => "rclada_dds_create_participant";
    --  dds_create_participant (no listener) with SIGINT/SIGTERM blocked
    --  meanwhile, so Cyclone's threads leave them to the Ada runtime (shim).
 
@@ -186,64 +185,64 @@ package RCL.DDS.Thin is
      with Import, Convention => C, External_Name => "dds_qset_ignorelocal";
    --  0 none, 1 participant, 2 process.
 
-   --  The raw-CDR shim (csrc/sancta_raw_cdr.h) -------------------------------
+   --  The raw-CDR shim (csrc/rclada_raw_cdr.h) -------------------------------
 
    function Create_Raw_Topic
      (Participant : Entity_T; Topic_Name, Type_Name : C.Strings.chars_ptr;
       Qos : Qos_Ptr; Sertype : out System.Address) return Entity_T
      with Import, Convention => C,
-          External_Name => "sancta_dds_create_raw_topic";
+          External_Name => "rclada_dds_create_raw_topic";
 
    function Write_Raw
      (Writer : Entity_T; Sertype : System.Address; Bytes : System.Address;
       Size : C.size_t; Timestamp : Time_T) return Return_T
-     with Import, Convention => C, External_Name => "sancta_dds_write_raw";
+     with Import, Convention => C, External_Name => "rclada_dds_write_raw";
 
    function Serdata_New
      (Sertype : System.Address; Size : C.size_t; Buffer : out System.Address)
       return System.Address
-     with Import, Convention => C, External_Name => "sancta_dds_serdata_new";
+     with Import, Convention => C, External_Name => "rclada_dds_serdata_new";
 
    function Write_Serdata
      (Writer : Entity_T; Serdata : System.Address; Used : C.size_t; Timestamp : Time_T)
       return Return_T
-     with Import, Convention => C, External_Name => "sancta_dds_write_serdata";
+     with Import, Convention => C, External_Name => "rclada_dds_write_serdata";
 
    function Take_Raw
      (Reader : Entity_T; Serdata : out System.Address; Info : out Raw_Info)
       return Integer_32
-     with Import, Convention => C, External_Name => "sancta_dds_take_raw";
+     with Import, Convention => C, External_Name => "rclada_dds_take_raw";
 
    function Serdata_Bytes
      (Serdata : System.Address; Size : out Unsigned_32) return System.Address
-     with Import, Convention => C, External_Name => "sancta_dds_serdata_bytes";
+     with Import, Convention => C, External_Name => "rclada_dds_serdata_bytes";
 
    procedure Serdata_Release (Serdata : System.Address)
      with Import, Convention => C,
-          External_Name => "sancta_dds_serdata_release";
+          External_Name => "rclada_dds_serdata_release";
 
    function Publication_Guid
      (Reader : Entity_T; Handle : Instance_Handle_T; Guid : out Guid_Bytes)
       return Return_T
      with Import, Convention => C,
-          External_Name => "sancta_dds_publication_guid";
+          External_Name => "rclada_dds_publication_guid";
 
    function Entity_Guid (Entity : Entity_T; Guid : out Guid_Bytes) return Return_T
-     with Import, Convention => C, External_Name => "sancta_dds_entity_guid";
+     with Import, Convention => C, External_Name => "rclada_dds_entity_guid";
 
-   --  Liveliness of matched writers (shim, sancta_liveliness.h).
+   --  Liveliness of matched writers (shim, rclada_liveliness.h).
 
    function Liveliness_Attach (Reader : Entity_T) return System.Address
-     with Import, Convention => C, External_Name => "sancta_liveliness_attach";
+     with Import, Convention => C, External_Name => "rclada_liveliness_attach";
 
    function Liveliness_Take
      (Tracker : System.Address; Guid : out Guid_Bytes; Alive : out C.int) return C.int
-     with Import, Convention => C, External_Name => "sancta_liveliness_take";
+     with Import, Convention => C, External_Name => "rclada_liveliness_take";
 
    function Liveliness_Dropped (Tracker : System.Address) return C.unsigned
-     with Import, Convention => C, External_Name => "sancta_liveliness_dropped";
+     with Import, Convention => C, External_Name => "rclada_liveliness_dropped";
 
    procedure Liveliness_Detach (Reader : Entity_T; Tracker : System.Address)
-     with Import, Convention => C, External_Name => "sancta_liveliness_detach";
+     with Import, Convention => C, External_Name => "rclada_liveliness_detach";
 
 end RCL.DDS.Thin;

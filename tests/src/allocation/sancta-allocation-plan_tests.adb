@@ -10,7 +10,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
-with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.Random;
 with Sancta.Geometry;
@@ -470,7 +470,7 @@ package body Sancta.Allocation.Plan_Tests is
    begin
       Write (F, Text);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          pragma Unreferenced (P);
       begin
          Assert (False, "no error, expected '" & Expect & "'");
@@ -503,7 +503,7 @@ package body Sancta.Allocation.Plan_Tests is
    begin
       Write (F, Head & Body_Text & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -538,7 +538,7 @@ package body Sancta.Allocation.Plan_Tests is
       Write (F, Head & Body_Text & "  <done robot=""ari"" tasks=""survey.3.2""/>" & NL
              & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -582,7 +582,7 @@ package body Sancta.Allocation.Plan_Tests is
              & "  <done robot=""bo"" tasks=""survey.1.1""/>" & NL & "</mission>" & NL);
       begin
          declare
-            P : constant Problem_Access := Missions.Read (F);
+            P : constant Problem_Access := Problem_Files.Read (F);
             pragma Unreferenced (P);
          begin
             Assert (False, "done tasks in exclusive alternatives accepted");

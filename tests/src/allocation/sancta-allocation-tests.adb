@@ -10,7 +10,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
-with Sancta.Allocation.Missions;
+with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.TSPLIB;
@@ -501,7 +501,7 @@ package body Sancta.Allocation.Tests is
              & "  <done robot=""ari"" tasks=""t1""/>" & NL
              & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -519,7 +519,7 @@ package body Sancta.Allocation.Tests is
       Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0""/>" & NL & "</mission>" & NL);
       begin
          declare
-            P : constant Problem_Access := Missions.Read (F);
+            P : constant Problem_Access := Problem_Files.Read (F);
             pragma Unreferenced (P);
          begin
             Assert (False, "missing attribute not reported");
@@ -533,7 +533,7 @@ package body Sancta.Allocation.Tests is
       Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0"" y=""0"">" & NL & "</mission>" & NL);
       begin
          declare
-            P : constant Problem_Access := Missions.Read (F);
+            P : constant Problem_Access := Problem_Files.Read (F);
             pragma Unreferenced (P);
          begin
             Assert (False, "malformed XML not reported");
@@ -550,7 +550,7 @@ package body Sancta.Allocation.Tests is
    begin
       Write (F, Text);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          pragma Unreferenced (P);
       begin
          Assert (False, "no error, expected '" & Expect & "'");
@@ -580,7 +580,7 @@ package body Sancta.Allocation.Tests is
              & "  </plan>" & NL
              & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -600,7 +600,7 @@ package body Sancta.Allocation.Tests is
              & "  <task id=""t"" x=""0"" y=""5"" robots=""bo""/>" & NL
              & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Missions.Read (F);
+         P : constant Problem_Access := Problem_Files.Read (F);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
       begin
          --  bo: (0, 0) -> (0, 5) -> its end depot (10, 0): 50 + nint (111.8).

@@ -5,7 +5,7 @@ with AUnit.Test_Fixtures;
 with Sancta.Geometry;    use Sancta.Geometry;
 with Sancta.Robot.Aligners;
 with Sancta.Robot.Controllers;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.GPS_Fusion;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Mappers;
@@ -126,7 +126,7 @@ package body Sancta.Robot.Tests is
    end Path_Costs_On_Grids;
 
    procedure Executor_Progress (Unused : in out Fixture) is
-      E : Executors.Executor;
+      E : Goal_Sequencers.Sequencer;
    begin
       Assert (E.Is_Done and then E.Progress = 1.0, "empty list is done");
       E.Assign ([Pt (1.0, 0.0), Pt (2.0, 0.0), Pt (2.0, 2.0)], Tolerance => 0.2);
@@ -292,9 +292,9 @@ package body Sancta.Robot.Tests is
       Map     : Path_Costs.Planner;
       M       : Mappers.Mapper;
       N       : Navigators.Navigator;
-      Goals   : constant Executors.Point_Array :=
+      Goals   : constant Goal_Sequencers.Point_Array :=
         [Pt (4.0, 4.0), Pt (8.0, 4.0), Pt (10.0, 7.0), Pt (10.5, 0.8), Pt (4.0, 1.0)];
-      E       : Executors.Executor;
+      E       : Goal_Sequencers.Sequencer;
       Last    : Natural := 0;
       Agree, Observed, Free_Cells, Seen_Free : Natural := 0;
    begin
@@ -392,10 +392,10 @@ package body Sancta.Robot.Tests is
       C      : Scan_Matchers.Corrector;
       Config : constant Scan_Matchers.Matcher_Config := (others => <>);
       Robot  : Robot_Config := Default_Robot;
-      Goals  : constant Executors.Point_Array :=
+      Goals  : constant Goal_Sequencers.Point_Array :=
         [Pt (4.0, 4.0), Pt (8.0, 4.0), Pt (10.0, 7.0), Pt (8.0, 4.0), Pt (4.0, 4.0),
          Pt (1.0, 1.0)];
-      E      : Executors.Executor;
+      E      : Goal_Sequencers.Sequencer;
       Last   : Natural := 0;
       Odom_Error, ICP_Error : Real := 0.0;
       Samples : Natural := 0;

@@ -12,7 +12,7 @@ with Sancta.Components.Robot_Messages;
 with Sancta.Components.ROS2;
 with Sancta.Geometry;
 with Sancta.Logging;
-with Sancta.Robot.Executors;
+with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Mappers;
 with Sancta.Robot.Sensors;
@@ -312,7 +312,7 @@ package body Sancta.Components.Navigation.Tests is
 
    procedure Message_Conversions (Unused : in out Fixture) is
       Scan : Sancta.Robot.Sensors.Laser_Scan (4);
-      Goals : constant Sancta.Robot.Executors.Point_Array := RM.Parse_Goals (" 1,2 ;3.5, -4");
+      Goals : constant Sancta.Robot.Goal_Sequencers.Point_Array := RM.Parse_Goals (" 1,2 ;3.5, -4");
    begin
       Scan.Stamp := 12.25;
       Scan.Angle_Min := -1.5;

@@ -613,10 +613,10 @@ package body ROSIDL.Parser.Tests is
       end;
       Restore_Path_Variable;
 
-      --  Without SANCTA_ROOT the bundled folder is found from the program's
+      --  Without RCLADA_ROOT the bundled folder is found from the program's
       --  own folder (bin/../share/ros2_interfaces).
       declare
-         Root_Variable : constant String := "SANCTA_ROOT";
+         Root_Variable : constant String := Interfaces.Root_Variable;
          Saved : constant String :=
            (if Ada.Environment_Variables.Exists (Root_Variable)
             then Ada.Environment_Variables.Value (Root_Variable) else "");
@@ -641,7 +641,7 @@ package body ROSIDL.Parser.Tests is
                Ada.Environment_Variables.Clear (Root_Variable);
             end if;
             Assert (Path.Is_Empty or else Path.First_Element /= Via_Root,
-                    "SANCTA_ROOT names the bundled folder");
+                    "RCLADA_ROOT names the bundled folder");
          end;
       end;
 

@@ -1,5 +1,6 @@
---  SANCTA mission files (XML): robots, tasks and OR alternatives, read into
---  an allocation problem with Euclidean costs in fixed point.
+--  Allocation problem files (XML, root <mission>; not the team missions of
+--  Sancta.Team.Missions): robots, tasks and OR alternatives, read into an
+--  allocation problem with Euclidean costs in fixed point.
 --
 --     <mission scale="100">
 --       <robot id="ari" x="0" y="0" return="true" cost="1"/>
@@ -42,10 +43,10 @@
 --  (heterogeneous teams). Errors raise Format_Error "file:line: reason".
 with Sancta.Allocation.Problems;
 
-package Sancta.Allocation.Missions is
+package Sancta.Allocation.Problem_Files is
 
    function Read (File : String; Scale : Long_Float := 0.0)
      return Sancta.Allocation.Problems.Problem_Access;
    --  Scale > 0 overrides the file's scale.
 
-end Sancta.Allocation.Missions;
+end Sancta.Allocation.Problem_Files;

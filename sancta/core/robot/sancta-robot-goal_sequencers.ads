@@ -12,44 +12,44 @@
 with Ada.Containers.Vectors;
 with Sancta.Geometry;  use Sancta.Geometry;
 
-package Sancta.Robot.Executors is
+package Sancta.Robot.Goal_Sequencers is
 
    type Point_Array is array (Positive range <>) of Point;
 
-   type Executor is tagged private;
+   type Sequencer is tagged private;
 
    procedure Assign
-     (This      : in out Executor;
+     (This      : in out Sequencer;
       Goals     : Point_Array;
       Tolerance : Real := 0.2);
    --  Replaces the task list; progress restarts.
 
-   procedure Append (This : in out Executor; Goal : Point);
+   procedure Append (This : in out Sequencer; Goal : Point);
 
-   procedure Update (This : in out Executor; Current : Pose);
+   procedure Update (This : in out Sequencer; Current : Pose);
    --  Marks the current goal (and any next one already within reach) done.
 
-   procedure Skip (This : in out Executor)
+   procedure Skip (This : in out Sequencer)
      with Pre => This.Has_Goal;
    --  Gives up the current goal (it counts as finished, and as skipped).
 
-   function Skipped (This : Executor) return Natural;
+   function Skipped (This : Sequencer) return Natural;
 
-   function Total (This : Executor) return Natural;
-   function Completed (This : Executor) return Natural;
+   function Total (This : Sequencer) return Natural;
+   function Completed (This : Sequencer) return Natural;
    --  Goals finished (reached or skipped).
-   function Is_Done (This : Executor) return Boolean is
+   function Is_Done (This : Sequencer) return Boolean is
      (This.Completed = This.Total);
-   function Has_Goal (This : Executor) return Boolean is (not This.Is_Done);
+   function Has_Goal (This : Sequencer) return Boolean is (not This.Is_Done);
 
-   function Current_Goal (This : Executor) return Point
+   function Current_Goal (This : Sequencer) return Point
      with Pre => This.Has_Goal;
 
-   function Goal_Index (This : Executor) return Positive
+   function Goal_Index (This : Sequencer) return Positive
      with Pre => This.Has_Goal;
    --  Position of the current goal in the task list.
 
-   function Progress (This : Executor) return Real
+   function Progress (This : Sequencer) return Real
      with Post => Progress'Result in 0.0 .. 1.0;
    --  Completed / Total (1 for an empty list).
 
@@ -57,11 +57,11 @@ private
 
    package Point_Vectors is new Ada.Containers.Vectors (Positive, Point);
 
-   type Executor is tagged record
+   type Sequencer is tagged record
       Goals     : Point_Vectors.Vector;
       Done      : Natural := 0;
       Skips     : Natural := 0;
       Tolerance : Real := 0.2;
    end record;
 
-end Sancta.Robot.Executors;
+end Sancta.Robot.Goal_Sequencers;

@@ -1,11 +1,11 @@
-/* Liveliness tracking of matched writers: see sancta_liveliness.h. */
+/* Liveliness tracking of matched writers: see rclada_liveliness.h. */
 #include <stdlib.h>
 #include <string.h>
 #include <pthread.h>
-#include "sancta_liveliness.h"
+#include "rclada_liveliness.h"
 
-#define SANCTA_LIVELINESS_CAPACITY 1024
-#define SANCTA_LIVELINESS_KNOWN 256
+#define RCLADA_LIVELINESS_CAPACITY 1024
+#define RCLADA_LIVELINESS_KNOWN 256
 
 struct known_writer {
   dds_instance_handle_t handle;
@@ -17,13 +17,13 @@ struct change {
   int alive;
 };
 
-struct sancta_liveliness_tracker {
+struct rclada_liveliness_tracker {
   pthread_mutex_t lock;
-  struct change queue[SANCTA_LIVELINESS_CAPACITY];
+  struct change queue[RCLADA_LIVELINESS_CAPACITY];
   unsigned head;     /* index of the oldest change */
   unsigned count;
   unsigned dropped;
-  struct known_writer known[SANCTA_LIVELINESS_KNOWN];
+  struct known_writer known[RCLADA_LIVELINESS_KNOWN];
   unsigned known_count;
   unsigned known_next;   /* slot replaced next when the table is full */
   dds_listener_t *listener;
@@ -32,7 +32,7 @@ struct sancta_liveliness_tracker {
 /* The GUID of a writer seen before (a deleted writer is no longer
    matched when its last change is reported): 1 found, 0 not. Called in the
    listener only (one call at a time per reader). */
-static int known_guid (struct sancta_liveliness_tracker *t, dds_instance_handle_t handle,
+static int known_guid (struct rclada_liveliness_tracker *t, dds_instance_handle_t handle,
                        unsigned char guid[16])
 {
   unsigned i;
@@ -45,30 +45,30 @@ static int known_guid (struct sancta_liveliness_tracker *t, dds_instance_handle_
   return 0;
 }
 
-static void remember (struct sancta_liveliness_tracker *t, dds_instance_handle_t handle,
+static void remember (struct rclada_liveliness_tracker *t, dds_instance_handle_t handle,
                       const unsigned char guid[16])
 {
   unsigned char unused[16];
   struct known_writer *k;
   if (known_guid (t, handle, unused))
     return;
-  if (t->known_count < SANCTA_LIVELINESS_KNOWN) {
+  if (t->known_count < RCLADA_LIVELINESS_KNOWN) {
     k = &t->known[t->known_count++];
   } else {
     k = &t->known[t->known_next];
-    t->known_next = (t->known_next + 1) % SANCTA_LIVELINESS_KNOWN;
+    t->known_next = (t->known_next + 1) % RCLADA_LIVELINESS_KNOWN;
   }
   k->handle = handle;
   memcpy (k->guid, guid, 16);
 }
 
-static void push (struct sancta_liveliness_tracker *t, const unsigned char guid[16], int alive)
+static void push (struct rclada_liveliness_tracker *t, const unsigned char guid[16], int alive)
 {
   pthread_mutex_lock (&t->lock);
-  if (t->count == SANCTA_LIVELINESS_CAPACITY) {
+  if (t->count == RCLADA_LIVELINESS_CAPACITY) {
     t->dropped++;
   } else {
-    struct change *c = &t->queue[(t->head + t->count) % SANCTA_LIVELINESS_CAPACITY];
+    struct change *c = &t->queue[(t->head + t->count) % RCLADA_LIVELINESS_CAPACITY];
     memcpy (c->guid, guid, 16);
     c->alive = alive;
     t->count++;
@@ -79,7 +79,7 @@ static void push (struct sancta_liveliness_tracker *t, const unsigned char guid[
 static void on_liveliness_changed (dds_entity_t reader,
                                    const dds_liveliness_changed_status_t status, void *arg)
 {
-  struct sancta_liveliness_tracker *t = arg;
+  struct rclada_liveliness_tracker *t = arg;
   unsigned char guid[16];
   dds_builtintopic_endpoint_t *writer;
   if (status.alive_count_change == 0 && status.not_alive_count_change == 0)
@@ -98,9 +98,9 @@ static void on_liveliness_changed (dds_entity_t reader,
   push (t, guid, status.alive_count_change > 0 ? 1 : 0);
 }
 
-struct sancta_liveliness_tracker *sancta_liveliness_attach (dds_entity_t reader)
+struct rclada_liveliness_tracker *rclada_liveliness_attach (dds_entity_t reader)
 {
-  struct sancta_liveliness_tracker *t = calloc (1, sizeof *t);
+  struct rclada_liveliness_tracker *t = calloc (1, sizeof *t);
   if (t == NULL)
     return NULL;
   pthread_mutex_init (&t->lock, NULL);
@@ -120,7 +120,7 @@ struct sancta_liveliness_tracker *sancta_liveliness_attach (dds_entity_t reader)
   return t;
 }
 
-int sancta_liveliness_take (struct sancta_liveliness_tracker *t, unsigned char guid[16],
+int rclada_liveliness_take (struct rclada_liveliness_tracker *t, unsigned char guid[16],
                             int *alive)
 {
   int found = 0;
@@ -129,7 +129,7 @@ int sancta_liveliness_take (struct sancta_liveliness_tracker *t, unsigned char g
     struct change *c = &t->queue[t->head];
     memcpy (guid, c->guid, 16);
     *alive = c->alive;
-    t->head = (t->head + 1) % SANCTA_LIVELINESS_CAPACITY;
+    t->head = (t->head + 1) % RCLADA_LIVELINESS_CAPACITY;
     t->count--;
     found = 1;
   }
@@ -137,7 +137,7 @@ int sancta_liveliness_take (struct sancta_liveliness_tracker *t, unsigned char g
   return found;
 }
 
-unsigned sancta_liveliness_dropped (struct sancta_liveliness_tracker *t)
+unsigned rclada_liveliness_dropped (struct rclada_liveliness_tracker *t)
 {
   unsigned n;
   pthread_mutex_lock (&t->lock);
@@ -146,7 +146,7 @@ unsigned sancta_liveliness_dropped (struct sancta_liveliness_tracker *t)
   return n;
 }
 
-void sancta_liveliness_detach (dds_entity_t reader, struct sancta_liveliness_tracker *t)
+void rclada_liveliness_detach (dds_entity_t reader, struct rclada_liveliness_tracker *t)
 {
   /* Cyclone waits for a running listener call to finish before
      dds_set_listener returns, so the tracker is no longer used after it. */

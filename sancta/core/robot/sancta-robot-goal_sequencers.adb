@@ -1,7 +1,7 @@
-package body Sancta.Robot.Executors is
+package body Sancta.Robot.Goal_Sequencers is
 
    procedure Assign
-     (This      : in out Executor;
+     (This      : in out Sequencer;
       Goals     : Point_Array;
       Tolerance : Real := 0.2) is
    begin
@@ -14,12 +14,12 @@ package body Sancta.Robot.Executors is
       This.Tolerance := Tolerance;
    end Assign;
 
-   procedure Append (This : in out Executor; Goal : Point) is
+   procedure Append (This : in out Sequencer; Goal : Point) is
    begin
       This.Goals.Append (Goal);
    end Append;
 
-   procedure Update (This : in out Executor; Current : Pose) is
+   procedure Update (This : in out Sequencer; Current : Pose) is
    begin
       while This.Done < Natural (This.Goals.Length)
         and then Distance (Position (Current), This.Goals (This.Done + 1))
@@ -29,24 +29,24 @@ package body Sancta.Robot.Executors is
       end loop;
    end Update;
 
-   procedure Skip (This : in out Executor) is
+   procedure Skip (This : in out Sequencer) is
    begin
       This.Done := This.Done + 1;
       This.Skips := This.Skips + 1;
    end Skip;
 
-   function Skipped (This : Executor) return Natural is (This.Skips);
+   function Skipped (This : Sequencer) return Natural is (This.Skips);
 
-   function Total (This : Executor) return Natural is (Natural (This.Goals.Length));
+   function Total (This : Sequencer) return Natural is (Natural (This.Goals.Length));
 
-   function Completed (This : Executor) return Natural is (This.Done);
+   function Completed (This : Sequencer) return Natural is (This.Done);
 
-   function Current_Goal (This : Executor) return Point is (This.Goals (This.Done + 1));
+   function Current_Goal (This : Sequencer) return Point is (This.Goals (This.Done + 1));
 
-   function Goal_Index (This : Executor) return Positive is (This.Done + 1);
+   function Goal_Index (This : Sequencer) return Positive is (This.Done + 1);
 
-   function Progress (This : Executor) return Real is
+   function Progress (This : Sequencer) return Real is
      (if This.Goals.Is_Empty then 1.0
       else Real (This.Done) / Real (This.Goals.Length));
 
-end Sancta.Robot.Executors;
+end Sancta.Robot.Goal_Sequencers;

@@ -1,9 +1,9 @@
 /*
  * Matched-endpoint and built-in-topic queries of RCL services, clients and
- * graph (not for users: bound by RCL.DDS.Matching). See sancta_matching.c.
+ * graph (not for users: bound by RCL.DDS.Matching). See rclada_matching.c.
  */
-#ifndef SANCTA_MATCHING_H
-#define SANCTA_MATCHING_H
+#ifndef RCLADA_MATCHING_H
+#define RCLADA_MATCHING_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -13,20 +13,20 @@
    matched by "reader" whose GUID is "guid": 1 found (value copied,
    NUL-terminated, truncated to cap - 1), 0 writer matched but no such key,
    -1 no matched writer with that GUID, < -1 a DDS error code - 1. */
-int sancta_match_writer_key (dds_entity_t reader, const unsigned char guid[16],
+int rclada_match_writer_key (dds_entity_t reader, const unsigned char guid[16],
                              const char *key, char *value, size_t cap);
 
 /* 1 when "writer" has matched a reader whose USER_DATA has key=value,
    0 when not, < 0 a DDS error. */
-int sancta_match_has_reader (dds_entity_t writer, const char *key, const char *value);
+int rclada_match_has_reader (dds_entity_t writer, const char *key, const char *value);
 
 /* rmw_cyclonedds's "service is available": a reader matched by the request
    writer and a writer matched by the reply reader carry the same serviceid
    (without serviceids: both matches exist). 1 yes, 0 no, < 0 DDS error. */
-int sancta_match_service_available (dds_entity_t request_writer, dds_entity_t reply_reader);
+int rclada_match_service_available (dds_entity_t request_writer, dds_entity_t reply_reader);
 
 /* One endpoint (or participant) of the DDS built-in topics. */
-struct sancta_endpoint {
+struct rclada_endpoint {
   const char *topic_name;     /* "" for participants */
   const char *type_name;
   unsigned char key[16];      /* endpoint (or participant) GUID */
@@ -42,12 +42,12 @@ struct sancta_endpoint {
   const char *user_data;      /* NUL-terminated copy, "" when none */
 };
 
-typedef void (*sancta_endpoint_cb) (void *context, const struct sancta_endpoint *ep);
+typedef void (*rclada_endpoint_cb) (void *context, const struct rclada_endpoint *ep);
 
 /* Calls "cb" for every alive instance of the built-in topic "which"
    (0 DCPSParticipant, 1 DCPSPublication, 2 DCPSSubscription) known to
    "participant". Returns the count, or < 0 a DDS error. */
-int sancta_match_builtin (dds_entity_t participant, int which, sancta_endpoint_cb cb,
+int rclada_match_builtin (dds_entity_t participant, int which, rclada_endpoint_cb cb,
                           void *context);
 
 #endif

@@ -11,7 +11,7 @@ with Unicode.CES;
 with Sancta.Allocation.Problems; use Sancta.Allocation.Problems;
 with Sancta.Geometry;
 
-package body Sancta.Allocation.Missions is
+package body Sancta.Allocation.Problem_Files is
 
    use Ada.Strings.Unbounded;
 
@@ -725,4 +725,4 @@ package body Sancta.Allocation.Missions is
       end;
    end Read;
 
-end Sancta.Allocation.Missions;
+end Sancta.Allocation.Problem_Files;

@@ -10,7 +10,7 @@
  * 4-byte encapsulation header: the Ada side does all (de)serialization.
  *
  * The application-level "sample" of this sertype (used only by dds_write /
- * dds_take, which RCL does not use itself) is a sancta_raw_sample: a pointer
+ * dds_take, which RCL does not use itself) is a rclada_raw_sample: a pointer
  * to the CDR bytes and their count.
  */
 #include <stdlib.h>
@@ -23,7 +23,7 @@
 #include "dds/ddsi/ddsi_serdata.h"
 #include "dds/ddsi/q_radmin.h"
 
-#include "sancta_raw_cdr.h"
+#include "rclada_raw_cdr.h"
 
 struct raw_sertype {
   struct ddsi_sertype c;
@@ -146,7 +146,7 @@ static struct ddsi_serdata *raw_serdata_from_sample (const struct ddsi_sertype *
                                                      enum ddsi_serdata_kind kind,
                                                      const void *sample)
 {
-  const struct sancta_raw_sample *s = sample;
+  const struct rclada_raw_sample *s = sample;
   struct raw_serdata *d;
   if (kind != SDK_DATA) {
     d = raw_serdata_new (type, kind, 0);
@@ -194,7 +194,7 @@ static bool raw_serdata_to_sample (const struct ddsi_serdata *dcmn, void *sample
                                    void **bufptr, void *buflim)
 {
   const struct raw_serdata *d = (const struct raw_serdata *) dcmn;
-  struct sancta_raw_sample *s = sample;
+  struct rclada_raw_sample *s = sample;
   (void) bufptr; (void) buflim;
   if (d->c.kind != SDK_DATA)
     return true;
@@ -265,13 +265,13 @@ static void raw_sertype_zero_samples (const struct ddsi_sertype *tp, void *sampl
                                       size_t count)
 {
   (void) tp;
-  memset (samples, 0, count * sizeof (struct sancta_raw_sample));
+  memset (samples, 0, count * sizeof (struct rclada_raw_sample));
 }
 
 static void raw_sertype_realloc_samples (void **ptrs, const struct ddsi_sertype *tp, void *old,
                                          size_t oldcount, size_t count)
 {
-  struct sancta_raw_sample *s;
+  struct rclada_raw_sample *s;
   (void) tp;
   s = ddsrt_realloc (old, count * sizeof (*s));
   if (s != NULL && count > oldcount)
@@ -288,7 +288,7 @@ static void raw_sertype_free_samples (const struct ddsi_sertype *tp, void **ptrs
     return;
   if (op & DDS_FREE_CONTENTS_BIT) {
     for (size_t i = 0; i < count; i++) {
-      struct sancta_raw_sample *s = ptrs[i];
+      struct rclada_raw_sample *s = ptrs[i];
       ddsrt_free (s->data);
       s->data = NULL;
       s->size = 0;
@@ -314,7 +314,7 @@ static uint32_t raw_sertype_hash (const struct ddsi_sertype *tp)
 static size_t raw_sertype_get_serialized_size (const struct ddsi_sertype *type,
                                                const void *sample)
 {
-  const struct sancta_raw_sample *s = sample;
+  const struct rclada_raw_sample *s = sample;
   (void) type;
   return s->size;
 }
@@ -322,7 +322,7 @@ static size_t raw_sertype_get_serialized_size (const struct ddsi_sertype *type,
 static bool raw_sertype_serialize_into (const struct ddsi_sertype *type, const void *sample,
                                         void *dst_buffer, size_t dst_size)
 {
-  const struct sancta_raw_sample *s = sample;
+  const struct rclada_raw_sample *s = sample;
   (void) type;
   if (dst_size < s->size)
     return false;
@@ -350,7 +350,7 @@ static const struct ddsi_sertype_ops raw_sertype_ops = {
 /* ------------------------------------------------------------------ */
 /* entry points                                                       */
 
-dds_entity_t sancta_dds_create_raw_topic (dds_entity_t participant, const char *topic_name,
+dds_entity_t rclada_dds_create_raw_topic (dds_entity_t participant, const char *topic_name,
                                           const char *type_name, const dds_qos_t *qos,
                                           const void **sertype)
 {
@@ -374,7 +374,7 @@ dds_entity_t sancta_dds_create_raw_topic (dds_entity_t participant, const char *
   return topic;
 }
 
-dds_return_t sancta_dds_write_raw (dds_entity_t writer, const void *sertype,
+dds_return_t rclada_dds_write_raw (dds_entity_t writer, const void *sertype,
                                    const void *bytes, size_t size, dds_time_t timestamp)
 {
   const struct ddsi_sertype *type = sertype;
@@ -391,7 +391,7 @@ dds_return_t sancta_dds_write_raw (dds_entity_t writer, const void *sertype,
   return dds_writecdr (writer, sd); /* consumes the reference */
 }
 
-int32_t sancta_dds_take_raw (dds_entity_t reader, void **serdata, struct sancta_raw_info *info)
+int32_t rclada_dds_take_raw (dds_entity_t reader, void **serdata, struct rclada_raw_info *info)
 {
   struct ddsi_serdata *sd = NULL;
   dds_sample_info_t si;
@@ -411,20 +411,20 @@ int32_t sancta_dds_take_raw (dds_entity_t reader, void **serdata, struct sancta_
   return 1;
 }
 
-const unsigned char *sancta_dds_serdata_bytes (const void *serdata, uint32_t *size)
+const unsigned char *rclada_dds_serdata_bytes (const void *serdata, uint32_t *size)
 {
   const struct raw_serdata *d = serdata;
   *size = d->size;
   return d->data;
 }
 
-void sancta_dds_serdata_release (void *serdata)
+void rclada_dds_serdata_release (void *serdata)
 {
   if (serdata != NULL)
     ddsi_serdata_unref (serdata);
 }
 
-dds_return_t sancta_dds_publication_guid (dds_entity_t reader, dds_instance_handle_t handle,
+dds_return_t rclada_dds_publication_guid (dds_entity_t reader, dds_instance_handle_t handle,
                                           unsigned char guid[16])
 {
   dds_builtintopic_endpoint_t *ep = dds_get_matched_publication_data (reader, handle);
@@ -435,7 +435,7 @@ dds_return_t sancta_dds_publication_guid (dds_entity_t reader, dds_instance_hand
   return DDS_RETCODE_OK;
 }
 
-dds_return_t sancta_dds_entity_guid (dds_entity_t entity, unsigned char guid[16])
+dds_return_t rclada_dds_entity_guid (dds_entity_t entity, unsigned char guid[16])
 {
   dds_guid_t g;
   dds_return_t rc = dds_get_guid (entity, &g);
@@ -461,13 +461,13 @@ static void block_stop_signals (sigset_t *old)
   pthread_sigmask (SIG_BLOCK, &set, old);
 }
 
-void sancta_block_stop_signals (void)
+void rclada_block_stop_signals (void)
 {
   sigset_t old;
   block_stop_signals (&old);
 }
 
-dds_entity_t sancta_dds_create_participant (dds_domainid_t domain, const dds_qos_t *qos)
+dds_entity_t rclada_dds_create_participant (dds_domainid_t domain, const dds_qos_t *qos)
 {
   sigset_t old;
   dds_entity_t result;
@@ -477,7 +477,7 @@ dds_entity_t sancta_dds_create_participant (dds_domainid_t domain, const dds_qos
   return result;
 }
 
-dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config)
+dds_entity_t rclada_dds_create_domain (dds_domainid_t domain, const char *config)
 {
   sigset_t old;
   dds_entity_t result;
@@ -491,7 +491,7 @@ dds_entity_t sancta_dds_create_domain (dds_domainid_t domain, const char *config
 /* Writing without an intermediate buffer: the caller serializes straight
    into a new serdata's storage. */
 
-void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **buffer)
+void *rclada_dds_serdata_new (const void *sertype, size_t size, unsigned char **buffer)
 {
   struct raw_serdata *d = raw_serdata_new (sertype, SDK_DATA, size);
   if (d == NULL) {
@@ -502,7 +502,7 @@ void *sancta_dds_serdata_new (const void *sertype, size_t size, unsigned char **
   return d;
 }
 
-dds_return_t sancta_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
+dds_return_t rclada_dds_write_serdata (dds_entity_t writer, void *serdata, size_t used,
                                        dds_time_t timestamp)
 {
   struct raw_serdata *d = serdata;

@@ -1,10 +1,10 @@
 /*
- * Matched-endpoint and built-in-topic queries (see sancta_matching.h).
+ * Matched-endpoint and built-in-topic queries (see rclada_matching.h).
  * Plain Cyclone DDS 0.10 C API; nothing is retained between calls.
  */
 #include <string.h>
 #include <stdlib.h>
-#include "sancta_matching.h"
+#include "rclada_matching.h"
 
 #define MAX_MATCHES 1024
 
@@ -49,7 +49,7 @@ static int qos_key (const dds_qos_t *qos, const char *key, char *value, size_t c
   return found;
 }
 
-int sancta_match_writer_key (dds_entity_t reader, const unsigned char guid[16],
+int rclada_match_writer_key (dds_entity_t reader, const unsigned char guid[16],
                              const char *key, char *value, size_t cap)
 {
   dds_instance_handle_t hs[MAX_MATCHES];
@@ -70,7 +70,7 @@ int sancta_match_writer_key (dds_entity_t reader, const unsigned char guid[16],
   return -1;
 }
 
-int sancta_match_has_reader (dds_entity_t writer, const char *key, const char *value)
+int rclada_match_has_reader (dds_entity_t writer, const char *key, const char *value)
 {
   dds_instance_handle_t hs[MAX_MATCHES];
   char found[256];
@@ -89,7 +89,7 @@ int sancta_match_has_reader (dds_entity_t writer, const char *key, const char *v
   return 0;
 }
 
-int sancta_match_service_available (dds_entity_t request_writer, dds_entity_t reply_reader)
+int rclada_match_service_available (dds_entity_t request_writer, dds_entity_t reply_reader)
 {
   dds_instance_handle_t rds[MAX_MATCHES], wrs[MAX_MATCHES];
   char id[256];
@@ -127,7 +127,7 @@ int sancta_match_service_available (dds_entity_t request_writer, dds_entity_t re
   return 0;
 }
 
-static void fill_qos (const dds_qos_t *qos, struct sancta_endpoint *out, char **ud_copy)
+static void fill_qos (const dds_qos_t *qos, struct rclada_endpoint *out, char **ud_copy)
 {
   dds_reliability_kind_t rk;
   dds_durability_kind_t dk;
@@ -174,7 +174,7 @@ static void fill_qos (const dds_qos_t *qos, struct sancta_endpoint *out, char **
   dds_free (ud);
 }
 
-int sancta_match_builtin (dds_entity_t participant, int which, sancta_endpoint_cb cb,
+int rclada_match_builtin (dds_entity_t participant, int which, rclada_endpoint_cb cb,
                           void *context)
 {
   dds_entity_t topic = which == 0 ? DDS_BUILTIN_TOPIC_DCPSPARTICIPANT
@@ -194,7 +194,7 @@ int sancta_match_builtin (dds_entity_t participant, int which, sancta_endpoint_c
     if (n == 0)
       break;
     for (int i = 0; i < n; i++) {
-      struct sancta_endpoint ep;
+      struct rclada_endpoint ep;
       char *ud = NULL;
       if (!infos[i].valid_data || infos[i].instance_state != DDS_IST_ALIVE)
         continue;
