@@ -191,10 +191,14 @@ def test_fast_dds_client_is_refused_clearly_by_an_ada_server():
     server = ps.start("server")
     try:
         with Peer("--node", "fd_client", "--call", "/add_two_ints", 2, 3, "--exit-after", 1,
-                  "--duration", 6) as peer:
-            peer.proc.wait(timeout=30)
+                  "--duration", 10) as peer:
+            peer.proc.wait(timeout=40)
             peer.stop()
     finally:
-        out = stop(server)
+        server.terminate()  # (SIGTERM: the server exits cleanly, its log flushed)
+        try:
+            out = server.communicate(timeout=20)[0]
+        except subprocess.TimeoutExpired:
+            out = stop(server)
     assert not [line for line in peer.lines if line.startswith("reply")]
     assert "malformed request dropped" in out and "byte offset" in out, out
