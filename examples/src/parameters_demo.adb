@@ -7,6 +7,7 @@
 with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Strings.Unbounded;
+with RCL.Arguments;
 with RCL.Logging;
 with RCL.Nodes;
 with RCL.Parameters;
@@ -27,45 +28,50 @@ procedure Parameters_Demo is
       return "";
    end Check;
 
-   Node : Nodes.Node := Nodes.Init ("parameters_demo");
-   Last : array (1 .. 4) of Unbounded_String;
-   Watched : constant array (1 .. 4) of Unbounded_String :=
-     [To_Unbounded_String ("rate"), To_Unbounded_String ("name"),
-      To_Unbounded_String ("gain"), To_Unbounded_String ("ids")];
-
-   procedure Watch
-     (Node    : in out Nodes.Node'Class;
-      Timer   : in out Timers.Timer;
-      Elapsed : Duration)
-   is
-      pragma Unreferenced (Timer, Elapsed);
-   begin
-      for I in Watched'Range loop
-         declare
-            Now : constant String := Image (Get (Node, To_String (Watched (I))));
-         begin
-            if Now /= To_String (Last (I)) then
-               Last (I) := To_Unbounded_String (Now);
-               Logging.Info ("parameter " & To_String (Watched (I)) & " = " & Now);
-            end if;
-         end;
-      end loop;
-   end Watch;
-
 begin
-   On_Set (Node, Check'Access);
-   --  First: command-line overrides are checked too.
-   Declare_Parameter (Node, "rate", To_Value (Long_Long_Integer'(10)), "publish rate (Hz)");
-   Declare_Parameter (Node, "name", To_Value ("demo"), "a display name");
-   Declare_Parameter (Node, "gain", To_Value (Long_Float'(1.5)));
-   Declare_Parameter (Node, "ids", Parse ("[1, 2, 3]"));
-   Declare_Parameter (Node, "frozen", To_Value (True), Read_Only => True);
-   Serve (Node);
-   Node.Timer_Add (0.05, Watch'Access);
-   Logging.Info ("parameters ready");
-   Node.Spin;
+   RCL.Arguments.Load;
+   --  A bad --ros-args is reported below, not raised while declaring Node.
+   declare
+      Node : Nodes.Node := Nodes.Init ("parameters_demo");
+      Last : array (1 .. 4) of Unbounded_String;
+      Watched : constant array (1 .. 4) of Unbounded_String :=
+        [To_Unbounded_String ("rate"), To_Unbounded_String ("name"),
+         To_Unbounded_String ("gain"), To_Unbounded_String ("ids")];
+
+      procedure Watch
+        (Node    : in out Nodes.Node'Class;
+         Timer   : in out Timers.Timer;
+         Elapsed : Duration)
+      is
+         pragma Unreferenced (Timer, Elapsed);
+      begin
+         for I in Watched'Range loop
+            declare
+               Now : constant String := Image (Get (Node, To_String (Watched (I))));
+            begin
+               if Now /= To_String (Last (I)) then
+                  Last (I) := To_Unbounded_String (Now);
+                  Logging.Info ("parameter " & To_String (Watched (I)) & " = " & Now);
+               end if;
+            end;
+         end loop;
+      end Watch;
+
+   begin
+      On_Set (Node, Check'Access);
+      --  First: command-line overrides are checked too.
+      Declare_Parameter (Node, "rate", To_Value (Long_Long_Integer'(10)), "publish rate (Hz)");
+      Declare_Parameter (Node, "name", To_Value ("demo"), "a display name");
+      Declare_Parameter (Node, "gain", To_Value (Long_Float'(1.5)));
+      Declare_Parameter (Node, "ids", Parse ("[1, 2, 3]"));
+      Declare_Parameter (Node, "frozen", To_Value (True), Read_Only => True);
+      Serve (Node);
+      Node.Timer_Add (0.05, Watch'Access);
+      Logging.Info ("parameters ready");
+      Node.Spin;
+   end;
 exception
-   when E : Parameter_Error | RCL.YAML.Parse_Error =>
+   when E : Parameter_Error | RCL.YAML.Parse_Error | RCL.Arguments.Argument_Error =>
       Logging.Error (Ada.Exceptions.Exception_Message (E));
       Ada.Command_Line.Set_Exit_Status (2);
 end Parameters_Demo;

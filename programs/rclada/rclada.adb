@@ -3,6 +3,7 @@
 --  Rclada_Commands.Usage or "rclada --help".
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Text_IO;
 with RCL;
 with RCL.Contexts;
@@ -42,6 +43,10 @@ begin
       Param_Command (Args);
    elsif Verb = "interface" then
       Interface_Command (Args);
+   elsif Verb = "action" then
+      Action_Command (Args);
+   elsif Verb = "lifecycle" then
+      Lifecycle_Command (Args);
    elsif Verb = "security" then
       Security_Command (Args);
    else
@@ -52,12 +57,15 @@ exception
    when E : Usage_Error =>
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       Put_Line (Standard_Error, Usage ((if Verb in "node" | "topic" | "service" | "param"
-                                          | "interface" | "security" then Verb else "")));
+                                          | "interface" | "action"
+                                          | "lifecycle" | "security" then Verb else "")));
       CL.Set_Exit_Status (2);
    when E : Command_Error | RCL.ROS_Exception | RCL.RCL_Timeout | ROSIDL.Unknown_Type
       | ROSIDL.Definition_Error | RCL.Names.Name_Error =>
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       CL.Set_Exit_Status (1);
+   when Ada.IO_Exceptions.Device_Error =>
+      null;  --  Our output was closed ("rclada topic echo /x | head"): done.
    when E : others =>
       --  Last resort: a bug, reported in one line instead of a traceback.
       Put_Line (Standard_Error, "rclada: internal error: "

@@ -1,4 +1,5 @@
 with RCL.Parameters;
+with RCL.YAML;
 
 separate (Rclada_Commands)
 procedure Param_Command (Args : Arguments) is
@@ -119,6 +120,105 @@ begin
             raise Command_Error with "Setting parameter failed: "
               & Results.Element (1).Field_Reference ("reason").Get_String;
          end if;
+      end;
+   elsif Pos (1) = "delete" then
+      Need (3, "param delete takes a node name and a parameter name");
+      declare
+         procedure Fill (Request : ROSIDL.Dynamic.Message) is
+            Params : constant ROSIDL.Dynamic.Array_Ref := Request ("parameters").As_Array;
+         begin
+            Params.Resize (1);
+            Params.Element (1).Field_Reference ("name").Set_String (Pos (3));
+            --  Value type NOT_SET: undeclare, as rclcpp does.
+         end Fill;
+         Response : constant ROSIDL.Dynamic.Message :=
+           Call (Fully_Qualified (Pos (2)), "set_parameters", "SetParameters", Fill'Access);
+         Results : constant ROSIDL.Dynamic.Array_Ref := Response ("results").As_Array;
+      begin
+         if Results.Length = 1
+           and then Results.Element (1).Field_Reference ("successful").As_Bool.Element.all
+         then
+            Put_Line ("Deleted parameter successfully");
+         else
+            raise Command_Error with "Deleting parameter failed"
+              & (if Results.Length = 1
+                 then ": " & Results.Element (1).Field_Reference ("reason").Get_String else "");
+         end if;
+      end;
+   elsif Pos (1) = "load" then
+      Need (3, "param load takes a node name and a parameter file");
+      declare
+         use RCL.YAML;
+         Node_Name : constant String := Fully_Qualified (Pos (2));
+         D         : constant Document := Parse_File (Pos (3));
+         Names     : Text_Vectors.Vector;
+         Values    : array (1 .. 1000) of Value;
+         Count     : Natural := 0;
+
+         procedure Flatten (Prefix : String; N : RCL.YAML.Node) is
+         begin
+            for I in 1 .. D.Length (N) loop
+               if D.Kind (D.Item (N, I)) = Mapping then
+                  Flatten (Prefix & D.Key (N, I) & ".", D.Item (N, I));
+               elsif Count < Values'Last then
+                  Count := Count + 1;
+                  Names.Append (To_Unbounded_String (Prefix & D.Key (N, I)));
+                  Values (Count) := From_YAML (D, D.Item (N, I));
+               end if;
+            end loop;
+         end Flatten;
+
+         procedure Fill (Request : ROSIDL.Dynamic.Message) is
+            Params : constant ROSIDL.Dynamic.Array_Ref := Request ("parameters").As_Array;
+         begin
+            Params.Resize (Count);
+            for I in 1 .. Count loop
+               Params.Element (I).Field_Reference ("name").Set_String (To_String (Names (I)));
+               Put_Parameter_Value (Params.Element (I).Field_Reference ("value"), Values (I));
+            end loop;
+         end Fill;
+      begin
+         if D.Kind (D.Root) = Mapping then
+            for I in 1 .. D.Length (D.Root) loop
+               declare
+                  K : constant String := D.Key (D.Root, I);
+                  V : constant RCL.YAML.Node := D.Item (D.Root, I);
+               begin
+                  if (K = "/**" or else Fully_Qualified (K) = Node_Name)
+                    and then D.Kind (V) = Mapping
+                  then
+                     for J in 1 .. D.Length (V) loop
+                        if D.Key (V, J) = "ros__parameters"
+                          and then D.Kind (D.Item (V, J)) = Mapping
+                        then
+                           Flatten ("", D.Item (V, J));
+                        end if;
+                     end loop;
+                  end if;
+               end;
+            end loop;
+         end if;
+         if Count = 0 then
+            raise Command_Error with "Param file '" & Pos (3) & "' has no parameters for "
+              & Node_Name;
+         end if;
+         declare
+            Response : constant ROSIDL.Dynamic.Message :=
+              Call (Node_Name, "set_parameters", "SetParameters", Fill'Access);
+            Results  : constant ROSIDL.Dynamic.Array_Ref := Response ("results").As_Array;
+         begin
+            for I in 1 .. Natural'Min (Count, Results.Length) loop
+               if Results.Element (I).Field_Reference ("successful").As_Bool.Element.all then
+                  Put_Line ("Set parameter " & To_String (Names (I)) & " successful");
+               else
+                  Put_Line ("Set parameter " & To_String (Names (I)) & " failed: "
+                            & Results.Element (I).Field_Reference ("reason").Get_String);
+               end if;
+            end loop;
+         end;
+      exception
+         when E : Parse_Error =>
+            raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
    elsif Pos (1) = "dump" then
       Need (2, "param dump takes one node name");

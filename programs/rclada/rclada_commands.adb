@@ -1,9 +1,11 @@
 with Ada.Characters.Latin_1;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Float_Text_IO;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
+with Ada.Strings.Maps;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with ROSIDL.CDR;
@@ -12,6 +14,7 @@ with ROSIDL.Dynamic;
 with ROSIDL.Interfaces;
 with ROSIDL.Typesupport;
 with RCL.Clients;
+with RCL.Clocks;
 with RCL.Contexts;
 with RCL.DDS;
 with RCL.Graph.Queries;
@@ -50,12 +53,15 @@ package body Rclada_Commands is
            & "       rclada topic echo TOPIC [TYPE] [--once] [--count N] [--best-effort]" & LF
            & "       rclada topic pub TOPIC TYPE 'YAML' [--once] [--rate HZ] [--times N]" & LF
            & "       rclada topic hz TOPIC [TYPE] [--count N] [--window N]" & LF
+           & "       rclada topic bw TOPIC [--window N]     rclada topic delay TOPIC" & LF
+           & "       rclada topic type TOPIC                rclada topic find TYPE" & LF
            & "  TYPE: pkg/msg/Name (or pkg/Name); YAML: the message's fields," & LF
            & "  e.g. '{data: hello}' or '{linear: {x: 1.0}}'. pub publishes at 1 Hz" & LF
            & "  until Ctrl-C unless --once or --times is given.";
       elsif Verb = "service" then
          return "usage: rclada service list [-t|--show-types] [--spin-time S]" & LF
            & "       rclada service call SERVICE TYPE ['YAML'] [--timeout S]" & LF
+           & "       rclada service type SERVICE            rclada service find TYPE" & LF
            & "  TYPE: pkg/srv/Name; YAML: the request's fields, e.g. '{a: 1, b: 2}'";
       elsif Verb = "param" then
          return "usage: rclada param list NODE_NAME" & LF
@@ -63,8 +69,24 @@ package body Rclada_Commands is
            & "       rclada param set NODE_NAME PARAMETER VALUE" & LF
            & "       rclada param describe NODE_NAME PARAMETER" & LF
            & "       rclada param dump NODE_NAME   (YAML for --params-file)  [--timeout S]" & LF
+           & "       rclada param delete NODE_NAME PARAMETER" & LF
+           & "       rclada param load NODE_NAME FILE   (a --params-file YAML)" & LF
            & "  through the node's ~/list_parameters, ~/get_parameters and" & LF
            & "  ~/set_parameters services; VALUE is YAML (1, 2.5, true, text, [1, 2])";
+      elsif Verb = "action" then
+         return "usage: rclada action list [-t|--show-types] [--spin-time S]" & LF
+           & "       rclada action info ACTION [-t|--show-types]" & LF
+           & "       rclada action type ACTION" & LF
+           & "       rclada action send_goal ACTION TYPE 'YAML' [-f|--feedback] [--timeout S]"
+           & LF
+           & "  TYPE: pkg/action/Name; YAML: the goal's fields, e.g. '{order: 5}'";
+      elsif Verb = "lifecycle" then
+         return "usage: rclada lifecycle nodes [--spin-time S]" & LF
+           & "       rclada lifecycle get NODE_NAME" & LF
+           & "       rclada lifecycle set NODE_NAME TRANSITION   (configure, activate...)" & LF
+           & "       rclada lifecycle list NODE_NAME [-a|--all]" & LF
+           & "  through the managed node's ~/get_state, ~/change_state,"
+           & " ~/get_available_transitions services";
       elsif Verb = "interface" then
          return "usage: rclada interface show TYPE" & LF
            & "       rclada interface list [-m|--only-msgs] [-s|--only-srvs] [-a|--only-actions]"
@@ -82,10 +104,12 @@ package body Rclada_Commands is
       else
          return "usage: rclada VERB ... (rclada VERB --help for details)" & LF
            & "  node       list | info NODE" & LF
-           & "  topic      list [-t] | info | echo | pub | hz" & LF
-           & "  service    list [-t] | call NAME TYPE 'YAML'" & LF
-           & "  param      list | get | set | describe | dump" & LF
+           & "  topic      list [-t] | info | echo | pub | hz | bw | delay | type | find" & LF
+           & "  service    list [-t] | call NAME TYPE 'YAML' | type | find" & LF
+           & "  param      list | get | set | describe | dump | delete | load" & LF
            & "  interface  show TYPE | list | package PKG" & LF
+           & "  action     list [-t] | info | type | send_goal NAME TYPE 'YAML' [-f]" & LF
+           & "  lifecycle  nodes | get NODE | set NODE TRANSITION | list NODE" & LF
            & "  security   create_keystore | create_enclave | create_permission | list_enclaves"
            & LF
            & "The network is the one of ROS_DOMAIN_ID (CYCLONEDDS_URI, ROS_LOCALHOST_ONLY).";
@@ -201,11 +225,20 @@ package body Rclada_Commands is
       end if;
    end Discover;
 
+   procedure Output_Closed is
+   --  The reader of our standard output is gone ("rclada topic hz /x | head"):
+   --  stop quietly, as a command ending its output.
+   begin
+      RCL.Contexts.Shutdown;
+   end Output_Closed;
+
    function Tool_Node return RCL.Nodes.Node is
       function Getpid return Integer with Import, Convention => C, External_Name => "getpid";
       Pid : constant String := Integer'Image (Getpid);
    begin
-      return RCL.Nodes.Init ("_rclada_" & Pid (Pid'First + 1 .. Pid'Last));
+      return RCL.Nodes.Init ("_rclada_" & Pid (Pid'First + 1 .. Pid'Last),
+                             Options => (Start_Parameter_Services => False,
+                                         Use_Global_Arguments     => False));
    end Tool_Node;
 
    --------------
@@ -347,6 +380,21 @@ package body Rclada_Commands is
          Put_Line (Text);
       end if;
    end Put_Block;
+
+   function Indented (Text : String; Prefix : String := "    ") return String is
+      --  Text with Prefix before each of its lines.
+      Result : Unbounded_String;
+      At_Start : Boolean := True;
+   begin
+      for C of Text loop
+         if At_Start and then C /= LF then
+            Append (Result, Prefix);
+         end if;
+         Append (Result, C);
+         At_Start := C = LF;
+      end loop;
+      return To_String (Result);
+   end Indented;
 
    procedure Put_Lines (Text : String) is
       --  Text without its trailing empty lines, ending with one line end.
@@ -605,6 +653,8 @@ package body Rclada_Commands is
          when E : ROSIDL.Decode_Error =>
             Put_Line (Standard_Error, "malformed sample skipped: "
                       & Ada.Exceptions.Exception_Message (E));
+         when Ada.IO_Exceptions.Device_Error =>
+            Output_Closed;
       end On_Data;
    begin
       Node.Subscribe_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic,
@@ -736,6 +786,9 @@ package body Rclada_Commands is
          if Reports > 0 and then Reported >= Reports then
             RCL.Contexts.Shutdown;
          end if;
+      exception
+         when Ada.IO_Exceptions.Device_Error =>
+            Output_Closed;
       end On_Timer;
    begin
       Node.Subscribe_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, On_Data'Access);
@@ -743,13 +796,16 @@ package body Rclada_Commands is
       Node.Spin;
    end Topic_Hz;
 
+   procedure Graph_Verbs (Verb : String; Args : Arguments);
+
    procedure Topic_Command (Args : Arguments) is
       Pos : constant Arguments := Positional (Args);
       function Arg (I : Positive) return String is
         (if Natural (Pos.Length) >= I then Pos (I) else "");
    begin
       if Pos.Is_Empty then
-         raise Usage_Error with "missing sub-command (list, info, echo, pub, hz)";
+         raise Usage_Error with
+           "missing sub-command (list, info, echo, pub, hz, bw, delay, type, find)";
       elsif Pos (1) = "list" then
          Check_Options (Args, "-t --show-types --spin-time");
          Topic_List (Args);
@@ -777,6 +833,8 @@ package body Rclada_Commands is
             raise Usage_Error with "topic hz takes a topic name and optionally a type";
          end if;
          Topic_Hz (Checked_Name (Arg (2)), Arg (3), Args);
+      elsif Pos (1) in "type" | "find" | "bw" | "delay" then
+         Graph_Verbs ("topic", Args);
       else
          raise Usage_Error with "unknown topic sub-command '" & Pos (1) & "'";
       end if;
@@ -834,6 +892,8 @@ package body Rclada_Commands is
             when E : RCL.RCL_Timeout =>
                raise Command_Error with Ada.Exceptions.Exception_Message (E);
          end;
+      elsif Pos (1) in "type" | "find" then
+         Graph_Verbs ("service", Args);
       else
          raise Usage_Error with "unknown service sub-command '" & Pos (1) & "'";
       end if;
@@ -844,6 +904,13 @@ package body Rclada_Commands is
    -----------
 
    procedure Param_Command (Args : Arguments) is separate;
+
+   procedure Action_Command (Args : Arguments) is separate;
+
+   procedure Graph_Verbs (Verb : String; Args : Arguments) is separate;
+   --  topic type | find | bw | delay, service type | find.
+
+   procedure Lifecycle_Command (Args : Arguments) is separate;
 
    procedure Security_Command (Args : Arguments) is separate;
 

@@ -20,6 +20,8 @@ package Rclada_Commands is
    procedure Service_Command (Args : Arguments);
    procedure Param_Command (Args : Arguments);
    procedure Interface_Command (Args : Arguments);
+   procedure Action_Command (Args : Arguments);
+   procedure Lifecycle_Command (Args : Arguments);
    procedure Security_Command (Args : Arguments);
 
    function Usage (Verb : String) return String;

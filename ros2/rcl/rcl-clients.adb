@@ -45,7 +45,7 @@ package body RCL.Clients is
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
       use ROSIDL.Typesupport;
-      FQ : constant String := Node.Expand (Name);
+      FQ : constant String := Node.Expand_Service (Name);
       P  : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
       Id : constant String := "clientid=" & RCL.DDS.Matching.New_Id (P.all) & ";";
    begin
@@ -375,7 +375,7 @@ package body RCL.Clients is
       --  The client is made outside the protected object: making it
       --  announces endpoints (RCL.Graph), which may block.
       Key    : constant String :=
-        Node.Fully_Qualified_Name & " " & Node.Expand (Name) & " "
+        Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name) & " "
         & ROSIDL.Typesupport.Full_Name (Support);
       Result : Client_Access := Cache.Find (Key);
       Mine   : Client_Access;

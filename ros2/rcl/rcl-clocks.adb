@@ -1,7 +1,8 @@
-with Ada.Command_Line;
 with Ada.Real_Time;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.Arguments;
+with RCL.Contexts;
 with RCL.DDS;
 with RCL.Nodes;
 with RCL.QoS;
@@ -58,6 +59,8 @@ package body RCL.Clocks is
    procedure Set_Sim_Time (Time : Nanoseconds) is
    begin
       Sim.Set (Time);
+      RCL.Contexts.Wake_Executors;
+      --  Their timers on simulated time may be due now.
    end Set_Sim_Time;
 
    function Sim_Time_Enabled return Boolean is (Sim.Enabled);
@@ -86,19 +89,18 @@ package body RCL.Clocks is
    end Enable_Sim_Time;
 
    function Sim_Time_Requested return Boolean is
-      use Ada.Command_Line;
-      In_Ros_Args : Boolean := False;
+      Args : RCL.Arguments.Argument_List;
+      I    : Positive := 1;
    begin
-      for I in 1 .. Argument_Count loop
-         if Argument (I) = "--ros-args" then
-            In_Ros_Args := True;
-         elsif Argument (I) = "--" then
-            In_Ros_Args := False;
-         elsif In_Ros_Args and then I > 1 and then Argument (I - 1) in "-p" | "--param"
-           and then Argument (I) in "use_sim_time:=true" | "use_sim_time:=True"
+      RCL.Arguments.Load;
+      Args := RCL.Arguments.Parameter_Arguments;
+      while I < Natural (Args.Length) loop
+         if Args (I) in "-p" | "--param"
+           and then Args (I + 1) in "use_sim_time:=true" | "use_sim_time:=True"
          then
             return True;
          end if;
+         I := I + 2;
       end loop;
       return False;
    end Sim_Time_Requested;

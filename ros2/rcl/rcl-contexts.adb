@@ -7,6 +7,7 @@ with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
 with GNAT.OS_Lib;
+with RCL.Arguments;
 with RCL.Security;
 
 package body RCL.Contexts is
@@ -40,6 +41,7 @@ package body RCL.Contexts is
       function Localhost_Only return Boolean;
       procedure Set_Shutdown (Wakers : out Waker_Array);
       function Down return Boolean;
+      function Current_Wakers return Waker_Array;
       procedure Register (Hook : Waitset_Access; Key : out Positive);
       procedure Unregister (Key : Positive);
    private
@@ -110,6 +112,7 @@ package body RCL.Contexts is
       end Set_Shutdown;
 
       function Down return Boolean is (Is_Down);
+      function Current_Wakers return Waker_Array is (Hooks);
 
       procedure Register (Hook : Waitset_Access; Key : out Positive) is
       begin
@@ -155,6 +158,7 @@ package body RCL.Contexts is
    procedure Init is
       P : Participant_Access;
    begin
+      RCL.Arguments.Load;
       Install_Signal_Handlers;
       Ensure (P, Env_Domain, Env_Localhost_Only);
    end Init;
@@ -162,6 +166,7 @@ package body RCL.Contexts is
    procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean) is
       P : Participant_Access;
    begin
+      RCL.Arguments.Load;
       Install_Signal_Handlers;
       Ensure (P, Domain, Localhost_Only);
    end Init;
@@ -185,6 +190,18 @@ package body RCL.Contexts is
    end Shutdown;
 
    function Is_Shutdown return Boolean is (State.Down);
+
+   procedure Wake_Executors is
+      Wakers : constant Waker_Array := State.Current_Wakers;
+   begin
+      for W of Wakers loop
+         if W /= null then
+            RCL.DDS.Wake (W.all);
+         end if;
+      end loop;
+   end Wake_Executors;
+
+   function Enclave return String is (RCL.Arguments.Enclave);
 
    procedure Register_Waker (Set : not null Waitset_Access; Key : out Positive) is
    begin

@@ -47,6 +47,13 @@ package RCL.Contexts is
    procedure Unregister_Waker (Key : Positive);
    --  Not for users: executors register to be woken by Shutdown.
 
+   procedure Wake_Executors;
+   --  Not for users: wakes every spinning executor once (simulated time
+   --  advanced: their timers may be due).
+
+   function Enclave return String;
+   --  The security enclave of the participant ("/" unless --ros-args -e).
+
    function Parse_Domain_Id (Image : String) return RCL.DDS.Domain_Id;
    --  "" -> 0; raises ROS_Exception naming ROS_DOMAIN_ID and the bad value.
 

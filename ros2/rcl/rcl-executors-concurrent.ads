@@ -14,59 +14,51 @@
 --     E.Spin (During => Executors.Forever);
 with System;
 with System.Multiprocessors;
+with RCL.Executors.Pools;
 
 package RCL.Executors.Concurrent is
 
    CPUs : constant Positive := Positive (System.Multiprocessors.Number_Of_CPUs);
 
-   type Executor
-     (Max_Nodes  : Positive := Default_Nodes_Per_Executor;
-      Queue_Size : Positive := CPUs * 32;
-      Threads    : Positive := CPUs;
-      Priority   : System.Priority := System.Default_Priority) is
-     new Executors.Executor with private;
+   type Tuned_Executor
+     (Max_Nodes  : Positive;
+      Queue_Size : Positive;
+      Threads    : Positive;
+      Priority   : System.Priority) is
+     new Executors.Executor (Max_Nodes) with record
+      Workers : RCL.Executors.Pools.Pool;
+   end record;
    --  Threads pool tasks run the callbacks at Priority; the queue holds
    --  Queue_Size pending callbacks (then the spinning task waits).
 
    overriding procedure Dispatch_Sample
-     (This : in out Executor;
+     (This : in out Tuned_Executor;
       Node : not null Node_Access;
       Sub  : not null RCL.Nodes.Subscription_Access);
 
    overriding procedure Dispatch_Timer
-     (This    : in out Executor;
+     (This    : in out Tuned_Executor;
       Node    : not null Node_Access;
       Timer   : RCL.Nodes.Timer_Entry;
       Elapsed : Duration);
 
-   overriding procedure Flush (This : in out Executor);
+   overriding procedure Flush (This : in out Tuned_Executor);
 
-   procedure Shutdown (This : in out Executor);
+   procedure Shutdown (This : in out Tuned_Executor);
    --  See above; idempotent. The executor may Spin again afterwards (a new
    --  pool is started).
 
-   function Is_Shut_Down (This : Executor) return Boolean;
+   function Is_Shut_Down (This : Tuned_Executor) return Boolean;
    --  No pool task exists.
 
-   overriding procedure Finalize (This : in out Executor);
+   overriding procedure Finalize (This : in out Tuned_Executor);
 
-private
-
-   type Work_Queue;
-   type Queue_Access is access Work_Queue;
-   type Runner;
-   type Runner_Access is access Runner;
-   type Runner_Array is array (Positive range <>) of Runner_Access;
-
-   type Executor
-     (Max_Nodes  : Positive := Default_Nodes_Per_Executor;
-      Queue_Size : Positive := CPUs * 32;
-      Threads    : Positive := CPUs;
-      Priority   : System.Priority := System.Default_Priority) is
-     new Executors.Executor (Max_Nodes) with record
-      Queue   : Queue_Access;
-      Pool    : Runner_Array (1 .. Threads);
-      Started : Boolean := False;
-   end record;
+   type Executor (Threads : Positive := CPUs) is new Tuned_Executor
+     (Max_Nodes  => Default_Nodes_Per_Executor,
+      Queue_Size => CPUs * 32,
+      Threads    => Threads,
+      Priority   => System.Default_Priority) with null record;
+   --  The usual one: Threads tasks; Tuned_Executor gives every setting (an
+   --  Ada constraint names all discriminants, so this type keeps one).
 
 end RCL.Executors.Concurrent;

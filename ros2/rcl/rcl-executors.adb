@@ -1,6 +1,7 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
+with RCL.Events;
 with RCL.Logging;
 with RCL.Timers;
 
@@ -107,6 +108,7 @@ package body RCL.Executors is
       Deadline : constant Time :=
         (if During >= Forever then Time_Last else Clock + To_Time_Span (During));
       Waker    : Positive;
+      Last_Events : Time := Clock;
       Ready    : RCL.DDS.Key_Array (1 .. Max_Attached);
       Last     : Natural;
    begin
@@ -122,7 +124,7 @@ package body RCL.Executors is
          Refresh (This);
          declare
             Wake_At : Time := Deadline;
-            Now     : Time := Clock;
+            Now     : constant Time := Clock;
             Worked  : Boolean := False;
          begin
             for I in 1 .. This.N_Nodes loop
@@ -136,8 +138,9 @@ package body RCL.Executors is
             end loop;
             RCL.DDS.Wait
               (This.Set.all,
-               (if Wake_At = Time_Last then Forever
-                else To_Duration (Wake_At - Now)),
+               Duration'Min (RCL.Events.Poll_Period,
+                             (if Wake_At = Time_Last then Forever
+                              else To_Duration (Wake_At - Now))),
                Ready, Last);
             exit when RCL.Contexts.Is_Shutdown or else This.Stopping;
             for K in Ready'First .. Last loop
@@ -147,7 +150,6 @@ package body RCL.Executors is
                   Worked := True;
                end if;
             end loop;
-            Now := Clock;
             for I in 1 .. This.N_Nodes loop
                for J in 1 .. This.Nodes (I).Timer_Count loop
                   declare
@@ -155,7 +157,7 @@ package body RCL.Executors is
                      Fired   : Boolean;
                      Elapsed : Duration;
                   begin
-                     T.State.Fire (Now, Fired, Elapsed);
+                     T.State.Fire (Fired, Elapsed);
                      if Fired then
                         This.Dispatch_Timer (This.Nodes (I), T, Elapsed);
                         Worked := True;
@@ -163,6 +165,12 @@ package body RCL.Executors is
                   end;
                end loop;
             end loop;
+            if Clock - Last_Events >= To_Time_Span (RCL.Events.Poll_Period) then
+               Last_Events := Clock;
+               for I in 1 .. This.N_Nodes loop
+                  RCL.Events.Poll (This.Nodes (I).all);
+               end loop;
+            end if;
             exit when Once and then Worked;
             exit when Clock >= Deadline;
          end;

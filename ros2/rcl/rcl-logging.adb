@@ -1,3 +1,4 @@
+with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Environment_Variables;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
@@ -11,6 +12,8 @@ package body RCL.Logging is
 
    Default_Format : constant String := "[{severity}] [{time}] [{name}]: {message}";
 
+   package Level_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Severity);
+
    protected State is
       procedure Init;
       procedure Set_Level (L : Severity);
@@ -21,7 +24,12 @@ package body RCL.Logging is
       procedure Set_Hook (H : Sink);
       function Hook return Sink;
       procedure Emit (Line : String; Level : Severity);
+      procedure Set_Logger_Level (Logger : String; L : Severity);
+      function Level_Of (Logger : String) return Severity;
+      procedure Set_Console (On : Boolean);
    private
+      Levels   : Level_Maps.Map;
+      Console  : Boolean := True;
       Done     : Boolean := False;
       Lvl      : Severity := Info;
       Name     : Unbounded_String;
@@ -56,9 +64,42 @@ package body RCL.Logging is
          The_Hook := H;
       end Set_Hook;
       function Hook return Sink is (The_Hook);
+      procedure Set_Logger_Level (Logger : String; L : Severity) is
+      begin
+         Levels.Include (Logger, L);
+      end Set_Logger_Level;
+
+      function Level_Of (Logger : String) return Severity is
+         Last : Natural := Logger'Last;
+      begin
+         if not Levels.Is_Empty then
+            --  "a.b.c", then "a.b", then "a".
+            loop
+               if Levels.Contains (Logger (Logger'First .. Last)) then
+                  return Levels (Logger (Logger'First .. Last));
+               end if;
+               loop
+                  exit when Last < Logger'First or else Logger (Last) = '.';
+                  Last := Last - 1;
+               end loop;
+               exit when Last < Logger'First;
+               Last := Last - 1;
+            end loop;
+         end if;
+         return Lvl;
+      end Level_Of;
+
+      procedure Set_Console (On : Boolean) is
+      begin
+         Console := On;
+      end Set_Console;
+
       procedure Emit (Line : String; Level : Severity) is
          pragma Warnings (Off, "potentially blocking operation");
       begin
+         if not Console then
+            return;
+         end if;
          --  Console output is serialized here so lines never interleave.
          if Level >= Warn then
             Ada.Text_IO.Put_Line (Ada.Text_IO.Standard_Error, Line);
@@ -80,6 +121,18 @@ package body RCL.Logging is
    end Set_Level;
 
    function Level return Severity is (State.Get_Level);
+
+   procedure Set_Logger_Level (Logger : String; Level : Severity) is
+   begin
+      State.Set_Logger_Level (Logger, Level);
+   end Set_Logger_Level;
+
+   function Effective_Level (Logger : String) return Severity is (State.Level_Of (Logger));
+
+   procedure Set_Console (Enabled : Boolean) is
+   begin
+      State.Set_Console (Enabled);
+   end Set_Console;
 
    procedure Set_Default_Logger (Name : String) is
    begin
@@ -145,14 +198,14 @@ package body RCL.Logging is
    end Format;
 
    procedure Log (Level : Severity; Message : String; Logger : String := "") is
+      Name : constant String := (if Logger = "" then State.Logger else Logger);
    begin
-      if Level < State.Get_Level then
+      if Level < State.Level_Of (Name) then
          return;
       end if;
       State.Init;
       declare
          Stamp : constant Long_Long_Integer := Long_Long_Integer (RCL.DDS.Now);
-         Name  : constant String := (if Logger = "" then State.Logger else Logger);
          Hook  : constant Sink := State.Hook;
       begin
          State.Emit (Format (State.Pattern, Level, Name, Message, Stamp), Level);

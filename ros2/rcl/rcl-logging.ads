@@ -24,6 +24,18 @@ package RCL.Logging is
 
    function Level return Severity;
 
+   procedure Set_Logger_Level (Logger : String; Level : Severity);
+   --  The level of Logger and of its descendants ("robot1" covers
+   --  "robot1.talker"), overriding Set_Level for them; the most specific
+   --  setting wins (--ros-args --log-level robot1.talker:=debug).
+
+   function Effective_Level (Logger : String) return Severity;
+   --  The level that applies to Logger.
+
+   procedure Set_Console (Enabled : Boolean);
+   --  Console output on (default) or off (--disable-stdout-logs); /rosout
+   --  still gets the records.
+
    procedure Set_Default_Logger (Name : String);
    --  The logger name used when none is given (RCL sets it to the name of
    --  the first node created in the process).

@@ -1,12 +1,14 @@
 with Ada.Unchecked_Deallocation;
 
 with ROSIDL.CDR;
+with RCL.Arguments;
 with RCL.Clients;
 with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
+with RCL.Parameters;
 with RCL.Rosout;
 with RCL.Services;
 
@@ -71,29 +73,55 @@ package body RCL.Nodes is
    -- Init --
    ----------
 
-   function Init (Name : String; Namespace : String := "/") return Node is
+   function Init
+     (Name      : String;
+      Namespace : String := "/";
+      Options   : Node_Options := Default_Options) return Node
+   is
       Sim_Time : constant Boolean :=
         RCL.Clocks.Sim_Time_Requested and then not RCL.Clocks.Sim_Time_Enabled;
    begin
       RCL.Names.Validate_Node_Name (Name);
+      RCL.Arguments.Load;
       declare
-         NS : constant String := RCL.Names.Normalize_Namespace (Namespace);
+         Given_NS : constant String := RCL.Names.Normalize_Namespace (Namespace);
+         New_Name : constant String :=
+           (if Options.Use_Global_Arguments then RCL.Arguments.Node_Name (Name) else Name);
+         NS       : constant String :=
+           (if Options.Use_Global_Arguments then RCL.Arguments.Namespace (Name, Given_NS)
+            else Given_NS);
       begin
          RCL.Contexts.Init;
          return N : Node do
-            N.Name := To_Unbounded_String (Name);
+            N.Name := To_Unbounded_String (New_Name);
+            N.Original := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
-            RCL.Graph.Add_Node (NS, Name, N.Graph_Id);
-            RCL.Rosout.Enable;
+            N.Remapped := Options.Use_Global_Arguments;
+            RCL.Graph.Add_Node (NS, New_Name, N.Graph_Id);
+            if RCL.Arguments.Rosout_Enabled then
+               RCL.Rosout.Enable;
+            end if;
             if Sim_Time then
                RCL.Clocks.Enable_Sim_Time (N);
             end if;
             if RCL.Logging.Default_Logger = "" then
                RCL.Logging.Set_Default_Logger (N.Logger_Name);
             end if;
+            if Options.Start_Parameter_Services then
+               RCL.Parameters.Serve (N);
+            end if;
          end return;
       end;
    end Init;
+
+   function Original_Name (This : Node) return String is (To_String (This.Original));
+
+   function Serves_Parameters (This : Node) return Boolean is (This.Params_On);
+
+   procedure Set_Serves_Parameters (This : in out Node) is
+   begin
+      This.Params_On := True;
+   end Set_Serves_Parameters;
 
    function Graph_Id (This : Node) return RCL.Graph.Node_Id is (This.Graph_Id);
 
@@ -113,8 +141,22 @@ package body RCL.Nodes is
       return FQN (FQN'First + 1 .. FQN'Last);
    end Logger_Name;
 
+   function Remapped
+     (This : Node; Name : String; Kind : RCL.Arguments.Name_Kind) return String
+   is
+      FQ : constant String :=
+        RCL.Names.Expand_Topic_Name (Name, Nodes.Name (This), Namespace (This));
+   begin
+      return (if This.Remapped
+              then RCL.Arguments.Remap (FQ, Kind, Nodes.Name (This), Namespace (This))
+              else FQ);
+   end Remapped;
+
    function Expand (This : Node; Topic : String) return String is
-     (RCL.Names.Expand_Topic_Name (Topic, Name (This), Namespace (This)));
+     (Remapped (This, Topic, RCL.Arguments.Topic));
+
+   function Expand_Service (This : Node; Service : String) return String is
+     (Remapped (This, Service, RCL.Arguments.Service));
 
    -----------------
    -- Publish_Raw --
@@ -366,11 +408,13 @@ package body RCL.Nodes is
       Callback : not null access procedure
         (Node    : in out RCL.Nodes.Node'Class;
          Timer   : in out RCL.Timers.Timer;
-         Elapsed : Duration)) return RCL.Timers.Timer
+         Elapsed : Duration);
+      Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock) return RCL.Timers.Timer
    is
       Stored : constant RCL.Timers.Callback with Import, Address => Callback'Address;
       S : constant RCL.Timers.State_Access :=
-        new RCL.Timers.State (Period_Ns => Positive (Period * 1_000_000_000.0));
+        new RCL.Timers.State
+          (Period_Ns => RCL.Clocks.Nanoseconds (Period * 1_000_000_000.0), On => Clock);
    begin
       S.Start;
       This.Entities.Add (Timer_Entry'(S, Stored));
@@ -383,9 +427,10 @@ package body RCL.Nodes is
       Callback : not null access procedure
         (Node    : in out RCL.Nodes.Node'Class;
          Timer   : in out RCL.Timers.Timer;
-         Elapsed : Duration))
+         Elapsed : Duration);
+      Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock)
    is
-      Ignored : constant RCL.Timers.Timer := This.Timer_Add (Period, Callback);
+      Ignored : constant RCL.Timers.Timer := This.Timer_Add (Period, Callback, Clock);
    begin
       null;
    end Timer_Add;

@@ -29,12 +29,27 @@ package RCL.Nodes is
 
    type Node is new Ada.Finalization.Limited_Controlled with private;
 
-   function Init (Name : String; Namespace : String := "/") return Node;
+   type Node_Options is record
+      Start_Parameter_Services : Boolean := True;
+      --  The node serves its parameters (RCL.Parameters.Serve), as every
+      --  rclcpp node does unless told otherwise.
+      Use_Global_Arguments     : Boolean := True;
+      --  The command line's remapping rules (--ros-args -r) apply to it.
+   end record;
+
+   Default_Options : constant Node_Options := (others => <>);
+
+   function Init
+     (Name      : String;
+      Namespace : String := "/";
+      Options   : Node_Options := Default_Options) return Node;
    --  Validates Name (RCL.Names.Name_Error naming the offending character)
    --  and normalizes Namespace ("ns" and "/ns/" become "/ns"). The first
-   --  node creates the context (RCL.Contexts) and starts /rosout and
-   --  ros_discovery_info; with --ros-args -p use_sim_time:=true it also
-   --  subscribes to /clock (RCL.Clocks).
+   --  node reads the command line (RCL.Arguments: Argument_Error for a bad
+   --  --ros-args), creates the context (RCL.Contexts) and starts /rosout
+   --  and ros_discovery_info; with --ros-args -p use_sim_time:=true it also
+   --  subscribes to /clock (RCL.Clocks). "-r __node:=" and "-r __ns:="
+   --  rename the node; its parameter services start unless Options say.
 
    function Name (This : Node) return String;
    function Namespace (This : Node) return String;
@@ -45,7 +60,18 @@ package RCL.Nodes is
    --  then the name ("robot1.listener").
 
    function Expand (This : Node; Topic : String) return String;
-   --  The fully qualified topic name (relative, "~", substitutions).
+   --  The fully qualified topic name (relative, "~", substitutions), after
+   --  the command line's remapping rules (--ros-args -r from:=to).
+
+   function Expand_Service (This : Node; Service : String) return String;
+   --  The same for a service name (rules for services apply).
+
+   function Original_Name (This : Node) return String;
+   --  The name the program gave, before "-r __node:=" renamed it.
+
+   function Serves_Parameters (This : Node) return Boolean;
+   procedure Set_Serves_Parameters (This : in out Node);
+   --  Not for users: RCL.Parameters.Serve was done for This.
 
    --  Publish / subscribe --------------------------------------------------
 
@@ -151,9 +177,12 @@ package RCL.Nodes is
       Callback : not null access procedure
         (Node    : in out RCL.Nodes.Node'Class;
          Timer   : in out RCL.Timers.Timer;
-         Elapsed : Duration)) return RCL.Timers.Timer
+         Elapsed : Duration);
+      Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock) return RCL.Timers.Timer
      with Pre => Period > 0.0;
-   --  Callback: as for Subscribe_Raw.
+   --  Callback: as for Subscribe_Raw. On the node's clock (ROS time: /clock
+   --  under use_sim_time, steady otherwise) unless Clock is Steady_Clock;
+   --  see RCL.Timers.
 
    procedure Timer_Add
      (This     : in out Node;
@@ -161,7 +190,8 @@ package RCL.Nodes is
       Callback : not null access procedure
         (Node    : in out RCL.Nodes.Node'Class;
          Timer   : in out RCL.Timers.Timer;
-         Elapsed : Duration))
+         Elapsed : Duration);
+      Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock)
      with Pre => Period > 0.0;
 
    --  Spinning -------------------------------------------------------------
@@ -273,6 +303,10 @@ private
       Spin_Exec : Spinner_Access;
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
+      Original  : Unbounded_String;
+      Remapped  : Boolean := True;
+      --  Options.Use_Global_Arguments.
+      Params_On : Boolean := False;
       Entities  : Registry;
       Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
    end record;

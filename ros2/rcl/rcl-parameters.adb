@@ -1,4 +1,4 @@
-with Ada.Command_Line;
+with RCL.Arguments;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
@@ -652,6 +652,8 @@ package body RCL.Parameters is
       begin
          if E.Desc.Read_Only then
             return "parameter '" & Name & "' is read-only";
+         elsif New_Value.Kind = Not_Set then
+            return "cannot undeclare a statically typed parameter";  --  rclcpp's words.
          elsif New_Value.Kind /= E.Desc.Kind then
             return "parameter '" & Name & "' is " & Type_Image (E.Desc.Kind) & ", not "
               & Type_Image (New_Value.Kind);
@@ -877,6 +879,10 @@ package body RCL.Parameters is
       Q : constant RCL.QoS.Profile := RCL.QoS.Parameters;
       Declared : Boolean;
    begin
+      if Node.Serves_Parameters then
+         return;  --  Done by Nodes.Init already.
+      end if;
+      Node.Set_Serves_Parameters;
       if not Event_Support_Set then
          Event_Support := Get_Message_Support ("rcl_interfaces", "ParameterEvent");
          Event_Support_Set := True;
@@ -978,47 +984,34 @@ package body RCL.Parameters is
    end Load_File;
 
    procedure Load_Arguments is
-      package CL renames Ada.Command_Line;
-      In_ROS : Boolean := False;
-      I      : Natural := 1;
+      Args : RCL.Arguments.Argument_List;
+      I    : Positive := 1;
    begin
-      while I <= CL.Argument_Count loop
+      RCL.Arguments.Load;
+      Args := RCL.Arguments.Parameter_Arguments;
+      --  Pairs (flag, value) in command-line order, checked by RCL.Arguments.
+      while I < Natural (Args.Length) loop
          declare
-            A : constant String := CL.Argument (I);
+            A   : constant String := Args (I);
+            Arg : constant String := Args (I + 1);
          begin
-            if A = "--ros-args" then
-               In_ROS := True;
-            elsif In_ROS and then A = "--" then
-               In_ROS := False;
-            elsif In_ROS and then A in "-p" | "--param" then
-               if I = CL.Argument_Count then
-                  raise Parameter_Error with A & " needs name:=value";
-               end if;
-               I := I + 1;
+            if A in "-p" | "--param" then
                declare
-                  Arg : constant String := CL.Argument (I);
                   Sep : constant Natural := Ada.Strings.Fixed.Index (Arg, ":=");
                begin
                   if Sep <= Arg'First then
-                     raise Parameter_Error with "argument" & I'Image & " '" & Arg
+                     raise Parameter_Error with "--ros-args " & A & " '" & Arg
                        & "': expected name:=value";
                   end if;
                   Add_Override ("/**", Arg (Arg'First .. Sep - 1),
                                 Parse (Arg (Sep + 2 .. Arg'Last),
-                                       "argument" & I'Image & " (" & Arg (Arg'First .. Sep - 1)
-                                       & ")"));
+                                       "--ros-args " & A & " " & Arg (Arg'First .. Sep - 1)));
                end;
-            elsif In_ROS and then A = "--params-file" then
-               if I = CL.Argument_Count then
-                  raise Parameter_Error with "--params-file needs a file name";
-               end if;
-               I := I + 1;
-               Load_File (CL.Argument (I));
-            elsif In_ROS and then A in "-r" | "--remap" | "--log-level" | "-e" | "--enclave" then
-               I := I + 1;  --  Not handled here: skip the value.
+            else
+               Load_File (Arg);
             end if;
          end;
-         I := I + 1;
+         I := I + 2;
       end loop;
    end Load_Arguments;
 

@@ -1,6 +1,7 @@
 with Ada.Streams;
 with ROSIDL.CDR;
 with RCL.Contexts;
+with RCL.Events;
 
 package body RCL.Publishers is
 
@@ -65,6 +66,7 @@ package body RCL.Publishers is
       This.Topic := To_Unbounded_String (Topic);
       This.Node := Node;
       RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
+      RCL.Events.Register_Publisher (This, Node);
    end Create;
 
    procedure Set_Support
@@ -77,6 +79,7 @@ package body RCL.Publishers is
    overriding procedure Finalize (This : in out Publisher) is
    begin
       if RCL.DDS.Is_Open (This.W) then
+         RCL.Events.Unregister_Publisher (This);
          RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.W));
       end if;
       This.Node := RCL.Graph.No_Node;

@@ -52,6 +52,9 @@ package RCL.QoS is
 
    Clock : constant Profile := (Depth => 1, Reliability => Best_Effort, others => <>);
 
+   Action_Status : constant Profile := (Depth => 1, Durability => Transient_Local, others => <>);
+   --  rcl_action's status topic (the last status array reaches late joiners).
+
    System_Default : constant Profile :=
      (History => Middleware_Default, Depth => 1, Reliability => Middleware_Default,
       Durability => Middleware_Default, Liveliness => Middleware_Default,

@@ -1,7 +1,7 @@
-with Ada.Command_Line;
 with Ada.Directories;
 with Ada.Environment_Variables;
 with Ada.Text_IO;
+with RCL.Arguments;
 
 package body RCL.Security is
 
@@ -28,27 +28,6 @@ package body RCL.Security is
       Chosen.Set (Name);
    end Set_Enclave;
 
-   function Command_Line_Enclave return String is
-      --  "--ros-args ... --enclave /e" (or -e /e) before any "--".
-      use Ada.Command_Line;
-      In_Ros_Args : Boolean := False;
-   begin
-      for I in 1 .. Argument_Count loop
-         if Argument (I) = "--ros-args" then
-            In_Ros_Args := True;
-         elsif Argument (I) = "--" then
-            In_Ros_Args := False;
-         elsif In_Ros_Args and then Argument (I) in "-e" | "--enclave" then
-            if I = Argument_Count then
-               raise ROS_Exception with "--ros-args " & Argument (I)
-                 & ": an enclave name is needed";
-            end if;
-            return Argument (I + 1);
-         end if;
-      end loop;
-      return "";
-   end Command_Line_Enclave;
-
    function Enclave return String is
       Override : constant String := Env.Value ("ROS_SECURITY_ENCLAVE_OVERRIDE", "");
    begin
@@ -57,11 +36,8 @@ package body RCL.Security is
       elsif Chosen.Get /= "" then
          return Chosen.Get;
       end if;
-      declare
-         From_Arguments : constant String := Command_Line_Enclave;
-      begin
-         return (if From_Arguments /= "" then From_Arguments else "/");
-      end;
+      RCL.Arguments.Load;  --  (Parsed once.)
+      return RCL.Arguments.Enclave;
    end Enclave;
 
    function Current return Settings is

@@ -39,7 +39,7 @@ package RCL.Security is
 
    function Enclave return String;
    --  ROS_SECURITY_ENCLAVE_OVERRIDE, else Set_Enclave's, else the command
-   --  line's --ros-args --enclave (-e), else "/".
+   --  line's --ros-args --enclave (-e) (RCL.Arguments), else "/".
 
    function Current return Settings;
    --  The environment's settings with Enclave. Raises ROS_Exception naming

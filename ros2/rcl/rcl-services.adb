@@ -1,9 +1,6 @@
 with Ada.Calendar;
-with Ada.Containers.Ordered_Sets;
 with Ada.Exceptions;
-with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
-with ROSIDL.CDR;
 with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Graph;
@@ -12,6 +9,7 @@ with RCL.Logging;
 package body RCL.Services is
 
    use Ada.Strings.Unbounded;
+
    use type Ada.Calendar.Time;
    use type RCL.DDS.Matching.Key_Lookup;
    use type RCL.DDS.GUID;
@@ -30,16 +28,6 @@ package body RCL.Services is
    function "<" (L, R : RCL.DDS.GUID) return Boolean is
      (RCL.DDS.Image (L) < RCL.DDS.Image (R));
 
-   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", RCL.DDS."=");
-
-   protected type GUID_Set is
-      --  Deliver may run in several executor tasks at once.
-      function Contains (G : RCL.DDS.GUID) return Boolean;
-      procedure Include (G : RCL.DDS.GUID);
-   private
-      Set : GUID_Sets.Set;
-   end GUID_Set;
-
    protected body GUID_Set is
       function Contains (G : RCL.DDS.GUID) return Boolean is (Set.Contains (G));
       procedure Include (G : RCL.DDS.GUID) is
@@ -48,31 +36,27 @@ package body RCL.Services is
       end Include;
    end GUID_Set;
 
-   type Service_Handler is new RCL.Nodes.Handler with record
-      Support  : ROSIDL.Typesupport.Service_Support;
+   type Service_Handler is new Server with record
       Callback : Services.Callback;
-      Name     : Unbounded_String;
-      Replies  : RCL.DDS.Writer;
-      Requests : RCL.Nodes.Subscription_Access;
-      --  The node's subscription holding the request reader.
-      Ready    : GUID_Set;
-      --  Request writers whose client's reply reader is known to be
-      --  matched: their replies are written without checking again (a
-      --  reply to a client gone meanwhile is harmless).
    end record;
 
-   overriding procedure Deliver
-     (This : in out Service_Handler;
-      Node : in out RCL.Nodes.Node'Class;
-      Data : RCL.DDS.Byte_Array;
-      Info : ROSIDL.Message_Info);
+   overriding procedure On_Request
+     (This    : in out Service_Handler;
+      Node    : in out RCL.Nodes.Node'Class;
+      Request : ROSIDL.Dynamic.Message;
+      Id      : Request_Id);
+
+   function Support (This : Server'Class) return ROSIDL.Typesupport.Service_Support is
+     (This.Support);
+
+   function Name (This : Server'Class) return String is (To_String (This.Name));
 
    --------------------
    -- Client_Present --
    --------------------
 
    function Client_Present
-     (This : in out Service_Handler; Requester : RCL.DDS.GUID) return Boolean
+     (This : in out Server'Class; Requester : RCL.DDS.GUID) return Boolean
    --  rmw_cyclonedds's check_for_response_reader, waiting up to
    --  Reply_Match_Wait: True when the reply may be written.
    is
@@ -116,20 +100,18 @@ package body RCL.Services is
    -------------
 
    overriding procedure Deliver
-     (This : in out Service_Handler;
+     (This : in out Server;
       Node : in out RCL.Nodes.Node'Class;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
    is
       use ROSIDL.Typesupport;
-      Request  : ROSIDL.Dynamic.Message :=
+      Request : ROSIDL.Dynamic.Message :=
         ROSIDL.Dynamic.Init (Request_Support (This.Support));
-      Response : ROSIDL.Dynamic.Message :=
-        ROSIDL.Dynamic.Init (Response_Support (This.Support));
-      Header   : ROSIDL.CDR.Request_Header;
+      Id      : Request_Id;
    begin
       begin
-         ROSIDL.CDR.Decode (Data, Request, Header);
+         ROSIDL.CDR.Decode (Data, Request, Id.Header);
       exception
          when E : ROSIDL.Decode_Error =>
             RCL.Logging.Warn ("service " & To_String (This.Name)
@@ -137,11 +119,32 @@ package body RCL.Services is
                               & Ada.Exceptions.Exception_Message (E));
             return;
       end;
-      This.Callback (Node, Request, Response);
-      if Client_Present (This, RCL.DDS.GUID (Info.Publisher_GID)) then
-         RCL.DDS.Write (This.Replies, ROSIDL.CDR.Encode (Response, Header));
-      end if;
+      Id.Requester := RCL.DDS.GUID (Info.Publisher_GID);
+      Server'Class (This).On_Request (Node, Request, Id);
    end Deliver;
+
+   procedure Respond
+     (This     : in out Server'Class;
+      Id       : Request_Id;
+      Response : ROSIDL.Dynamic.Message) is
+   begin
+      if Client_Present (This, Id.Requester) then
+         RCL.DDS.Write (This.Replies, ROSIDL.CDR.Encode (Response, Id.Header));
+      end if;
+   end Respond;
+
+   overriding procedure On_Request
+     (This    : in out Service_Handler;
+      Node    : in out RCL.Nodes.Node'Class;
+      Request : ROSIDL.Dynamic.Message;
+      Id      : Request_Id)
+   is
+      Response : ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
+   begin
+      This.Callback (Node, Request, Response);
+      This.Respond (Id, Response);
+   end On_Request;
 
    -----------
    -- Serve --
@@ -150,28 +153,20 @@ package body RCL.Services is
    procedure Free is new Ada.Unchecked_Deallocation
      (RCL.Nodes.Handler'Class, RCL.Nodes.Handler_Access);
 
-   procedure Serve
-     (Node     : in out RCL.Nodes.Node'Class;
-      Support  : ROSIDL.Typesupport.Service_Support;
-      Name     : String;
-      Callback : not null access procedure
-        (Node     : in out RCL.Nodes.Node'Class;
-         Request  : ROSIDL.Dynamic.Message;
-         Response : in out ROSIDL.Dynamic.Message);
-      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   procedure Open
+     (Node    : in out RCL.Nodes.Node'Class;
+      Handler : not null Server_Access;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
       use ROSIDL.Typesupport;
-      Stored : constant Services.Callback with Import, Address => Callback'Address;
-      --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      FQ     : constant String := Node.Expand (Name);
-      Id     : constant String :=
-        "serviceid="
-        & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
-      H      : RCL.Nodes.Handler_Access := new Service_Handler;
-      S      : Service_Handler renames Service_Handler (H.all);
+      FQ : constant String := Node.Expand_Service (Name);
+      Id : constant String :=
+        "serviceid=" & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
+      S  : Server'Class renames Handler.all;
    begin
       S.Support := Support;
-      S.Callback := Stored;
       S.Name := To_Unbounded_String (FQ);
       RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
                       DDS_Type_Name (Response_Support (Support)), QoS,
@@ -183,9 +178,27 @@ package body RCL.Services is
          DDS_Topic => Request_Topic (FQ),
          Name      => FQ,
          User_Data => Id,
-         Handle    => H,
+         Handle    => RCL.Nodes.Handler_Access (Handler),
          QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
          Added     => S.Requests);
+   end Open;
+
+   procedure Serve
+     (Node     : in out RCL.Nodes.Node'Class;
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : String;
+      Callback : not null access procedure
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message);
+      QoS      : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   is
+      Stored : constant Services.Callback with Import, Address => Callback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : RCL.Nodes.Handler_Access := new Service_Handler;
+   begin
+      Service_Handler (H.all).Callback := Stored;
+      Open (Node, Server_Access (H), Support, Name, QoS);
    exception
       when others =>
          Free (H);  --  (Add_Endpoint did not keep it.)

@@ -22,10 +22,15 @@
 --  Callbacks run in the task spinning the node. An exception in a callback
 --  is logged with the service name and no reply is sent (the client times
 --  out), as rclcpp does; a malformed request is logged and dropped.
+with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.DDS;
 with RCL.Nodes;
 with RCL.QoS;
+
+private with Ada.Containers.Ordered_Sets;
+private with Ada.Strings.Unbounded;
 
 package RCL.Services is
 
@@ -46,6 +51,48 @@ package RCL.Services is
    --  Callback may be nested in the main subprogram: it must stay callable
    --  as long as the node exists. RCL.Names.Name_Error for a bad Name.
 
+   --  Servers that answer later (action results): ----------------------
+
+   type Request_Id is private;
+   --  Says which request a response answers.
+
+   type Server is abstract new RCL.Nodes.Handler with private;
+   --  A service server whose On_Request may answer at once or keep the
+   --  Request_Id and Respond later, from any task (RCL.Actions).
+
+   overriding procedure Deliver
+     (This : in out Server;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+   --  Not for users: decodes the request and calls On_Request.
+
+   procedure On_Request
+     (This    : in out Server;
+      Node    : in out RCL.Nodes.Node'Class;
+      Request : ROSIDL.Dynamic.Message;
+      Id      : Request_Id) is abstract;
+
+   procedure Respond
+     (This     : in out Server'Class;
+      Id       : Request_Id;
+      Response : ROSIDL.Dynamic.Message);
+   --  Writes Response for request Id (once the requester's reply reader
+   --  is matched, see above).
+
+   function Support (This : Server'Class) return ROSIDL.Typesupport.Service_Support;
+   function Name (This : Server'Class) return String;
+
+   type Server_Access is access all Server'Class;
+
+   procedure Open
+     (Node    : in out RCL.Nodes.Node'Class;
+      Handler : not null Server_Access;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Name    : String;
+      QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default);
+   --  Offers service Name answered by Handler, which the node then owns.
+
    Reply_Match_Wait : constant Duration := 0.1;
    --  How long a reply waits for the requester's reply reader.
 
@@ -54,5 +101,36 @@ package RCL.Services is
 
    function Reply_Topic (Service_Name : String) return String;
    --  "/add" -> "rr/addReply".
+
+private
+
+   type Request_Id is record
+      Header    : ROSIDL.CDR.Request_Header;
+      Requester : RCL.DDS.GUID := RCL.DDS.Null_GUID;
+   end record;
+
+   function "<" (L, R : RCL.DDS.GUID) return Boolean;
+
+   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", RCL.DDS."=");
+
+   protected type GUID_Set is
+      --  Deliver may run in several executor tasks at once.
+      function Contains (G : RCL.DDS.GUID) return Boolean;
+      procedure Include (G : RCL.DDS.GUID);
+   private
+      Set : GUID_Sets.Set;
+   end GUID_Set;
+
+   type Server is abstract new RCL.Nodes.Handler with record
+      Support  : ROSIDL.Typesupport.Service_Support;
+      Name     : Ada.Strings.Unbounded.Unbounded_String;
+      Replies  : RCL.DDS.Writer;
+      Requests : RCL.Nodes.Subscription_Access;
+      --  The node's subscription holding the request reader.
+      Ready    : GUID_Set;
+      --  Request writers whose client's reply reader is known to be
+      --  matched: their replies are written without checking again (a
+      --  reply to a client gone meanwhile is harmless).
+   end record;
 
 end RCL.Services;

@@ -75,8 +75,16 @@ def test_discovery_info(distro, size):
             assert all(b == 0 for b in gid.data[16:])
         writer_gids = {bytes(g.data[:16]) for g in node.writer_gid_seq}
         reader_gids = {bytes(g.data[:16]) for g in node.reader_gid_seq}
-        # ... and they are the endpoints DDS discovery reports for the topics.
+        # ... and they are the endpoints DDS discovery reports for the topics
+        # (the latest announcement: the node's parameter services come first).
         time.sleep(0.5)
+        for info in infos + list(ps.take(rd)):
+            found = [n for n in info.node_entities_info_seq
+                     if n.node_name == "pubsub_peer" and n.node_namespace == "/"]
+            if found:
+                node, whole = found[0], info
+        writer_gids = {bytes(g.data[:16]) for g in node.writer_gid_seq}
+        reader_gids = {bytes(g.data[:16]) for g in node.reader_gid_seq}
         publications = {p.key.bytes: p for p in pubs.take(N=500)}
         subscriptions = {s.key.bytes: s for s in subs.take(N=500)}
         participants = {p.key.bytes: p for p in parts.take(N=500)}

@@ -439,6 +439,23 @@ package body RCL.DDS is
       return Natural (S.Current_Count);
    end Matched_Readers;
 
+   function Poll_Writer_Events (Writer : C.int; Events : out QoS_Events) return C.int
+     with Import, Convention => C, External_Name => "rclada_poll_writer_events";
+   function Poll_Reader_Events (Reader : C.int; Events : out QoS_Events) return C.int
+     with Import, Convention => C, External_Name => "rclada_poll_reader_events";
+
+   procedure Poll_Events (This : Writer; Events : out QoS_Events) is
+   begin
+      Check (Integer (Poll_Writer_Events (C.int (This.Handle), Events)),
+             "reading the QoS events of the writer of """ & Topic_Name (This) & """");
+   end Poll_Events;
+
+   procedure Poll_Events (This : Reader; Events : out QoS_Events) is
+   begin
+      Check (Integer (Poll_Reader_Events (C.int (This.Handle), Events)),
+             "reading the QoS events of the reader of """ & Topic_Name (This) & """");
+   end Poll_Events;
+
    function Topic_Name (This : Writer) return String is
      (if This.Topic_Name = null then "" else This.Topic_Name.all);
    function Type_Name (This : Writer) return String is

@@ -196,6 +196,43 @@ package RCL.DDS is
 
    overriding procedure Finalize (This : in out Reader);
 
+   ----------------
+   -- QoS events --
+   ----------------
+
+   type QoS_Events is record
+      Deadline_Total        : Interfaces.Unsigned_32 := 0;
+      Deadline_Change       : Interfaces.Integer_32 := 0;
+      Incompatible_Total    : Interfaces.Unsigned_32 := 0;
+      Incompatible_Change   : Interfaces.Integer_32 := 0;
+      Last_Policy           : Interfaces.Unsigned_32 := 0;
+      --  DDS QoS policy id (11 = reliability, 2 = durability...).
+      Liveliness_Lost_Total : Interfaces.Unsigned_32 := 0;
+      Liveliness_Lost_Change : Interfaces.Integer_32 := 0;
+      Alive_Count           : Interfaces.Unsigned_32 := 0;
+      Not_Alive_Count       : Interfaces.Unsigned_32 := 0;
+      Alive_Change          : Interfaces.Integer_32 := 0;
+      Not_Alive_Change      : Interfaces.Integer_32 := 0;
+      Lost_Total            : Interfaces.Unsigned_32 := 0;
+      Lost_Change           : Interfaces.Integer_32 := 0;
+      Matched_Total         : Interfaces.Unsigned_32 := 0;
+      Matched_Change        : Interfaces.Integer_32 := 0;
+      Matched_Current       : Interfaces.Unsigned_32 := 0;
+      Matched_Current_Change : Interfaces.Integer_32 := 0;
+   end record
+     with Convention => C;
+   --  The event statuses of a writer (deadline offered, incompatible QoS
+   --  offered, liveliness lost, matched readers) or a reader (deadline
+   --  requested, incompatible QoS requested, liveliness of its writers,
+   --  samples lost, matched writers). Totals are cumulative; the "Change"
+   --  fields count since the previous read by anyone (prefer differences of
+   --  totals).
+
+   procedure Poll_Events (This : Writer; Events : out QoS_Events)
+     with Pre => Is_Open (This);
+   procedure Poll_Events (This : Reader; Events : out QoS_Events)
+     with Pre => Is_Open (This);
+
    -------------
    -- Waitset --
    -------------

@@ -230,7 +230,7 @@ package body RCL.Nodes.Tests is
    procedure Concurrent (Unused : in out Fixture) is
       N   : Node := Init ("concurrent_test");
       Pub : constant RCL.Publishers.Publisher := N.Publish_Raw (Type_Name, "conc");
-      E   : RCL.Executors.Concurrent.Executor
+      E   : RCL.Executors.Concurrent.Tuned_Executor
         (Max_Nodes => 1, Queue_Size => 4, Threads => 3, Priority => System.Default_Priority);
       Seen : Natural := 0;
       Me   : constant Ada.Task_Identification.Task_Id := Ada.Task_Identification.Current_Task;

@@ -95,9 +95,10 @@ package body RCL.Parameters.Tests is
               "atomic set accepted");
       Assert (Get (Node, "rate").Int = 60
               and then To_String (Get (Node, "label").Text) = "both", "both applied");
-      Assert (Natural (Names (FQN).Length) = 4
-              and then To_String (Names (FQN).First_Element) = "fixed",
-              "sorted names");
+      Assert (Natural (Names (FQN).Length) = 5
+              and then To_String (Names (FQN).First_Element) = "fixed"
+              and then To_String (Names (FQN).Last_Element) = "use_sim_time",
+              "sorted names (with use_sim_time, as every node has)");
       Assert (Describe (FQN, "label").Kind = String_Type
               and then To_String (Describe (FQN, "label").Description) = "a label", "describe");
       Assert (Describe (FQN, "nope").Kind = Not_Set, "describe undeclared");

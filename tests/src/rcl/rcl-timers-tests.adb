@@ -4,35 +4,63 @@ with AUnit.Test_Fixtures;
 
 package body RCL.Timers.Tests is
 
-   use Ada.Real_Time;
+   use RCL.Clocks;
+   use type Ada.Real_Time.Time;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
    package Caller is new AUnit.Test_Caller (Fixture);
 
-   P : constant Time_Span := Milliseconds (100);
+   P  : constant Nanoseconds := 100_000_000;
+   Ms : constant Nanoseconds := 1_000_000;
 
    procedure Grid (Unused : in out Fixture) is
-      S       : aliased State (Period_Ns => 100_000_000);
+      S       : aliased State (Period_Ns => P, On => Steady_Clock);
       Fired   : Boolean;
       Elapsed : Duration;
-      First   : Time;
+      First   : Nanoseconds;
    begin
       S.Start;
-      First := S.Due_At;
-      S.Fire (First - Nanoseconds (1), Fired, Elapsed);
+      First := S.Next_Call;
+      S.Fire_At (First - 1, False, Fired, Elapsed);
       Assert (not Fired, "not due 1 ns early");
-      S.Fire (First + Milliseconds (7), Fired, Elapsed);
+      S.Fire_At (First + 7 * Ms, False, Fired, Elapsed);
       Assert (Fired, "due");
-      Assert (S.Due_At = First + P, "next on the grid despite a late call (no drift)");
+      Assert (S.Next_Call = First + P, "next on the grid despite a late call (no drift)");
       --  A long stall: missed periods are skipped, the grid is kept.
-      S.Fire (First + P * 4 + Milliseconds (50), Fired, Elapsed);
+      S.Fire_At (First + P * 4 + 50 * Ms, False, Fired, Elapsed);
       Assert (Fired, "fires after a stall");
-      Assert (S.Due_At = First + P * 5, "skips to the next grid point");
+      Assert (S.Next_Call = First + P * 5, "skips to the next grid point");
       Assert (abs (Elapsed - 0.443) < 0.000_001, "elapsed since the previous call");
    end Grid;
 
+   procedure Time_Jumps (Unused : in out Fixture) is
+      S       : aliased State (Period_Ns => P, On => Node_Clock);
+      Fired   : Boolean;
+      Elapsed : Duration;
+      Sec     : constant Nanoseconds := 1_000_000_000;
+   begin
+      S.Start;
+      --  Simulated time starts (ROS time 0 before the first /clock): a new
+      --  epoch, one period from now.
+      S.Fire_At (0, True, Fired, Elapsed);
+      Assert (not Fired and then S.Next_Call = P, "switch to simulated time restarts");
+      S.Fire_At (P, True, Fired, Elapsed);
+      Assert (Fired and then S.Next_Call = 2 * P, "ticks on simulated time");
+      --  Forward jump (the simulation skipped 100 s): one call, grid kept.
+      S.Fire_At (100 * Sec + 5 * Ms, True, Fired, Elapsed);
+      Assert (Fired, "fires once after a forward jump");
+      Assert (S.Next_Call = 100 * Sec + P, "next grid point after the jump");
+      S.Fire_At (100 * Sec + 6 * Ms, True, Fired, Elapsed);
+      Assert (not Fired, "no burst of missed calls");
+      --  Backward jump (the simulation restarted at 1 s): one period later.
+      S.Fire_At (Sec, True, Fired, Elapsed);
+      Assert (not Fired and then S.Next_Call = Sec + P, "backward jump restarts the period");
+      S.Fire_At (Sec + P, True, Fired, Elapsed);
+      Assert (Fired, "ticks again one period after the backward jump");
+   end Time_Jumps;
+
    procedure Cancel_Reset (Unused : in out Fixture) is
-      S       : aliased State (Period_Ns => 100_000_000);
+      S       : aliased State (Period_Ns => P, On => Steady_Clock);
       T       : Timer;
       Fired   : Boolean;
       Elapsed : Duration;
@@ -42,8 +70,8 @@ package body RCL.Timers.Tests is
       Assert (abs (T.Period - 0.1) < 1.0e-9, "period");
       T.Cancel;
       Assert (T.Is_Canceled, "canceled");
-      Assert (S.Due_At = Time_Last, "a canceled timer is never due");
-      S.Fire (Clock + Seconds (10), Fired, Elapsed);
+      Assert (S.Due_At = Ada.Real_Time.Time_Last, "a canceled timer is never due");
+      S.Fire_At (S.Next_Call + 10 * P, False, Fired, Elapsed);
       Assert (not Fired, "a canceled timer does not fire");
       T.Reset;
       Assert (not T.Is_Canceled, "reset uncancels");
@@ -56,6 +84,7 @@ package body RCL.Timers.Tests is
         new AUnit.Test_Suites.Test_Suite;
    begin
       Result.Add_Test (Caller.Create ("timers: drift-free grid", Grid'Access));
+      Result.Add_Test (Caller.Create ("timers: time jumps as rcl", Time_Jumps'Access));
       Result.Add_Test (Caller.Create ("timers: cancel and reset", Cancel_Reset'Access));
       return Result;
    end Suite;

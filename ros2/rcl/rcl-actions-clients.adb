@@ -1,0 +1,171 @@
+with Ada.Containers.Ordered_Sets;
+with ROSIDL.CDR;
+with ROSIDL.Typesupport;
+with RCL.DDS;
+with RCL.QoS;
+
+package body RCL.Actions.Clients is
+
+   use ROSIDL.Dynamic;
+
+   package Id_Sets is new Ada.Containers.Ordered_Sets (Goal_Id);
+
+   protected type Goal_Set is
+      procedure Add (Id : Goal_Id);
+      function Contains (Id : Goal_Id) return Boolean;
+   private
+      Ids : Id_Sets.Set;
+   end Goal_Set;
+
+   protected body Goal_Set is
+      procedure Add (Id : Goal_Id) is
+      begin
+         Ids.Include (Id);
+      end Add;
+      function Contains (Id : Goal_Id) return Boolean is (Ids.Contains (Id));
+   end Goal_Set;
+
+   type Feedback_Handler is new RCL.Nodes.Handler with record
+      Support  : Action_Support;
+      Mine     : Goal_Set_Access;
+      Callback : Feedback_Callback;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Feedback_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+      Msg : constant Message := ROSIDL.CDR.Decode (Feedback_Message_Support (This.Support), Data);
+      Id  : constant Goal_Id := Get_Id (Msg ("goal_id"));
+   begin
+      if This.Mine.Contains (Id) then
+         This.Callback (Node, Id, To_Message (Msg ("feedback")));
+      end if;
+   end Deliver;
+
+   procedure Init
+     (This        : in out Client;
+      Node        : in out RCL.Nodes.Node'Class;
+      Support     : Action_Support;
+      Name        : String;
+      On_Feedback : access procedure
+        (Node     : in out RCL.Nodes.Node'Class;
+         Goal     : Goal_Id;
+         Feedback : ROSIDL.Dynamic.Message) := null)
+   is
+      Stored : constant Feedback_Callback with Import, Address => On_Feedback'Address;
+      --  GNAT: the same subprogram access, kept beyond the call.
+      FQ     : constant String := Node.Expand_Service (Name);
+   begin
+      This.Support := Support;
+      This.Mine := new Goal_Set;
+      This.Send.Init (Node, Send_Goal_Support (Support), FQ & Send_Goal_Suffix);
+      This.Cancel.Init (Node, Cancel_Support, FQ & Cancel_Suffix);
+      This.Results.Init (Node, Get_Result_Support (Support), FQ & Get_Result_Suffix);
+      if Stored /= null then
+         Node.Add_Subscription
+           (ROSIDL.Typesupport.DDS_Type_Name (Feedback_Message_Support (Support)),
+            FQ & Feedback_Suffix,
+            new Feedback_Handler'(Support => Support, Mine => This.Mine, Callback => Stored),
+            RCL.QoS.Default);
+      end if;
+   end Init;
+
+   function Name (This : Client) return String is
+     (This.Send.Service_Name (This.Send.Service_Name'First
+                              .. This.Send.Service_Name'Last - Send_Goal_Suffix'Length));
+
+   function Server_Available (This : Client) return Boolean is
+     (This.Send.Service_Available and then This.Cancel.Service_Available
+      and then This.Results.Service_Available);
+
+   procedure Wait_For_Server (This : Client; Timeout : Duration := Forever) is
+   begin
+      This.Send.Wait_For_Service (Timeout);
+      This.Cancel.Wait_For_Service (Timeout);
+      This.Results.Wait_For_Service (Timeout);
+   end Wait_For_Server;
+
+   procedure Send_Goal
+     (This     : in out Client;
+      Goal     : ROSIDL.Dynamic.Message;
+      Id       : out Goal_Id;
+      Accepted : out Boolean;
+      Timeout  : Duration := 10.0)
+   is
+      Request : constant Message :=
+        Init (ROSIDL.Typesupport.Request_Support (Send_Goal_Support (This.Support)));
+   begin
+      Id := New_Goal_Id;
+      This.Mine.Add (Id);
+      --  Before sending: the first feedback may come before the response.
+      Put_Id (Request ("goal_id"), Id);
+      Request ("goal").Set_Message (Goal);
+      Accepted := Boolean (This.Send.Call (Request, Timeout) ("accepted").As_Bool.Element.all);
+   end Send_Goal;
+
+   function Send_Goal
+     (This    : in out Client;
+      Goal    : ROSIDL.Dynamic.Message;
+      Timeout : Duration := 10.0) return Goal_Id
+   is
+      Accepted : Boolean;
+   begin
+      return Id : Goal_Id do
+         This.Send_Goal (Goal, Id, Accepted, Timeout);
+         if not Accepted then
+            raise Goal_Rejected with "action " & This.Name & " rejected goal " & Image (Id);
+         end if;
+      end return;
+   end Send_Goal;
+
+   procedure Get_Result
+     (This    : in out Client;
+      Id      : Goal_Id;
+      Status  : out Goal_Status;
+      Result  : out ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever)
+   is
+      Request  : constant Message :=
+        Init (ROSIDL.Typesupport.Request_Support (Get_Result_Support (This.Support)));
+   begin
+      Put_Id (Request ("goal_id"), Id);
+      declare
+         Response : constant Message := This.Results.Call (Request, Timeout);
+         Code     : constant Integer := Integer (Response ("status").As_Int8.Element.all);
+      begin
+         Status := (if Code in Goal_Status'Pos (Goal_Status'First) .. Goal_Status'Pos
+                      (Goal_Status'Last)
+                    then Goal_Status'Val (Code) else Unknown);
+         Result := To_Message (Response ("result"));
+      end;
+   end Get_Result;
+
+   function Cancel
+     (This : in out Client; Id : Goal_Id; Timeout : Duration) return Cancel_Code
+   is
+      Request : constant Message :=
+        Init (ROSIDL.Typesupport.Request_Support (Cancel_Support));
+   begin
+      Put_Id (Request ("goal_info")("goal_id"), Id);
+      declare
+         Code : constant Integer :=
+           Integer (This.Cancel.Call (Request, Timeout) ("return_code").As_Int8.Element.all);
+      begin
+         return (if Code in 0 .. 3 then Cancel_Code'Val (Code) else Error_Rejected);
+      end;
+   end Cancel;
+
+   function Cancel_Goal
+     (This    : in out Client;
+      Id      : Goal_Id;
+      Timeout : Duration := 10.0) return Cancel_Code is (Cancel (This, Id, Timeout));
+
+   function Cancel_All_Goals
+     (This    : in out Client;
+      Timeout : Duration := 10.0) return Cancel_Code is (Cancel (This, Null_Goal_Id, Timeout));
+
+end RCL.Actions.Clients;

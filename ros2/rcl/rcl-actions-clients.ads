@@ -1,0 +1,99 @@
+--  Action clients: send goals to an action server (rclcpp, rclpy or
+--  RCL.Actions.Servers), follow their feedback, cancel them, get their
+--  results. Goals, results and cancel requests are synchronous calls (safe
+--  from several tasks at once); feedback is delivered to a callback by the
+--  executor spinning the node.
+--
+--     C : Clients.Client;
+--     C.Init (Node, Get_Action_Support ("example_interfaces", "Fibonacci"),
+--             "fibonacci", On_Feedback'Access);
+--     C.Wait_For_Server (Timeout => 5.0);
+--     Id := C.Send_Goal (Goal);                 --  Goal_Rejected if refused
+--     C.Get_Result (Id, Status, Result);        --  waits for the end
+--     Code := C.Cancel_Goal (Id);
+with ROSIDL.Dynamic;
+with RCL.Nodes;
+
+private with RCL.Clients;
+
+package RCL.Actions.Clients is
+
+   Goal_Rejected : exception;
+
+   Forever : constant Duration := RCL.Nodes.Forever;
+
+   type Client is tagged limited private;
+
+   type Feedback_Callback is access procedure
+     (Node     : in out RCL.Nodes.Node'Class;
+      Goal     : Goal_Id;
+      Feedback : ROSIDL.Dynamic.Message);
+
+   procedure Init
+     (This        : in out Client;
+      Node        : in out RCL.Nodes.Node'Class;
+      Support     : Action_Support;
+      Name        : String;
+      On_Feedback : access procedure
+        (Node     : in out RCL.Nodes.Node'Class;
+         Goal     : Goal_Id;
+         Feedback : ROSIDL.Dynamic.Message) := null);
+   --  Name is expanded like a service name. On_Feedback (if given) gets the
+   --  feedback of the goals this client sent, while the node spins.
+
+   function Name (This : Client) return String;
+
+   function Server_Available (This : Client) return Boolean;
+   --  The three services of the action are available.
+
+   procedure Wait_For_Server (This : Client; Timeout : Duration := Forever);
+   --  RCL_Timeout when not available within Timeout.
+
+   procedure Send_Goal
+     (This     : in out Client;
+      Goal     : ROSIDL.Dynamic.Message;
+      Id       : out Goal_Id;
+      Accepted : out Boolean;
+      Timeout  : Duration := 10.0);
+   --  Sends Goal (of the action's goal type) under a new random Id.
+
+   function Send_Goal
+     (This    : in out Client;
+      Goal    : ROSIDL.Dynamic.Message;
+      Timeout : Duration := 10.0) return Goal_Id;
+   --  Goal_Rejected when the server refuses it.
+
+   procedure Get_Result
+     (This    : in out Client;
+      Id      : Goal_Id;
+      Status  : out Goal_Status;
+      Result  : out ROSIDL.Dynamic.Message;
+      Timeout : Duration := Forever);
+   --  Waits for the goal to end (RCL_Timeout after Timeout). Status Unknown
+   --  when the server does not know the goal (expired).
+
+   function Cancel_Goal
+     (This    : in out Client;
+      Id      : Goal_Id;
+      Timeout : Duration := 10.0) return Cancel_Code;
+
+   function Cancel_All_Goals
+     (This    : in out Client;
+      Timeout : Duration := 10.0) return Cancel_Code;
+   --  Every goal of the server (rclcpp's async_cancel_all_goals).
+
+private
+
+   type Goal_Set;
+   type Goal_Set_Access is access Goal_Set;
+
+   type Client is tagged limited record
+      Support    : Action_Support;
+      Send       : RCL.Clients.Client;
+      Cancel     : RCL.Clients.Client;
+      Results    : RCL.Clients.Client;
+      Mine       : Goal_Set_Access;
+      --  The goals sent (feedback of others is ignored).
+   end record;
+
+end RCL.Actions.Clients;
