@@ -178,7 +178,7 @@ def test_secured_team_resists_a_plain_participant(tmp_path, team_keystore):
     assert set(done) == {"t1", "t2", "t3"} and set(done.values()) <= {"r1", "r2"}, op
     assert "r9" not in everything and "evil" not in everything, everything
     rounds = re.findall(r"round [0-9]+ robots ([\w,]+) ", op)
-    assert rounds and all(r == "r1,r2" for r in rounds), op
+    assert rounds and all(set(r.split(",")) <= {"r1", "r2"} for r in rounds), op
     # The robots' certificates may not publish tasks: their re-publication
     # of the mission (when a member joins) was refused by DDS-Security.
     assert "task entries are not re-published" in text["r1"] + text["r2"], text["r1"]
