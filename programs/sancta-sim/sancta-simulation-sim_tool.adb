@@ -234,18 +234,12 @@ package body Sancta.Simulation.Sim_Tool is
       Scan_Range_Max       : constant Field_Ref := Scan_Msg ("range_max");
       Scan_Ranges          : constant Field_Ref := Scan_Msg ("ranges");
       --  The fields written on every publication, looked up once.
-      Request   : Message := Init (Request_Support (Control));
-      Response  : constant Message := Init (Response_Support (Control));
 
       Clock_Pub  : RCL.Publishers.Publisher :=
         Main.Publish (Clock_Support, "/clock", RCL.QoS.Clock);
       Events_Pub : RCL.Publishers.Publisher :=
         Main.Publish (Text_Support, "/sancta_sim/events");
 
-      Service_Id   : constant String :=
-        "serviceid=" & RCL.DDS.Image (RCL.Contexts.Participant.Instance_GUID) & ";";
-      Request_Rd   : RCL.DDS.Reader;
-      Reply_Wr     : RCL.DDS.Writer;
       Template     : Simulators.Robot_Config := Simulators.Default_Robot;
 
       procedure Say (Text : String) is
@@ -381,7 +375,12 @@ package body Sancta.Simulation.Sim_Tool is
          end if;
       end Take_Commands;
 
-      procedure Answer (Header : ROSIDL.CDR.Request_Header) is
+      procedure Answer
+        (Unused_Node : in out RCL.Nodes.Node'Class;
+         Request     : Message;
+         Response    : in out Message)
+      is
+         --  The /sancta_sim/control service, answered in the stepping loop.
          Command : constant String := Request ("command").Get_String;
          Name    : constant String := Request ("name").Get_String;
          Where   : constant Pose :=
@@ -434,30 +433,11 @@ package body Sancta.Simulation.Sim_Tool is
          end if;
          Response ("success").As_Bool := Ok;
          Response ("message").Set_String (To_String (Text));
-         Reply_Wr.Write (ROSIDL.CDR.Encode (Response, Header));
          if not Quiet then
             Put_Line ("[sancta-sim t=" & Image (Sim.Clock) & "] control " & Command & " "
                       & Name & ": " & To_String (Text));
          end if;
       end Answer;
-
-      procedure Take_Requests is
-         Info   : RCL.DDS.Sample_Info;
-         Header : ROSIDL.CDR.Request_Header;
-      begin
-         loop
-            declare
-               Data : constant RCL.DDS.Byte_Array := Request_Rd.Take (Info);
-            begin
-               exit when Data'Length = 0;
-               ROSIDL.CDR.Decode (Data, Request, Header);
-               Answer (Header);
-            exception
-               when E : ROSIDL.Decode_Error =>
-                  Say ("bad control request: " & Ada.Exceptions.Exception_Message (E));
-            end;
-         end loop;
-      end Take_Requests;
 
       procedure Report_Events is
          Events : Simulators.Event_Vectors.Vector;
@@ -489,14 +469,7 @@ package body Sancta.Simulation.Sim_Tool is
       Next_Truth : Real := 0.0;
    begin
       Sim.Initialize (World, Seed);
-      Request_Rd.Create
-        (RCL.Contexts.Participant.all, "rq/sancta_sim/controlRequest",
-         DDS_Type_Name (Request_Support (Control)), RCL.QoS.Services_Default,
-         User_Data => Service_Id);
-      Reply_Wr.Create
-        (RCL.Contexts.Participant.all, "rr/sancta_sim/controlReply",
-         DDS_Type_Name (Response_Support (Control)), RCL.QoS.Services_Default,
-         User_Data => Service_Id);
+      Main.Serve (Control, "/sancta_sim/control", Answer'Access);
       if not Robots.Is_Empty then
          Template := Robots.First_Element.Config;
       end if;
@@ -515,7 +488,7 @@ package body Sancta.Simulation.Sim_Tool is
             for R of IO loop
                Take_Commands (R);
             end loop;
-            Take_Requests;
+            Main.Spin (During => 0.0);  --  control requests (Answer)
             Sim.Step (Step);
             Report_Events;
             declare

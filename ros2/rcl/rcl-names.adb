@@ -105,7 +105,7 @@ package body RCL.Names is
    -----------------------
 
    function Expand_Topic_Name
-     (Name : String; Node : String; Namespace : String) return String
+     (Name : String; Node : Node_Name; Namespace : Namespace_Name) return Topic_Name
    is
       FQN    : constant String := Fully_Qualified_Node_Name (Node, Namespace);
       Result : Unbounded_String;

@@ -28,10 +28,23 @@ package RCL.Names is
    function Topic_Problem (Name : String) return String;
    --  "" when Name is a valid fully qualified topic name.
 
+   subtype Node_Name is String
+     with Dynamic_Predicate => Node_Name_Problem (Node_Name) = ""
+       or else raise Name_Error with Node_Name_Problem (Node_Name);
+   --  A valid node name: "talker", "robot_1".
+
+   subtype Namespace_Name is String
+     with Dynamic_Predicate => Namespace_Problem (Namespace_Name) = ""
+       or else raise Name_Error with Namespace_Problem (Namespace_Name);
+   --  A valid absolute namespace: "/", "/team/r1".
+
+   subtype Topic_Name is String
+     with Dynamic_Predicate => Topic_Problem (Topic_Name) = ""
+       or else raise Name_Error with Topic_Problem (Topic_Name);
+   --  A valid fully qualified topic name: "/ns/chatter".
+
    function Expand_Topic_Name
-     (Name : String; Node : String; Namespace : String) return String
-     with Pre => Node_Name_Problem (Node) = ""
-                 and then Namespace_Problem (Namespace) = "";
+     (Name : String; Node : Node_Name; Namespace : Namespace_Name) return Topic_Name;
    --  Relative names get the namespace, "~" the node's fully qualified
    --  name, "{node}" and "{ns}" / "{namespace}" are substituted; the result
    --  is validated (Name_Error naming the offending character).

@@ -111,7 +111,7 @@ private
 
    function "<" (L, R : RCL.DDS.GUID) return Boolean;
 
-   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", RCL.DDS."=");
+   package GUID_Sets is new Ada.Containers.Ordered_Sets (RCL.DDS.GUID, "<", ROSIDL."=");
 
    protected type GUID_Set is
       --  Deliver may run in several executor tasks at once.

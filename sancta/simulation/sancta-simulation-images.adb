@@ -67,6 +67,14 @@ package body Sancta.Simulation.Images is
          raise Format_Error with File_Name & ": cannot be read";
    end Read_File;
 
+   procedure Fail_At (Name : String; Offset : Natural; Reason : String) with No_Return;
+   --  Format_Error "NAME: byte OFFSET: REASON".
+
+   procedure Fail_At (Name : String; Offset : Natural; Reason : String) is
+   begin
+      raise Format_Error with Name & ": byte" & Natural'Image (Offset) & ": " & Reason;
+   end Fail_At;
+
    ----------------
    -- Decode_PGM --
    ----------------
@@ -76,8 +84,7 @@ package body Sancta.Simulation.Images is
 
       procedure Fail (Reason : String) with No_Return is
       begin
-         raise Format_Error with Name & ": byte" & Natural'Image (Pos - Data'First)
-           & ": " & Reason;
+         Fail_At (Name, Pos - Data'First, Reason);
       end Fail;
 
       function Is_Space (B : Byte) return Boolean is
@@ -197,8 +204,7 @@ package body Sancta.Simulation.Images is
 
       procedure Fail (Reason : String) with No_Return is
       begin
-         raise Format_Error with Name & ": byte" & Natural'Image (Pos - Data'First)
-           & ": " & Reason;
+         Fail_At (Name, Pos - Data'First, Reason);
       end Fail;
 
       function U32 (P : Natural) return Unsigned_32 is

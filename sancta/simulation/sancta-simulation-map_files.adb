@@ -25,6 +25,17 @@ package body Sancta.Simulation.Map_Files is
       raise Format_Error with File & ":" & Img (Line) & ": " & Reason;
    end Fail;
 
+   procedure Open_Text (F : in out Ada.Text_IO.File_Type; File_Name : String);
+   --  Opens File_Name for reading; Format_Error "FILE: cannot be opened".
+
+   procedure Open_Text (F : in out Ada.Text_IO.File_Type; File_Name : String) is
+   begin
+      Ada.Text_IO.Open (F, Ada.Text_IO.In_File, File_Name);
+   exception
+      when others =>
+         raise Format_Error with File_Name & ": cannot be opened";
+   end Open_Text;
+
    function Without_Comment (S : String) return String is
       In_Quote : Character := ' ';
    begin
@@ -82,12 +93,7 @@ package body Sancta.Simulation.Map_Files is
       Result     : Map_Info;
       Have_Image, Have_Resolution, Have_Origin : Boolean := False;
    begin
-      begin
-         Open (F, In_File, File_Name);
-      exception
-         when others =>
-            raise Format_Error with File_Name & ": cannot be opened";
-      end;
+      Open_Text (F, File_Name);
       while not End_Of_File (F) loop
          declare
             Line : constant String := Trim (Without_Comment (Get_Line (F)));
@@ -264,12 +270,7 @@ package body Sancta.Simulation.Map_Files is
       Resolution := 0.05;
       Low := (0.0, 0.0);
       High := (0.0, 0.0);
-      begin
-         Open (F, In_File, File_Name);
-      exception
-         when others =>
-            raise Format_Error with File_Name & ": cannot be opened";
-      end;
+      Open_Text (F, File_Name);
       while not End_Of_File (F) loop
          declare
             Line  : constant String := Trim (Without_Comment (Get_Line (F)));

@@ -13,6 +13,7 @@ with Ada.Streams;
 with Interfaces;
 with RCL.QoS;
 with RCL.Security;
+with ROSIDL;
 
 private with System;
 
@@ -22,8 +23,9 @@ package RCL.DDS is
 
    subtype Byte_Array is Ada.Streams.Stream_Element_Array;
 
-   type GUID is array (1 .. 16) of Interfaces.Unsigned_8;
-   --  A DDS GUID: 12-byte participant prefix and 4-byte entity id.
+   subtype GUID is ROSIDL.GID;
+   --  A DDS GUID: 12-byte participant prefix and 4-byte entity id. The
+   --  library has one GUID type, ROSIDL.GID (a message's Publisher_GID).
 
    Null_GUID : constant GUID := [others => 0];
 

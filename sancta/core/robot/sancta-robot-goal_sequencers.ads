@@ -62,6 +62,10 @@ private
       Done      : Natural := 0;
       Skips     : Natural := 0;
       Tolerance : Real := 0.2;
-   end record;
+   end record
+     with Type_Invariant =>
+       Sequencer.Done <= Natural (Sequencer.Goals.Length)
+       and then Sequencer.Skips <= Sequencer.Done;
+   --  Goals finished never outnumber the goals; skipped ones are finished.
 
 end Sancta.Robot.Goal_Sequencers;
