@@ -47,6 +47,8 @@ begin
       Action_Command (Args);
    elsif Verb = "lifecycle" then
       Lifecycle_Command (Args);
+   elsif Verb = "security" then
+      Security_Command (Args);
    else
       raise Usage_Error with "unknown verb '" & Verb & "'";
    end if;
@@ -56,7 +58,7 @@ exception
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       Put_Line (Standard_Error, Usage ((if Verb in "node" | "topic" | "service" | "param"
                                           | "interface" | "action"
-                                          | "lifecycle" then Verb else "")));
+                                          | "lifecycle" | "security" then Verb else "")));
       CL.Set_Exit_Status (2);
    when E : Command_Error | RCL.ROS_Exception | RCL.RCL_Timeout | ROSIDL.Unknown_Type
       | ROSIDL.Definition_Error | RCL.Names.Name_Error =>

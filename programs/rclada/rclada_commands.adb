@@ -45,7 +45,8 @@ package body Rclada_Commands is
          return "usage: rclada node list [-a|--all] [--spin-time S]" & LF
            & "       rclada node info NODE_NAME [--spin-time S]" & LF
            & "  list: the fully qualified names of the nodes on the network" & LF
-           & "  info: a node's publishers, subscribers, service servers and clients";
+           & "  info: a node's publishers, subscribers, service servers and clients" & LF
+           & "  Discovery is awaited until it settles (1 to 5 s); --spin-time S waits S.";
       elsif Verb = "topic" then
          return "usage: rclada topic list [-t|--show-types] [--spin-time S]" & LF
            & "       rclada topic info TOPIC [-v|--verbose]" & LF
@@ -92,6 +93,14 @@ package body Rclada_Commands is
            & LF
            & "       rclada interface package PACKAGE" & LF
            & "  TYPE: pkg/msg/Name, pkg/srv/Name or pkg/action/Name";
+      elsif Verb = "security" then
+         return "usage: rclada security create_keystore DIR" & LF
+           & "       rclada security create_enclave DIR /ENCLAVE" & LF
+           & "       rclada security create_permission DIR /ENCLAVE POLICY.xml" & LF
+           & "       rclada security list_enclaves DIR" & LF
+           & "  SROS2 keystores (openssl). A process is secured with" & LF
+           & "  ROS_SECURITY_ENABLE=true ROS_SECURITY_KEYSTORE=DIR" & LF
+           & "  [ROS_SECURITY_STRATEGY=Enforce] and --ros-args --enclave /ENCLAVE.";
       else
          return "usage: rclada VERB ... (rclada VERB --help for details)" & LF
            & "  node       list | info NODE" & LF
@@ -101,6 +110,8 @@ package body Rclada_Commands is
            & "  interface  show TYPE | list | package PKG" & LF
            & "  action     list [-t] | info | type | send_goal NAME TYPE 'YAML' [-f]" & LF
            & "  lifecycle  nodes | get NODE | set NODE TRANSITION | list NODE" & LF
+           & "  security   create_keystore | create_enclave | create_permission | list_enclaves"
+           & LF
            & "The network is the one of ROS_DOMAIN_ID (CYCLONEDDS_URI, ROS_LOCALHOST_ONLY).";
       end if;
    end Usage;
@@ -204,8 +215,14 @@ package body Rclada_Commands is
    end Check_Options;
 
    procedure Discover (Args : Arguments) is
+      --  --spin-time S waits S; by default the wait lasts until discovery
+      --  has settled (Wait_For_Settled_Discovery: 1 to 5 s).
    begin
-      Graph.Wait_For_Discovery (Duration (Number_Option (Args, "--spin-time", "1.0")));
+      if Option (Args, "--spin-time", "") /= "" then
+         Graph.Wait_For_Discovery (Duration (Number_Option (Args, "--spin-time", "1.0")));
+      else
+         Graph.Wait_For_Settled_Discovery;
+      end if;
    end Discover;
 
    procedure Output_Closed is
@@ -894,6 +911,8 @@ package body Rclada_Commands is
    --  topic type | find | bw | delay, service type | find.
 
    procedure Lifecycle_Command (Args : Arguments) is separate;
+
+   procedure Security_Command (Args : Arguments) is separate;
 
    ---------------
    -- Interface --

@@ -22,6 +22,7 @@ package Rclada_Commands is
    procedure Interface_Command (Args : Arguments);
    procedure Action_Command (Args : Arguments);
    procedure Lifecycle_Command (Args : Arguments);
+   procedure Security_Command (Args : Arguments);
 
    function Usage (Verb : String) return String;
    --  The help text of a verb ("" for the command itself).

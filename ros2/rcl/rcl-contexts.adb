@@ -4,9 +4,11 @@ pragma Unreserve_All_Interrupts;
 with Ada.Environment_Variables;
 with Ada.Interrupts.Names;
 with Ada.Real_Time;
+with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
 with GNAT.OS_Lib;
 with RCL.Arguments;
+with RCL.Security;
 
 package body RCL.Contexts is
 
@@ -26,8 +28,14 @@ package body RCL.Contexts is
       or else Env.Value ("ROS_AUTOMATIC_DISCOVERY_RANGE", "") = "LOCALHOST");
 
    protected State is
-      procedure Init (P : out Participant_Access);
-      procedure Init (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean);
+      procedure Init
+        (P         : out Participant_Access;
+         Dom       : RCL.DDS.Domain_Id;
+         Local     : Boolean;
+         User_Data : String;
+         Secured   : Boolean;
+         Files     : RCL.Security.Enclave_Files);
+      function Current return Participant_Access;
       function Initialized return Boolean;
       function Domain return RCL.DDS.Domain_Id;
       function Localhost_Only return Boolean;
@@ -65,21 +73,24 @@ package body RCL.Contexts is
    function Is_Initialized return Boolean is (State.Initialized);
 
    protected body State is
-      procedure Init (P : out Participant_Access) is
-      begin
-         if Part = null then
-            Init (P, Env_Domain, Env_Localhost_Only);
-         end if;
-         P := Part;
-      end Init;
-
-      procedure Init (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean)
+      procedure Init
+        (P         : out Participant_Access;
+         Dom       : RCL.DDS.Domain_Id;
+         Local     : Boolean;
+         User_Data : String;
+         Secured   : Boolean;
+         Files     : RCL.Security.Enclave_Files)
       is
          New_Part : Participant_Access := new RCL.DDS.Participant;
       begin
          if Part = null then
-            RCL.DDS.Create (New_Part.all, Dom, Local,
-                            User_Data => "enclave=" & RCL.Arguments.Enclave & ";");
+            begin
+               RCL.DDS.Create (New_Part.all, Dom, Local, User_Data, Secured, Files);
+            exception
+               when others =>
+                  Free (New_Part);
+                  raise;
+            end;
             Part := New_Part;
             Dom_Id := Dom;
             State.Local := Local;
@@ -89,6 +100,7 @@ package body RCL.Contexts is
          P := Part;
       end Init;
 
+      function Current return Participant_Access is (Part);
       function Initialized return Boolean is (Part /= null);
       function Domain return RCL.DDS.Domain_Id is (Dom_Id);
       function Localhost_Only return Boolean is (Local);
@@ -122,12 +134,33 @@ package body RCL.Contexts is
       end Unregister;
    end State;
 
+   procedure Ensure
+     (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean)
+   is
+      --  The participant, created first if need be: secured as the
+      --  environment says (RCL.Security), USER_DATA "enclave=<enclave>;".
+   begin
+      P := State.Current;
+      if P = null then
+         declare
+            Settings : constant RCL.Security.Settings := RCL.Security.Current;
+            Secured  : Boolean;
+            Files    : RCL.Security.Enclave_Files;
+         begin
+            RCL.Security.Resolve (Settings, Secured, Files);
+            State.Init (P, Dom, Local,
+                        "enclave=" & Ada.Strings.Unbounded.To_String (Settings.Enclave) & ";",
+                        Secured, Files);
+         end;
+      end if;
+   end Ensure;
+
    procedure Init is
       P : Participant_Access;
    begin
       RCL.Arguments.Load;
       Install_Signal_Handlers;
-      State.Init (P);
+      Ensure (P, Env_Domain, Env_Localhost_Only);
    end Init;
 
    procedure Init (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean) is
@@ -135,13 +168,13 @@ package body RCL.Contexts is
    begin
       RCL.Arguments.Load;
       Install_Signal_Handlers;
-      State.Init (P, Domain, Localhost_Only);
+      Ensure (P, Domain, Localhost_Only);
    end Init;
 
    function Participant return not null access RCL.DDS.Participant is
       P : Participant_Access;
    begin
-      State.Init (P);
+      Ensure (P, Env_Domain, Env_Localhost_Only);
       return P;
    end Participant;
 

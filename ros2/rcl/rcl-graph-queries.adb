@@ -1,7 +1,9 @@
 with Ada.Containers.Generic_Array_Sort;
 with Ada.Containers.Indefinite_Ordered_Maps;
+with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Containers.Ordered_Sets;
 with Ada.Exceptions;
+with Ada.Real_Time;
 with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Unchecked_Deallocation;
@@ -246,6 +248,8 @@ package body RCL.Graph.Queries is
       function Nodes_Of (Alive : String) return Node_Array;
       --  Nodes of participants whose prefix image occurs in Alive.
       function Owner_Of (Endpoint : RCL.DDS.GUID; Is_Writer : Boolean) return Graph_Node;
+      function Announced (Prefix : String) return Boolean;
+      --  A ros_discovery_info sample of the participant Prefix arrived.
    private
       Infos : Info_Maps.Map;
    end Discovery;
@@ -325,6 +329,8 @@ package body RCL.Graph.Queries is
                  To_Unbounded_String (Unknown_Node_Namespace));
       end Owner_Of;
 
+      function Announced (Prefix : String) return Boolean is (Infos.Contains (Prefix));
+
    end Discovery;
 
    procedure Wait_For_Discovery (Time : Duration) is
@@ -333,6 +339,76 @@ package body RCL.Graph.Queries is
       delay Time;
       Discovery.Refresh;
    end Wait_For_Discovery;
+
+   package Key_Sets is new Ada.Containers.Indefinite_Ordered_Sets (String);
+
+   procedure Wait_For_Settled_Discovery
+     (Least : Duration := 1.0; Quiet : Duration := 0.5; Limit : Duration := 5.0)
+   is
+      use Ada.Real_Time;
+      use RCL.DDS.Matching;
+      P     : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
+      Own   : constant String := Prefix_Image (RCL.DDS.Instance_GUID (P.all));
+      Start : constant Time := Clock;
+      Last_Change : Time := Start;
+      Last_State  : Unbounded_String;
+
+      function State (Complete : out Boolean) return Unbounded_String is
+         --  What was discovered of the others, as text (sorted: Cyclone's
+         --  order varies);
+         --  Complete: every ROS 2 participant announced its nodes.
+         Keys   : Key_Sets.Set;
+         Result : Unbounded_String;
+      begin
+         Complete := True;
+         for Part of Builtin (P.all, Participants) loop
+            declare
+               Key : constant String := Prefix_Image (Part.Key);
+            begin
+               Keys.Include (Key);
+               if Key /= Own
+                 and then Ada.Strings.Fixed.Index (To_String (Part.User_Data), "enclave=") > 0
+                 and then not Discovery.Announced (Key)
+               then
+                  Complete := False;
+               end if;
+            end;
+         end loop;
+         for Which in Publications .. Subscriptions loop
+            for E of Builtin (P.all, Which) loop
+               if Prefix_Image (E.Key) /= Own then
+                  --  (Each Builtin call adds a reader of our own.)
+                  Keys.Include (RCL.DDS.Image (E.Key));
+               end if;
+            end loop;
+         end loop;
+         for K of Keys loop
+            Append (Result, K & ";");
+         end loop;
+         return Result;
+      end State;
+
+      Complete : Boolean;
+   begin
+      loop
+         Discovery.Refresh;
+         declare
+            Now     : constant Time := Clock;
+            Current : constant Unbounded_String := State (Complete);
+         begin
+            if Current /= Last_State then
+               Last_State := Current;
+               Last_Change := Now;
+            end if;
+            exit when Now - Start >= To_Time_Span (Limit);
+            exit when Now - Start >= To_Time_Span (Least)
+              and then Now - Last_Change >= To_Time_Span (Quiet)
+              and then Complete;
+         end;
+         delay 0.05;
+      end loop;
+      Discovery.Refresh;
+   end Wait_For_Settled_Discovery;
 
    function Alive_Participants return String is
       R : Unbounded_String;

@@ -14,9 +14,9 @@
 --  Endpoints are attributed to nodes through the gids of the discovery
 --  info. Each query reads the current state, so peers that appear or
 --  disappear are seen by the next query; a newly started process needs a
---  moment of discovery first (Wait_For_Discovery).
+--  moment of discovery first (Wait_For_Settled_Discovery).
 --
---     RCL.Graph.Queries.Wait_For_Discovery (1.0);
+--     RCL.Graph.Queries.Wait_For_Settled_Discovery;
 --     for T of RCL.Graph.Queries.Topic_Names_And_Types loop
 --        Put_Line (To_String (T.Name) & " [" & To_String (T.Types) & "]");
 --     end loop;
@@ -65,6 +65,18 @@ package RCL.Graph.Queries is
 
    procedure Wait_For_Discovery (Time : Duration);
    --  Starts reading ros_discovery_info (if not yet) and waits Time.
+
+   procedure Wait_For_Settled_Discovery
+     (Least : Duration := 1.0; Quiet : Duration := 0.5; Limit : Duration := 5.0)
+     with Pre => Least <= Limit;
+   --  Waits until discovery has settled, what the ros2 daemon achieves by
+   --  running all the time: at least Least, then until the participants
+   --  and endpoints discovered have not changed for Quiet and every ROS 2
+   --  participant (USER_DATA "enclave=...") has announced its nodes on
+   --  ros_discovery_info; at most Limit. A Fast DDS node's announcement
+   --  often arrives only with its next heartbeat, about 3 s after discovery.
+   --
+   --     Wait_For_Settled_Discovery;  --  then Node_Names is complete
 
    function Node_Names return Node_Array;
    --  Sorted by fully qualified name; this process's own nodes included

@@ -364,49 +364,112 @@ package body ROSIDL.Dynamic.Images is
       or else Resolves_To_Float (S) or else Resolves_To_Timestamp (S)
       or else S = "<<" or else S = "=");
 
+   function Double_Quoted (S : String) return String is
+      --  PyYAML's double-quoted style with allow_unicode: printable text as
+      --  it is, everything else escaped (\e, \N, \x7F, \u2028 as \L,
+      --  \U0001F600...). S is UTF-8; when it is not valid UTF-8, bytes from
+      --  16#80# on are escaped one by one (\xC3).
+      subtype Code is Natural;
+      R : Unbounded_String := To_Unbounded_String ("""");
+
+      function Hex_Digits (C : Code; Width : Positive) return String is
+         Result : String (1 .. Width);
+         V      : Natural := C;
+      begin
+         for I in reverse Result'Range loop
+            Result (I) := Hex (V mod 16 + 1);
+            V := V / 16;
+         end loop;
+         return Result;
+      end Hex_Digits;
+
+      function Escape (C : Code) return String is
+        (case C is
+            when 16#00# => "0", when 16#07# => "a", when 16#08# => "b", when 16#09# => "t",
+            when 16#0A# => "n", when 16#0B# => "v", when 16#0C# => "f", when 16#0D# => "r",
+            when 16#1B# => "e", when 16#22# => """", when 16#5C# => "\", when 16#85# => "N",
+            when 16#2028# => "L", when 16#2029# => "P",
+            when others => "");
+      --  PyYAML's named escapes.
+
+      procedure Put (C : Code) is
+      begin
+         if Escape (C) /= "" then
+            Append (R, "\" & Escape (C));
+         elsif C in 16#20# .. 16#7E# then
+            Append (R, Character'Val (C));
+         elsif C in 16#A0# .. 16#D7FF# | 16#E000# .. 16#FEFE# | 16#FF00# .. 16#FFFD# then
+            Append (R, Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
+                         ([Wide_Wide_Character'Val (C)]));
+         elsif C <= 16#FF# then
+            Append (R, "\x" & Hex_Digits (C, 2));
+         elsif C <= 16#FFFF# then
+            Append (R, "\u" & Hex_Digits (C, 4));
+         else
+            Append (R, "\U" & Hex_Digits (C, 8));
+         end if;
+      end Put;
+   begin
+      declare
+         Text : constant Wide_Wide_String :=
+           Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (S);
+      begin
+         for C of Text loop
+            Put (Wide_Wide_Character'Pos (C));
+         end loop;
+      end;
+      return To_String (R) & """";
+   exception
+      when Ada.Strings.UTF_Encoding.Encoding_Error =>
+         R := To_Unbounded_String ("""");
+         for C of S loop
+            Put (Character'Pos (C));
+         end loop;
+         return To_String (R) & """";
+   end Double_Quoted;
+
+   function Needs_Double_Quotes (S : String) return Boolean is
+      --  PyYAML's "special characters": anything but LF, printable ASCII,
+      --  NEL and printable Unicode (U+A0..U+D7FF, U+E000..U+FFFD but the
+      --  BOM, U+10000..U+10FFFE); also invalid UTF-8, and (approximation)
+      --  every line break (PyYAML folds such a string into a multi-line
+      --  single-quoted scalar unless a space borders a break).
+   begin
+      if (for some C of S => C not in ' ' .. '~' | Character'Val (16#80#) .. Character'Last)
+      then
+         return True;
+      elsif (for all C of S => C in ' ' .. '~') then
+         return False;
+      end if;
+      declare
+         Text : constant Wide_Wide_String :=
+           Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (S);
+      begin
+         return (for some C of Text =>
+                   Wide_Wide_Character'Pos (C) not in 16#20# .. 16#7E# | 16#A0# .. 16#D7FF#
+                     | 16#E000# .. 16#FEFE#
+                     | 16#FF00# .. 16#FFFD# | 16#1_0000# .. 16#10_FFFE#
+                   or else Wide_Wide_Character'Pos (C) in 16#2028# .. 16#2029#);
+      end;
+   exception
+      when Ada.Strings.UTF_Encoding.Encoding_Error =>
+         return True;
+   end Needs_Double_Quotes;
+
    function Yaml_String (S : String) return String is
-      --  As PyYAML (allow_unicode, as ros2 topic echo uses) writes a string:
-      --  plain when it can, single-quoted when a plain scalar would read
-      --  back as something else or starts or ends with a space, double-
-      --  quoted with escapes when it holds control characters. Bytes from
-      --  16#80# on are taken as UTF-8 text and written as they are.
-      --  Approximation: a string with line breaks is written double-quoted
-      --  (PyYAML folds it into a multi-line single-quoted scalar).
+      --  As PyYAML (allow_unicode, unbounded width, as ros2 topic echo uses)
+      --  writes a string: plain when it can, single-quoted when a plain
+      --  scalar would read back as something else or starts or ends with a
+      --  space, double-quoted with escapes when it holds characters YAML
+      --  cannot show as they are (Needs_Double_Quotes, Double_Quoted).
 
       function Followed_By_Space (I : Positive) return Boolean is
         (I = S'Last or else S (I + 1) in ' ' | ASCII.HT | ASCII.LF | ASCII.CR);
 
-      Special   : constant Boolean :=
-        (for some C of S =>
-           C not in ' ' .. '~' | Character'Val (16#80#) .. Character'Last);
       Indicator : Boolean := False;
    begin
-      if Special then
-         declare
-            R : Unbounded_String := To_Unbounded_String ("""");
-         begin
-            for C of S loop
-               case C is
-                  when '"'  => Append (R, "\""");
-                  when '\'  => Append (R, "\\");
-                  when ASCII.NUL => Append (R, "\0");
-                  when ASCII.BEL => Append (R, "\a");
-                  when ASCII.BS => Append (R, "\b");
-                  when ASCII.HT => Append (R, "\t");
-                  when ASCII.LF => Append (R, "\n");
-                  when ASCII.VT => Append (R, "\v");
-                  when ASCII.FF => Append (R, "\f");
-                  when ASCII.CR => Append (R, "\r");
-                  when ASCII.ESC => Append (R, "\e");
-                  when ' ' .. '!' | '#' .. '[' | ']' .. '~'
-                     | Character'Val (16#80#) .. Character'Last => Append (R, C);
-                  when others =>
-                     Append (R, "\x" & Hex (Character'Pos (C) / 16 + 1)
-                             & Hex (Character'Pos (C) mod 16 + 1));
-               end case;
-            end loop;
-            return To_String (R) & """";
-         end;
+      if Needs_Double_Quotes (S) then
+         return Double_Quoted (S);
       end if;
       for I in S'Range loop
          if I = S'First then

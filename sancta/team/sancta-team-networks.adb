@@ -18,6 +18,11 @@ package body Sancta.Team.Networks is
    function Messages_Topic (Team : String) return String is ("/sancta/" & Team & "/messages");
    function Presence_Topic (Team : String) return String is ("/sancta/" & Team & "/presence");
    function State_Topic (Team : String) return String is ("/sancta/" & Team & "/state");
+   function Tasks_Topic (Team : String) return String is ("/sancta/" & Team & "/tasks");
+
+   function Is_Task_Key (Key : String) return Boolean is
+     (Key = "mission"
+      or else (Key'Length > 5 and then Key (Key'First .. Key'First + 4) = "task/"));
 
    Message_QoS  : constant RCL.QoS.Profile := (Depth => 1000, others => <>);
    Presence_QoS : constant RCL.QoS.Profile := (Depth => 50, others => <>);
@@ -372,6 +377,8 @@ package body Sancta.Team.Networks is
       This.Node.Track_Liveliness (Presence_Topic (To_String (This.Team)));
       This.Node.Subscribe (Support ("DbEntry"), State_Topic (To_String (This.Team)),
                            On_State'Access, State_QoS);
+      This.Node.Subscribe (Support ("DbEntry"), Tasks_Topic (To_String (This.Team)),
+                           On_State'Access, State_QoS);
       This.Worker := new Receiver (This'Unchecked_Access);
       This.Worker.Go;
    end Start;
@@ -431,7 +438,28 @@ package body Sancta.Team.Networks is
       Msg ("writer").Set_String (Writer);
       This.Send_Lock.Seize;
       begin
-         This.State.Publish (Msg);
+         if not Is_Task_Key (Key) then
+            This.State.Publish (Msg);
+         else
+            if This.Tasks = null and then not This.Tasks_Refused then
+               begin
+                  This.Tasks := new RCL.Publishers.Publisher'
+                    (This.Node.Publish (Support ("DbEntry"), Tasks_Topic (To_String (This.Team)),
+                                        State_QoS));
+               exception
+                  when E : RCL.ROS_Exception =>
+                     --  Secured, without the permission to write tasks.
+                     This.Tasks_Refused := True;
+                     Ada.Text_IO.Put_Line
+                       (Ada.Text_IO.Standard_Error,
+                        "team network " & To_String (This.Id) & ": task entries are not"
+                        & " re-published: " & Ada.Exceptions.Exception_Message (E));
+               end;
+            end if;
+            if This.Tasks /= null then
+               This.Tasks.Publish (Msg);
+            end if;
+         end if;
       exception
          when others =>
             This.Send_Lock.Release;

@@ -22,7 +22,11 @@
 --
 --  The replicated database's entries travel on /sancta/team/state
 --  (sancta_msgs/DbEntry, reliable, TRANSIENT_LOCAL, depth 1000) through the
---  same Network (Publish_State / Set_State_Consumer).
+--  same Network (Publish_State / Set_State_Consumer); the mission's entries
+--  ("mission", "task/<id>") on /sancta/team/tasks (same type and QoS), so
+--  that DDS-Security permissions can say who may write tasks
+--  (Sancta.Team.Security). A node refused the tasks topic (its permissions
+--  deny it) does not re-publish task entries.
 --
 --  Isolate simulates a cut-off host: while isolated a node neither sends nor
 --  receives anything, so the others' DDS liveliness declares it lost after
@@ -77,6 +81,12 @@ package Sancta.Team.Networks is
       Value      : String;
       Revision   : Long_Long_Integer;
       Writer     : String) is abstract;
+
+   function Tasks_Topic (Team : String) return String;
+   --  "/sancta/<team>/tasks": the topic of the mission's entries.
+
+   function Is_Task_Key (Key : String) return Boolean;
+   --  "mission" and "task/<id>": the entries published on Tasks_Topic.
 
    --  The network -------------------------------------------------------------
 
@@ -225,6 +235,9 @@ private
       Messages   : Publisher_Access;
       Presence   : Publisher_Access;
       State      : Publisher_Access;
+      Tasks      : Publisher_Access;
+      --  Created on the first task entry published, unless refused.
+      Tasks_Refused : Boolean := False;
       Send_Lock  : Mutex;
       Subs       : Subscriber_Vectors.Vector;
       Listeners  : Listener_Vectors.Vector;

@@ -70,7 +70,13 @@ def test_demo_annealer_robot_lost(tmp_path):
     check_summary(tmp_path, output)
 
 
-def test_demo_auctions_robot_lost(tmp_path):
-    code, output = run_demo(tmp_path, "--set", "method=auctions", "--kill", "r3")
+def test_demo_auctions_robot_lost_secured(tmp_path):
+    # Also the secured demo (DDS-Security, an enclave per process, only the
+    # operator may publish tasks): it finishes its mission all the same.
+    code, output = run_demo(tmp_path, "--set", "method=auctions", "--kill", "r3", "--secure")
     assert code == 0 and "check: passed" in output, output
     check_summary(tmp_path, output)
+    keystore = tmp_path / "keystore" / "enclaves"
+    assert (keystore / "sancta" / "sim" / "cert.pem").exists()
+    assert "<topic>rt/sancta/team/tasks</topic>" in \
+        (keystore / "sancta" / "team" / "r1" / "permissions.xml").read_text()

@@ -20,9 +20,12 @@ package body Sancta.Commands.Demo is
       Put_Line ("usage: sancta demo [CONFIG.xml] [--set NAME=VALUE]... [--rate X] [--wall-clock]");
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--max SECONDS]");
       Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check] [--view]");
+      Put_Line ("          [--secure]");
       Put_Line ("  sancta-sim + one 'sancta run CONFIG --agent ID' process per agent;");
       Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
       Put_Line ("  --view: also open the live view (sancta-view) when a display is set");
+      Put_Line ("  --secure: DDS-Security, a keystore in OUT/keystore, one enclave per process,");
+      Put_Line ("  only the operator may publish tasks");
    end Usage;
 
    function Default_Config return String is (Installation.Share_File ("config/sim-team.xml"));
@@ -73,6 +76,8 @@ package body Sancta.Commands.Demo is
                Config.Verbose := False;
             elsif A = "--check" then
                Check := True;
+            elsif A = "--secure" then
+               Config.Secure := True;
             elsif A = "--view" then
                Config.View := True;
             elsif A'Length > 0 and then A (A'First) = '-' then

@@ -10,6 +10,7 @@ with Ada.Text_IO;
 with GNAT.OS_Lib;
 with RCL.Contexts;
 with RCL.Nodes;
+with RCL.Security;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with Sancta.Components.Robot_Messages;
@@ -22,6 +23,7 @@ with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
 with Sancta.Team.Plans;
+with Sancta.Team.Security;
 
 package body Sancta.Team.Sim_Demos is
 
@@ -310,11 +312,33 @@ package body Sancta.Team.Sim_Demos is
             Args.Append (Runtime.Components.String_Maps.Key (C) & "="
                          & Runtime.Components.String_Maps.Element (C));
          end loop;
+         if Config.Secure then
+            Security.Set_Child_Enclave (Security.Enclave (To_String (View.Team), Id));
+         end if;
          Children.Insert
            (Id, (To_Unbounded_String (Id),
                  Spawn (Program (Config, "sancta"), Args, Log_Dir & "/" & Id & ".log"),
                  False));
       end Start_Agent;
+
+      procedure Secure_Team is
+         --  The keystore (Log_Dir/keystore) and this process's settings.
+         Writers         : Security.Id_List (1 .. Natural (View.Non_Robots.Length));
+         Robot_Ids       : Security.Id_List (1 .. N + 2);
+      begin
+         for I in Writers'Range loop
+            Writers (I) := View.Non_Robots (I).Id;
+         end loop;
+         for I in 1 .. N loop
+            Robot_Ids (I) := View.Robots (I).Id;
+         end loop;
+         Robot_Ids (N + 1) := To_Unbounded_String ("demo_monitor");
+         Robot_Ids (N + 2) := To_Unbounded_String ("view");  --  sancta-view (--view)
+         Security.Create_Keystore (Log_Dir & "/keystore", To_String (View.Team),
+                                   Task_Writers => Writers, Other_Nodes => Robot_Ids);
+         Security.Enable (Log_Dir & "/keystore");
+         RCL.Security.Set_Enclave (Security.Enclave (To_String (View.Team), "demo_monitor"));
+      end Secure_Team;
 
       procedure Start_View is
          --  Not a child to stop at the end: the window stays open.
@@ -332,6 +356,9 @@ package body Sancta.Team.Sim_Demos is
          Args.Append (To_String (View.World));
          Args.Append ("--team");
          Args.Append (To_String (View.Team));
+         if Config.Secure then
+            Security.Set_Child_Enclave (Security.Enclave (To_String (View.Team), "view"));
+         end if;
          Pid := Spawn (Program (Config, "sancta-view"), Args, Log_Dir & "/view.log");
          Put_Line ("demo: live view started (sancta-view, log " & Log_Dir & "/view.log)");
       end Start_View;
@@ -340,6 +367,10 @@ package body Sancta.Team.Sim_Demos is
          Args : Text_Vectors.Vector;
       begin
          Ada.Directories.Create_Path (Log_Dir);
+         if Config.Secure then
+            Secure_Team;
+            Security.Set_Child_Enclave (Security.Simulator_Enclave);
+         end if;
          Args.Append (To_String (View.World));
          for R of View.Robots loop
             Args.Append ("--robot");
@@ -364,6 +395,9 @@ package body Sancta.Team.Sim_Demos is
          end loop;
          if Config.View then
             Start_View;
+         end if;
+         if Config.Secure then
+            Security.Set_Child_Enclave ("");
          end if;
       end Start_Processes;
    begin

@@ -57,6 +57,10 @@ package Sancta.Team.Sim_Demos is
       --  Where sancta and sancta-sim are; empty: next to this program,
       --  else on PATH.
       Verbose       : Boolean := True;
+      Secure        : Boolean := False;
+      --  DDS-Security (Sancta.Team.Security): a keystore in Out_Dir/keystore,
+      --  an enclave per process; only the non-robot agents (the operator)
+      --  may publish the mission's tasks.
       View          : Boolean := False;
       --  Also start the live view (sancta-view --world WORLD, its output in
       --  Out_Dir/view.log) when a display is set (DISPLAY or

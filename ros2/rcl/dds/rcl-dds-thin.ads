@@ -149,6 +149,9 @@ private package RCL.DDS.Thin is
    procedure Qset_Userdata (Qos : Qos_Ptr; Value : System.Address; Size : C.size_t)
      with Import, Convention => C, External_Name => "dds_qset_userdata";
 
+   procedure Qset_Prop (Qos : Qos_Ptr; Name, Value : C.Strings.chars_ptr)
+     with Import, Convention => C, External_Name => "dds_qset_prop";
+
    procedure Qset_History (Qos : Qos_Ptr; Kind : C.int; Depth : Integer_32)
      with Import, Convention => C, External_Name => "dds_qset_history";
 

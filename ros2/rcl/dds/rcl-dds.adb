@@ -1,4 +1,5 @@
 with Ada.Environment_Variables;
+with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
 with Interfaces.C.Strings;
 
@@ -202,11 +203,63 @@ package body RCL.DDS is
    -- Participant --
    -----------------
 
+   function Plugin_Directory return String is
+      Size : constant := 4096;
+      function Find (Dir : out C.char_array; Length : C.size_t) return C.int
+        with Import, Convention => C, External_Name => "rclada_security_plugin_dir";
+      Dir : C.char_array (1 .. Size);
+   begin
+      if Find (Dir, Size) /= 0 then
+         raise ROS_Exception with "security: Cyclone's DDS-Security plugins"
+           & " (libdds_security_auth.so...) are not installed beside libddsc"
+           & " (Debian: package libddsc0debian)";
+      end if;
+      return C.To_Ada (Dir);
+   end Plugin_Directory;
+
+   procedure Set_Security (Q : Thin.Qos_Ptr; Files : RCL.Security.Enclave_Files) is
+      use RCL.Security;
+      Dir : constant String := Plugin_Directory;
+
+      procedure Property (Name, Value : String) is
+         N : CS.chars_ptr := CS.New_String (Name);
+         V : CS.chars_ptr := CS.New_String (Value);
+      begin
+         Thin.Qset_Prop (Q, N, V);
+         CS.Free (N);
+         CS.Free (V);
+      end Property;
+
+      procedure Plugin (Kind, File, Init, Finalize : String) is
+      begin
+         Property ("dds.sec." & Kind & ".library.path", Dir & "/" & File);
+         Property ("dds.sec." & Kind & ".library.init", Init);
+         Property ("dds.sec." & Kind & ".library.finalize", Finalize);
+      end Plugin;
+
+      function URI (Kind : File_Kind) return String is
+        ("file:" & Ada.Strings.Unbounded.To_String (Files (Kind)));
+   begin
+      Plugin ("auth", "libdds_security_auth.so", "init_authentication",
+              "finalize_authentication");
+      Plugin ("crypto", "libdds_security_crypto.so", "init_crypto", "finalize_crypto");
+      Plugin ("access", "libdds_security_ac.so", "init_access_control",
+              "finalize_access_control");
+      Property ("dds.sec.auth.identity_ca", URI (Identity_CA));
+      Property ("dds.sec.auth.identity_certificate", URI (Certificate));
+      Property ("dds.sec.auth.private_key", URI (Private_Key));
+      Property ("dds.sec.access.permissions_ca", URI (Permissions_CA));
+      Property ("dds.sec.access.governance", URI (Governance));
+      Property ("dds.sec.access.permissions", URI (Permissions));
+   end Set_Security;
+
    procedure Create
      (This           : in out Participant;
       Domain         : Domain_Id;
       Localhost_Only : Boolean;
-      User_Data      : String := "enclave=/;")
+      User_Data      : String := "enclave=/;";
+      Secured        : Boolean := False;
+      Files          : RCL.Security.Enclave_Files := [others => <>])
    is
       Q      : Thin.Qos_Ptr;
       Result : C.int;
@@ -216,10 +269,29 @@ package body RCL.DDS is
       This.Domain := Dom;
       Q := Thin.Create_Qos;
       Thin.Qset_Userdata (Q, User_Data'Address, User_Data'Length);
+      if Secured then
+         begin
+            Set_Security (Q, Files);
+         exception
+            when others =>
+               Thin.Delete_Qos (Q);
+               This.Finalize;
+               raise;
+         end;
+      end if;
       Result := Thin.Create_Participant (Thin.Domain_Id_T (Domain), Q);
       Thin.Delete_Qos (Q);
       if Result < 0 then
          This.Finalize;
+         if Secured then
+            raise ROS_Exception with "creating the secured DDS participant on domain"
+              & Domain'Image & ": " & Error_Text (Integer (Result))
+              & ": Cyclone's security plugins refused the enclave's files "
+              & Ada.Strings.Unbounded.To_String (Files (RCL.Security.Permissions))
+              & " and the others beside it (a signature that does not verify against"
+              & " permissions_ca.cert.pem, an expired or foreign certificate; Cyclone's"
+              & " own reason is printed above)";
+         end if;
          Check (Integer (Result), "creating the DDS participant on domain" & Domain'Image);
       end if;
       This.Handle := Entity_Id (Result);

@@ -1,0 +1,286 @@
+--  rclada security: SROS2 keystores (RCL.Security.Keystores), and the
+--  policy files of "ros2 security create_permission" turned into DDS
+--  permissions: SROS2's policy format 0.2.0
+--
+--     <policy version="0.2.0"><enclaves><enclave path="/talker">
+--       <profiles><profile ns="/" node="talker">
+--         <topics publish="ALLOW"><topic>chatter</topic></topics>
+--         <services reply="ALLOW"><service>add_two_ints</service></services>
+--         <actions call="ALLOW"><action>fibonacci</action></actions>
+--       </profile></profiles></enclave></enclaves></policy>
+--
+--  with SROS2's mapping: topics rt/<name>; a service's request "rq/<name>
+--  Request" and reply "rr/<name>Reply" (reply="ALLOW": subscribe requests,
+--  publish replies; request="ALLOW": the converse); an action's three
+--  services (_action/send_goal, cancel_goal, get_result) and two topics
+--  (_action/feedback, status); relative names in the profile's namespace,
+--  "~" the node's own; ros_discovery_info always allowed both ways.
+--  xi:include is not supported (the error says so).
+with Ada.Characters.Handling;
+with Ada.Exceptions;
+with Ada.Text_IO;
+with DOM.Core.Documents;
+with DOM.Core.Elements;
+with DOM.Core.Nodes;
+with DOM.Readers;
+with Input_Sources.File;
+with Sax.Readers;
+with RCL.Security.Keystores;
+
+separate (Rclada_Commands)
+procedure Security_Command (Args : Arguments) is
+
+   package Keystores renames RCL.Security.Keystores;
+   use type DOM.Core.Node;
+   use type DOM.Core.Node_Types;
+
+   function Arg (I : Positive) return String is
+     (if Natural (Args.Length) >= I then Args (I) else "");
+
+   procedure Need (Count : Positive) is
+   begin
+      if Natural (Args.Length) /= Count then
+         raise Usage_Error with "security " & Arg (1) & ": expected"
+           & Natural'Image (Count - 1) & " argument(s)";
+      end if;
+   end Need;
+
+   -- Policy files --
+
+   type Action_Service is (Send_Goal, Cancel_Goal, Get_Result);
+   type Action_Topic is (Feedback, Status);
+   --  The services and topics of an action (their names in lower case).
+
+   function Lower (S : String) return String renames Ada.Characters.Handling.To_Lower;
+
+   type Rule_Vector is array (Positive range <>) of Keystores.Topic_Rule;
+
+   function Policy_Rules (File, Enclave : String) return Keystores.Topic_Rules is
+      Input  : Input_Sources.File.File_Input;
+      Reader : DOM.Readers.Tree_Reader;
+      Doc    : DOM.Core.Document;
+      Rules  : Rule_Vector (1 .. 10_000);
+      Count  : Natural := 0;
+      Found  : Boolean := False;
+
+      procedure Fail (Why : String) is
+      begin
+         raise Command_Error with File & ": " & Why;
+      end Fail;
+
+      procedure Add (Allow : Boolean; Kind : Keystores.Access_Kind; Topic : String) is
+      begin
+         if Count = Rules'Last then
+            Fail ("more than" & Rules'Last'Image & " rules");
+         end if;
+         Count := Count + 1;
+         Rules (Count) := (Allow, Kind, To_Unbounded_String (Topic));
+      end Add;
+
+      function Elements (Parent : DOM.Core.Node; Name : String) return DOM.Core.Node_List is
+        (DOM.Core.Elements.Get_Elements_By_Tag_Name (Parent, Name));
+
+      function Attribute (E : DOM.Core.Node; Name : String) return String is
+        (DOM.Core.Elements.Get_Attribute (E, Name));
+
+      function Text (E : DOM.Core.Node) return String is
+         Children : constant DOM.Core.Node_List := DOM.Core.Nodes.Child_Nodes (E);
+         Result   : Unbounded_String;
+      begin
+         for I in 0 .. DOM.Core.Nodes.Length (Children) - 1 loop
+            declare
+               C : constant DOM.Core.Node := DOM.Core.Nodes.Item (Children, I);
+            begin
+               if DOM.Core.Nodes.Node_Type (C) = DOM.Core.Text_Node then
+                  Append (Result, DOM.Core.Nodes.Node_Value (C));
+               end if;
+            end;
+         end loop;
+         return Ada.Strings.Fixed.Trim (To_String (Result), Ada.Strings.Both);
+      end Text;
+
+      function Qualified (Name, Namespace, Node_Name : String) return String is
+         --  SROS2's resolution: absolute names as they are, "~" the node's
+         --  own namespace, others relative to the profile's namespace.
+         NS : constant String :=
+           (if Namespace = "" or else Namespace = "/" then ""
+            elsif Namespace (Namespace'Last) = '/' then
+               Namespace (Namespace'First .. Namespace'Last - 1)
+            else Namespace);
+      begin
+         if Name = "" then
+            Fail ("an empty name in the profile of node " & Node_Name);
+         elsif Name (Name'First) = '/' then
+            return Name;
+         elsif Name (Name'First) = '~' then
+            return NS & "/" & Node_Name & Name (Name'First + 1 .. Name'Last);
+         else
+            return NS & "/" & Name;
+         end if;
+         return "";
+      end Qualified;
+
+      function Without_Slash (Name : String) return String is
+        (Name (Name'First + 1 .. Name'Last));
+
+      procedure Service_Rules (Name : String; Allow, Server : Boolean) is
+         Request : constant String := "rq/" & Without_Slash (Name) & "Request";
+         Reply   : constant String := "rr/" & Without_Slash (Name) & "Reply";
+         use Keystores;
+      begin
+         Add (Allow, (if Server then Subscribe else Publish), Request);
+         Add (Allow, (if Server then Publish else Subscribe), Reply);
+      end Service_Rules;
+
+      procedure Profile_Rules (Profile : DOM.Core.Node) is
+         NS   : constant String := Attribute (Profile, "ns");
+         Node : constant String := Attribute (Profile, "node");
+
+         procedure Each
+           (Group, Item : String;
+            Action : not null access procedure (Name : String; Mode, Value : String))
+         is
+            Groups : constant DOM.Core.Node_List := Elements (Profile, Group);
+         begin
+            for G in 0 .. DOM.Core.Nodes.Length (Groups) - 1 loop
+               declare
+                  E     : constant DOM.Core.Node := DOM.Core.Nodes.Item (Groups, G);
+                  Items : constant DOM.Core.Node_List := Elements (E, Item);
+                  Attrs : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (E);
+               begin
+                  for A in 0 .. DOM.Core.Nodes.Length (Attrs) - 1 loop
+                     declare
+                        Mode  : constant String :=
+                          DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
+                        Value : constant String :=
+                          DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
+                     begin
+                        if Value not in "ALLOW" | "DENY" then
+                           Fail ("<" & Group & " " & Mode & "=""" & Value
+                                 & """>: expected ALLOW or DENY");
+                        end if;
+                        for I in 0 .. DOM.Core.Nodes.Length (Items) - 1 loop
+                           Action (Qualified (Text (DOM.Core.Nodes.Item (Items, I)), NS, Node),
+                                   Mode, Value);
+                        end loop;
+                     end;
+                  end loop;
+               end;
+            end loop;
+         end Each;
+
+         procedure Topic (Name, Mode, Value : String) is
+         begin
+            if Mode not in "publish" | "subscribe" then
+               Fail ("<topics " & Mode & "=...>: expected publish or subscribe");
+            end if;
+            Add (Value = "ALLOW",
+                 (if Mode = "publish" then Keystores.Publish else Keystores.Subscribe),
+                 "rt/" & Without_Slash (Name));
+         end Topic;
+
+         procedure Service (Name, Mode, Value : String) is
+         begin
+            if Mode not in "reply" | "request" then
+               Fail ("<services " & Mode & "=...>: expected reply or request");
+            end if;
+            Service_Rules (Name, Value = "ALLOW", Server => Mode = "reply");
+         end Service;
+
+         procedure Action (Name, Mode, Value : String) is
+            Server : constant Boolean := Mode = "execute";
+         begin
+            if Mode not in "call" | "execute" then
+               Fail ("<actions " & Mode & "=...>: expected call or execute");
+            end if;
+            for S in Action_Service loop
+               Service_Rules (Name & "/_action/" & Lower (Action_Service'Image (S)),
+                              Value = "ALLOW", Server);
+            end loop;
+            for T in Action_Topic loop
+               Add (Value = "ALLOW", (if Server then Keystores.Publish else Keystores.Subscribe),
+                    "rt/" & Without_Slash (Name) & "/_action/" & Lower (Action_Topic'Image (T)));
+            end loop;
+         end Action;
+      begin
+         if DOM.Core.Nodes.Length (Elements (Profile, "xi:include")) > 0 then
+            Fail ("xi:include is not supported: put the included rules in the profile");
+         end if;
+         Each ("topics", "topic", Topic'Access);
+         Each ("services", "service", Service'Access);
+         Each ("actions", "action", Action'Access);
+      end Profile_Rules;
+
+   begin
+      begin
+         Input_Sources.File.Open (File, Input);
+      exception
+         when others =>
+            raise Command_Error with File & ": cannot open";
+      end;
+      Reader.Set_Feature (Sax.Readers.Namespace_Feature, False);
+      begin
+         Reader.Parse (Input);
+      exception
+         when E : Sax.Readers.XML_Fatal_Error =>
+            Input_Sources.File.Close (Input);
+            raise Command_Error with File & ": malformed XML: "
+              & Ada.Exceptions.Exception_Message (E);
+      end;
+      Input_Sources.File.Close (Input);
+      Doc := Reader.Get_Tree;
+      declare
+         Root     : constant DOM.Core.Element := DOM.Core.Documents.Get_Element (Doc);
+         Enclaves : constant DOM.Core.Node_List := Elements (Root, "enclave");
+      begin
+         if DOM.Core.Nodes.Node_Name (Root) /= "policy" then
+            Fail ("the root element is <" & DOM.Core.Nodes.Node_Name (Root)
+                  & ">, expected <policy>");
+         end if;
+         for I in 0 .. DOM.Core.Nodes.Length (Enclaves) - 1 loop
+            declare
+               E        : constant DOM.Core.Node := DOM.Core.Nodes.Item (Enclaves, I);
+               Profiles : constant DOM.Core.Node_List := Elements (E, "profile");
+            begin
+               if Attribute (E, "path") = Enclave then
+                  Found := True;
+                  for P in 0 .. DOM.Core.Nodes.Length (Profiles) - 1 loop
+                     Profile_Rules (DOM.Core.Nodes.Item (Profiles, P));
+                  end loop;
+               end if;
+            end;
+         end loop;
+      end;
+      if not Found then
+         Fail ("no <enclave path=""" & Enclave & """>");
+      end if;
+      Add (True, Keystores.Publish, "ros_discovery_info");
+      Add (True, Keystores.Subscribe, "ros_discovery_info");
+      return Keystores.Topic_Rules (Rules (1 .. Count));
+   end Policy_Rules;
+
+   Verb : constant String := Arg (1);
+begin
+   if Verb = "create_keystore" then
+      Need (2);
+      Keystores.Create_Keystore (Arg (2));
+      Ada.Text_IO.Put_Line ("keystore " & Arg (2) & " ready");
+   elsif Verb = "create_enclave" then
+      Need (3);
+      Keystores.Create_Enclave (Arg (2), Arg (3));
+      Ada.Text_IO.Put_Line ("enclave " & Arg (3) & " created in " & Arg (2));
+   elsif Verb = "create_permission" then
+      Need (4);
+      Keystores.Create_Permission (Arg (2), Arg (3), Policy_Rules (Arg (4), Arg (3)));
+      Ada.Text_IO.Put_Line ("permissions of " & Arg (3) & " written and signed");
+   elsif Verb = "list_enclaves" then
+      Need (2);
+      for Name of Keystores.List_Enclaves (Arg (2)) loop
+         Ada.Text_IO.Put_Line (To_String (Name));
+      end loop;
+   elsif Verb = "" then
+      raise Usage_Error with "security: a sub-command is needed";
+   else
+      raise Usage_Error with "security: unknown sub-command '" & Verb & "'";
+   end if;
+end Security_Command;
