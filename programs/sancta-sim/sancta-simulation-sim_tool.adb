@@ -17,6 +17,7 @@ with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with Sancta.Geometry;               use Sancta.Geometry;
+with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
 with Sancta.Components.Robot_Messages;
 with Sancta.Simulation.Map_Files;
@@ -89,6 +90,8 @@ package body Sancta.Simulation.Sim_Tool is
       Last_GPS  : Natural := 0;
       Last_Cmd  : Real := 0.0;
       --  Simulated time of the last cmd_vel.
+      Bad_Cmd_Said : Boolean := False;
+      --  A non-finite cmd_vel was reported (said once per robot).
    end record;
 
    package IO_Vectors is new Ada.Containers.Vectors (Positive, Robot_IO);
@@ -359,11 +362,29 @@ package body Sancta.Simulation.Sim_Tool is
             begin
                exit when Data'Length = 0;
                ROSIDL.CDR.Decode (Data, Twist_Msg);
-               R.Last_Cmd := Sim.Clock;
-               Sim.Set_Command
-                 (R.Id,
-                  (Linear_X  => Real (ROSIDL.Float64'(Twist_Msg ("linear")("x").As_Float64)),
-                   Angular_Z => Real (ROSIDL.Float64'(Twist_Msg ("angular")("z").As_Float64))));
+               declare
+                  --  Tested through the references: a copy of a NaN raises
+                  --  Constraint_Error under validity checks (debug build).
+                  Linear  : constant ROSIDL.Dynamic.Float64_Ref :=
+                    Twist_Msg ("linear")("x").As_Float64;
+                  Angular : constant ROSIDL.Dynamic.Float64_Ref :=
+                    Twist_Msg ("angular")("z").As_Float64;
+               begin
+                  if Linear.Element.all'Valid and then Angular.Element.all'Valid then
+                     R.Last_Cmd := Sim.Clock;
+                     --  Finite values; the simulator clamps them to the
+                     --  robot's limits.
+                     Sim.Set_Command
+                       (R.Id, (Linear_X  => Real (Linear.Element.all),
+                               Angular_Z => Real (Angular.Element.all)));
+                  elsif not R.Bad_Cmd_Said then
+                     --  NaN or infinite: the sample is ignored (the robot
+                     --  keeps its last command, or stops on --cmd-timeout).
+                     R.Bad_Cmd_Said := True;
+                     Say ("cmd_vel for " & To_String (R.Name)
+                          & ": non-finite velocity ignored (said once per robot)");
+                  end if;
+               end;
             exception
                when E : ROSIDL.Decode_Error =>
                   Say ("bad cmd_vel sample for " & To_String (R.Name) & ": "
@@ -383,10 +404,15 @@ package body Sancta.Simulation.Sim_Tool is
          --  The /sancta_sim/control service, answered in the stepping loop.
          Command : constant String := Request ("command").Get_String;
          Name    : constant String := Request ("name").Get_String;
+         function Coordinate (Field : String) return Real is
+            Value : constant ROSIDL.Dynamic.Float64_Ref := Request (Field).As_Float64;
+         begin
+            return (if Value.Element.all'Valid then Real (Value.Element.all) else Real'Last);
+         end Coordinate;
+         --  The request's value, Real'Last (refused by Is_Sane) for NaN/Inf.
+
          Where   : constant Pose :=
-           (Real (ROSIDL.Float64'(Request ("x").As_Float64)),
-            Real (ROSIDL.Float64'(Request ("y").As_Float64)),
-            Real (ROSIDL.Float64'(Request ("yaw").As_Float64)));
+           (Coordinate ("x"), Coordinate ("y"), Coordinate ("yaw"));
          Index   : constant Natural := Find (Name);
          Ok      : Boolean := True;
          Text    : Unbounded_String;
@@ -640,7 +666,17 @@ package body Sancta.Simulation.Sim_Tool is
          end if;
          declare
             World : constant Worlds.World := Map_Files.Load_World (File);
+            F     : constant Sancta.Robot.Grids.Frame := Worlds.Frame_Of (World);
          begin
+            for R of Robots loop
+               if R.Start.X not in F.Origin.X .. F.Origin.X + Real (F.Width) * F.Resolution
+                 or else R.Start.Y not in F.Origin.Y .. F.Origin.Y + Real (F.Height) * F.Resolution
+               then
+                  raise Usage_Error with "--robot " & To_String (R.Name) & ": start ("
+                    & Image (R.Start.X) & ", " & Image (R.Start.Y) & ") is outside the world "
+                    & File;
+               end if;
+            end loop;
             Simulate (World, Robots, Rate, As_Fast, Seed, Duration_S, Step, Truth_Every,
                       Cmd_Timeout, Quiet);
          end;
