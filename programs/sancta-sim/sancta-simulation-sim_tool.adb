@@ -89,6 +89,8 @@ package body Sancta.Simulation.Sim_Tool is
       Last_GPS  : Natural := 0;
       Last_Cmd  : Real := 0.0;
       --  Simulated time of the last cmd_vel.
+      Bad_Cmd_Said : Boolean := False;
+      --  A non-finite cmd_vel was reported (said once per robot).
    end record;
 
    package IO_Vectors is new Ada.Containers.Vectors (Positive, Robot_IO);
@@ -359,11 +361,29 @@ package body Sancta.Simulation.Sim_Tool is
             begin
                exit when Data'Length = 0;
                ROSIDL.CDR.Decode (Data, Twist_Msg);
-               R.Last_Cmd := Sim.Clock;
-               Sim.Set_Command
-                 (R.Id,
-                  (Linear_X  => Real (ROSIDL.Float64'(Twist_Msg ("linear")("x").As_Float64)),
-                   Angular_Z => Real (ROSIDL.Float64'(Twist_Msg ("angular")("z").As_Float64))));
+               declare
+                  --  Tested through the references: a copy of a NaN raises
+                  --  Constraint_Error under validity checks (debug build).
+                  Linear  : constant ROSIDL.Dynamic.Float64_Ref :=
+                    Twist_Msg ("linear")("x").As_Float64;
+                  Angular : constant ROSIDL.Dynamic.Float64_Ref :=
+                    Twist_Msg ("angular")("z").As_Float64;
+               begin
+                  if Linear.Element.all'Valid and then Angular.Element.all'Valid then
+                     R.Last_Cmd := Sim.Clock;
+                     --  Finite values; the simulator clamps them to the
+                     --  robot's limits.
+                     Sim.Set_Command
+                       (R.Id, (Linear_X  => Real (Linear.Element.all),
+                               Angular_Z => Real (Angular.Element.all)));
+                  elsif not R.Bad_Cmd_Said then
+                     --  NaN or infinite: the sample is ignored (the robot
+                     --  keeps its last command, or stops on --cmd-timeout).
+                     R.Bad_Cmd_Said := True;
+                     Say ("cmd_vel for " & To_String (R.Name)
+                          & ": non-finite velocity ignored (said once per robot)");
+                  end if;
+               end;
             exception
                when E : ROSIDL.Decode_Error =>
                   Say ("bad cmd_vel sample for " & To_String (R.Name) & ": "
@@ -383,10 +403,15 @@ package body Sancta.Simulation.Sim_Tool is
          --  The /sancta_sim/control service, answered in the stepping loop.
          Command : constant String := Request ("command").Get_String;
          Name    : constant String := Request ("name").Get_String;
+         function Coordinate (Field : String) return Real is
+            Value : constant ROSIDL.Dynamic.Float64_Ref := Request (Field).As_Float64;
+         begin
+            return (if Value.Element.all'Valid then Real (Value.Element.all) else Real'Last);
+         end Coordinate;
+         --  The request's value, Real'Last (refused by Is_Sane) for NaN/Inf.
+
          Where   : constant Pose :=
-           (Real (ROSIDL.Float64'(Request ("x").As_Float64)),
-            Real (ROSIDL.Float64'(Request ("y").As_Float64)),
-            Real (ROSIDL.Float64'(Request ("yaw").As_Float64)));
+           (Coordinate ("x"), Coordinate ("y"), Coordinate ("yaw"));
          Index   : constant Natural := Find (Name);
          Ok      : Boolean := True;
          Text    : Unbounded_String;

@@ -670,7 +670,15 @@ package body ROSIDL.Dynamic.Codec is
       S.Origin := Data'First + Encapsulation_Size;
       if With_Header then
          GUID := Get_Unsigned (8, "request header guid");
-         Sequence := Int64 (Get_Unsigned (8, "request header sequence"));
+         declare
+            --  The header's sequence is an int64 on the wire: any 64 bits,
+            --  e.g. -1 (FF..FF) from a hostile peer, are a valid value.
+            Wire : constant Unsigned_64 := Get_Unsigned (8, "request header sequence");
+         begin
+            Sequence :=
+              (if Wire <= Unsigned_64 (Int64'Last) then Int64 (Wire)
+               else -Int64 (not Wire) - 1);
+         end;
       end if;
       Get_Node (Msg.Root);
    end Decode;

@@ -529,8 +529,11 @@ package body Sancta.Team.Agents is
          end;
       end;
    exception
-      when Constraint_Error | Plans.Format_Error =>
-         Log (A, "malformed auction message from " & Sender);
+      when E : Constraint_Error | Plans.Format_Error =>
+         --  Data from outside: the network drops it with a rate-limited
+         --  warning.
+         raise Networks.Malformed_Data with
+           "auction payload from " & Sender & ": " & Ada.Exceptions.Exception_Message (E);
    end On_Message;
 
    --  The agent -----------------------------------------------------------------------

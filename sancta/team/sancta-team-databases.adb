@@ -194,19 +194,37 @@ package body Sancta.Team.Databases is
    end On_Joined;
 
    function Decode (Type_Name, Text : String) return Value'Class is
+      --  Values from other nodes: a value that does not parse as its
+      --  declared type, or of a type unknown here, is refused (the network
+      --  drops the entry and says so).
+      Bad : constant String :=
+        "value " & (if Text'Length > 40 then Text (Text'First .. Text'First + 39) & "..."
+                    else Text) & " is not a valid " & Type_Name;
    begin
       if Type_Name = "types.integer" then
          return Integer_Value'(Data => Long_Long_Integer'Value (Text));
       elsif Type_Name = "types.real" then
-         return Real_Value'(Data => Long_Float'Value (Text));
+         declare
+            X : constant Long_Float := Long_Float'Value (Text);
+         begin
+            if not X'Valid then
+               raise Networks.Malformed_Data with Bad;
+            end if;
+            return Real_Value'(Data => X);
+         end;
       elsif Type_Name = "types.boolean" then
+         if Text not in "true" | "false" then
+            raise Networks.Malformed_Data with Bad;
+         end if;
          return Boolean_Value'(Data => Text = "true");
-      else
+      elsif Runtime.Values.Is_Known_Type (Type_Name) then
          return To_Value (Text);
+      else
+         raise Networks.Malformed_Data with "unknown value type " & Type_Name;
       end if;
    exception
       when Constraint_Error =>
-         return To_Value (Text);
+         raise Networks.Malformed_Data with Bad;
    end Decode;
 
 end Sancta.Team.Databases;

@@ -230,6 +230,63 @@ package body Sancta.Team.Networks is
          & Ada.Exceptions.Exception_Information (E));
    end Log_Failure;
 
+   protected body Drop_Box is
+      procedure Add (Now : Ada.Real_Time.Time; Say : out Boolean; Total : out Long_Long_Integer) is
+         use type Ada.Real_Time.Time;
+      begin
+         Dropped := Dropped + 1;
+         Total := Dropped;
+         Say := Last_Warned = Ada.Real_Time.Time_First
+           or else Now - Last_Warned >= Ada.Real_Time.Seconds (10);
+         if Say then
+            Last_Warned := Now;
+         end if;
+      end Add;
+
+      function Count return Long_Long_Integer is (Dropped);
+   end Drop_Box;
+
+   function Quoted (Text : String) return String is
+      --  Text in quotes, at most 40 characters, others as \xNN.
+      Hex    : constant String := "0123456789abcdef";
+      Result : Unbounded_String;
+   begin
+      for I in Text'First .. Integer'Min (Text'Last, Text'First + 39) loop
+         if Text (I) in ' ' .. '~' then
+            Append (Result, Text (I));
+         else
+            Append (Result, "\x" & Hex (Character'Pos (Text (I)) / 16 + 1)
+                    & Hex (Character'Pos (Text (I)) mod 16 + 1));
+         end if;
+      end loop;
+      return '"' & To_String (Result) & (if Text'Length > 40 then "..." else "") & '"';
+   end Quoted;
+
+   procedure Drop (This : in out Network'Class; What, Reason : String) is
+      Say   : Boolean;
+      Total : Long_Long_Integer;
+   begin
+      This.Drops.Add (Ada.Real_Time.Clock, Say, Total);
+      if Say then
+         Ada.Text_IO.Put_Line
+           (Ada.Text_IO.Standard_Error,
+            "team network " & To_String (This.Id) & ": dropped malformed " & What
+            & " (" & Reason & ");" & Total'Image & " dropped so far");
+      end if;
+   end Drop;
+   --  Counts a malformed sample and warns at most once per 10 s.
+
+   function Problem_With_Id (What, Text : String) return String is
+     (if Is_Member_Id (Text) then ""
+      else What & " " & Quoted (Text) & " is not 1 .." & Max_Id_Length'Image
+           & " letters, digits and '_'");
+
+   function Problem_With_Text (What, Text : String) return String is
+     (if Is_Text (Text) then ""
+      elsif Text'Length > Max_Value_Length then
+         What & " of" & Text'Length'Image & " characters exceeds" & Max_Value_Length'Image
+      else What & " " & Quoted (Text) & " has a non-printable character");
+
    procedure On_Envelope
      (Node : in out RCL.Nodes.Node'Class;
       Msg  : in out ROSIDL.Dynamic.Message;
@@ -244,7 +301,21 @@ package body Sancta.Team.Networks is
       declare
          Dest    : constant String := Msg ("destination").Get_String;
          Channel : constant String := Msg ("channel").Get_String;
+         Sender  : constant String := Msg ("sender").Get_String;
+         Payload : constant String := Msg ("payload").Get_String;
+         Problem : constant String :=
+           (if not (Dest = "" or else Is_Member_Id (Dest)
+                    or else (Dest (Dest'First) = '@'
+                             and then Is_Member_Id (Dest (Dest'First + 1 .. Dest'Last))))
+            then "destination " & Quoted (Dest) & " is not a node, @group or """""
+            elsif not Is_Member_Id (Sender) then Problem_With_Id ("sender", Sender)
+            elsif not Is_Member_Id (Channel) then Problem_With_Id ("channel", Channel)
+            else Problem_With_Text ("payload", Payload));
       begin
+         if Problem /= "" then
+            Drop (Net.all, "message", Problem);
+            return;
+         end if;
          if not Accepts (Net.all, Dest) then
             return;
          end if;
@@ -252,9 +323,12 @@ package body Sancta.Team.Networks is
          for S of Net.Subs loop
             if To_String (S.Channel) = Channel then
                begin
-                  S.Who.On_Message (Msg ("sender").Get_String, Channel,
-                                    Msg ("payload").Get_String);
+                  S.Who.On_Message (Sender, Channel, Payload);
                exception
+                  when E : Malformed_Data | Constraint_Error =>
+                     --  The payload did not parse: data from outside.
+                     Drop (Net.all, "message on channel " & Channel & " from " & Sender,
+                           Ada.Exceptions.Exception_Message (E));
                   when E : others =>
                      Log_Failure (Net.all, "consumer of channel " & Channel, E);
                end;
@@ -274,10 +348,19 @@ package body Sancta.Team.Networks is
          return;
       end if;
       declare
-         Lease : constant Long_Float := Long_Float (Msg ("lease").As_Float64.Element.all);
+         Lease_Ref : constant ROSIDL.Dynamic.Float64_Ref := Msg ("lease").As_Float64;
+         --  Tested through the reference: copying a NaN raises under
+         --  validity checks.
+         Member    : constant String := Msg ("node").Get_String;
       begin
-         if Lease >= 0.01 and then Lease <= 3600.0 then
-            Heard (Net.all, Msg ("node").Get_String, Duration (Lease),
+         if not Is_Member_Id (Member) then
+            Drop (Net.all, "presence", Problem_With_Id ("member", Member));
+         elsif not Lease_Ref.Element.all'Valid
+           or else Long_Float (Lease_Ref.Element.all) not in 0.01 .. 3600.0
+         then
+            Drop (Net.all, "presence of " & Member, "lease not in 0.01 .. 3600 s");
+         else
+            Heard (Net.all, Member, Duration (Long_Float (Lease_Ref.Element.all)),
                    Image (Info.Publisher_GID));
          end if;
       end;
@@ -296,12 +379,40 @@ package body Sancta.Team.Networks is
       then
          return;
       end if;
-      Net.States.On_State
-        (Key        => Msg ("key").Get_String,
-         Value_Type => Msg ("value_type").Get_String,
-         Value      => Msg ("value").Get_String,
-         Revision   => Long_Long_Integer (Msg ("revision").As_UInt64.Element.all),
-         Writer     => Msg ("writer").Get_String);
+      declare
+         Key        : constant String := Msg ("key").Get_String;
+         Value_Type : constant String := Msg ("value_type").Get_String;
+         Value      : constant String := Msg ("value").Get_String;
+         Wire_Rev   : constant ROSIDL.UInt64 := Msg ("revision").As_UInt64.Element.all;
+         Writer     : constant String := Msg ("writer").Get_String;
+         use type ROSIDL.UInt64;
+         Problem    : constant String :=
+           (if not Is_Key (Key) then
+              (if Key'Length not in 1 .. Max_Key_Length
+               then "key of" & Key'Length'Image & " characters"
+               else "key " & Quoted (Key) & " has a non-printable character")
+            elsif not Is_Member_Id (Writer) then Problem_With_Id ("writer", Writer)
+            elsif Value_Type'Length not in 1 .. Max_Id_Length
+              or else (for some C of Value_Type => C not in 'a' .. 'z' | '.' | '_')
+            then "value type " & Quoted (Value_Type) & " is not like ""types.string"""
+            elsif Wire_Rev = 0 or else Wire_Rev > ROSIDL.UInt64 (Long_Long_Integer'Last)
+            then "revision" & Wire_Rev'Image & " for key " & Quoted (Key)
+            else Problem_With_Text ("value", Value));
+      begin
+         if Problem /= "" then
+            Drop (Net.all, "state entry", Problem);
+            return;
+         end if;
+         Net.States.On_State
+           (Key        => Key,
+            Value_Type => Value_Type,
+            Value      => Value,
+            Revision   => Long_Long_Integer (Wire_Rev),
+            Writer     => Writer);
+      exception
+         when E : Malformed_Data | Constraint_Error =>
+            Drop (Net.all, "state entry " & Quoted (Key), Ada.Exceptions.Exception_Message (E));
+      end;
    exception
       when E : others =>
          Log_Failure (Net.all, "state consumer", E);
@@ -501,6 +612,8 @@ package body Sancta.Team.Networks is
      (This.Alive.Contains (Id));
 
    function Sent_Count (This : Network) return Long_Long_Integer is (This.Counts.Sent);
+   function Dropped_Count (This : Network) return Long_Long_Integer is (This.Drops.Count);
+
    function Received_Count (This : Network) return Long_Long_Integer is
      (This.Counts.Received);
 

@@ -82,6 +82,42 @@ package Sancta.Team.Networks is
       Revision   : Long_Long_Integer;
       Writer     : String) is abstract;
 
+   --  Data from outside ----------------------------------------------------------
+   --
+   --  Every sample heard is validated before any consumer sees it: member
+   --  ids and channels are 1 .. 64 letters, digits and '_'; keys 1 .. 256
+   --  printable ASCII characters; values and payloads at most 64 KiB of
+   --  text (printable ASCII, tab, CR, LF); revisions positive; leases finite.
+   --  A sample failing a rule, or refused by its consumer (Malformed_Data, or
+   --  Constraint_Error while a consumer parses it), is dropped and counted;
+   --  the network says so on standard error at most once per 10 s, with the
+   --  reason and no traceback:
+   --     team network r1: dropped malformed state entry (key "task/\x01" has a
+   --     non-printable character); 12 dropped so far
+
+   Malformed_Data : exception;
+   --  Raised by a consumer that refuses a sample (e.g. a value that does
+   --  not parse as its declared type); the message says why.
+
+   Max_Id_Length    : constant := 64;
+   Max_Key_Length   : constant := 256;
+   Max_Value_Length : constant := 65_536;
+
+   function Is_Member_Id (Text : String) return Boolean is
+     (Text'Length in 1 .. Max_Id_Length
+      and then (for all C of Text => C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_'));
+   --  Is_Member_Id ("r1") and not Is_Member_Id ("r 1").
+
+   function Is_Key (Text : String) return Boolean is
+     (Text'Length in 1 .. Max_Key_Length
+      and then (for all C of Text => C in ' ' .. '~'));
+   --  Is_Key ("done/t3") and not Is_Key ("done/" & ASCII.NUL).
+
+   function Is_Text (Text : String) return Boolean is
+     (Text'Length <= Max_Value_Length
+      and then (for all C of Text => C in ' ' .. '~' | ASCII.HT | ASCII.LF | ASCII.CR));
+   --  A value or payload.
+
    function Tasks_Topic (Team : String) return String;
    --  "/sancta/<team>/tasks": the topic of the mission's entries.
 
@@ -144,6 +180,8 @@ package Sancta.Team.Networks is
 
    function Sent_Count (This : Network) return Long_Long_Integer;
    function Received_Count (This : Network) return Long_Long_Integer;
+   function Dropped_Count (This : Network) return Long_Long_Integer;
+   --  Samples dropped as malformed (see "Data from outside").
 
 private
 
@@ -227,6 +265,15 @@ private
       S, R, Seq : Long_Long_Integer := 0;
    end Counter_Box;
 
+   protected type Drop_Box is
+      procedure Add (Now : Ada.Real_Time.Time; Say : out Boolean; Total : out Long_Long_Integer);
+      --  Counts a drop; Say when no warning was given in the last 10 s.
+      function Count return Long_Long_Integer;
+   private
+      Dropped     : Long_Long_Integer := 0;
+      Last_Warned : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
+   end Drop_Box;
+
    type Network is tagged limited record
       Id         : Unbounded_String;
       Groups     : Unbounded_String;
@@ -245,6 +292,7 @@ private
       Alive      : Roster;
       Status     : Flag_Box;
       Counts     : Counter_Box;
+      Drops      : Drop_Box;
       Worker     : Receiver_Access;
       Started    : Boolean := False;
       Next_Beat  : Ada.Real_Time.Time := Ada.Real_Time.Time_First;

@@ -23,6 +23,7 @@
 //   node <namespace> <name>           (from a ros_discovery_info sample)
 //   writer <dds topic> <type>          (discovered through DDS discovery)
 //   reader <dds topic> <type>
+//   request sent                       (--call; repeated every 2 s until a reply)
 //   reply <sum>                        (--call)
 //   served <a> <b>                     (--serve)
 // The loopback profile is mandatory: FASTRTPS_DEFAULT_PROFILES_FILE must name
@@ -526,7 +527,12 @@ int main(int argc, char** argv)
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     std::vector<int> sent(writers.size(), 0);
-    bool called = false;
+    // The call goes out once both endpoints have been matched for a second
+    // (the server's reader may match this writer later than this writer
+    // matched it; a volatile request sent before is lost), and again every
+    // 2 s until a reply comes.
+    double matched_since = -1.0;
+    double last_call = -1.0;
     while (elapsed() < opt.duration) {
         for (size_t i = 0; i < writers.size(); ++i) {
             PublicationMatchedStatus status;
@@ -563,7 +569,14 @@ int main(int argc, char** argv)
             request_writer->get_publication_matched_status(w_status);
             reply_reader->get_subscription_matched_status(r_status);
             static eprosima::fastrtps::rtps::SampleIdentity sent_id;
-            if (!called && w_status.current_count > 0 && r_status.current_count > 0) {
+            const bool matched = w_status.current_count > 0 && r_status.current_count > 0;
+            if (!matched) {
+                matched_since = -1.0;
+            } else if (matched_since < 0.0) {
+                matched_since = elapsed();
+            }
+            if (matched && received == 0 && elapsed() - matched_since >= 1.0
+                && (last_call < 0.0 || elapsed() - last_call >= 2.0)) {
                 Cdr body;
                 body.i64(opt.a);
                 body.i64(opt.b);
@@ -572,7 +585,8 @@ int main(int argc, char** argv)
                 params.related_sample_identity().writer_guid(reply_reader->guid());
                 if (request_writer->write(&request, params)) {
                     sent_id = params.sample_identity();
-                    called = true;
+                    last_call = elapsed();
+                    say("request sent");
                 }
             }
             RawSample reply;

@@ -112,24 +112,26 @@ def test_round_trip_fast_dds_ada_fast_dds(tmp_path, pkg, name, sample, sensor):
 def test_large_image_both_ways(tmp_path):
     # 4 MiB, reliable (best effort loses whole samples to one dropped
     # fragment on a loaded machine): fragmented on the wire both ways. Fast
-    # DDS publishes every 0.3 s (the first large sample from Fast DDS to
+    # DDS publishes every 1.5 s (the first large sample from Fast DDS to
     # Cyclone is sometimes never delivered); the Ada node echoes two back.
     side = 1024
     image = Image_(header=Header_(stamp=Time_(7, 8), frame_id="camera"), height=side,
                    width=side, encoding="rgba8", step=4 * side,
                    data=bytes(range(256)) * (4 * side * side // 256))
     expected = padded(image.serialize())
-    with Peer("--node", "fd_camera", "--period", 0.3,
+    with Peer("--node", "fd_camera", "--period", 1.5,
               "--pub", "/fd_image_in", Image_.__idl_typename__, cdr_file(tmp_path, "img", image),
               "--sub", "/fd_image_out", Image_.__idl_typename__,
               "--exit-after", 2, "--duration", 70) as peer:
         ada = ps.start("pubsub_peer", "echo", "sensor_msgs", "Image", "/fd_image_in",
                        "/fd_image_out", 2)
+        echoed = None
         try:
-            assert peer.wait_for(lambda line: line.startswith("sample /fd_image_out"),
-                                 timeout=50), peer.lines
+            echoed = peer.wait_for(lambda line: line.startswith("sample /fd_image_out"),
+                                   timeout=50)
         finally:
-            stop(ada)
+            ada_out = stop(ada)
+        assert echoed, f"Fast DDS peer said: {peer.lines}\nAda echo said: {ada_out}"
     for length, digest, _ in peer.samples("/fd_image_out"):
         assert (length, digest) == (len(expected), fnv1a64(expected))
 
@@ -183,17 +185,22 @@ def test_echo_escapes_control_characters_as_ros2(tmp_path):
     assert yaml.safe_load(out.split("---")[0])["data"] == text
 
 
-@pytest.mark.xfail(reason="KNOWN FAILURE on main since the session-3 merges (the Ada server logs no 'malformed request dropped'); see the session note; fix next session", strict=False)
 def test_fast_dds_client_is_refused_clearly_by_an_ada_server():
     # Services do not interoperate with rmw_fastrtps on Cyclone 0.10 (it
     # cannot write the related-sample-identity a Fast DDS client needs; see
     # README): the Ada server drops the headerless request with a warning
-    # naming the offset instead of misreading it.
+    # naming the offset instead of misreading it. On a loaded machine the
+    # peer may need long to match the service: wait for its request, then
+    # give the server time to take it before stopping it.
     server = ps.start("server")
     try:
         with Peer("--node", "fd_client", "--call", "/add_two_ints", 2, 3, "--exit-after", 1,
-                  "--duration", 10) as peer:
-            peer.proc.wait(timeout=40)
+                  "--duration", 60) as peer:
+            # (the peer repeats its call every 2 s while no reply comes)
+            sent = peer.wait_for(lambda line: line == "request sent", timeout=50)
+            if sent:
+                peer.wait_for(lambda line: line.startswith("reply")
+                              or peer.lines.count("request sent") >= 3, timeout=10)
             peer.stop()
     finally:
         server.terminate()  # (SIGTERM: the server exits cleanly, its log flushed)
@@ -201,5 +208,6 @@ def test_fast_dds_client_is_refused_clearly_by_an_ada_server():
             out = server.communicate(timeout=20)[0]
         except subprocess.TimeoutExpired:
             out = stop(server)
+    assert sent, f"the Fast DDS client never matched the Ada service: {peer.lines}"
     assert not [line for line in peer.lines if line.startswith("reply")]
     assert "malformed request dropped" in out and "byte offset" in out, out

@@ -1,0 +1,244 @@
+"""Hostile data from the network (issue 19, item 4): a service request or
+reply whose rmw header carries sequence -1 (or 2**63 - 1), NaN and infinite
+velocities on cmd_vel, NaN poses to the simulator's control service, and
+malformed team messages (garbage keys, member names, values, revisions).
+Each receiving process must live, answer what is valid, say once (or rate-
+limited) what it dropped, print no traceback, and keep no garbage."""
+import math
+import os
+import re
+import subprocess
+import threading
+import time
+
+import pubsub_support as ps
+import ros_types as rt
+import service_support as svc
+import sim_support as ss
+from test_team_security import DbEntry_, Envelope_, Presence_
+
+SANCTA = ps.BIN / "sancta"
+WORLD = ps.REPO / "share" / "worlds" / "office.yaml"
+NO_CRASH = re.compile(r"internal error|CONSTRAINT_ERROR|STORAGE_ERROR|PROGRAM_ERROR|"
+                      r"raised |Call stack|traceback", re.IGNORECASE)
+
+
+def test_server_answers_a_request_with_sequence_minus_one():
+    ada = ps.start("server")
+    try:
+        dp = ps.participant()
+        cl = svc.Client(dp)
+        assert cl.wait_for_service(), "the Ada service endpoints were not discovered"
+        time.sleep(0.3)
+        for seq in (-1, 2**63 - 1, -(2**63)):
+            cl.writer.write(svc.AddTwoInts_Request_(guid=cl.guid, seq=seq, a=1, b=2))
+            deadline = time.monotonic() + 5
+            reply = None
+            while reply is None and time.monotonic() < deadline:
+                for r in cl.reader.take(N=16):
+                    if isinstance(r, svc.AddTwoInts_Response_) and r.seq == seq:
+                        reply = r
+                time.sleep(0.005)
+            assert reply is not None and reply.sum == 3, f"no reply to sequence {seq}"
+        r = cl.call(20, 22)  # and the server still answers ordinary calls
+        assert r is not None and r.sum == 42
+        assert ada.poll() is None, "the server died"
+    finally:
+        out = svc.stop(ada)
+    assert not NO_CRASH.search(out), out
+
+
+def test_client_ignores_replies_with_hostile_sequences():
+    """Every request is answered first with sequence -1, then 2**63 - 1 and
+    a foreign guid, then the true reply: the Ada client takes the true one."""
+    dp = ps.participant()
+    srv = svc.Server(dp)
+    stop = threading.Event()
+
+    def serve():
+        while not stop.is_set():
+            for r in srv.reader.take(N=64):
+                if not isinstance(r, svc.AddTwoInts_Request_):
+                    continue
+                srv.writer.write(svc.AddTwoInts_Response_(guid=r.guid, seq=-1, sum=-1))
+                srv.writer.write(svc.AddTwoInts_Response_(guid=r.guid, seq=2**63 - 1, sum=-2))
+                srv.writer.write(svc.AddTwoInts_Response_(guid=~r.guid & (2**64 - 1),
+                                                          seq=r.seq, sum=-3))
+                srv.writer.write(svc.AddTwoInts_Response_(guid=r.guid, seq=r.seq,
+                                                          sum=r.a + r.b))
+            time.sleep(0.001)
+
+    t = threading.Thread(target=serve)
+    t.start()
+    try:
+        ada = ps.start("client", 20, 22, 10)
+        out = ps.finish(ada)
+    finally:
+        stop.set()
+        t.join()
+    assert ada.returncode == 0, out
+    assert "Got answer: 42" in out, out
+    assert not NO_CRASH.search(out), out
+
+
+def test_simulator_survives_hostile_control_and_cmd_vel():
+    dp = ps.participant()
+    truth = ps.reader(dp, "rt/robot1/ground_truth", rt.PoseStamped_)
+    cmd = ps.writer(dp, "rt/robot1/cmd_vel", rt.Twist_)
+    ctl = ss.Control(dp)
+    sim = ps.start("sancta-sim", "arena", "--rate", "4x", "--duration", "400",
+                   "--robot", "robot1 5 5 0")
+    try:
+        assert ctl.wait_available() and ps.wait_matched(cmd, 15) and ps.wait_matched(truth, 15)
+        # A request whose header sequence is -1: answered, echoed.
+        ctl.wr.write(ss.SimControl_Request_(guid=ctl.GUID, seq=-1, command="list"))
+        deadline, reply = time.monotonic() + 10, None
+        while reply is None and time.monotonic() < deadline:
+            reply = next((r for r in ps.take(ctl.rd) if r.seq == -1), None)
+            time.sleep(0.02)
+        assert reply is not None and reply.success and "robot1" in reply.message
+        # Non-finite poses are refused by name.
+        for bad in (math.nan, math.inf, -math.inf):
+            r = ctl.call("teleport", "robot1", x=bad, y=5.0)
+            assert not r.success and "invalid pose" in r.message, r.message
+            r = ctl.call("add", "robot9", x=5.0, y=bad)
+            assert not r.success, r.message
+        # NaN and infinite velocities for 2 s: ignored, the robot stays put.
+        t0 = ss.latest(truth)
+        deadline = time.monotonic() + 2
+        while time.monotonic() < deadline:
+            for v in (math.nan, math.inf, -math.inf):
+                cmd.write(rt.Twist_(linear=rt.Vector3_(v, 0, 0), angular=rt.Vector3_(0, 0, 0)))
+                cmd.write(rt.Twist_(linear=rt.Vector3_(0, 0, 0), angular=rt.Vector3_(0, 0, v)))
+            time.sleep(0.02)
+        t1 = ss.latest(truth)
+        for p in (t1.pose.position.x, t1.pose.position.y, t1.pose.orientation.z):
+            assert math.isfinite(p), t1
+        assert abs(t1.pose.position.x - t0.pose.position.x) < 0.01, (t0, t1)
+        # A finite command still drives it.
+        deadline, moved = time.monotonic() + 10, False
+        while not moved and time.monotonic() < deadline:
+            cmd.write(rt.Twist_(linear=rt.Vector3_(0.5, 0, 0)))
+            time.sleep(0.05)
+            t = ss.latest(truth, timeout=1)
+            moved = t is not None and t.pose.position.x > t0.pose.position.x + 0.3
+        assert moved, "the robot no longer obeys finite commands"
+        assert ctl.call("list").success
+        assert sim.poll() is None, "sancta-sim died"
+    finally:
+        sim.terminate()
+        out = ps.finish(sim)
+    assert sim.returncode == 0, out
+    assert out.count("non-finite velocity ignored") == 1, out  # said once, not per sample
+    assert not NO_CRASH.search(out), out
+
+
+GOOD_ID = re.compile(r"^[A-Za-z0-9_]{1,64}$")
+
+
+def hostile_samples(team, n):
+    """Malformed team samples: garbage keys, writers, value types, values,
+    revisions, member names, leases, senders, channels and payloads."""
+    big = 2**63 + 5
+    cases = [
+        DbEntry_("task/\x01\x02", "types.string", "x", 1, "r1"),
+        DbEntry_("k" * 5000, "types.string", "x", 1, "r1"),
+        DbEntry_("", "types.string", "x", 1, "r1"),
+        DbEntry_(f"junk{n}", "types.string", "x", 1, "r 1\x7f"),
+        DbEntry_(f"junk{n}", "types.string", "x", big, "r1"),
+        DbEntry_(f"junk{n}", "types.string", "x", 0, "r1"),
+        DbEntry_(f"junk{n}", "no such type!", "x", 5, "r1"),
+        DbEntry_(f"junk{n}", "types.integer", "12abc", 5, "r1"),
+        DbEntry_(f"junk{n}", "types.real", "1e999", 5, "r1"),
+        DbEntry_(f"junk{n}", "types.boolean", "maybe", 5, "r1"),
+        DbEntry_(f"junk{n}", "types.string", "\x00\xff" * 10, 5, "r1"),
+        DbEntry_(f"junk{n}", "types.string", "v" * 70000, 5, "r1"),
+    ]
+    presences = [Presence_("bad name\x01", "robots", 2.0, n), Presence_("", "robots", 2.0, n),
+                 Presence_(f"ghost{n}", "robots", math.nan, n),
+                 Presence_(f"ghost{n}", "robots", math.inf, n),
+                 Presence_("x" * 300, "robots", 2.0, n)]
+    envelopes = [Envelope_("r\x001", "", "auction", n, "bid\n1\n1\nx"),
+                 Envelope_("r1", "", "auction", n, "bid\nNaN\n-5\n\x00"),
+                 Envelope_("r1", "", "auction", n, "offer\n99999999999999999999\n1\nz\nq"),
+                 Envelope_("r1", "@@@", "auction", n, "x"),
+                 Envelope_("r1", "", "auc tion", n, "x")]
+    return cases, presences, envelopes
+
+
+def test_team_member_drops_malformed_team_messages(tmp_path):
+    team = f"hostile{os.getpid()}"
+    mission = tmp_path / "mission.xml"
+    mission.write_text(f"""<?xml version="1.0"?>
+<mission name="hostile" world="{WORLD}">
+  <goto id="t1" x="4" y="10"/> <goto id="t2" x="10" y="10"/> <goto id="t3" x="16" y="10"/>
+  <goto id="t4" x="22" y="10"/>
+</mission>""")
+    logs, procs = {}, {}
+
+    def start(name, *args):
+        logs[name] = tmp_path / f"{name}.log"
+        procs[name] = subprocess.Popen(
+            [str(SANCTA), "team-agent", "--team", team, "--lease", "1.0", "--for", "120", *args],
+            stdout=open(logs[name], "w"), stderr=subprocess.STDOUT, cwd=ps.REPO)
+
+    attacker = ps.participant()
+    base = f"rt/sancta/{team}"
+    state = ps.writer(attacker, f"{base}/state", DbEntry_, transient_local=True, depth=100)
+    presence = ps.writer(attacker, f"{base}/presence", Presence_)
+    messages = ps.writer(attacker, f"{base}/messages", Envelope_)
+    try:
+        start("r1", "--id", "r1", "--x", "3", "--y", "10", "--rate", "1", "--speed", "0.5")
+        start("r2", "--id", "r2", "--x", "6", "--y", "10", "--rate", "1", "--speed", "0.5")
+        start("operator", "--operator", mission)
+        # Attack while the mission runs (the robots need about 30 s).
+        n = 0
+        deadline = time.monotonic() + 6
+        while time.monotonic() < deadline:
+            n += 1
+            entries, presences, envelopes = hostile_samples(team, n)
+            for e in entries:
+                state.write(e)
+            for p in presences:
+                presence.write(p)
+            for e in envelopes:
+                messages.write(e)
+            time.sleep(0.1)
+        del state, presence, messages, attacker  # its history goes with it
+        # A valid newcomer makes every member republish its whole replica.
+        probe = ps.participant()
+        held = ps.reader(probe, f"{base}/state", DbEntry_, transient_local=True, depth=1000)
+        me = ps.writer(probe, f"{base}/presence", Presence_)
+        ps.wait_matched(me, 10)
+        seen = []
+        deadline = time.monotonic() + 5
+        while time.monotonic() < deadline:
+            me.write(Presence_("probe", "", 1.0, int(time.monotonic())))
+            seen += [s for s in ps.take(held) if isinstance(s, DbEntry_)]
+            time.sleep(0.25)
+        alive = {name: p.poll() is None for name, p in procs.items()}
+        procs["operator"].wait(timeout=120)
+        op = logs["operator"].read_text()
+        assert procs["operator"].returncode == 0, op
+        assert "operator: all done" in op, op
+    finally:
+        for p in procs.values():
+            if p.poll() is None:
+                p.kill()
+            p.wait()
+    text = {name: log.read_text() for name, log in logs.items()}
+    keys = {s.key for s in seen}
+    assert all(alive.values()), alive  # the probe saw a running team
+    assert {"pose/r1", "robot/r1", "robot/r2", "round"} <= keys, sorted(keys)  # ("mission" and
+    # "task/*" travel on the tasks topic)
+    garbage = [s for s in seen if s.key.startswith("junk") or not GOOD_ID.match(s.writer)
+               or any(not (" " <= c <= "~") for c in s.key) or "ghost" in s.key]
+    assert not garbage, garbage[:5]
+    for name in ("r1", "r2", "operator"):
+        t = text[name]
+        assert "dropped malformed" in t, t[-3000:]
+        # Rate-limited: at most one warning per 10 s per process.
+        assert t.count("dropped malformed") <= 12, t.count("dropped malformed")
+        assert not NO_CRASH.search(t), t[-3000:]
+    rounds = re.findall(r"round [0-9]+ robots ([\w,]+) ", text["operator"])
+    assert rounds and all(set(r.split(",")) <= {"r1", "r2"} for r in rounds), rounds
