@@ -65,7 +65,7 @@ def recorded(tmp_path_factory):
                    "--discovery-period", 0.2)
     for w in (chatter, scans, cmd, unknown):
         assert ps.wait_matched(w, 10), "the recorder did not subscribe"
-    time.sleep(0.3)
+    time.sleep(1.0)  # the recorder's side of the matches too
     for i in range(20):
         chatter.write(String_(data=f"hello {i}"))
         scans.write(scan(i))
@@ -230,7 +230,7 @@ def test_split_by_size(tmp_path):
     rec = ps.start("rclada", "bag", "record", "/split_scan", "-o", out, "-b", "20000",
                    "--duration", 4, "--discovery-period", 0.2, "--compression", "lz4")
     assert ps.wait_matched(scans, 10)
-    time.sleep(0.2)
+    time.sleep(1.0)  # the recorder's side of the match too
     for i in range(40):
         scans.write(scan(i))
         time.sleep(0.01)

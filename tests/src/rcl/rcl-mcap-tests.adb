@@ -180,9 +180,9 @@ package body RCL.MCAP.Tests is
                   Assert (Count <= 60, "recovered" & Count'Image);
                end if;
             end loop;
-            Write_All (Cut, Whole (1 .. Whole'Length * 3 / 4));
+            Write_All (Cut, Whole (1 .. Whole'Length / 3));
             Open_And_Read (Cut, True, Count);
-            Assert (Count > 0 and then Count < 60, "three quarters recovered:" & Count'Image);
+            Assert (Count > 0 and then Count < 60, "a third recovered:" & Count'Image);
          end;
       end loop;
       Ada.Directories.Delete_File (Path);
@@ -198,6 +198,8 @@ package body RCL.MCAP.Tests is
       Bad     : constant String := Temp ("bad.mcap");
       Refused : Natural := 0;
 
+      function In_Order (I : Natural) return Time_Stamp is (Base + Time_Stamp (I) * 1_000_000);
+
       function Reads_Back_Exactly return Boolean is
          R    : Readers.Reader;
          Seen : Natural := 0;
@@ -206,7 +208,7 @@ package body RCL.MCAP.Tests is
             I : constant Natural := Natural (Msg.Sequence);
          begin
             Good := Good and then I = Seen and then Data = Payload (I)
-              and then Msg.Log_Time = Time_Of (I) and then Natural (Msg.Channel) = 1 + I mod 3;
+              and then Msg.Log_Time = In_Order (I) and then Natural (Msg.Channel) = 1 + I mod 3;
             Seen := Seen + 1;
          end Each;
       begin
@@ -227,8 +229,8 @@ package body RCL.MCAP.Tests is
             C (K) := W.Add_Channel ("/t" & K'Image, S1, "cdr", Empty_Metadata);
          end loop;
          for I in 0 .. 39 loop
-            W.Write (C (I mod 3), Time_Of (I) + (if I mod 10 = 9 then 3_000_000 else 0),
-                     Payload (I), Sequence => Interfaces.Unsigned_32 (I));
+            W.Write (C (I mod 3), In_Order (I), Payload (I),
+                     Sequence => Interfaces.Unsigned_32 (I));
          end loop;
          W.Close;
       end;
