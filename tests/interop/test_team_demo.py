@@ -64,10 +64,34 @@ def check_summary(out, output):
         assert (out / name).exists(), f"{name} missing{context}"
 
 
+def check_bag(out):
+    """The demo recorded itself (issue 15): the foreign reader rosbags opens
+    out/mission and decodes ground truth, scans, cmd_vel, /tf, the map and
+    the team's database entries."""
+    from rosbags.rosbag2 import Reader
+    from rosbags.typesys import Stores, get_typestore
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    decoded = {}
+    with Reader(out / "mission") as bag:
+        topics = {c.topic: c for c in bag.connections}
+        for t in ("/r1/ground_truth", "/r1/scan", "/r1/cmd_vel", "/tf", "/tf_static", "/map",
+                  "/sancta/team/tasks", "/sancta/team/state", "/sancta/team/gui/plan"):
+            assert t in topics and topics[t].msgcount > 0, (t, sorted(topics))
+        wanted = [topics[t] for t in ("/r1/ground_truth", "/r1/scan", "/tf", "/map")]
+        for conn, _, raw in bag.messages(connections=wanted):
+            decoded.setdefault(conn.topic, []).append(store.deserialize_cdr(raw, conn.msgtype))
+    assert decoded["/map"][0].info.width > 0
+    assert all(len(s.ranges) > 0 for s in decoded["/r1/scan"])
+    assert decoded["/r1/ground_truth"][-1].header.frame_id == "map"
+    frames = {(t.header.frame_id, t.child_frame_id) for m in decoded["/tf"] for t in m.transforms}
+    assert ("map", "r1/odom") in frames and ("r1/odom", "r1/base_link") in frames
+
+
 def test_demo_annealer_robot_lost(tmp_path):
     code, output = run_demo(tmp_path)
     assert code == 0 and "check: passed" in output, output
     check_summary(tmp_path, output)
+    check_bag(tmp_path)
 
 
 def test_demo_auctions_robot_lost_secured(tmp_path):
