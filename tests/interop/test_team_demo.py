@@ -77,7 +77,10 @@ def check_bag(out):
         for t in ("/r1/ground_truth", "/r1/scan", "/r1/cmd_vel", "/tf", "/tf_static", "/map",
                   "/sancta/team/tasks", "/sancta/team/state", "/sancta/team/gui/plan"):
             assert t in topics and topics[t].msgcount > 0, (t, sorted(topics))
-        wanted = [topics[t] for t in ("/r1/ground_truth", "/r1/scan", "/tf", "/map")]
+        for t in ("/sancta/team/markers", "/sancta/team/paths/r1"):
+            assert t in topics and topics[t].msgcount > 0, (t, sorted(topics))
+        wanted = [topics[t] for t in ("/r1/ground_truth", "/r1/scan", "/tf", "/map",
+                                      "/sancta/team/markers", "/sancta/team/paths/r1")]
         for conn, _, raw in bag.messages(connections=wanted):
             decoded.setdefault(conn.topic, []).append(store.deserialize_cdr(raw, conn.msgtype))
     assert decoded["/map"][0].info.width > 0
@@ -85,6 +88,25 @@ def check_bag(out):
     assert decoded["/r1/ground_truth"][-1].header.frame_id == "map"
     frames = {(t.header.frame_id, t.child_frame_id) for m in decoded["/tf"] for t in m.transforms}
     assert ("map", "r1/odom") in frames and ("r1/odom", "r1/base_link") in frames
+    # Markers (RViz/Foxglove): a sphere per task coloured by its state (the
+    # label says which), tours per robot.
+    colours = {"done": (0.2, 0.7, 0.2), "active": (1.0, 0.55, 0.0), "assigned": (0.2, 0.4, 0.9),
+               "reallocated": (0.85, 0.1, 0.1), "pending": (0.6, 0.6, 0.6)}
+    last = decoded["/sancta/team/markers"][-1].markers
+    spheres = {m.id: m for m in last if m.ns == "tasks"}
+    labels = {m.id: m.text for m in last if m.ns == "labels"}
+    assert len(spheres) == len(mission_tasks()) == len(labels), (len(spheres), len(labels))
+    for k, m in spheres.items():
+        assert m.type == 2 and m.header.frame_id == "map"
+        state = labels[k].rsplit("(", 1)[1].rstrip(")")
+        assert all(abs(a - b) < 1e-6 for a, b in zip((m.color.r, m.color.g, m.color.b),
+                                                     colours[state])), (labels[k], m.color)
+    assert sum(t.endswith("(done)") for t in labels.values()) >= len(labels) // 2, labels
+    assert any(m.ns == "tours" and m.type == 4 and len(m.points) >= 2
+               for a in decoded["/sancta/team/markers"] for m in a.markers), "no tour drawn"
+    paths = decoded["/sancta/team/paths/r1"]
+    assert any(len(p.poses) >= 2 for p in paths), "r1's path never had a tour"
+    assert all(p.header.frame_id == "map" for p in paths)
 
 
 def test_demo_annealer_robot_lost(tmp_path):
