@@ -1,3 +1,4 @@
+with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
@@ -193,6 +194,28 @@ package body Sancta.Team.Components is
 
    function Create_Operator is new Factory.Create_Component (Operator_Component);
 
+   --  Option checks (sancta check reports them with the attribute's place).
+
+   function Check_Lease (Text : String) return String is
+     (if Long_Float'Value (Text) >= 0.1 then ""
+      else "a lease of at least 0.1 s, found '" & Text & "'");
+
+   function Check_World (Text : String) return String is
+     (if Text = "" or else Simulation.Map_Files.World_File (Text) /= "" then ""
+      else "world '" & Text & "': no such file and no bundled world of that name");
+
+   function Check_Mission (Text : String) return String is
+   begin
+      declare
+         Unused : constant Missions.Mission := Missions.Read (Text);
+      begin
+         return "";
+      end;
+   exception
+      when E : Missions.Format_Error =>
+         return "mission: " & Ada.Exceptions.Exception_Message (E);
+   end Check_Mission;
+
 begin
    Factory.Register
      ((Name    => To_Unbounded_String ("team_member"),
@@ -205,11 +228,11 @@ begin
                     & Make_Option ("team", Text_Option, "team")
                     & Make_Option ("method", Choice_Option, "annealer",
                                    Choices => "annealer auctions")
-                    & Make_Option ("lease", Duration_Option, "1.0")
+                    & Make_Option ("lease", Duration_Option, "1.0", Check => Check_Lease'Access)
                     & Make_Option ("tolerance", Real_Option, "0.3")
                     & Make_Option ("costs", Choice_Option, "straight",
                                    Choices => "straight grid")
-                    & Make_Option ("world", Text_Option, "")
+                    & Make_Option ("world", Text_Option, "", Check => Check_World'Access)
                     & Make_Option ("robot_radius", Real_Option, "0.2"),
        others  => <>),
       Create_Member'Access);
@@ -219,9 +242,10 @@ begin
        Ports   => Port_Vectors.Empty_Vector
                     & Out_Port ("progress", "types.string", "done/total, round, robots"),
        Options => Option_Vectors.Empty_Vector
-                    & Make_Option ("mission", Text_Option, Required => True)
+                    & Make_Option ("mission", Text_Option, Required => True,
+                                   Check => Check_Mission'Access)
                     & Make_Option ("team", Text_Option, "team")
-                    & Make_Option ("lease", Duration_Option, "1.0")
+                    & Make_Option ("lease", Duration_Option, "1.0", Check => Check_Lease'Access)
                     & Make_Option ("stop_when_done", Boolean_Option, "true"),
        others  => <>),
       Create_Operator'Access);
