@@ -97,7 +97,8 @@ package body RCL.Bags.Recorders is
                declare
                   Pubs  : constant Queries.Endpoint_Array := Queries.Publishers_Info (Name);
                   Offer : Profile_Array (1 .. Pubs'Length);
-                  QoS   : RCL.QoS.Profile := (RCL.QoS.Default with delta Depth => 1000);
+                  QoS   : RCL.QoS.Profile :=
+                    (RCL.QoS.Default with delta History => RCL.QoS.Keep_All, Depth => 1000);
                   All_Local : Boolean := Pubs'Length > 0;
                   Index : Topic_Index;
                   DDS_Type : Unbounded_String;

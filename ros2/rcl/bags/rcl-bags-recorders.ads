@@ -3,7 +3,9 @@
 --  process has never seen (the type name comes from discovery, the schema
 --  from the interface definitions when they are on the path); each is
 --  subscribed with the QoS its publishers offer (best effort when one of
---  them is, transient local when all of them are) and its serialized
+--  them is, transient local when all of them are), keeping all samples
+--  (a reliable publisher waits for the recorder rather than lose one), and
+--  its serialized
 --  messages are written as they arrive, stamped with their reception time.
 --
 --     Node : Nodes.Node := Nodes.Init ("recorder");
