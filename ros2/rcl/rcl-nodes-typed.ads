@@ -20,6 +20,10 @@ generic
 package RCL.Nodes.Typed is
 
    subtype Message is Handling.Message;
+   Full_Name  : constant String := Handling.Full_Name;
+   --  "std_msgs/msg/String"
+   Is_Bounded : constant Boolean := Handling.Is_Bounded;
+   --  Allocation-free in steady state (see Publish and Subscribe).
 
    function Publish
      (Node  : in out Nodes.Node'Class;

@@ -592,14 +592,25 @@ package body Sancta.Team.Agents is
    function Find (Id : String) return Agent_Access is (Registry.Find (Id));
 
    function Create (Config : Agent_Config) return Agent_Access is
+      Net : constant Networks.Network_Access := Networks.Create
+        (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
+         Lease => Config.Lease, Team => To_String (Config.Team));
+      Db  : constant Databases.Team_Database_Access := new Databases.Team_Database (Net);
+   begin
+      Db.Attach;
+      return Create (Config, Net, Db);
+   end Create;
+
+   function Create
+     (Config : Agent_Config;
+      Net    : not null Networks.Network_Access;
+      Db     : not null Databases.Team_Database_Access) return Agent_Access
+   is
       A : constant Agent_Access := new Agent;
    begin
       A.Config := Config;
-      A.Net := Networks.Create
-        (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
-         Lease => Config.Lease, Team => To_String (Config.Team));
-      A.Db := new Databases.Team_Database (A.Net);
-      A.Db.Attach;
+      A.Net := Net;
+      A.Db := Db;
       A.Net.Subscribe ("auction", A.Auction'Unchecked_Access);
       A.Net.Start;
       if Config.Is_Robot then
