@@ -3,7 +3,8 @@
 # (std_msgs/String) and LaserScan (360 ranges, 1504 B) messages, against the
 # Python `mcap` writer (zstd chunks of 768 KiB, as ours) on the same bytes:
 #  * writer: RCL.MCAP.Writers alone (bin/bench_record write) vs mcap.Writer;
-#  * end-to-end: `rclada bag record` of a reliable KEEP_ALL Ada publisher
+#  * end-to-end: RCL.Bags.Recorders (what `rclada bag record` runs, here in
+#    bin/bench_record record) recording a reliable KEEP_ALL Ada publisher
 #    (bin/bench_record pub) over loopback DDS, every message checked in the
 #    bag by the Python mcap reader (loss = sent - recorded); its rate is the
 #    span of the recorded log times;
@@ -11,7 +12,8 @@
 #    beside `rclada bag record -a`): recorder CPU / (demo + recorder CPU).
 # Prints a table; CSV in out/bench/record.csv. Ratios are ours / Python writer.
 #   BENCH_RECORD_COUNT_64 (default 200000), BENCH_RECORD_COUNT_SCAN (50000),
-#   BENCH_RECORD_BIN (default bin; e.g. a release build tree), BENCH_RECORD_DEMO=0 skips the demo
+#   BENCH_RECORD_BIN (default bin: where bench_record is, e.g. a release build),
+#   BENCH_RECORD_DEMO=0 skips the demo (which uses bin/sancta and bin/rclada)
 set -euo pipefail
 source "$(dirname "$0")/../scripts/env.sh"
 cd "$repo_root"
@@ -49,8 +51,7 @@ for case in 64 scan; do
    IFS=, read -r _ ac _ as < <("$bin/bench_record" write "$case" "$count")
    row "$case" "writer" "$count" "$size" "$as" "$prate" 0
    topic=/bench_record_$case
-   "$bin/rclada" bag record "$topic" -o "$tmp/bag_$case" --duration 60 --discovery-period 0.1 \
-      > "$tmp/rec_$case.log" 2>&1 &
+   "$bin/bench_record" record "$case" "$topic" "$tmp/bag_$case" 60 > "$tmp/rec_$case.log" 2>&1 &
    rec=$!
    "$bin/bench_record" pub "$case" "$count" "$topic"
    kill -TERM "$rec"; wait "$rec" || true
@@ -60,7 +61,7 @@ for case in 64 scan; do
 done
 
 if [ "${BENCH_RECORD_DEMO:-1}" != 0 ]; then
-   "$bin/rclada" bag record -a -o "$tmp/demo_bag" --discovery-period 0.3 > "$tmp/demo_rec.log" 2>&1 &
+   bin/rclada bag record -a -o "$tmp/demo_bag" --discovery-period 0.3 > "$tmp/demo_rec.log" 2>&1 &
    rec=$!
    /usr/bin/time -f "%U %S" -o "$tmp/demo.time" bin/sancta demo share/config/sim-team.xml \
       --out "$tmp/demo" --no-record --quiet > "$tmp/demo.log" 2>&1 || true

@@ -5,6 +5,9 @@
 --     bench_record pub CASE COUNT TOPIC     publishes COUNT messages on TOPIC as
 --                                           fast as a reliable KEEP_ALL writer may,
 --                                           once a subscription matched
+--     bench_record record CASE TOPIC DIR SECONDS
+--                                           RCL.Bags.Recorders (what "rclada bag
+--                                           record" runs) into the bag DIR
 --  CASE: "64" (std_msgs/String of 64 CDR bytes) or "scan" (sensor_msgs/
 --  LaserScan, 360 ranges). write prints "case,count,bytes,seconds".
 with Ada.Command_Line;
@@ -14,6 +17,7 @@ with Ada.Streams.Stream_IO;
 with Ada.Text_IO;
 with Interfaces;
 with RCL.Bags;
+with RCL.Bags.Recorders;
 with RCL.Contexts;
 with RCL.Graph.Queries;
 with RCL.MCAP.Writers;
@@ -104,6 +108,23 @@ begin
            (Kind & "," & Count'Image & "," & Data'Length'Image & ","
             & Duration'Image (To_Duration (Clock - Start)));
          Ada.Directories.Delete_File (Path);
+      end;
+   elsif Argument (1) = "record" then
+      declare
+         Node   : RCL.Nodes.Node := RCL.Nodes.Init ("bench_record_recorder");
+         Rec    : RCL.Bags.Recorders.Recorder;
+         Topics : RCL.Bags.Recorders.Topic_List;
+         Stop   : constant Time := Clock + To_Time_Span (Duration'Value (Argument (5)));
+      begin
+         Topics.Append (Argument (3));
+         Rec.Start (Argument (4), Topics);
+         RCL.Contexts.Install_Signal_Handlers;
+         while Clock < Stop and then not RCL.Contexts.Is_Shutdown loop
+            Rec.Discover (Node);
+            Node.Spin (During => 0.1);
+         end loop;
+         Rec.Stop;
+         Ada.Text_IO.Put_Line ("Recorded" & Rec.Message_Count'Image & " messages");
       end;
    elsif Argument (1) = "pub" then
       declare

@@ -110,11 +110,43 @@ def check_bag(out):
     assert all(p.header.frame_id == "map" for p in paths)
 
 
+def check_pictures(out):
+    """The report pictures (issue 15): a title, a legend and a scale bar;
+    every label inside the canvas and no two labels overlapping; a Gantt
+    timeline with the loss and the re-plan marked."""
+    import re
+    for name in ("trajectories", "plan-before", "plan-after", "gantt"):
+        svg = (out / f"{name}.svg").read_text()
+        assert (out / f"{name}.png").stat().st_size > 1000, name
+        width, height = (float(v) for v in
+                         re.search(r'<svg[^>]* width="([\d.]+)" height="([\d.]+)"', svg).groups())
+        assert 'class="title"' in svg, name
+        boxes = []
+        for m in re.finditer(r'<text class="(label|legend)" x="(-?\d+)" y="(-?\d+)" '
+                             r'data-width="(\d+)"[^>]*>([^<]*)<', svg):
+            _, x, y, w, text = m.groups()
+            x, y, w = int(x), int(y), int(w)
+            assert 0 <= x and x + w <= width and y - 11 >= 0 and y <= height, \
+                (name, text, x, y, w, width, height)
+            boxes.append((x, y - 11, x + w, y + 2, text))
+        assert boxes, name
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], \
+                    (name, a, b)
+        if name != "gantt":
+            assert 'class="scale-bar"' in svg and 'class="legend"' in svg, name
+    gantt = (out / "gantt.svg").read_text()
+    assert "lost</text>" in gantt and "re-planned</text>" in gantt
+    assert gantt.count('class="task"') >= len(mission_tasks())
+
+
 def test_demo_annealer_robot_lost(tmp_path):
     code, output = run_demo(tmp_path)
     assert code == 0 and "check: passed" in output, output
     check_summary(tmp_path, output)
     check_bag(tmp_path)
+    check_pictures(tmp_path)
 
 
 def test_demo_auctions_robot_lost_secured(tmp_path):

@@ -46,7 +46,8 @@ package body Sancta.Simulation.Rendering.Tests is
       Path.Append (Point'(3.0, 0.5));
       S.Trajectories.Append (Path);
       S.Robots.Append (Pose'(3.0, 0.5, 0.0));
-      S.Markers.Append (Marker'((2.0, 1.5), Ada.Strings.Unbounded.To_Unbounded_String ("dock")));
+      S.Markers.Append (Marker'((0.5, 1.5), Ada.Strings.Unbounded.To_Unbounded_String ("dock")));
+      --  Near the left wall: its label fits right of it, inside the picture.
       return S;
    end Sample_Scene;
 
