@@ -8,7 +8,7 @@
 BUILD_MODE ?= debug
 GPRBUILD    = gprbuild -P build_all.gpr -p -j0 -XBUILD_MODE=$(BUILD_MODE)
 
-.PHONY: all deps bench-deps build run view test bench clean
+.PHONY: all deps bench-deps generate build run view test bench clean interfaces
 
 all: build
 
@@ -23,8 +23,30 @@ bench-deps:
 build: deps
 	@if [ -f bin/.build-mode ] && [ "$$(cat bin/.build-mode)" != "$(BUILD_MODE)" ]; then \
 	   find bin -maxdepth 1 -type f -delete; fi
+	@$(MAKE) --no-print-directory generate
 	@$(GPRBUILD)
 	@echo "$(BUILD_MODE)" > bin/.build-mode
+
+# The generated message types (never committed): bin/rosidl_generate is
+# built, then writes ROSIDL.Static.* for the bundled interfaces (library
+# ros2/rclada_messages.gpr) and for the test interfaces (tests.gpr);
+# unchanged files are left alone, so only what changed recompiles.
+generate:
+	@gprbuild -P ros2/generator/rosidl_generate.gpr -p -j0 -q -XBUILD_MODE=$(BUILD_MODE)
+	@bin/rosidl_generate -o obj/generated/interfaces \
+	   --registry ROSIDL.Static.Bundled_Types share/ros2_interfaces
+	@bin/rosidl_generate -o obj/generated/tests --registry ROSIDL.Static.Test_Types \
+	   tests/interfaces tests/data/user_interfaces
+
+# A user's interface packages (a folder holding <pkg>/msg, <pkg>/srv,
+# <pkg>/action) as an Ada library: make interfaces FROM=my_interfaces
+# [TO=obj/generated/user] writes the packages and TO/user_interfaces.gpr,
+# and builds it; a program then does with "TO/user_interfaces.gpr".
+TO ?= obj/generated/user
+interfaces: generate
+	@test -n "$(FROM)" || { echo "usage: make interfaces FROM=folder [TO=folder]"; exit 2; }
+	@bin/rosidl_generate -o $(TO) --project User_Interfaces $(FROM)
+	@gprbuild -P $(TO)/user_interfaces.gpr -p -j0 -q -XBUILD_MODE=$(BUILD_MODE)
 
 run: build
 	@scripts/demo.sh

@@ -628,7 +628,10 @@ package body Rclada_Commands is
       Support   : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Name);
       Limit     : constant Natural :=
         (if Has_Flag (Args, "--once", "--once") then 1
-         else Natural (Number_Option (Args, "--count", "0", High => 1.0e9)));
+         elsif Option (Args, "--count", "") /= ""
+         then Natural (Number_Option (Args, "--count", "1", Low => 1.0, High => 1.0e9))
+         else 0);
+      --  0: until Ctrl-C; an explicit --count is at least 1.
       Seen      : Natural := 0;
       QoS       : constant RCL.QoS.Profile :=
         (if Has_Flag (Args, "--best-effort", "--best-effort") then RCL.QoS.Sensor_Data
@@ -667,8 +670,11 @@ package body Rclada_Commands is
       Msg     : constant ROSIDL.Dynamic.Message := Message_From (Support, Text);
       Rate    : constant Float := Number_Option (Args, "--rate", "1.0", Low => 0.001);
       Times   : constant Natural :=
-        (if Has_Flag (Args, "-1", "--once") then 1
-         else Natural (Number_Option (Args, "--times", "0", High => 1.0e9)));
+        (if Option (Args, "--times", "") /= ""
+         then Natural (Number_Option (Args, "--times", "1", Low => 1.0, High => 1.0e9))
+         elsif Has_Flag (Args, "-1", "--once") then 1
+         else 0);
+      --  0: until Ctrl-C ("--times -1" is a range error, not --times and -1).
       Node    : RCL.Nodes.Node := Tool_Node;
       Pub     : constant RCL.Publishers.Publisher :=
         Node.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic);
@@ -683,6 +689,9 @@ package body Rclada_Commands is
    begin
       if Rate <= 0.0 then
          raise Usage_Error with "--rate must be positive";
+      elsif Text = "" and then Times = 0 then
+         raise Usage_Error with "topic pub: no YAML message: give one ('{data: hello}', '{}'"
+           & " for the default message) or publish a bounded number (--once, --times N)";
       end if;
       RCL.Contexts.Install_Signal_Handlers;
       Put_Line ("publisher: beginning loop");

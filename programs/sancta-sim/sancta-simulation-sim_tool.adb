@@ -17,6 +17,7 @@ with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with Sancta.Geometry;               use Sancta.Geometry;
+with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
 with Sancta.Components.Robot_Messages;
 with Sancta.Simulation.Map_Files;
@@ -665,7 +666,17 @@ package body Sancta.Simulation.Sim_Tool is
          end if;
          declare
             World : constant Worlds.World := Map_Files.Load_World (File);
+            F     : constant Sancta.Robot.Grids.Frame := Worlds.Frame_Of (World);
          begin
+            for R of Robots loop
+               if R.Start.X not in F.Origin.X .. F.Origin.X + Real (F.Width) * F.Resolution
+                 or else R.Start.Y not in F.Origin.Y .. F.Origin.Y + Real (F.Height) * F.Resolution
+               then
+                  raise Usage_Error with "--robot " & To_String (R.Name) & ": start ("
+                    & Image (R.Start.X) & ", " & Image (R.Start.Y) & ") is outside the world "
+                    & File;
+               end if;
+            end loop;
             Simulate (World, Robots, Rate, As_Fast, Seed, Duration_S, Step, Truth_Every,
                       Cmd_Timeout, Quiet);
          end;

@@ -398,6 +398,55 @@ package body RCL.Nodes is
          raise;
    end Subscribe_Raw;
 
+   type Closure_Callback is access procedure
+     (State : System.Address;
+      Node  : in out Nodes.Node'Class;
+      Data  : RCL.DDS.Byte_Array;
+      Info  : ROSIDL.Message_Info);
+
+   type Closure_Handler is new Handler with record
+      Deliver : Closure_Callback;
+      State   : System.Address;
+   end record;
+
+   overriding procedure Deliver
+     (This : in out Closure_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+
+   overriding procedure Deliver
+     (This : in out Closure_Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is
+   begin
+      This.Deliver (This.State, Node, Data, Info);
+   end Deliver;
+
+   procedure Subscribe_Closure
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Deliver   : not null access procedure
+        (State : System.Address;
+         Node  : in out Nodes.Node'Class;
+         Data  : RCL.DDS.Byte_Array;
+         Info  : ROSIDL.Message_Info);
+      State     : System.Address;
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default)
+   is
+      Stored : constant Closure_Callback with Import, Address => Deliver'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : Handler_Access := new Closure_Handler'(Deliver => Stored, State => State);
+   begin
+      This.Add_Subscription (Type_Name, Topic, H, QoS);
+   exception
+      when others =>
+         Free (H);
+         raise;
+   end Subscribe_Closure;
+
    ------------
    -- Timers --
    ------------

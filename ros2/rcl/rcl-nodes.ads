@@ -20,6 +20,7 @@ with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
+with System;
 
 private with Ada.Strings.Unbounded;
 
@@ -123,6 +124,21 @@ package RCL.Nodes is
       QoS       : RCL.QoS.Profile := RCL.QoS.Default);
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
+
+   procedure Subscribe_Closure
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Deliver   : not null access procedure
+        (State : System.Address;
+         Node  : in out Nodes.Node'Class;
+         Data  : RCL.DDS.Byte_Array;
+         Info  : ROSIDL.Message_Info);
+      State     : System.Address;
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default);
+   --  Not for users (RCL.Nodes.Typed): as Subscribe_Raw, Deliver receiving
+   --  State with every sample. Deliver and State must stay valid as long
+   --  as the node exists.
 
    --  Liveliness of publishers ---------------------------------------------
 

@@ -1,3 +1,4 @@
+with Ada.Directories;
 with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
@@ -58,6 +59,13 @@ package body Sancta.Components.Logger is
       This.JSONL := This.Option_Text ("format") = "jsonl";
       This.Period := This.Option_Duration ("period");
       This.Origin := This.Now;
+      declare
+         Folder : constant String := Ada.Directories.Containing_Directory (Name);
+      begin
+         if not Ada.Directories.Exists (Folder) then
+            Ada.Directories.Create_Path (Folder);
+         end if;
+      end;
       Ada.Text_IO.Create (This.File, Ada.Text_IO.Out_File, Name);
       if This.Period = Ada.Real_Time.Time_Span_Zero then
          if not This.JSONL then
@@ -138,6 +146,32 @@ package body Sancta.Components.Logger is
 
    function Create is new Factory.Create_Component (Logger_Component);
 
+   function Check_File (Name : String) return String is
+      --  "" when Name can be a log file: not empty, not a folder, and the
+      --  nearest existing ancestor is a folder (missing folders are made).
+      use Ada.Directories;
+   begin
+      if Name = "" then
+         return "expected a file name";
+      elsif Exists (Name) and then Kind (Name) = Directory then
+         return "'" & Name & "' is a folder";
+      end if;
+      declare
+         Folder : Unbounded_String := To_Unbounded_String (Containing_Directory (Name));
+      begin
+         while not Exists (To_String (Folder)) loop
+            Folder := To_Unbounded_String (Containing_Directory (To_String (Folder)));
+         end loop;
+         if Kind (To_String (Folder)) /= Directory then
+            return "cannot create '" & Name & "': '" & To_String (Folder) & "' is not a folder";
+         end if;
+      end;
+      return "";
+   exception
+      when Name_Error | Use_Error =>
+         return "'" & Name & "' is not a valid file name";
+   end Check_File;
+
 begin
    Factory.Register
      ((Name       => To_Unbounded_String ("logger"),
@@ -145,7 +179,8 @@ begin
        Ports      => Port_Vectors.Empty_Vector,
        Options    => Option_Vectors.Empty_Vector
                        & Make_Option ("file", Text_Option, Required => True,
-                                      Doc => "output file")
+                                      Doc => "output file (missing folders are made)",
+                                      Check => Check_File'Access)
                        & Make_Option ("format", Choice_Option, "csv", Choices => "csv jsonl")
                        & Make_Option ("period", Duration_Option, "0",
                                       Doc => "seconds between lines; 0: a line per update"),

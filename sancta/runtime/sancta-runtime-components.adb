@@ -63,6 +63,18 @@ package body Sancta.Runtime.Components is
             begin
                if Item.Kind = Duration_Option and then X < 0.0 then
                   return "expected a duration in seconds (>= 0)" & Found;
+               elsif Item.Kind = Duration_Option and then X'Valid
+                 and then X > Max_Duration
+               then
+                  return "expected a duration of at most" & Max_Duration'Image
+                    & " s (one year)" & Found;
+               elsif Item.Kind = Duration_Option and then X > 0.0 and then X < Min_Duration
+               then
+                  return "a duration below the floor of 0.001 s (1 ms)" & Found;
+               elsif Item.Kind = Duration_Option and then X = 0.0 and then Item.Name = "period"
+                 and then To_String (Item.Default) not in "" | "0" | "0.0"
+               then
+                  return "a period of 0 would run without pause: at least 0.001 s" & Found;
                elsif X'Valid then
                   return "";
                else

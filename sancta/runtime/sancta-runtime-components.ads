@@ -62,8 +62,12 @@ package Sancta.Runtime.Components is
 
    type Option_Kind is (Text_Option, Integer_Option, Real_Option, Boolean_Option,
                         Duration_Option, Choice_Option);
-   --  Duration_Option: seconds, a non-negative real. Choice_Option: one of
-   --  the words of Choices.
+   --  Duration_Option: seconds, 0 or Min_Duration .. Max_Duration (a
+   --  "period" whose default is not 0 may not be 0: it would spin).
+   --  Choice_Option: one of the words of Choices.
+
+   Min_Duration : constant := 0.001;
+   Max_Duration : constant := 31_536_000.0;
 
    type Option_Check is access function (Text : String) return String;
    --  "" when Text is acceptable, else what is wrong with it.

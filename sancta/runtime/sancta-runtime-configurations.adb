@@ -2,11 +2,20 @@ with Ada.Characters.Handling;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Vectors;
 with Ada.Directories;
+with Ada.Strings.Fixed;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Values;
 
 package body Sancta.Runtime.Configurations is
+
+   Max_Id_Length : constant := 64;
+   Max_Agents    : constant := 1_000;
+
+   function Printable (Text : String) return String is
+     --  Text with control characters as '?', at most 80 characters.
+     ([for I in Text'First .. Integer'Min (Text'Last, Text'First + 79) =>
+         (if Text (I) < ' ' or else Text (I) > '~' then '?' else Text (I))]);
 
    use type Components.Port_Direction;
    use type Components.Type_Refiner;
@@ -108,6 +117,15 @@ package body Sancta.Runtime.Configurations is
                   Name : constant String := "$" & Text (First .. Last);
                begin
                   if Constants.Contains (Name) then
+                     if Length (Result) + Constants.Element (Name)'Length
+                       > XML_Trees.Max_Attribute_Size
+                     then
+                        --  Constants made of constants grow exponentially.
+                        Problem := To_Unbounded_String
+                          ("the value would exceed" & Natural'Image (XML_Trees.Max_Attribute_Size)
+                           & " characters once constants are substituted");
+                        return;
+                     end if;
                      Append (Result, Constants (Name));
                   else
                      Problem := To_Unbounded_String
@@ -792,6 +810,59 @@ package body Sancta.Runtime.Configurations is
             end loop;
          end if;
       end loop;
+      --  Forwarding loops: copy, merge and switch pass each input on at
+      --  once, so a cycle of them would circulate a value forever.
+      declare
+         function Is_Forwarder (I : Instance) return Boolean is
+           (I.Enabled and then To_String (I.Component) in "copy" | "merge" | "switch");
+
+         function Index_Of (Name : Unbounded_String) return Natural is
+         begin
+            for K in A.Instances.First_Index .. A.Instances.Last_Index loop
+               if A.Instances (K).Name = Name then
+                  return K;
+               end if;
+            end loop;
+            return 0;
+         end Index_Of;
+
+         function Reaches (From, Target : Positive; Depth : Natural) return Boolean is
+            --  True when Target feeds From through forwarders only.
+         begin
+            if Depth > Natural (A.Instances.Length) then
+               return False;
+            end if;
+            for B of A.Instances (From).Bindings loop
+               if B.Direction = Components.Input
+                 and then Providers.Contains (To_String (B.Key))
+               then
+                  declare
+                     P : constant Natural :=
+                       Index_Of (Providers (To_String (B.Key)).Instance_Name);
+                  begin
+                     if P = Target then
+                        return True;
+                     elsif P /= 0 and then Is_Forwarder (A.Instances (P))
+                       and then Reaches (P, Target, Depth + 1)
+                     then
+                        return True;
+                     end if;
+                  end;
+               end if;
+            end loop;
+            return False;
+         end Reaches;
+      begin
+         for K in A.Instances.First_Index .. A.Instances.Last_Index loop
+            if Is_Forwarder (A.Instances (K)) and then Reaches (K, K, 0) then
+               Report (Result, Error, A.Instances (K).Where,
+                       "forwarding loop: the output of " & To_String (A.Instances (K).Name)
+                       & " comes back to its input through copy/merge/switch only"
+                       & " (a value would circulate forever)");
+               exit;
+            end if;
+         end loop;
+      end;
       for P in Providers.Iterate loop
          if not Provider_Maps.Element (P).Used then
             Report (Result, Warning, Provider_Maps.Element (P).Where,
@@ -829,6 +900,25 @@ package body Sancta.Runtime.Configurations is
       A.Id := To_Unbounded_String (T.Attribute_Value (E, "id"));
       A.Kind := To_Unbounded_String (T.Attribute_Value (E, "kind"));
       A.Where := T.Where (E);
+      declare
+         Id : constant String := To_String (A.Id);
+      begin
+         --  Ids name DDS nodes, topics and files: a safe alphabet only.
+         if Id'Length not in 1 .. Max_Id_Length
+           or else (for some C of Id => C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_')
+         then
+            Report (Result, Error, T.Attribute_Where (E, "id"),
+                    "agent id '" & Printable (Id) & "': 1 .." & Max_Id_Length'Image
+                    & " letters, digits and '_'");
+            return;
+         end if;
+      end;
+      if To_String (A.Kind) not in "" | "robot" | "operator" then
+         Report (Result, Error, T.Attribute_Where (E, "kind"),
+                 "agent kind '" & Printable (To_String (A.Kind))
+                 & "': expected robot or operator");
+         return;
+      end if;
       if Find_Agent (Result, To_String (A.Id)) > 0 then
          Report (Result, Error, T.Attribute_Where (E, "id"),
                  "agent '" & To_String (A.Id) & "' defined twice (first at "
@@ -888,6 +978,47 @@ package body Sancta.Runtime.Configurations is
 
    package Diagnostic_Sorting is new Diagnostic_Vectors.Generic_Sorting (Diagnostic_Before);
 
+   function Mentions_Constant (L : Loader; Bare : String) return Boolean is
+      --  True when some attribute of the loaded files names $Bare (as
+      --  <constant name=...>, "$Bare" followed by a non-identifier
+      --  character, or "${Bare}").
+      function In_Text (Text : String) return Boolean is
+         Plain : constant String := "$" & Bare;
+      begin
+         if Ada.Strings.Fixed.Index (Text, "${" & Bare & "}") > 0 then
+            return True;
+         end if;
+         for I in Text'First .. Text'Last - Plain'Length + 1 loop
+            if Text (I .. I + Plain'Length - 1) = Plain
+              and then (I + Plain'Length > Text'Last
+                        or else not Is_Identifier_Char (Text (I + Plain'Length)))
+            then
+               return True;
+            end if;
+         end loop;
+         return False;
+      end In_Text;
+
+      function In_Element (T : Tree; E : Element_Id; Depth : Natural) return Boolean is
+      begin
+         if Depth > XML_Trees.Max_Depth then
+            return False;
+         end if;
+         for A of T.Attributes (E) loop
+            if In_Text (To_String (A.Value))
+              or else (T.Name (E) = "constant" and then To_String (A.Name) = "name"
+                       and then To_String (A.Value) in Bare | "$" & Bare)
+            then
+               return True;
+            end if;
+         end loop;
+         return (for some C of T.Children (E) => In_Element (T, C, Depth + 1));
+      end In_Element;
+   begin
+      return Bare = "id"
+        or else (for some T of L.Trees => In_Element (T, T.Root, 0));
+   end Mentions_Constant;
+
    procedure Load
      (File      : String;
       Result    : out Configuration;
@@ -908,8 +1039,28 @@ package body Sancta.Runtime.Configurations is
          end;
       end loop;
       Scan_File (L, Result, File, (To_Unbounded_String (File), 1, 1), Is_Root => True);
-      for Ref of L.Agents loop
-         Read_Agent (L, Result, Ref);
+      for K in L.Agents.First_Index .. L.Agents.Last_Index loop
+         if K > Max_Agents then
+            Report (Result, Error, L.Trees (L.Agents (K).Doc).Where (L.Agents (K).Node),
+                    "more than" & Max_Agents'Image & " agents in one configuration");
+            exit;
+         end if;
+         Read_Agent (L, Result, L.Agents (K));
+      end loop;
+      --  An override must name a constant the files define or use.
+      for C in Overrides.Iterate loop
+         declare
+            Name : constant String := Components.String_Maps.Key (C);
+            Bare : constant String :=
+              (if Name'Length > 0 and then Name (Name'First) = '$'
+               then Name (Name'First + 1 .. Name'Last) else Name);
+         begin
+            if not Mentions_Constant (L, Bare) then
+               Report (Result, Error, (To_Unbounded_String (File), 1, 1),
+                       "--set " & Printable (Bare) & ": no constant $" & Printable (Bare)
+                       & " is defined or used in the configuration");
+            end if;
+         end;
       end loop;
       if not L.Trees.Is_Empty and then Result.Agents.Is_Empty
         and then Error_Count (Result) = 0

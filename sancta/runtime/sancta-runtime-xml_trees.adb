@@ -8,6 +8,7 @@ with Sax.Locators;
 with Sax.Readers;
 with Sax.Symbols;
 with Sax.Utils;
+with Unicode.CES;
 
 package body Sancta.Runtime.XML_Trees is
 
@@ -47,6 +48,12 @@ package body Sancta.Runtime.XML_Trees is
      (Handler : in out Builder;
       Except  : Sax.Exceptions.Sax_Parse_Exception'Class);
 
+   overriding procedure Start_DTD
+     (Handler   : in out Builder;
+      Name      : Unicode.CES.Byte_Sequence;
+      Public_Id : Unicode.CES.Byte_Sequence := "";
+      System_Id : Unicode.CES.Byte_Sequence := "");
+
    function To_Position (File : Unbounded_String; L : Sax.Locators.Location) return Position is
      ((File => File, Line => L.Line, Column => L.Column));
 
@@ -78,6 +85,21 @@ package body Sancta.Runtime.XML_Trees is
 
    Parse_Failed : exception;
 
+   overriding procedure Start_DTD
+     (Handler   : in out Builder;
+      Name      : Unicode.CES.Byte_Sequence;
+      Public_Id : Unicode.CES.Byte_Sequence := "";
+      System_Id : Unicode.CES.Byte_Sequence := "")
+   is
+      pragma Unreferenced (Name, Public_Id, System_Id);
+   begin
+      Handler.Error_Where := To_Position (Handler.File, Handler.Current_Location);
+      Handler.Error_Where.Column := Natural'Max (1, Handler.Error_Where.Column);
+      Handler.Error_Text := To_Unbounded_String
+        ("a DOCTYPE declaration is not allowed (no DTD, no entities)");
+      raise Parse_Failed;
+   end Start_DTD;
+
    overriding procedure Start_Element
      (Handler    : in out Builder;
       NS         : Sax.Utils.XML_NS;
@@ -87,22 +109,43 @@ package body Sancta.Runtime.XML_Trees is
       pragma Unreferenced (NS);
       New_Element : Element;
       Id : Element_Id;
+
+      procedure Refuse (Where : Position; Text : String) is
+      begin
+         Handler.Error_Where := Where;
+         Handler.Error_Text := To_Unbounded_String (Text);
+         raise Parse_Failed;
+      end Refuse;
    begin
       if Natural (Handler.Stack.Length) >= Max_Depth then
-         Handler.Error_Where := Tag_Start (Handler, Handler.Current_Location);
-         Handler.Error_Text := To_Unbounded_String
-           ("elements nested deeper than" & Natural'Image (Max_Depth));
-         raise Parse_Failed;
+         Refuse (Tag_Start (Handler, Handler.Current_Location),
+                 "elements nested deeper than" & Natural'Image (Max_Depth));
+      elsif Natural (Handler.Result.Elements.Length) >= Max_Elements then
+         Refuse (Tag_Start (Handler, Handler.Current_Location),
+                 "more than" & Natural'Image (Max_Elements) & " elements");
       end if;
       New_Element.Name := To_Unbounded_String (Sax.Symbols.Get (Local_Name).all);
       New_Element.Where := Tag_Start (Handler, Handler.Current_Location);
       for I in 1 .. Sax.Readers.Get_Length (Atts) loop
-         New_Element.Attributes.Append
-           (Attribute'
-              (Name  => To_Unbounded_String
-                          (Sax.Symbols.Get (Sax.Readers.Get_Name (Atts, I).Local).all),
-               Value => To_Unbounded_String (Sax.Symbols.Get (Sax.Readers.Get_Value (Atts, I)).all),
-               Where => To_Position (Handler.File, Sax.Readers.Get_Location (Atts, I))));
+         declare
+            Name  : constant Unicode.CES.Cst_Byte_Sequence_Access :=
+              Sax.Symbols.Get (Sax.Readers.Get_Name (Atts, I).Local);
+            Value : constant Unicode.CES.Cst_Byte_Sequence_Access :=
+              Sax.Symbols.Get (Sax.Readers.Get_Value (Atts, I));
+            Where : constant Position :=
+              To_Position (Handler.File, Sax.Readers.Get_Location (Atts, I));
+         begin
+            if Value'Length > Max_Attribute_Size then
+               Refuse (Where, "attribute " & Name.all & " of" & Value'Length'Image
+                       & " bytes exceeds the limit of" & Natural'Image (Max_Attribute_Size));
+            elsif (for some A of New_Element.Attributes => A.Name = Name.all) then
+               Refuse (Where, "attribute " & Name.all & " given twice");
+            end if;
+            New_Element.Attributes.Append
+              (Attribute'(Name  => To_Unbounded_String (Name.all),
+                          Value => To_Unbounded_String (Value.all),
+                          Where => Where));
+         end;
       end loop;
       Handler.Result.Elements.Append (New_Element);
       Id := Handler.Result.Elements.Last_Index;
@@ -172,6 +215,11 @@ package body Sancta.Runtime.XML_Trees is
       elsif Ada.Directories."/=" (Ada.Directories.Kind (File), Ada.Directories.Ordinary_File)
       then
          Fail (Start, "cannot read: not a regular file");
+         return;
+      end if;
+      if Ada.Directories.">" (Ada.Directories.Size (File), Max_File_Size) then
+         Fail (Start, "file of" & Ada.Directories.File_Size'Image (Ada.Directories.Size (File))
+               & " bytes exceeds the limit of" & Natural'Image (Max_File_Size));
          return;
       end if;
       Handler.File := To_Unbounded_String (File);

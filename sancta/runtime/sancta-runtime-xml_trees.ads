@@ -46,6 +46,12 @@ package Sancta.Runtime.XML_Trees is
 
    Max_Depth : constant := 100;
    --  Elements nested deeper than this are an error (bounds every recursive reader).
+   Max_File_Size      : constant := 16 * 1024 * 1024;
+   Max_Attribute_Size : constant := 64 * 1024;
+   Max_Elements       : constant := 200_000;
+   --  Limits on what Load reads (an error beyond them). A document type
+   --  declaration (<!DOCTYPE ...>) is refused: no DTD, hence no entity
+   --  expansion ("billion laughs") and no external entities.
 
    procedure Load (File : String; Result : out Tree; Error : out Load_Error);
    --  Parse File; on failure Error says where and why (Result is empty).

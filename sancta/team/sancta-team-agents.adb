@@ -121,6 +121,34 @@ package body Sancta.Team.Agents is
       return Result;
    end Alive_Robots;
 
+   function Has_Quorum (This : Agent'Class) return Boolean is
+      --  The partition rule: the voters are the robots of the current round
+      --  and the operator (the writer of "mission"); a node may open rounds
+      --  and start tasks only while it hears a strict majority of them,
+      --  itself included. A side cut off from the majority finishes what
+      --  it has under way and starts nothing new until the link heals.
+      Round    : constant Plans.Snapshot := This.Views.Get.Round;
+      Operator : constant String := This.Db.Writer ("mission");
+      Voters   : Name_Sets.Set;
+      Heard    : Natural := 0;
+   begin
+      if Round.Generation = 0 then
+         return True;
+      end if;
+      for R of Round.Robots loop
+         Voters.Include (To_String (R.Id));
+      end loop;
+      if Operator /= "" then
+         Voters.Include (Operator);
+      end if;
+      for V of Voters loop
+         if V = To_String (This.Config.Id) or else This.Net.Is_Member (V) then
+            Heard := Heard + 1;
+         end if;
+      end loop;
+      return 2 * Heard > Natural (Voters.Length);
+   end Has_Quorum;
+
    function Round_Robots (S : Plans.Snapshot) return Name_Sets.Set is
       Result : Name_Sets.Set;
    begin
@@ -216,7 +244,11 @@ package body Sancta.Team.Agents is
    begin
       if Tasks.Is_Empty or else Alive.Is_Empty
         or else Alive.First_Element /= To_String (This.Config.Id)
+        or else (for all T of Tasks => Is_Done (This, T))
+        or else not Has_Quorum (This)
       then
+         --  Not the coordinator, nothing left to allocate, or cut off from
+         --  the majority (a minority side never re-plans).
          This.Mismatch_Since := Time_Last;
          return;
       end if;
@@ -560,14 +592,25 @@ package body Sancta.Team.Agents is
    function Find (Id : String) return Agent_Access is (Registry.Find (Id));
 
    function Create (Config : Agent_Config) return Agent_Access is
+      Net : constant Networks.Network_Access := Networks.Create
+        (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
+         Lease => Config.Lease, Team => To_String (Config.Team));
+      Db  : constant Databases.Team_Database_Access := new Databases.Team_Database (Net);
+   begin
+      Db.Attach;
+      return Create (Config, Net, Db);
+   end Create;
+
+   function Create
+     (Config : Agent_Config;
+      Net    : not null Networks.Network_Access;
+      Db     : not null Databases.Team_Database_Access) return Agent_Access
+   is
       A : constant Agent_Access := new Agent;
    begin
       A.Config := Config;
-      A.Net := Networks.Create
-        (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
-         Lease => Config.Lease, Team => To_String (Config.Team));
-      A.Db := new Databases.Team_Database (A.Net);
-      A.Db.Attach;
+      A.Net := Net;
+      A.Db := Db;
       A.Net.Subscribe ("auction", A.Auction'Unchecked_Access);
       A.Net.Start;
       if Config.Is_Robot then
@@ -618,6 +661,32 @@ package body Sancta.Team.Agents is
       Goal := (0.0, 0.0);
       Task_Id := Null_Unbounded_String;
       if V.Adopted.Generation = 0 then
+         return;
+      elsif not Has_Quorum (This) then
+         --  Cut off: only the task under way is finished.
+         if P.Active /= Null_Unbounded_String
+           and then not Is_Done (This, To_String (P.Active))
+           and then Plans.Has_Task (V.Round, To_String (P.Active))
+         then
+            declare
+               T : constant Missions.Mission_Task := Plans.Task_Of (V.Round, To_String (P.Active));
+            begin
+               for R in 1 .. Natural (V.Round.Robots.Length) loop
+                  if To_String (V.Round.Robots (R).Id) = Self
+                    and then R <= Natural (V.Adopted.Tours.Length)
+                  then
+                     for St of V.Adopted.Tours (R) loop
+                        if St.Task_Id = P.Active then
+                           Found := True;
+                           Task_Id := P.Active;
+                           Goal := (if P.Phase = 1 then Missions.Entry_Point (T, St.Choice)
+                                    else Missions.Exit_Point (T, St.Choice));
+                        end if;
+                     end loop;
+                  end if;
+               end loop;
+            end;
+         end if;
          return;
       end if;
       for R in 1 .. Natural (V.Round.Robots.Length) loop
@@ -696,6 +765,7 @@ package body Sancta.Team.Agents is
       accept Go;
       while not Owner.Stopping loop
          begin
+            Owner.Db.Catch_Up;
             Refresh_View (Owner.all);
             if Owner.Config.Is_Robot then
                Coordinate (Owner.all);

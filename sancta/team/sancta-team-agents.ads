@@ -81,6 +81,15 @@ package Sancta.Team.Agents is
    function Create (Config : Agent_Config) return Agent_Access;
    --  Makes and starts the agent (its network, database and task).
 
+   function Create
+     (Config : Agent_Config;
+      Net    : not null Networks.Network_Access;
+      Db     : not null Databases.Team_Database_Access) return Agent_Access
+     with Pre => Networks.Id (Net.all) = To_String (Config.Id);
+   --  The same on a network made by the caller (not started: the agent
+   --  subscribes, then starts it) and its database, attached to Net (the
+   --  XML components network and global_database make them).
+
    function Id (This : Agent) return String;
    function Database (This : Agent) return Databases.Team_Database_Access;
    function Network (This : Agent) return Networks.Network_Access;

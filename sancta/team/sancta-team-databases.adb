@@ -187,11 +187,39 @@ package body Sancta.Team.Databases is
    end On_State;
 
    overriding procedure On_Joined (This : in out Team_Database; Member : String) is
+      use type Ada.Real_Time.Time;
    begin
       if Member /= This.Net.Id then
          This.Resynchronise;
+         This.Catch_Up_At.Set
+           (Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Catch_Up_Delay));
       end if;
    end On_Joined;
+
+   protected body Due_Time is
+      procedure Set (At_Time : Ada.Real_Time.Time) is
+      begin
+         When_Due := At_Time;
+      end Set;
+
+      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean) is
+         use type Ada.Real_Time.Time;
+      begin
+         Due := When_Due /= Ada.Real_Time.Time_Last and then Now >= When_Due;
+         if Due then
+            When_Due := Ada.Real_Time.Time_Last;
+         end if;
+      end Take;
+   end Due_Time;
+
+   procedure Catch_Up (This : in out Team_Database) is
+      Due : Boolean;
+   begin
+      This.Catch_Up_At.Take (Ada.Real_Time.Clock, Due);
+      if Due then
+         This.Resynchronise;
+      end if;
+   end Catch_Up;
 
    function Decode (Type_Name, Text : String) return Value'Class is
       --  Values from other nodes: a value that does not parse as its

@@ -20,6 +20,7 @@
 --  (local or remote write).
 with Ada.Containers.Indefinite_Holders;
 with Ada.Containers.Indefinite_Ordered_Maps;
+with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Databases;
 with Sancta.Runtime.Values;
@@ -73,6 +74,15 @@ package Sancta.Team.Databases is
    procedure Resynchronise (This : in out Team_Database);
    --  Republishes every entry held (done on every member join).
 
+   procedure Catch_Up (This : in out Team_Database);
+   --  Call periodically (the team agent's task does): republishes every
+   --  entry once more Catch_Up_Delay after a member joined. A member heard
+   --  again after a partition heals may not yet be matched on the state
+   --  topic when its presence arrives; the second pass makes every replica
+   --  converge (every key, every revision) without waiting for another join.
+
+   Catch_Up_Delay : constant Duration := 2.0;
+
    overriding procedure On_State
      (This       : in out Team_Database;
       Key        : String;
@@ -114,10 +124,19 @@ private
       Map : Meta_Maps.Map;
    end Store;
 
+   protected type Due_Time is
+      procedure Set (At_Time : Ada.Real_Time.Time);
+      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean);
+      --  Due (and cleared) when a time was set and Now is past it.
+   private
+      When_Due : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
+   end Due_Time;
+
    type Team_Database (Net : not null Networks.Network_Access) is
      limited new Networks.State_Consumer and Networks.Membership_Listener with record
-      Replica : Runtime.Databases.Database;
-      Data    : Store;
+      Replica  : Runtime.Databases.Database;
+      Data     : Store;
+      Catch_Up_At : Due_Time;
    end record;
 
 end Sancta.Team.Databases;

@@ -50,13 +50,21 @@ package body Sancta.Team.Missions is
             Raise_At (Tree.Where (E), "<" & Tree.Name (E) & "> needs attribute " & Name);
          end if;
          declare
-            Text : constant String := Tree.Attribute_Value (E, Name);
+            Text  : constant String := Tree.Attribute_Value (E, Name);
+            Value : Long_Float;
          begin
-            return Real'Value (Text);
-         exception
-            when Constraint_Error =>
+            begin
+               Value := Long_Float'Value (Text);
+            exception
+               when Constraint_Error =>
+                  Raise_At (Tree.Attribute_Where (E, Name),
+                            Name & "=""" & Text & """ is not a number");
+            end;
+            if not Value'Valid or else abs Value > Max_Coordinate then
                Raise_At (Tree.Attribute_Where (E, Name),
-                         Name & "=""" & Text & """ is not a number");
+                         Name & "=""" & Text & """ is not a finite number within +/-1e6");
+            end if;
+            return Real (Value);
          end;
       end Real_Of;
 
@@ -112,6 +120,10 @@ package body Sancta.Team.Missions is
             Name : constant String := Tree.Name (E);
             T    : Mission_Task;
          begin
+            if Natural (Result.Tasks.Length) + Natural (Result.Robots.Length) >= Max_Entries then
+               Raise_At (Tree.Where (E), "more than" & Natural'Image (Max_Entries)
+                         & " robots and tasks: too many for a team mission");
+            end if;
             if Name = "robot" then
                declare
                   R : constant Robot_Start :=

@@ -63,6 +63,13 @@ package Sancta.Team.Missions is
       Tasks  : Task_Vectors.Vector;
    end record;
 
+   Max_Entries : constant := 2_000;
+   --  Robots and tasks of one mission (Read refuses more: every task is a
+   --  database entry replicated on every node, and allocation grows with
+   --  the square of the task count).
+   Max_Coordinate : constant := 1.0E6;
+   --  Metres from the world's origin.
+
    function Read (File : String) return Mission;
 
    function Encode (T : Mission_Task) return String;

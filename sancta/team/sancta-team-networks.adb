@@ -473,6 +473,8 @@ package body Sancta.Team.Networks is
       This.States := Who;
    end Set_State_Consumer;
 
+   function Is_Started (This : Network) return Boolean is (This.Started);
+
    procedure Start (This : in out Network) is
    begin
       if This.Started then

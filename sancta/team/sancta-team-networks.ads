@@ -150,7 +150,8 @@ package Sancta.Team.Networks is
    --  Before Start.
 
    procedure Start (This : in out Network);
-   --  Starts the receiving task (and the heartbeats).
+   --  Starts the receiving task (and the heartbeats); again: no effect.
+   function Is_Started (This : Network) return Boolean;
 
    procedure Stop (This : in out Network);
    --  Stops sending and receiving (the node is seen lost by the others).

@@ -61,7 +61,10 @@ package Sancta.Team.Plans is
    function Decode (Text : String; S : Snapshot) return Plan;
    --  Raises Format_Error when Text does not fit S.
 
-   function Task_Of (S : Snapshot; Id : String) return Missions.Mission_Task;
+   function Has_Task (S : Snapshot; Id : String) return Boolean is
+     (for some T of S.Tasks => T.Id = Id);
+   function Task_Of (S : Snapshot; Id : String) return Missions.Mission_Task
+     with Pre => Has_Task (S, Id) or else raise Format_Error with "task " & Id & " not in round";
 
    function Tour_Cost
      (S     : Snapshot;

@@ -19,6 +19,7 @@ with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR.Tests;
+with ROSIDL.Static.Tests;
 with ROSIDL.Type_Hashes.Tests;
 with Sancta.Allocation.Branch_And_Cut.Tests;
 with Sancta.Allocation.Local_Search.Tests;
@@ -53,6 +54,7 @@ package body All_Suites is
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
       Result.Add_Test (ROSIDL.CDR.Tests.Suite);
       Result.Add_Test (ROSIDL.Type_Hashes.Tests.Suite);
+      Result.Add_Test (ROSIDL.Static.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);

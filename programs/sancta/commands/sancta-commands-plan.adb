@@ -553,7 +553,7 @@ package body Sancta.Commands.Plan is
                      raise Usage_Error with "--runs: '" & S & "' is not a count (0 = automatic)";
                end;
             elsif A = "--ruin" then
-               Opts.Ruin_Share := Number_In (A, 0.0, 10.0);
+               Opts.Ruin_Share := Number_In (A, 0.0, 1.0);
             elsif A = "--lk" then
                Opts.Local_Search := Number_In (A, 0.0, 0.95);
             elsif A = "--balance" then

@@ -5,6 +5,7 @@ with Ada.Text_IO;
 with Sancta.Team.Agents;
 with Sancta.Commands.Options;
 with Sancta.Installation;
+with Sancta.Simulation;
 with Sancta.Team.Demos;
 with Sancta.Team.Missions;
 
@@ -91,7 +92,11 @@ package body Sancta.Commands.Team is
          end if;
       end if;
    exception
-      when E : Constraint_Error | Options.Usage_Error | Sancta.Team.Missions.Format_Error =>
+      when E : Sancta.Team.Missions.Format_Error | Sancta.Simulation.Format_Error =>
+         --  The mission or its world is wrong (the message says where).
+         Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (1);
+      when E : Constraint_Error | Options.Usage_Error =>
          Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
          Usage;
          Set_Exit_Status (2);

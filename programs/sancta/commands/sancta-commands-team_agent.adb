@@ -2,6 +2,7 @@ with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
+with Ada.Strings.Hash;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with RCL.Contexts;
@@ -23,9 +24,12 @@ package body Sancta.Commands.Team_Agent is
    procedure Usage is
    begin
       Put_Line ("usage: sancta team-agent --id ID --x X --y Y [--speed M/S] [--rate X]"
-                & " [--team NAME] [--method annealer|auctions] [--lease S] [--for S]");
+                & " [--team NAME] [--method annealer|auctions] [--lease S] [--for S]"
+                & " [--linger S]");
       Put_Line ("       sancta team-agent --operator MISSION.xml [--team NAME] [--lease S]"
-                & " [--for S]");
+                & " [--for S] [--linger S]");
+      Put_Line ("  --linger S: when the mission is done, stay on the team S seconds (still"
+                & " receiving), then print 'database: N keys, digest H' (convergence tests)");
    end Usage;
 
    function Trim (N : Integer) return String is
@@ -38,6 +42,7 @@ package body Sancta.Commands.Team_Agent is
       Speed    : Real := 1.0;
       Rate     : Real := 10.0;
       Run_For  : Duration := 120.0;
+      Linger   : Duration := 0.0;
       I        : Positive := 2;
 
       function Value return String is (Options.Next_Value (I));
@@ -78,6 +83,11 @@ package body Sancta.Commands.Team_Agent is
                Config.Lease := Duration (Number);
             elsif A = "--for" then
                Run_For := Duration (Number);
+            elsif A = "--linger" then
+               Linger := Duration (Number);
+               if Linger not in 0.0 .. 3600.0 then
+                  raise Constraint_Error with "--linger: expected 0 .. 3600 seconds";
+               end if;
             else
                raise Constraint_Error with "unknown option " & A;
             end if;
@@ -97,6 +107,20 @@ package body Sancta.Commands.Team_Agent is
          Period : constant Duration := 0.05;
          Next   : Time := Clock;
          Stop   : constant Time := Clock + To_Time_Span (Run_For);
+
+         procedure Finish is
+            --  Lingers (still a member, no more writes of its own), then
+            --  prints its replica's summary and leaves the team.
+         begin
+            if Linger > 0.0 then
+               delay Linger;
+               Put_Line (To_String (Config.Id) & ": database:"
+                         & Agent.Database.Keys.Length'Image & " keys, digest"
+                         & Ada.Strings.Hash (Agent.Database.Digest)'Image);
+               Flush;
+            end if;
+            Agent.Stop;
+         end Finish;
          Last_Gen  : Natural := 0;
          Last_Done : Natural := 0;
          Beat   : Natural := 0;
@@ -110,7 +134,7 @@ package body Sancta.Commands.Team_Agent is
             exit when Clock > Stop or else RCL.Contexts.Is_Shutdown;
             if Config.Is_Robot and then Agent.All_Done then
                Put_Line (To_String (Config.Id) & ": mission complete");
-               Agent.Stop;
+               Finish;
                return;
             elsif Config.Is_Robot then
                declare
@@ -179,7 +203,7 @@ package body Sancta.Commands.Team_Agent is
                      end loop;
                      Put_Line ("operator: all done");
                      Flush;
-                     Agent.Stop;
+                     Finish;
                      return;
                   end if;
                end;

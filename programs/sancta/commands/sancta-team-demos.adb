@@ -296,12 +296,20 @@ package body Sancta.Team.Demos is
       World := Map_Files.Load_World (World_F);
       Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
       Sim.Initialize (World, Seed => 1);
+      for R of M.Robots loop
+         if not Map.Is_Free (Position (R.Start)) then
+            raise Missions.Format_Error with To_String (Config.Mission_File) & ": robot "
+              & To_String (R.Id) & ": start " & F1 (Long_Float (R.Start.X)) & ","
+              & F1 (Long_Float (R.Start.Y)) & " is outside the world or in a wall of "
+              & World_F;
+         end if;
+      end loop;
       for T of M.Tasks loop
          for P of T.Points loop
             if not Map.Is_Free (P)
               or else Map.Cost (Position (M.Robots (1).Start), P) = Robot.Path_Costs.Unreachable
             then
-               raise Constraint_Error with To_String (Config.Mission_File) & ": task "
+               raise Missions.Format_Error with To_String (Config.Mission_File) & ": task "
                  & To_String (T.Id) & ": point " & F1 (Long_Float (P.X)) & ","
                  & F1 (Long_Float (P.Y)) & " is not reachable in " & World_F;
             end if;

@@ -489,7 +489,7 @@ package body Sancta.Views.Drawing is
       Line (Cr, (Left + 0.5, 0.0), (Left + 0.5, Gdouble (Height)));
       Stroke (Cr);
 
-      Row ("SANCTA team " & (if S.Team = Null_Unbounded_String then "(waiting for a relay)"
+      Row ("SANCTA team: " & (if S.Team = Null_Unbounded_String then "(waiting for a relay)"
                              else To_String (S.Team)), 15.0, Bold => True);
       Row ("round" & S.Round'Image & (if S.Plan_Round = 0 then ", no plan yet"
                                       elsif S.Plan_Round = S.Round then ", planned by "

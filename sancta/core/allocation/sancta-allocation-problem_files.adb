@@ -114,6 +114,19 @@ package body Sancta.Allocation.Problem_Files is
       Local_Name    : Unicode.CES.Byte_Sequence := "";
       Qname         : Unicode.CES.Byte_Sequence := "");
 
+   overriding procedure Start_DTD
+     (H         : in out Handler;
+      Name      : Unicode.CES.Byte_Sequence;
+      Public_Id : Unicode.CES.Byte_Sequence := "";
+      System_Id : Unicode.CES.Byte_Sequence := "");
+
+   Max_Elements : constant := 10_000;
+   --  Robots, tasks and plan elements of one mission: beyond, an error
+   --  (the planners' work grows with the square of the task count).
+
+   Max_Coordinate : constant := 1.0E7;
+   --  Metres (or the file's unit) from the origin.
+
    function Line (H : Handler'Class) return Positive is
      (Positive'Max (1, H.Current_Location.Line));
 
@@ -132,6 +145,17 @@ package body Sancta.Allocation.Problem_Files is
       Fail (To_String (H.File), Line (H), Reason);
    end Fail;
 
+   overriding procedure Start_DTD
+     (H         : in out Handler;
+      Name      : Unicode.CES.Byte_Sequence;
+      Public_Id : Unicode.CES.Byte_Sequence := "";
+      System_Id : Unicode.CES.Byte_Sequence := "")
+   is
+      pragma Unreferenced (Name, Public_Id, System_Id);
+   begin
+      Fail (H, "a DOCTYPE declaration is not allowed (no DTD, no entities)");
+   end Start_DTD;
+
    function Attr (H : Handler'Class; Atts : Sax.Attributes.Attributes'Class; Name : String;
                   Element : String; Default : String := "" & ASCII.NUL) return String
    is
@@ -143,7 +167,14 @@ package body Sancta.Allocation.Problem_Files is
          end if;
          return Default;
       end if;
-      return Sax.Attributes.Get_Value (Atts, I);
+      declare
+         Value : constant String := Sax.Attributes.Get_Value (Atts, I);
+      begin
+         if (for some C of Value => C < ' ') then
+            Fail (H, "<" & Element & "> attribute " & Name & " has a control character");
+         end if;
+         return Value;
+      end;
    end Attr;
 
    --  The innermost open <or> element (0: none).
@@ -179,11 +210,19 @@ package body Sancta.Allocation.Problem_Files is
                        Element : String) return Sancta.Geometry.Real
    is
       S : constant String := Attr (H, Atts, Name, Element);
+      X : Long_Float;
    begin
-      return Sancta.Geometry.Real'Value (S);
-   exception
-      when Constraint_Error =>
-         Fail (H, "<" & Element & "> attribute " & Name & "='" & S & "' is not a number");
+      begin
+         X := Long_Float'Value (S);
+      exception
+         when Constraint_Error =>
+            Fail (H, "<" & Element & "> attribute " & Name & "='" & S & "' is not a number");
+      end;
+      if not X'Valid or else abs X > Max_Coordinate then
+         Fail (H, "<" & Element & "> attribute " & Name & "='" & S
+               & "' is not a finite number within +/-1e7");
+      end if;
+      return Sancta.Geometry.Real (X);
    end Real_Attr;
 
    --  A new plan element under the innermost open one.
@@ -248,6 +287,10 @@ package body Sancta.Allocation.Problem_Files is
         Parent.Kind = Plan_Element and then H.Elements (Parent.Element).Kind = Leaf;
       Pushed : Frame := (Other, 0);
    begin
+      if Natural (H.Elements.Length) + Natural (H.Robots.Length) >= Max_Elements then
+         Fail (H, "more than" & Natural'Image (Max_Elements)
+               & " tasks and robots: too many tasks for sancta plan");
+      end if;
       if H.Root_Seen and then E in "robot" | "done" and then Parent.Kind /= Root then
          Fail (H, "<" & E & "> must be a child of <mission>");
       elsif H.Root_Seen and then E in "task" | "or" | "and" | "plan" | "at"

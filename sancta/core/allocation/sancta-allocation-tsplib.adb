@@ -1,6 +1,6 @@
 with Ada.Characters.Handling;
-with Ada.Direct_IO;
 with Ada.Directories;
+with Ada.Streams.Stream_IO;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Strings.Fixed;
 with Sancta.Geometry;
@@ -33,19 +33,40 @@ package body Sancta.Allocation.TSPLIB is
       if not Ada.Directories.Exists (File) then
          raise Format_Error with File & ":1: no such file";
       end if;
+      if Ada.Directories."/=" (Ada.Directories.Kind (File), Ada.Directories.Ordinary_File) then
+         raise Format_Error with File & ":1: not a regular file";
+      elsif Ada.Directories."/=" (Ada.Directories.Size (File), 0)
+        and then Long_Long_Integer (Ada.Directories.Size (File)) > Max_File_Size
+      then
+         raise Format_Error with File & ":1: file of"
+           & Ada.Directories.File_Size'Image (Ada.Directories.Size (File))
+           & " bytes exceeds the limit of" & Max_File_Size'Image;
+      end if;
       declare
-         Size : constant Natural := Natural (Ada.Directories.Size (File));
-         subtype Content is String (1 .. Size);
-         package IO is new Ada.Direct_IO (Content);
-         F : IO.File_Type;
-         S : Scanner;
+         --  Read in chunks onto the heap (a whole-file buffer on the stack
+         --  overflows it for files of a few megabytes).
+         use Ada.Streams;
+         Size  : constant Natural := Natural (Ada.Directories.Size (File));
+         F     : Stream_IO.File_Type;
+         Chunk : Stream_Element_Array (1 .. 65_536);
+         Last  : Stream_Element_Offset;
+         Next  : Positive := 1;
+         S     : Scanner;
       begin
          S.Name := new String'(File);
          S.Text := new String (1 .. Size);
-         if Size > 0 then
-            IO.Open (F, IO.In_File, File);
-            IO.Read (F, S.Text.all);
-            IO.Close (F);
+         Stream_IO.Open (F, Stream_IO.In_File, File);
+         while Next <= Size and then not Stream_IO.End_Of_File (F) loop
+            Stream_IO.Read (F, Chunk, Last);
+            for K in 1 .. Last loop
+               exit when Next > Size;
+               S.Text (Next) := Character'Val (Chunk (K));
+               Next := Next + 1;
+            end loop;
+         end loop;
+         Stream_IO.Close (F);
+         if Next <= Size then
+            S.Text := new String'(S.Text (1 .. Next - 1));
          end if;
          return S;
       end;
@@ -92,10 +113,21 @@ package body Sancta.Allocation.TSPLIB is
       if Tok = "" then
          Fail (S, "end of file while reading " & What);
       end if;
-      return Long_Float'Value (Tok);
-   exception
-      when Constraint_Error =>
-         Fail (S, "expected a number for " & What & ", found '" & Tok & "'");
+      declare
+         Value : Long_Float;
+      begin
+         begin
+            Value := Long_Float'Value (Tok);
+         exception
+            when Constraint_Error =>
+               Fail (S, "expected a number for " & What & ", found '" & Tok & "'");
+         end;
+         if not Value'Valid or else abs Value > 1.0E9 then
+            --  Distances are whole numbers: squares must stay finite.
+            Fail (S, What & " '" & Tok & "' is not a finite number within +/-1e9");
+         end if;
+         return Value;
+      end;
    end Next_Real;
 
    function Next_Integer (S : in out Scanner; What : String) return Long_Long_Integer is

@@ -16,6 +16,9 @@ package Sancta.Allocation.TSPLIB is
    Max_Dimension : constant := 5_000;
    --  Larger instances are refused (the full matrix would exceed 200 MB).
 
+   Max_File_Size : constant := 256 * 1024 * 1024;
+   --  Bytes: larger files are refused before they are read.
+
    function Read (File : String; Scale : Long_Float := 0.0) return Problem_Access;
    --  The instance as a problem of DIMENSION locations (one task per
    --  location, one robot). Use To_MTSP for the classic mTSP.

@@ -172,10 +172,13 @@ package body Sancta.Components.Tests is
       N.Create (Config, 1, Clock'Unchecked_Access);
       Logger := N.Find ("logger#2");
       Logging.Set_Console (False);
+      --  A folder where the log file should be: the logger cannot create it
+      --  (it makes missing folders, so a missing one would not do).
+      Ada.Directories.Create_Path (Dir & "/x.csv");
       N.Start (Run_Scheduler_Task => False);
       Run_Until (N, 0.25);
       Assert (not Logger.Started and then Logger.Failures = 1, "first Start failed");
-      Ada.Directories.Create_Path (Dir);
+      Ada.Directories.Delete_Directory (Dir & "/x.csv");
       Run_Until (N, 0.75);
       N.Stop;
       Logging.Set_Console (True);

@@ -1,0 +1,137 @@
+pragma Validity_Checks (Off);
+--  Floats may be NaN or infinite (ROS 2 data, definitions).
+package body ROSIDL.Static.Message_Support is
+
+   Header_Size : constant := ROSIDL.CDR.Request_Header_Size;
+
+   function Encoded_Size
+     (Msg : Message; With_Request_Header : Boolean := False) return Stream_Element_Count
+   is
+      Pos : Stream_Element_Offset := (if With_Request_Header then Header_Size else 0);
+   begin
+      Size_Body (Msg, Pos);
+      return Encapsulation_Size + Pos + (-Pos) mod 4;
+   end Encoded_Size;
+
+   procedure Put_Header (Buffer : out Stream_Element_Array; Order : Byte_Order) is
+   begin
+      Buffer (Buffer'First .. Buffer'First + 3) :=
+        [0, (if Order = Little_Endian then 1 else 0), 0, 0];
+   end Put_Header;
+
+   procedure Write
+     (Msg         : Message;
+      With_Header : Boolean;
+      Header      : Request_Header;
+      Buffer      : out Stream_Element_Array;
+      Last        : out Stream_Element_Offset;
+      Order       : Byte_Order)
+   is
+      Size : constant Stream_Element_Count := Encoded_Size (Msg, With_Header);
+      C    : ROSIDL.Static.Wire.Cursor;
+   begin
+      if Buffer'Length < Size then
+         raise Encode_Error with Full_Name & ": buffer of" & Buffer'Length'Image
+           & " bytes, the encoding needs" & Size'Image;
+      end if;
+      Put_Header (Buffer, Order);
+      C := (Pos    => Buffer'First + Encapsulation_Size,
+            Origin => Buffer'First + Encapsulation_Size,
+            Swap   => Order /= Native_Order);
+      if With_Header then
+         ROSIDL.Static.Wire.Put_Request_Header (Buffer, C, Header.GUID, Header.Sequence);
+      end if;
+      Write_Body (Msg, Buffer, C);
+      ROSIDL.Static.Wire.Pad (Buffer, C, 4);
+      Last := C.Pos - 1;
+   end Write;
+
+   procedure Encode
+     (Msg    : Message;
+      Buffer : out Stream_Element_Array;
+      Last   : out Stream_Element_Offset;
+      Order  : Byte_Order := Native_Order) is
+   begin
+      Write (Msg, False, (others => <>), Buffer, Last, Order);
+   end Encode;
+
+   procedure Encode
+     (Msg    : Message;
+      Header : Request_Header;
+      Buffer : out Stream_Element_Array;
+      Last   : out Stream_Element_Offset;
+      Order  : Byte_Order := Native_Order) is
+   begin
+      Write (Msg, True, Header, Buffer, Last, Order);
+   end Encode;
+
+   function Encode (Msg : Message; Order : Byte_Order := Native_Order)
+      return Stream_Element_Array
+   is
+      Result : Stream_Element_Array (1 .. Encoded_Size (Msg));
+      Last   : Stream_Element_Offset;
+   begin
+      Encode (Msg, Result, Last, Order);
+      return Result;
+   end Encode;
+
+   procedure Read
+     (Data        : Stream_Element_Array;
+      Msg         : in out Message;
+      With_Header : Boolean;
+      Header      : out Request_Header)
+   is
+      C : ROSIDL.Static.Wire.Cursor;
+   begin
+      Header := (others => <>);
+      C := (Pos    => Data'First + Encapsulation_Size,
+            Origin => Data'First + Encapsulation_Size,
+            Swap   => Byte_Order_Of (Data) /= Native_Order);
+      if With_Header then
+         ROSIDL.Static.Wire.Get_Request_Header
+           (Data, C, Header.GUID, Header.Sequence, Full_Name);
+      end if;
+      Read_Body (Data, C, Msg);
+   end Read;
+
+   procedure Decode (Data : Stream_Element_Array; Msg : in out Message) is
+      Unused : Request_Header;
+   begin
+      Read (Data, Msg, False, Unused);
+   end Decode;
+
+   procedure Decode
+     (Data   : Stream_Element_Array;
+      Msg    : in out Message;
+      Header : out Request_Header) is
+   begin
+      Read (Data, Msg, True, Header);
+   end Decode;
+
+   function Decode (Data : Stream_Element_Array) return Message is
+   begin
+      return Msg : Message do
+         Decode (Data, Msg);
+      end return;
+   end Decode;
+
+   function Recode (Data : Stream_Element_Array; Order : Byte_Order)
+      return Stream_Element_Array is
+     (Encode (Decode (Data), Order));
+
+   function Round_Trips (Data : Stream_Element_Array) return Boolean is
+      X : constant Message := Decode (Data);
+   begin
+      return Decode (Encode (X, Little_Endian)) = X
+        and then Decode (Encode (X, Big_Endian)) = X;
+   end Round_Trips;
+
+   function Encode_Default return Stream_Element_Array is
+      Default : Message;
+      pragma Warnings (Off, Default);
+      --  Initialised by the record's component defaults.
+   begin
+      return Encode (Default, Little_Endian);
+   end Encode_Default;
+
+end ROSIDL.Static.Message_Support;

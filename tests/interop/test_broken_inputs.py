@@ -1,0 +1,93 @@
+"""The broken-input corpus (issue 19, item 5): tests/data/broken/cases.txt
+lists configurations, missions, TSPLIB files, worlds and command lines that
+are wrong; each must end within its time limit with the expected non-zero
+exit status, name where the problem is (file:line:column, or the argument),
+and print no traceback. SANCTA_BROKEN_BIN=folder runs the corpus against
+other binaries (the note's before/after counts)."""
+import os
+import pathlib
+import shlex
+import subprocess
+
+import pytest
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+DATA = REPO / "tests" / "data" / "broken"
+BIN = pathlib.Path(os.environ.get("SANCTA_BROKEN_BIN", REPO / "bin"))
+TIME_LIMIT = 15.0
+TRACEBACK = ("raised ", "internal error", "Call stack", "CONSTRAINT_ERROR", "STORAGE_ERROR",
+             "PROGRAM_ERROR", "TASKING_ERROR", "Traceback")
+
+
+def load_cases():
+    cases = []
+    for number, line in enumerate((DATA / "cases.txt").read_text().splitlines(), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        cid, argv, code, expect = (part.strip() for part in line.split(" | "))
+        cases.append(pytest.param(argv, code, [e for e in expect.split(" ;; ") if e],
+                                  id=cid))
+    return cases
+
+
+@pytest.fixture(scope="module")
+def tmp(tmp_path_factory):
+    d = tmp_path_factory.mktemp("broken")
+    robot = '<robot id="r1" x="1" y="1"/>\n'
+    (d / "huge-attribute.xml").write_text(
+        '<team>\n  <agent id="a1" kind="robot">\n    <component name="odometry" v="'
+        + "9" * (1024 * 1024) + '"/>\n  </agent>\n</team>\n')
+    (d / "huge-file.xml").write_text(
+        "<team>\n" + ("<!-- " + "x" * 1000 + " -->\n") * 40000 + "</team>\n")
+    (d / "many-agents.xml").write_text(
+        "<team>\n" + "".join(f'  <agent id="a{i}" kind="robot"><component name="odometry"/>'
+                             f"</agent>\n" for i in range(20000)) + "</team>\n")
+    (d / "many-tasks.xml").write_text(
+        '<mission scale="100">\n' + robot + "".join(
+            f'<task id="t{i}" x="{i % 1000}" y="{i // 1000}"/>\n' for i in range(200000))
+        + "</mission>\n")
+    world = REPO / "share" / "worlds" / "office.yaml"
+    (d / "team-many-tasks.xml").write_text(
+        f'<mission name="m" world="{world}">\n<robot id="r1" x="2.5" y="10"/>\n'
+        '<robot id="r2" x="6" y="10"/>\n' + "".join(
+            f'<goto id="t{i}" x="{1 + (i % 280) / 10}" y="{1 + (i // 280) % 180 / 10}"/>\n'
+            for i in range(50000)) + "</mission>\n")
+    (d / "many.tsp").write_text(
+        "NAME : many\nTYPE : TSP\nDIMENSION : 2000000\nEDGE_WEIGHT_TYPE : EUC_2D\n"
+        "NODE_COORD_SECTION\n" + "".join(f"{i} {i % 1000} {i // 1000}\n"
+                                         for i in range(1, 2000001)) + "EOF\n")
+    return d
+
+
+def env():
+    e = dict(os.environ)
+    e["CYCLONEDDS_URI"] = "file://" + str(REPO / "share" / "cyclonedds-localhost.xml")
+    e["ROS_LOCALHOST_ONLY"] = "1"
+    e.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 200 + 1))
+    e["SANCTA_ROOT"] = str(REPO)
+    e["RCLADA_ROOT"] = str(REPO)
+    return e
+
+
+@pytest.mark.parametrize("argv,code,expect", load_cases())
+def test_broken_input(argv, code, expect, tmp):
+    words = [w.replace("{data}", str(DATA)).replace("{repo}", str(REPO)).replace("{tmp}", str(tmp))
+             for w in shlex.split(argv)]
+    words[0] = str(BIN / words[0])
+    try:
+        p = subprocess.run(words, capture_output=True, text=True, errors="replace",
+                           timeout=TIME_LIMIT, cwd=tmp, env=env())
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"hang: no end within {TIME_LIMIT} s: {argv}")
+    out = p.stdout + p.stderr
+    shown = out[-2000:]
+    assert p.returncode >= 0, f"killed by signal {-p.returncode}:\n{shown}"
+    for bad in TRACEBACK:
+        assert bad not in out, f"traceback ({bad}):\n{shown}"
+    if code == "!0":
+        assert p.returncode != 0, f"accepted silently (exit 0):\n{shown}"
+    else:
+        assert p.returncode == int(code), f"exit {p.returncode}, not {code}:\n{shown}"
+    for e in expect:
+        e = e.replace("{data}", str(DATA)).replace("{repo}", str(REPO)).replace("{tmp}", str(tmp))
+        assert e in out, f"unclear: {e!r} not in the output:\n{shown}"
