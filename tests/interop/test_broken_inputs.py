@@ -7,6 +7,7 @@ other binaries (the note's before/after counts)."""
 import os
 import pathlib
 import shlex
+import signal
 import subprocess
 
 import pytest
@@ -74,12 +75,22 @@ def test_broken_input(argv, code, expect, tmp):
     words = [w.replace("{data}", str(DATA)).replace("{repo}", str(REPO)).replace("{tmp}", str(tmp))
              for w in shlex.split(argv)]
     words[0] = str(BIN / words[0])
+    # A session of its own: on a hang, or when it leaves children behind
+    # (sancta demo starts sancta-sim and agents), the whole group is killed.
+    p = subprocess.Popen(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         errors="replace", cwd=tmp, env=env(), start_new_session=True)
     try:
-        p = subprocess.run(words, capture_output=True, text=True, errors="replace",
-                           timeout=TIME_LIMIT, cwd=tmp, env=env())
+        stdout, stderr = p.communicate(timeout=TIME_LIMIT)
     except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
         pytest.fail(f"hang: no end within {TIME_LIMIT} s: {argv}")
-    out = p.stdout + p.stderr
+    finally:
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    out = stdout + stderr
     shown = out[-2000:]
     assert p.returncode >= 0, f"killed by signal {-p.returncode}:\n{shown}"
     for bad in TRACEBACK:

@@ -36,8 +36,9 @@ package body Sancta.Team.Sim_Demos is
    package Configurations renames Sancta.Runtime.Configurations;
    package Rendering renames Sancta.Simulation.Rendering;
 
-   Max_Robots : constant := 10;
-   --  Robots followed by the observer (one ground-truth callback each).
+   Max_Robots : constant := 50;
+   --  Robot agents of one demo (each a process; the observer follows each
+   --  robot's ground truth on a node of its own).
 
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
@@ -461,41 +462,29 @@ package body Sancta.Team.Sim_Demos is
             end if;
          end On_Truth;
 
-         generic
-            R : Positive;
-         procedure Truth_Callback
-           (Node : in out RCL.Nodes.Node'Class;
-            Msg  : in out ROSIDL.Dynamic.Message;
-            Info : ROSIDL.Message_Info);
+         --  One node per robot for its ground truth: the callback knows the
+         --  robot by its node's name (any number of robots).
+         type Node_Access is access RCL.Nodes.Node;
+         Truth_Nodes : array (1 .. N) of Node_Access;
 
-         procedure Truth_Callback
+         function Truth_Node_Name (R : Positive) return String is
+           ("sancta_demo_truth_" & Robot_Id (R));
+
+         procedure On_Any_Truth
            (Node : in out RCL.Nodes.Node'Class;
             Msg  : in out ROSIDL.Dynamic.Message;
             Info : ROSIDL.Message_Info)
          is
-            pragma Unreferenced (Node, Info);
+            pragma Unreferenced (Info);
+            Name : constant String := Node.Name;
          begin
-            On_Truth (R, Msg);
-         end Truth_Callback;
-
-         procedure T1 is new Truth_Callback (1);
-         procedure T2 is new Truth_Callback (2);
-         procedure T3 is new Truth_Callback (3);
-         procedure T4 is new Truth_Callback (4);
-         procedure T5 is new Truth_Callback (5);
-         procedure T6 is new Truth_Callback (6);
-         procedure T7 is new Truth_Callback (7);
-         procedure T8 is new Truth_Callback (8);
-         procedure T9 is new Truth_Callback (9);
-         procedure T10 is new Truth_Callback (10);
-
-         type Callback_Access is access procedure
-           (Node : in out RCL.Nodes.Node'Class;
-            Msg  : in out ROSIDL.Dynamic.Message;
-            Info : ROSIDL.Message_Info);
-         Callbacks : constant array (1 .. Max_Robots) of Callback_Access :=
-           [T1'Access, T2'Access, T3'Access, T4'Access, T5'Access,
-            T6'Access, T7'Access, T8'Access, T9'Access, T10'Access];
+            for R in 1 .. N loop
+               if Name = Truth_Node_Name (R) then
+                  On_Truth (R, Msg);
+                  return;
+               end if;
+            end loop;
+         end On_Any_Truth;
 
          procedure On_Event
            (Node : in out RCL.Nodes.Node'Class;
@@ -673,9 +662,10 @@ package body Sancta.Team.Sim_Demos is
             Scene.Trajectories.Append (Rendering.Point_Vectors.Empty_Vector);
             Here (R) := Position (View.Robots (R).Start);
             Final_Pose (R) := View.Robots (R).Start;
-            Node.Subscribe
+            Truth_Nodes (R) := new RCL.Nodes.Node'(RCL.Nodes.Init (Truth_Node_Name (R)));
+            Truth_Nodes (R).Subscribe
               (ROSIDL.Typesupport.Get_Message_Support ("geometry_msgs", "PoseStamped"),
-               "/" & Robot_Id (R) & "/ground_truth", Callbacks (R));
+               "/" & Robot_Id (R) & "/ground_truth", On_Any_Truth'Access);
          end loop;
          Node.Subscribe
            (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
@@ -683,6 +673,9 @@ package body Sancta.Team.Sim_Demos is
          Control ("list", "");
          loop
             Node.Spin (During => 0.05);
+            for T of Truth_Nodes loop
+               T.Spin (During => 0.0);
+            end loop;
             Reap (Children);
             Note_Completions;
             if Result.Planned_Total = 0.0 and then Monitor.Adopted.Generation > 0
