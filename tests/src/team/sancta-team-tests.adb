@@ -154,12 +154,15 @@ package body Sancta.Team.Tests is
       W : aliased Watcher;
       function Met return Boolean is (A.Net.Is_Member ("b"));
       function Gone return Boolean is (Ada.Strings.Fixed.Index (To_String (W.Lost), "b;") > 0);
+      function Joined return Boolean is
+        (Ada.Strings.Fixed.Index (To_String (W.Joined), "b;") > 0);
+      --  (The listener hears of the join just after Is_Member turns True.)
    begin
       A.Net.Add_Membership_Listener (W'Unchecked_Access);
       A.Net.Start;
       B.Net.Start;
       Assert (Wait_Until (Met'Access), "a never saw b");
-      Assert (Ada.Strings.Fixed.Index (To_String (W.Joined), "b;") > 0, "no join event");
+      Assert (Wait_Until (Joined'Access), "no join event");
       B.Net.Stop;
       Assert (Wait_Until (Gone'Access), "the loss of b was not reported");
       Assert (not A.Net.Is_Member ("b"), "b still a member after its lease");
