@@ -11,6 +11,8 @@ with RCL.Services;
 
 package body RCL.Clients is
 
+   use type RCL.Pending_Calls.Slot_Access;
+
    use Ada.Real_Time;
    use type ROSIDL.UInt64;
    use type RCL.Pending_Calls.Outcome;
@@ -308,6 +310,120 @@ package body RCL.Clients is
    end Call_Async;
 
    function Pending_Async (This : Client) return Natural is (This.Calls.Async_Count);
+
+   -------------
+   -- Futures --
+   -------------
+
+   procedure Call_Future
+     (This    : in out Client;
+      Request : ROSIDL.Dynamic.Message;
+      Into    : in out Future)
+   is
+      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
+   begin
+      Into.Call.Into := new RCL.Pending_Calls.Slot;
+      Into.Call.Owner := This'Unchecked_Access;
+      Into.Call.Sequence := Sequence;
+      This.Calls.Add_Sync (Sequence, Into.Call.Into);
+      Send (This, Request, Sequence);
+   exception
+      when others =>
+         This.Calls.Remove (Sequence);
+         Free (Into.Call.Into);
+         Into.Call.Owner := null;
+         raise;
+   end Call_Future;
+
+   function Is_Pending (F : Future) return Boolean is (F.Call.Into /= null);
+
+   function Is_Ready (F : Future) return Boolean is
+     (F.Call.Into /= null and then F.Call.Into.Filled);
+
+   function Response (F : Future) return ROSIDL.Dynamic.Message is (F.Call.Into.Response);
+
+   function Read_Replies (F : in out Future; Until_Time : Time) return Boolean is
+      --  Reads replies (or waits for the task reading them) until F is
+      --  ready or Until_Time: True when ready.
+      Got : Boolean;
+   begin
+      loop
+         if F.Call.Into.Filled then
+            return True;
+         elsif Clock >= Until_Time then
+            return False;
+         end if;
+         F.Call.Owner.Calls.Try_Lead (Got);
+         if Got then
+            begin
+               Pump_Once (F.Call.Owner.all, Until_Time);
+            exception
+               when others =>
+                  F.Call.Owner.Calls.Release;
+                  raise;
+            end;
+            F.Call.Owner.Calls.Release;
+         else
+            select
+               F.Call.Into.Wait;
+            or
+               delay until Earliest (Until_Time, Clock + Milliseconds (2));
+            end select;
+         end if;
+      end loop;
+   end Read_Replies;
+
+   function Wait (F : in out Future; Timeout : Duration := Forever) return Future_Return_Code is
+      Deadline : constant Time := Deadline_Of (Timeout);
+   begin
+      loop
+         if RCL.Contexts.Is_Shutdown then
+            return Interrupted;
+         elsif Read_Replies (F, Earliest (Deadline, Clock + Milliseconds (100))) then
+            return Success;
+         elsif Clock >= Deadline then
+            return Timed_Out;
+         end if;
+      end loop;
+   end Wait;
+
+   function Spin_Until_Complete
+     (Node    : in out RCL.Nodes.Node'Class;
+      F       : in out Future;
+      Timeout : Duration := Forever) return Future_Return_Code
+   is
+      Deadline : constant Time := Deadline_Of (Timeout);
+   begin
+      loop
+         if Read_Replies (F, Clock) then
+            return Success;
+         elsif RCL.Contexts.Is_Shutdown then
+            return Interrupted;
+         elsif Clock >= Deadline then
+            return Timed_Out;
+         end if;
+         Node.Spin (During => (if Deadline = Time_Last then 0.01
+                               else Duration'Max
+                                 (0.0, Duration'Min (0.01, To_Duration (Deadline - Clock)))));
+         if Read_Replies (F, Earliest (Deadline, Clock + Milliseconds (10))) then
+            return Success;
+         end if;
+      end loop;
+   end Spin_Until_Complete;
+
+   overriding procedure Finalize (This : in out Future_Call) is
+   begin
+      if This.Into /= null then
+         if This.Owner /= null then
+            This.Owner.Calls.Remove (This.Sequence);
+         end if;
+         Free (This.Into);
+      end if;
+      This.Owner := null;
+   exception
+      when others =>
+         null;
+   end Finalize;
 
    --------------
    -- Finalize --

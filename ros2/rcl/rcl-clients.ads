@@ -90,6 +90,54 @@ package RCL.Clients is
    function Pending_Async (This : Client) return Natural;
    --  Asynchronous calls still waiting for their response.
 
+   --  Futures: an asynchronous call whose response the caller waits for
+   --  while spinning its node (rclcpp's async_send_request with
+   --  spin_until_future_complete). The response is read while somebody
+   --  waits: Spin_Until_Complete, Wait, or a synchronous Call of the same
+   --  client.
+   --
+   --     F : Clients.Future;
+   --     C.Call_Future (Request, F);
+   --     if Clients.Spin_Until_Complete (Node, F, Timeout => 2.0) = Clients.Success then
+   --        Sum := Clients.Response (F) ("sum").As_Int64;
+   --     end if;
+
+   type Future is limited private;
+   --  Must not outlive its client; finalizing a future forgets its call.
+
+   type Future_Return_Code is (Success, Interrupted, Timed_Out);
+   --  As rclcpp's FutureReturnCode: the response came; the context shut
+   --  down (Ctrl-C); the Timeout passed.
+
+   procedure Call_Future
+     (This    : in out Client;
+      Request : ROSIDL.Dynamic.Message;
+      Into    : in out Future)
+     with Pre => Is_Open (This) and then not Is_Pending (Into);
+   --  Sends Request at once (without waiting for the service) and returns;
+   --  Into then stands for the response. ROS_Exception when Request is not
+   --  of the service's request type.
+
+   function Is_Pending (F : Future) return Boolean;
+   --  A call was made with F (ready or not).
+
+   function Is_Ready (F : Future) return Boolean;
+   --  The response has come (it stays available).
+
+   function Response (F : Future) return ROSIDL.Dynamic.Message
+     with Pre => Is_Ready (F);
+
+   function Wait (F : in out Future; Timeout : Duration := Forever) return Future_Return_Code
+     with Pre => Is_Pending (F);
+   --  Reads replies until the response comes, without spinning any node.
+
+   function Spin_Until_Complete
+     (Node    : in out RCL.Nodes.Node'Class;
+      F       : in out Future;
+      Timeout : Duration := Forever) return Future_Return_Code
+     with Pre => Is_Pending (F);
+   --  Runs Node's callbacks (Node.Spin) while waiting for F's response.
+
    --  One client per (node, service name) made on first use:
 
    function Call
@@ -116,6 +164,21 @@ private
    task type Pump (Owner : not null access Client);
    --  Reads replies while asynchronous calls are pending.
    type Pump_Access is access Pump;
+
+   type Client_Ref is access all Client;
+
+   type Future_Call is new Ada.Finalization.Limited_Controlled with record
+      Owner    : Client_Ref;
+      Sequence : ROSIDL.Int64 := 0;
+      Into     : RCL.Pending_Calls.Slot_Access;
+   end record;
+
+   overriding procedure Finalize (This : in out Future_Call);
+
+   type Future is limited record
+      Call : Future_Call;
+   end record;
+   --  (Not tagged itself: Call_Future is a primitive of Client.)
 
    type Client is new Ada.Finalization.Limited_Controlled with record
       Open     : Boolean := False;

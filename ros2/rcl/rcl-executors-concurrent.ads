@@ -1,8 +1,11 @@
 --  The concurrent executor: the spinning task takes the samples and timer
 --  expirations and queues them (bounded queue: a full queue blocks the
 --  spinning task, never a DDS thread); a pool of Threads Ada tasks runs the
---  callbacks. Callbacks of one node may thus run in parallel: they must
---  protect what they share (as with a ROS 2 reentrant callback group).
+--  callbacks, in parallel as their callback groups allow (RCL.Nodes,
+--  Callback_Group): by default every callback of a node is in the node's
+--  mutually exclusive default group, as in rclcpp, so one node's callbacks
+--  run one at a time while different nodes' run in parallel; callbacks put
+--  in a Reentrant group run in parallel and must protect what they share.
 --
 --  Shutdown (deterministic): Shutdown, or finalization of the executor,
 --  waits until every queued callback has run, then stops each pool task and

@@ -2,6 +2,8 @@ with Ada.Unchecked_Deallocation;
 
 package body RCL.Executors.Pools is
 
+   use type RCL.Nodes.Callback_Group_Kind;
+
    type Bytes_Access is access RCL.DDS.Byte_Array;
    procedure Free is new Ada.Unchecked_Deallocation (RCL.DDS.Byte_Array, Bytes_Access);
 
@@ -24,37 +26,95 @@ package body RCL.Executors.Pools is
 
    type Work_Array is array (Positive range <>) of Work;
 
+   --  Callback groups: a work item of a mutually exclusive group waits in
+   --  the queue while another item of the same group (same node, same
+   --  group id) is in flight; items behind it in the queue may pass it.
+
+   type Group_Key is record
+      Node      : Node_Access;
+      Group     : Natural := 0;
+      Exclusive : Boolean := False;
+   end record;
+
+   function Key_Of (Item : Work) return Group_Key is
+     (case Item.Kind is
+         when Sample => (Item.Node, RCL.Nodes.Id (Item.Sub.Group),
+                         RCL.Nodes.Kind (Item.Sub.Group) = RCL.Nodes.Mutually_Exclusive),
+         when Tick   => (Item.Node, RCL.Nodes.Id (Item.Timer.Group),
+                         RCL.Nodes.Kind (Item.Timer.Group) = RCL.Nodes.Mutually_Exclusive),
+         when Stop   => (Node => null, Group => 0, Exclusive => False));
+
+   type Key_Array is array (Positive range <>) of Group_Key;
+
    protected type Work_Queue (Capacity : Positive) is
       entry Put (Item : Work);
       entry Get (Item : out Work);
-      --  The item counts as in flight until Done.
-      procedure Done;
+      --  The first item in queue order whose group is free; it counts as
+      --  in flight until Done.
+      procedure Done (Item : Work);
       entry Wait_Idle;
    private
+      procedure Count_Runnable;
       Items     : Work_Array (1 .. Capacity);
-      First     : Positive := 1;
       Count     : Natural := 0;
+      --  Items (1 .. Count), oldest first.
+      Running   : Key_Array (1 .. Capacity);
       In_Flight : Natural := 0;
+      --  Running (1 .. In_Flight): the groups of the items in flight.
+      Runnable  : Natural := 0;
+      --  Items whose group is free (the barrier of Get).
    end Work_Queue;
 
    protected body Work_Queue is
+
+      function Busy (Key : Group_Key) return Boolean is
+        (Key.Exclusive
+         and then (for some I in 1 .. In_Flight =>
+                     Running (I).Node = Key.Node and then Running (I).Group = Key.Group));
+
+      procedure Count_Runnable is
+      begin
+         Runnable := 0;
+         for I in 1 .. Count loop
+            if not Busy (Key_Of (Items (I))) then
+               Runnable := Runnable + 1;
+            end if;
+         end loop;
+      end Count_Runnable;
+
       entry Put (Item : Work) when Count < Capacity is
       begin
-         Items ((First - 1 + Count) mod Capacity + 1) := Item;
          Count := Count + 1;
+         Items (Count) := Item;
+         Count_Runnable;
       end Put;
 
-      entry Get (Item : out Work) when Count > 0 is
+      entry Get (Item : out Work) when Runnable > 0 is
       begin
-         Item := Items (First);
-         First := First mod Capacity + 1;
-         Count := Count - 1;
-         In_Flight := In_Flight + 1;
+         for I in 1 .. Count loop
+            if not Busy (Key_Of (Items (I))) then
+               Item := Items (I);
+               Items (I .. Count - 1) := Items (I + 1 .. Count);
+               Count := Count - 1;
+               In_Flight := In_Flight + 1;
+               Running (In_Flight) := Key_Of (Item);
+               exit;
+            end if;
+         end loop;
+         Count_Runnable;
       end Get;
 
-      procedure Done is
+      procedure Done (Item : Work) is
+         Key : constant Group_Key := Key_Of (Item);
       begin
-         In_Flight := In_Flight - 1;
+         for I in 1 .. In_Flight loop
+            if Running (I) = Key then
+               Running (I) := Running (In_Flight);
+               In_Flight := In_Flight - 1;
+               exit;
+            end if;
+         end loop;
+         Count_Runnable;
       end Done;
 
       entry Wait_Idle when Count = 0 and then In_Flight = 0 is
@@ -73,7 +133,7 @@ package body RCL.Executors.Pools is
          Queue.Get (Item);
          case Item.Kind is
             when Stop =>
-               Queue.Done;
+               Queue.Done (Item);
                exit;
             when Sample =>
                Run_Subscription (Item.Node, Item.Sub, Item.Data.all, Item.Info);
@@ -81,11 +141,11 @@ package body RCL.Executors.Pools is
             when Tick =>
                Run_Timer (Item.Node, Item.Timer, Item.Elapsed);
          end case;
-         Queue.Done;
+         Queue.Done (Item);
       end loop;
    exception
       when others =>
-         Queue.Done;  --  Run_* never propagate; be safe anyway.
+         Queue.Done (Item);  --  Run_* never propagate; be safe anyway.
    end Runner;
 
    type Runner_Access is access Runner;

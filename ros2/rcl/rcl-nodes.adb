@@ -73,6 +73,20 @@ package body RCL.Nodes is
    -- Init --
    ----------
 
+   protected Serials is
+      procedure Next (Serial : out Node_Serial);
+   private
+      Last : Node_Serial := 0;
+   end Serials;
+
+   protected body Serials is
+      procedure Next (Serial : out Node_Serial) is
+      begin
+         Last := Last + 1;
+         Serial := Last;
+      end Next;
+   end Serials;
+
    function Init
      (Name      : String;
       Namespace : String := "/";
@@ -93,6 +107,7 @@ package body RCL.Nodes is
       begin
          RCL.Contexts.Init;
          return N : Node do
+            Serials.Next (N.Serial);
             N.Name := To_Unbounded_String (New_Name);
             N.Original := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
@@ -212,6 +227,7 @@ package body RCL.Nodes is
    begin
       S.Topic := new String'(FQ);
       S.Handle := Handle;
+      S.Group := This.Current;
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Entities.Add (S);
@@ -236,6 +252,7 @@ package body RCL.Nodes is
    begin
       S.Topic := new String'(Name);
       S.Handle := Handle;
+      S.Group := This.Current;
       RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Type_Name, User_Data));
       This.Entities.Add (S);
@@ -447,6 +464,37 @@ package body RCL.Nodes is
          raise;
    end Subscribe_Closure;
 
+   ---------------------
+   -- Callback groups --
+   ---------------------
+
+   function Default_Callback_Group (This : Node) return Callback_Group is
+      pragma Unreferenced (This);
+   begin
+      return (others => <>);
+   end Default_Callback_Group;
+
+   function Create_Callback_Group
+     (This : in out Node;
+      Kind : Callback_Group_Kind) return Callback_Group is
+   begin
+      This.Groups := This.Groups + 1;
+      return (Owner => This.Serial, Id => This.Groups, Kind => Kind);
+   end Create_Callback_Group;
+
+   procedure Set_Callback_Group (This : in out Node; Group : Callback_Group) is
+   begin
+      This.Current := Group;
+   end Set_Callback_Group;
+
+   function Current_Callback_Group (This : Node) return Callback_Group is (This.Current);
+
+   function Belongs_To (Group : Callback_Group; This : Node) return Boolean is
+     (Group.Owner = 0 or else Group.Owner = This.Serial);
+
+   function Kind (Group : Callback_Group) return Callback_Group_Kind is (Group.Kind);
+   function Id (Group : Callback_Group) return Natural is (Group.Id);
+
    ------------
    -- Timers --
    ------------
@@ -466,7 +514,7 @@ package body RCL.Nodes is
           (Period_Ns => RCL.Clocks.Nanoseconds (Period * 1_000_000_000.0), On => Clock);
    begin
       S.Start;
-      This.Entities.Add (Timer_Entry'(S, Stored));
+      This.Entities.Add (Timer_Entry'(S, Stored, This.Current));
       return RCL.Timers.To_Timer (S);
    end Timer_Add;
 

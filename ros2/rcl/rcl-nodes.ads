@@ -210,6 +210,46 @@ package RCL.Nodes is
       Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock)
      with Pre => Period > 0.0;
 
+   --  Callback groups ------------------------------------------------------
+
+   type Callback_Group_Kind is (Mutually_Exclusive, Reentrant);
+   --  As in rclcpp: the callbacks of a mutually exclusive group never run
+   --  at the same time; those of a reentrant group may (one subscription's
+   --  callback even in parallel with itself). Only the concurrent executor
+   --  (RCL.Executors.Concurrent) runs callbacks in parallel at all: the
+   --  sequential ones run everything one at a time anyway.
+   --
+   --     Sensors : constant Callback_Group := Node.Create_Callback_Group (Reentrant);
+   --     Node.Set_Callback_Group (Sensors);
+   --     Node.Subscribe (Scan_Support, "scan", On_Scan'Access);  --  in Sensors
+   --     Node.Set_Callback_Group (Node.Default_Callback_Group);
+
+   type Callback_Group is private;
+
+   function Default_Callback_Group (This : Node) return Callback_Group;
+   --  The group of every subscription, service and timer not made after a
+   --  Set_Callback_Group: mutually exclusive, as rclcpp's default group.
+
+   function Create_Callback_Group
+     (This : in out Node;
+      Kind : Callback_Group_Kind) return Callback_Group;
+   --  A new group of This node (groups of different nodes never exclude
+   --  each other).
+
+   procedure Set_Callback_Group (This : in out Node; Group : Callback_Group)
+     with Pre => Belongs_To (Group, This);
+   --  Subscriptions, services, clients' replies and timers made on This
+   --  from now on belong to Group.
+
+   function Current_Callback_Group (This : Node) return Callback_Group;
+
+   function Belongs_To (Group : Callback_Group; This : Node) return Boolean;
+   --  Group was made by This node (or is its default group).
+
+   function Kind (Group : Callback_Group) return Callback_Group_Kind;
+   function Id (Group : Callback_Group) return Natural;
+   --  0 for the default group, then 1, 2, ... in the order of creation.
+
    --  Spinning -------------------------------------------------------------
 
    procedure Spin
@@ -239,12 +279,14 @@ package RCL.Nodes is
       Topic   : Name_Access;
       --  Fully qualified ROS name.
       Handle  : Handler_Access;
+      Group   : Callback_Group;
    end record;
    type Subscription_Access is access all Subscription;
 
    type Timer_Entry is record
       State    : RCL.Timers.State_Access;
       Callback : RCL.Timers.Callback;
+      Group    : Callback_Group;
    end record;
 
    Max_Subscriptions : constant := 64;
@@ -288,6 +330,16 @@ private
 
    use Ada.Strings.Unbounded;
 
+   type Node_Serial is new Natural;
+   --  Tells the nodes of a process apart (Belongs_To).
+
+   type Callback_Group is record
+      Owner : Node_Serial := 0;
+      --  0: the default group of any node.
+      Id    : Natural := 0;
+      Kind  : Callback_Group_Kind := Mutually_Exclusive;
+   end record;
+
    type Subscription_Array is array (1 .. Max_Subscriptions) of Subscription_Access;
    type Timer_Array is array (1 .. Max_Timers) of Timer_Entry;
 
@@ -306,7 +358,7 @@ private
       Ver    : Natural := 0;
       Subs   : Subscription_Array := [others => null];
       N_Sub  : Natural := 0;
-      Tims   : Timer_Array := [others => (null, null)];
+      Tims   : Timer_Array := [others => (null, null, (others => <>))];
       N_Tim  : Natural := 0;
    end Registry;
 
@@ -325,6 +377,11 @@ private
       Params_On : Boolean := False;
       Entities  : Registry;
       Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Serial    : Node_Serial := 0;
+      Groups    : Natural := 0;
+      --  Callback groups made so far.
+      Current   : Callback_Group;
+      --  The group of entities made from now on.
    end record;
 
 end RCL.Nodes;

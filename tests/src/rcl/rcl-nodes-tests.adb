@@ -275,6 +275,108 @@ package body RCL.Nodes.Tests is
       Assert (E.Is_Shut_Down, "shut down deterministically");
    end Concurrent;
 
+   procedure Callback_Groups (Unused : in out Fixture) is
+      --  Three pool tasks, two timers and one subscription whose callbacks
+      --  each take 30 ms: in the node's default (mutually exclusive) group
+      --  they never overlap; in a reentrant group they do.
+      protected Overlap is
+         procedure Enter;
+         procedure Leave;
+         procedure Reset;
+         function Most return Natural;
+      private
+         Now, Max : Natural := 0;
+      end Overlap;
+      protected body Overlap is
+         procedure Enter is
+         begin
+            Now := Now + 1;
+            Max := Natural'Max (Max, Now);
+         end Enter;
+         procedure Leave is
+         begin
+            Now := Now - 1;
+         end Leave;
+         procedure Reset is
+         begin
+            Now := 0;
+            Max := 0;
+         end Reset;
+         function Most return Natural is (Max);
+      end Overlap;
+      Runs : Natural := 0 with Atomic;
+
+      procedure Busy is
+      begin
+         Overlap.Enter;
+         delay 0.03;
+         Overlap.Leave;
+         Runs := Runs + 1;
+      end Busy;
+
+      procedure On_Tick
+        (Node : in out RCL.Nodes.Node'Class; Timer : in out RCL.Timers.Timer;
+         Elapsed : Duration)
+      is
+         pragma Unreferenced (Node, Timer, Elapsed);
+      begin
+         Busy;
+      end On_Tick;
+
+      procedure On_Sample
+        (Node : in out Nodes.Node'Class; Data : RCL.DDS.Byte_Array; Info : ROSIDL.Message_Info)
+      is
+         pragma Unreferenced (Node, Data, Info);
+      begin
+         Busy;
+      end On_Sample;
+
+      function Most_Overlap (Kind : Callback_Group_Kind; Topic : String) return Natural is
+         N   : Node := Init ("groups_test_" & Topic);
+         Pub : constant RCL.Publishers.Publisher := N.Publish_Raw (Type_Name, Topic);
+         E   : RCL.Executors.Concurrent.Tuned_Executor
+           (Max_Nodes => 1, Queue_Size => 16, Threads => 3,
+            Priority => System.Default_Priority);
+      begin
+         if Kind = Reentrant then
+            N.Set_Callback_Group (N.Create_Callback_Group (Reentrant));
+         end if;
+         Assert (Nodes.Kind (N.Current_Callback_Group) = Kind, "current group set");
+         N.Timer_Add (0.01, On_Tick'Access);
+         N.Timer_Add (0.01, On_Tick'Access);
+         N.Subscribe_Raw (Type_Name, Topic, On_Sample'Access);
+         Overlap.Reset;
+         Runs := 0;
+         E.Add (N);
+         for I in 1 .. 100 loop
+            exit when Runs >= 30;
+            Pub.Publish_Raw (Payload (I));
+            E.Spin (During => 0.02);
+         end loop;
+         E.Shutdown;
+         Assert (Runs >= 30, "callbacks ran:" & Runs'Image);
+         return Overlap.Most;
+      end Most_Overlap;
+
+      Exclusive_Most : constant Natural := Most_Overlap (Mutually_Exclusive, "groups_excl");
+      Reentrant_Most : constant Natural := Most_Overlap (Reentrant, "groups_reent");
+   begin
+      Assert (Exclusive_Most = 1, "default group: one callback at a time, saw"
+              & Exclusive_Most'Image);
+      Assert (Reentrant_Most >= 2, "reentrant group: callbacks in parallel, saw at most"
+              & Reentrant_Most'Image);
+      declare
+         A : Node := Init ("groups_owner_a");
+         B : constant Node := Init ("groups_owner_b");
+         G : constant Callback_Group := A.Create_Callback_Group (Reentrant);
+      begin
+         Assert (Belongs_To (G, A) and not Belongs_To (G, B), "a group belongs to its node");
+         Assert (Belongs_To (B.Default_Callback_Group, B), "the default group");
+         Assert (Id (A.Create_Callback_Group (Mutually_Exclusive)) = Id (G) + 1,
+                 "groups numbered in order");
+      end;
+   end Callback_Groups;
+
    Typed_Count : Natural := 0;
    Typed_Text  : access String;
 
@@ -423,6 +525,8 @@ package body RCL.Nodes.Tests is
                                       Publisher_Liveliness'Access));
       Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
       Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
+      Result.Add_Test (Caller.Create ("nodes: callback groups in the concurrent executor",
+                                      Callback_Groups'Access));
       Result.Add_Test (Caller.Create ("nodes: errors", Errors'Access));
       Result.Add_Test (Caller.Create ("nodes: malformed bytes", Malformed_Bytes'Access));
       Result.Add_Test (Caller.Create ("nodes: 3 MB message", Big_Message'Access));

@@ -317,6 +317,90 @@ package body RCL.Services.Tests is
          raise;
    end Calls;
 
+   --  Futures -----------------------------------------------------------------
+
+   procedure Futures (Unused : in out Fixture) is
+      --  The service and the client are on one node that nobody else spins:
+      --  only Spin_Until_Complete makes the service answer.
+      use type RCL.Clients.Future_Return_Code;
+      Node   : RCL.Nodes.Node := RCL.Nodes.Init ("future_test", "/svc_tests");
+      Client : RCL.Clients.Client;
+      Served : Natural := 0;
+
+      procedure Adder
+        (Node     : in out RCL.Nodes.Node'Class;
+         Request  : ROSIDL.Dynamic.Message;
+         Response : in out ROSIDL.Dynamic.Message)
+      is
+         pragma Unreferenced (Node);
+      begin
+         Served := Served + 1;
+         Response ("sum").As_Int64 := Request ("a").As_Int64 + Request ("b").As_Int64;
+      end Adder;
+
+      function Request (A, B : ROSIDL.Int64) return ROSIDL.Dynamic.Message is
+         R : constant ROSIDL.Dynamic.Message :=
+           ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Add_Support));
+      begin
+         R ("a").As_Int64 := A;
+         R ("b").As_Int64 := B;
+         return R;
+      end Request;
+   begin
+      Node.Serve (Add_Support, "future_adder", Adder'Access);
+      Client.Init (Node, Add_Support, "future_adder");
+      Assert (Client.Wait_For_Service (10.0), "service available");
+      declare
+         F : RCL.Clients.Future;
+      begin
+         Assert (not RCL.Clients.Is_Pending (F), "a new future stands for no call");
+         Client.Call_Future (Request (20, 22), F);
+         Assert (RCL.Clients.Is_Pending (F), "pending once called");
+         Assert (RCL.Clients.Wait (F, Timeout => 0.3) = RCL.Clients.Timed_Out,
+                 "nobody spins the node: no response");
+         Assert (not RCL.Clients.Is_Ready (F) and Served = 0, "not served yet");
+         Assert (RCL.Clients.Spin_Until_Complete (Node, F, Timeout => 10.0)
+                   = RCL.Clients.Success,
+                 "spinning the node serves the request");
+         Assert (RCL.Clients.Is_Ready (F) and Served = 1, "ready, served once");
+         Assert (Sum_Of (RCL.Clients.Response (F)) = 42, "20 + 22");
+         Assert (Sum_Of (RCL.Clients.Response (F)) = 42, "the response stays available");
+      end;
+      --  Several futures at once, completed in any order.
+      declare
+         F1, F2, F3 : RCL.Clients.Future;
+      begin
+         Client.Call_Future (Request (1, 1), F1);
+         Client.Call_Future (Request (2, 2), F2);
+         Client.Call_Future (Request (3, 3), F3);
+         Assert (RCL.Clients.Spin_Until_Complete (Node, F3, 10.0) = RCL.Clients.Success
+                 and then RCL.Clients.Spin_Until_Complete (Node, F1, 10.0) = RCL.Clients.Success
+                 and then RCL.Clients.Spin_Until_Complete (Node, F2, 10.0) = RCL.Clients.Success,
+                 "three futures complete");
+         Assert (Sum_Of (RCL.Clients.Response (F1)) = 2
+                 and Sum_Of (RCL.Clients.Response (F2)) = 4
+                 and Sum_Of (RCL.Clients.Response (F3)) = 6, "each its own response");
+      end;
+      --  A future dropped before its response: the late reply is dropped.
+      declare
+         F : RCL.Clients.Future;
+      begin
+         Client.Call_Future (Request (5, 5), F);
+      end;
+      Node.Spin (During => 0.2);
+      Assert (Client.Pending_Async = 0, "nothing left pending");
+      --  A missing service: the wait ends at its timeout.
+      declare
+         Nobody : RCL.Clients.Client;
+         F      : RCL.Clients.Future;
+      begin
+         Nobody.Init (Node, Add_Support, "nobody_serves_this_future");
+         Nobody.Call_Future (Request (1, 1), F);
+         Assert (RCL.Clients.Spin_Until_Complete (Node, F, 0.3) = RCL.Clients.Timed_Out,
+                 "Timed_Out for a missing service");
+      end;
+   end Futures;
+
    --  Graph queries on this process's own endpoints -------------------------
 
    procedure Own_Graph (Unused : in out Fixture) is
@@ -372,6 +456,8 @@ package body RCL.Services.Tests is
       Result.Add_Test (Caller.Create ("services: client/service ids, USER_DATA", Ids'Access));
       Result.Add_Test (Caller.Create ("services: sync, concurrent, async calls, timeout",
                                       Calls'Access));
+      Result.Add_Test (Caller.Create ("services: futures, spin until complete",
+                                      Futures'Access));
       Result.Add_Test (Caller.Create ("graph: own topics, services, QoS", Own_Graph'Access));
       return Result;
    end Suite;
