@@ -49,6 +49,8 @@ begin
       Lifecycle_Command (Args);
    elsif Verb = "security" then
       Security_Command (Args);
+   elsif Verb = "bag" then
+      Bag_Command (Args);
    else
       raise Usage_Error with "unknown verb '" & Verb & "'";
    end if;
@@ -58,7 +60,7 @@ exception
       Put_Line (Standard_Error, "rclada: " & Ada.Exceptions.Exception_Message (E));
       Put_Line (Standard_Error, Usage ((if Verb in "node" | "topic" | "service" | "param"
                                           | "interface" | "action"
-                                          | "lifecycle" | "security" then Verb else "")));
+                                          | "lifecycle" | "security" | "bag" then Verb else "")));
       CL.Set_Exit_Status (2);
    when E : Command_Error | RCL.ROS_Exception | RCL.RCL_Timeout | ROSIDL.Unknown_Type
       | ROSIDL.Definition_Error | RCL.Names.Name_Error =>

@@ -93,6 +93,18 @@ package body Rclada_Commands is
            & LF
            & "       rclada interface package PACKAGE" & LF
            & "  TYPE: pkg/msg/Name, pkg/srv/Name or pkg/action/Name";
+      elsif Verb = "bag" then
+         return "usage: rclada bag record (-a | TOPIC...) [-o DIR] [--duration S]"
+           & " [-b|--max-bag-size BYTES]" & LF
+           & "                         [-d|--max-bag-duration S] [--compression none|zstd|lz4]"
+           & " [--include-hidden-topics]" & LF
+           & "       rclada bag info BAG [--recover]" & LF
+           & "       rclada bag play BAG [-r|--rate R] [-l|--loop] [--clock [HZ]]"
+           & " [--topics TOPIC...] [--delay S]" & LF
+           & "  BAG: a rosbag2 directory (metadata.yaml, *.mcap) or one .mcap file." & LF
+           & "  record stops at Ctrl-C or after --duration; -b / -d start a new file" & LF
+           & "  at that size / span. play keeps the recorded timing (scaled by --rate)" & LF
+           & "  and with --clock publishes /clock (default 40 Hz).";
       elsif Verb = "security" then
          return "usage: rclada security create_keystore DIR" & LF
            & "       rclada security create_enclave DIR /ENCLAVE" & LF
@@ -112,6 +124,7 @@ package body Rclada_Commands is
            & "  lifecycle  nodes | get NODE | set NODE TRANSITION | list NODE" & LF
            & "  security   create_keystore | create_enclave | create_permission | list_enclaves"
            & LF
+           & "  bag        record (-a | TOPIC...) [-o DIR] | info BAG | play BAG [--rate R]" & LF
            & "The network is the one of ROS_DOMAIN_ID (CYCLONEDDS_URI, ROS_LOCALHOST_ONLY).";
       end if;
    end Usage;
@@ -922,6 +935,8 @@ package body Rclada_Commands is
    procedure Lifecycle_Command (Args : Arguments) is separate;
 
    procedure Security_Command (Args : Arguments) is separate;
+
+   procedure Bag_Command (Args : Arguments) is separate;
 
    ---------------
    -- Interface --

@@ -23,6 +23,7 @@ package Rclada_Commands is
    procedure Action_Command (Args : Arguments);
    procedure Lifecycle_Command (Args : Arguments);
    procedure Security_Command (Args : Arguments);
+   procedure Bag_Command (Args : Arguments);
 
    function Usage (Verb : String) return String;
    --  The help text of a verb ("" for the command itself).

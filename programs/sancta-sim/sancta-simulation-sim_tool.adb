@@ -245,6 +245,74 @@ package body Sancta.Simulation.Sim_Tool is
 
       Template     : Simulators.Robot_Config := Simulators.Default_Robot;
 
+      --  Standard visualization topics: /tf (map -> <robot>/odom ->
+      --  <robot>/base_link at the odometry rate; map -> odom is what a
+      --  perfect localizer would publish, so that the chain gives the ground
+      --  truth), /tf_static (<robot>/base_link -> <robot>/laser, the scan's
+      --  frame; every robot in one latched message) and /map (the world's
+      --  occupancy grid, latched).
+      TF_Support  : constant Message_Support := Get_Message_Support ("tf2_msgs", "TFMessage");
+      Map_Support : constant Message_Support :=
+        Get_Message_Support ("nav_msgs", "OccupancyGrid");
+      Latched     : constant RCL.QoS.Profile :=
+        (RCL.QoS.Default with delta Depth => 1, Durability => RCL.QoS.Transient_Local);
+      TF_Pub      : RCL.Publishers.Publisher :=
+        Main.Publish (TF_Support, "/tf", (RCL.QoS.Default with delta Depth => 100));
+      Static_Pub  : RCL.Publishers.Publisher := Main.Publish (TF_Support, "/tf_static", Latched);
+      Map_Pub     : RCL.Publishers.Publisher := Main.Publish (Map_Support, "/map", Latched);
+      TF_Msg      : constant Message := Init (TF_Support);
+
+      procedure Set_Transform
+        (Item : Field_Ref; T : Real; Parent, Child : String; P : Pose) is
+         Target : constant Pose_Fields :=
+           (X  => Item ("transform")("translation")("x"),
+            Y  => Item ("transform")("translation")("y"),
+            Z  => Item ("transform")("translation")("z"),
+            Qx => Item ("transform")("rotation")("x"),
+            Qy => Item ("transform")("rotation")("y"),
+            Qz => Item ("transform")("rotation")("z"),
+            Qw => Item ("transform")("rotation")("w"));
+      begin
+         Set_Stamp (Header_Fields_Of (Item ("header")), T, Parent);
+         Item ("child_frame_id").Set_String (Child);
+         Set_Pose (Target, P);
+      end Set_Transform;
+
+      procedure Publish_Static_Transforms is
+         Static : constant Message := Init (TF_Support);
+         List   : constant Array_Ref := Static ("transforms").As_Array;
+      begin
+         List.Resize (Natural (IO.Length));
+         for I in 1 .. Natural (IO.Length) loop
+            Set_Transform (List.Element (I), Sim.Clock, To_String (IO (I).Name) & "/base_link",
+                           To_String (IO (I).Name) & "/laser", (0.0, 0.0, 0.0));
+         end loop;
+         Static_Pub.Publish (Static);
+      end Publish_Static_Transforms;
+
+      procedure Publish_Map is
+         Grid : constant Sancta.Robot.Grids.Grid := World.Occupancy;
+         Msg  : constant Message := Init (Map_Support);
+         Cells : ROSIDL.Dynamic.Int8_Array (1 .. (Grid.Last_Column + 1) * (Grid.Last_Row + 1));
+         Info : constant Field_Ref := Msg ("info");
+      begin
+         --  Row-major from the grid's origin (OccupancyGrid's layout):
+         --  100 occupied, 0 free.
+         for J in 0 .. Grid.Last_Row loop
+            for I in 0 .. Grid.Last_Column loop
+               Cells (J * (Grid.Last_Column + 1) + I + 1) :=
+                 (if Grid.Occupied (I, J) then 100 else 0);
+            end loop;
+         end loop;
+         Set_Stamp (Header_Fields_Of (Msg ("header")), 0.0, "map");
+         Info ("resolution").As_Float32 := ROSIDL.Float32 (Grid.Resolution);
+         Info ("width").As_UInt32 := ROSIDL.UInt32 (Grid.Last_Column + 1);
+         Info ("height").As_UInt32 := ROSIDL.UInt32 (Grid.Last_Row + 1);
+         Set_Pose (Pose_Fields_Of (Info ("origin")), (Grid.Origin.X, Grid.Origin.Y, 0.0));
+         Msg ("data").Set_Int8_Array (Cells);
+         Map_Pub.Publish (Msg);
+      end Publish_Map;
+
       procedure Say (Text : String) is
       begin
          if not Quiet then
@@ -284,6 +352,7 @@ package body Sancta.Simulation.Sim_Tool is
          R.Node.Subscribe_Raw (DDS_Type_Name (Twist_Support), "cmd_vel", Ignore_Sample'Access);
          R.Cmd := R.Node.Get_Subscription (R.Node.Subscription_Count);
          IO.Append (R);
+         Publish_Static_Transforms;
       end Add;
 
       procedure Publish_Readings (R : in out Robot_IO; With_Truth : Boolean) is
@@ -310,6 +379,18 @@ package body Sancta.Simulation.Sim_Tool is
                Odom_Linear.As_Float64 := ROSIDL.Float64 (O.Velocity.Linear_X);
                Odom_Angular.As_Float64 := ROSIDL.Float64 (O.Velocity.Angular_Z);
                R.Odom.Publish (Odom_Msg);
+               declare
+                  Truth : constant Pose := Sim.Ground_Truth (R.Id).Pose;
+                  List  : constant Array_Ref := TF_Msg ("transforms").As_Array;
+                  Name  : constant String := To_String (R.Name);
+               begin
+                  List.Resize (2);
+                  Set_Transform (List.Element (1), O.Stamp, "map", Name & "/odom",
+                                 Compose (Truth, Relative (Rel, (0.0, 0.0, 0.0))));
+                  Set_Transform (List.Element (2), O.Stamp, Name & "/odom", Name & "/base_link",
+                                 Rel);
+                  TF_Pub.Publish (TF_Msg);
+               end;
             end;
          end if;
          Count := Sim.Scan_Count (R.Id);
@@ -323,7 +404,7 @@ package body Sancta.Simulation.Sim_Tool is
                for I in Ranges'Range loop
                   Ranges (I) := ROSIDL.Float32 (Scan.Ranges (I));
                end loop;
-               Set_Stamp (Scan_Header, Scan.Stamp, To_String (R.Name) & "/base_link");
+               Set_Stamp (Scan_Header, Scan.Stamp, To_String (R.Name) & "/laser");
                Scan_Angle_Min.As_Float32 := ROSIDL.Float32 (Scan.Angle_Min);
                Scan_Angle_Max.As_Float32 := ROSIDL.Float32 (Scan.Angle_Max);
                Scan_Angle_Increment.As_Float32 := ROSIDL.Float32 (Scan.Angle_Increment);
@@ -495,6 +576,7 @@ package body Sancta.Simulation.Sim_Tool is
       Next_Truth : Real := 0.0;
    begin
       Sim.Initialize (World, Seed);
+      Publish_Map;
       Main.Serve (Control, "/sancta_sim/control", Answer'Access);
       if not Robots.Is_Empty then
          Template := Robots.First_Element.Config;

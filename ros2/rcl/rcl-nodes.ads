@@ -289,7 +289,7 @@ package RCL.Nodes is
       Group    : Callback_Group;
    end record;
 
-   Max_Subscriptions : constant := 64;
+   Max_Subscriptions : constant := 256;
    Max_Timers        : constant := 64;
 
    function Graph_Id (This : Node) return RCL.Graph.Node_Id;

@@ -1,6 +1,7 @@
 with Ada.Containers;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Indefinite_Vectors;
+with Ada.Containers.Vectors;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
@@ -49,6 +50,8 @@ package body Sancta.Components.GUI_Relay is
       Node        : Node_Access;
       Robots_Pub  : Publisher_Access;
       Plan_Pub    : Publisher_Access;
+      Markers_Pub : Publisher_Access;
+      Path_Pub    : Publisher_Access;
       Agent       : Agents.Agent_Access;
       Period      : Ada.Real_Time.Time_Span;
       Here        : Pose;
@@ -93,6 +96,79 @@ package body Sancta.Components.GUI_Relay is
       return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
    end Support;
 
+   function Standard_Support (Package_Name, Name : String)
+                              return ROSIDL.Typesupport.Message_Support is
+     (ROSIDL.Typesupport.Get_Message_Support (Package_Name, Name));
+
+   function Topic_Part (Id : String) return String is
+      Result : String := Id;
+   begin
+      for C of Result loop
+         if C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then
+            C := '_';
+         end if;
+      end loop;
+      return Result;
+   end Topic_Part;
+   --  An agent id as a topic name token.
+
+   --  Standard visualization messages (RViz, Foxglove) -------------------------
+
+   procedure Set_Point (Target : Field_Ref; P : Point; Z : Real := 0.0) is
+   begin
+      Target ("x").As_Float64 := ROSIDL.Float64 (P.X);
+      Target ("y").As_Float64 := ROSIDL.Float64 (P.Y);
+      Target ("z").As_Float64 := ROSIDL.Float64 (Z);
+   end Set_Point;
+
+   type Colour is record
+      R, G, B : ROSIDL.Float32;
+   end record;
+
+   procedure Set_Colour (Target : Field_Ref; C : Colour; Alpha : ROSIDL.Float32 := 1.0) is
+   begin
+      Target ("r").As_Float32 := C.R;
+      Target ("g").As_Float32 := C.G;
+      Target ("b").As_Float32 := C.B;
+      Target ("a").As_Float32 := Alpha;
+   end Set_Colour;
+
+   function State_Colour (State : String) return Colour is
+     (if State = "done" then (0.2, 0.7, 0.2)
+      elsif State = "active" then (1.0, 0.55, 0.0)
+      elsif State = "assigned" then (0.2, 0.4, 0.9)
+      elsif State = "reallocated" then (0.85, 0.1, 0.1)
+      else (0.6, 0.6, 0.6));
+   --  Tasks by state: pending grey, assigned blue, active orange, done
+   --  green, reallocated red (the view's colours).
+
+   Robot_Colours : constant array (0 .. 5) of Colour :=
+     [Colour'(0.12, 0.47, 0.71), Colour'(1.0, 0.5, 0.05), Colour'(0.17, 0.63, 0.17),
+      Colour'(0.58, 0.4, 0.74), Colour'(0.55, 0.34, 0.29), Colour'(0.89, 0.47, 0.76)];
+
+   Marker_Sphere : constant := 2;
+   Marker_Line_Strip : constant := 4;
+   Marker_Text : constant := 9;
+   Marker_Delete_All : constant := 3;
+   --  visualization_msgs/Marker's type and action constants.
+
+   function Step_Points
+     (Round : Plans.Snapshot; Step : Plans.Step) return Missions.Point_Vectors.Vector is
+      --  Where a tour step takes the robot: the chosen entry, then the exit
+      --  when the task is a segment.
+      T      : constant Missions.Mission_Task := Plans.Task_Of (Round, To_String (Step.Task_Id));
+      Result : Missions.Point_Vectors.Vector;
+   begin
+      Result.Append (Missions.Entry_Point (T, Step.Choice));
+      if Missions.Exit_Point (T, Step.Choice) /= Missions.Entry_Point (T, Step.Choice) then
+         Result.Append (Missions.Exit_Point (T, Step.Choice));
+      end if;
+      return Result;
+   exception
+      when others =>
+         return Missions.Point_Vectors.Empty_Vector;  --  A task the round does not know (yet).
+   end Step_Points;
+
    overriding procedure Start (This : in out Relay) is
       Prefix : constant String := "/sancta/" & This.Option_Text ("team") & "/";
    begin
@@ -104,8 +180,18 @@ package body Sancta.Components.GUI_Relay is
         (This.Node.Publish (Support ("TeamPlan"), Prefix & Plan_Topic,
                             (RCL.QoS.Default with delta
                                Depth => 1, Durability => RCL.QoS.Transient_Local)));
+      This.Markers_Pub := new RCL.Publishers.Publisher'
+        (This.Node.Publish (Standard_Support ("visualization_msgs", "MarkerArray"),
+                            Prefix & Markers_Topic,
+                            (RCL.QoS.Default with delta
+                               Depth => 1, Durability => RCL.QoS.Transient_Local)));
+      This.Path_Pub := new RCL.Publishers.Publisher'
+        (This.Node.Publish (Standard_Support ("nav_msgs", "Path"),
+                            Prefix & Paths_Topic & "/" & Topic_Part (This.Agent_Id)));
       This.Subscribe ("pose");
-      This.Log (Logging.Info, "relaying to GUIs on " & Prefix & "gui/{robots,plan}");
+      This.Log (Logging.Info, "relaying to GUIs on " & Prefix & "gui/{robots,plan}, "
+                & Prefix & Markers_Topic & ", " & Prefix & Paths_Topic & "/"
+                & Topic_Part (This.Agent_Id));
    end Start;
 
    overriding procedure Stop (This : in out Relay) is
@@ -113,6 +199,8 @@ package body Sancta.Components.GUI_Relay is
       Base_Component (This).Stop;
       Free (This.Robots_Pub);
       Free (This.Plan_Pub);
+      Free (This.Markers_Pub);
+      Free (This.Path_Pub);
       Free (This.Node);
    end Stop;
 
@@ -263,9 +351,111 @@ package body Sancta.Components.GUI_Relay is
       Msg ("choices").Set_UInt32_Array (Choices);
       Msg ("distance").As_Float64 := ROSIDL.Float64 (This.Distance);
       This.Robots_Pub.Publish (Msg);
+      --  nav_msgs/Path: from the robot along its remaining tour.
+      declare
+         Path  : constant Message := Init (Standard_Support ("nav_msgs", "Path"));
+         Poses : constant Array_Ref := Path ("poses").As_Array;
+         Along : Missions.Point_Vectors.Vector;
+      begin
+         Along.Append (Position (This.Here));
+         for Step of Left loop
+            Along.Append (Step_Points (This.Round, Step));
+         end loop;
+         Path ("header")("frame_id").Set_String ("map");
+         Poses.Resize (Natural (Along.Length));
+         for I in 1 .. Natural (Along.Length) loop
+            Poses.Element (I)("header")("frame_id").Set_String ("map");
+            Set_Point (Poses.Element (I)("pose")("position"), Along (I));
+            Poses.Element (I)("pose")("orientation")("w").As_Float64 := 1.0;
+         end loop;
+         This.Path_Pub.Publish (Path);
+      end;
    end Publish_Robot;
 
+   type Shown_Task is record
+      Id    : Unbounded_String;
+      Where : Point;
+      State : Unbounded_String;
+   end record;
+   package Shown_Vectors is new Ada.Containers.Vectors (Positive, Shown_Task);
+
+   procedure Publish_Markers (This : in out Relay; Shown : Shown_Vectors.Vector) is
+      --  visualization_msgs/MarkerArray: a DELETEALL (the array replaces the
+      --  last one), a sphere and a label per task (coloured by state), a
+      --  line strip per robot of the round along its tour.
+      Msg     : constant Message := Init (Standard_Support ("visualization_msgs", "MarkerArray"));
+      Markers : constant Array_Ref := Msg ("markers").As_Array;
+      Count   : constant Natural :=
+        1 + 2 * Natural (Shown.Length)
+        + (if This.Plan.Generation > 0 then Natural (This.Plan.Tours.Length) else 0);
+      N       : Natural := 0;
+
+      function Next (Name_Space : String; Id : Natural; Kind : ROSIDL.Int32) return Field_Ref is
+      begin
+         N := N + 1;
+         declare
+            M : constant Field_Ref := Markers.Element (N);
+         begin
+            M ("header")("frame_id").Set_String ("map");
+            M ("ns").Set_String (Name_Space);
+            M ("id").As_Int32 := ROSIDL.Int32 (Id);
+            M ("type").As_Int32 := Kind;
+            M ("pose")("orientation")("w").As_Float64 := 1.0;
+            return M;
+         end;
+      end Next;
+   begin
+      Markers.Resize (Count);
+      declare
+         Clear : constant Field_Ref := Next ("", 0, Marker_Sphere);
+      begin
+         Clear ("action").As_Int32 := Marker_Delete_All;
+      end;
+      for K in 1 .. Natural (Shown.Length) loop
+         declare
+            S     : Shown_Task renames Shown (K);
+            Ball  : constant Field_Ref := Next ("tasks", K, Marker_Sphere);
+            Label : constant Field_Ref := Next ("labels", K, Marker_Text);
+         begin
+            Set_Point (Ball ("pose")("position"), S.Where);
+            Ball ("scale")("x").As_Float64 := 0.35;
+            Ball ("scale")("y").As_Float64 := 0.35;
+            Ball ("scale")("z").As_Float64 := 0.35;
+            Set_Colour (Ball ("color"), State_Colour (To_String (S.State)));
+            Set_Point (Label ("pose")("position"), S.Where, Z => 0.6);
+            Label ("scale")("z").As_Float64 := 0.35;
+            Set_Colour (Label ("color"), (1.0, 1.0, 1.0));
+            Label ("text").Set_String (To_String (S.Id) & " (" & To_String (S.State) & ")");
+         end;
+      end loop;
+      if This.Plan.Generation > 0 then
+         for K in 1 .. Natural (This.Plan.Tours.Length) loop
+            declare
+               Line   : constant Field_Ref := Next ("tours", K, Marker_Line_Strip);
+               Points : constant Array_Ref := Line ("points").As_Array;
+               Along  : Missions.Point_Vectors.Vector;
+            begin
+               if K <= Natural (This.Round.Robots.Length) then
+                  Along.Append (This.Round.Robots (K).Where);
+                  Line ("text").Set_String (To_String (This.Round.Robots (K).Id));
+               end if;
+               for Step of This.Plan.Tours (K) loop
+                  Along.Append (Step_Points (This.Round, Step));
+               end loop;
+               Points.Resize (Natural (Along.Length));
+               for I in 1 .. Natural (Along.Length) loop
+                  Set_Point (Points.Element (I), Along (I));
+               end loop;
+               Line ("scale")("x").As_Float64 := 0.08;
+               Set_Colour (Line ("color"), Robot_Colours ((K - 1) mod Robot_Colours'Length));
+            end;
+         end loop;
+      end if;
+      This.Markers_Pub.Publish (Msg);
+   end Publish_Markers;
+
    procedure Publish_Plan (This : in out Relay) is
+      Shown : Shown_Vectors.Vector;
       Msg   : constant Message := Init (Support ("TeamPlan"));
       Ids   : constant Text_Vectors.Vector := Mission_Ids (This);
       Tasks : constant Array_Ref := Msg ("tasks").As_Array;
@@ -337,6 +527,9 @@ package body Sancta.Components.GUI_Relay is
                end if;
                E ("state").Set_String (To_String (State));
                E ("robot").Set_String (To_String (Robot));
+               Shown.Append (Shown_Task'(Id    => To_Unbounded_String (Id),
+                                         Where => T.Points.First_Element,
+                                         State => State));
                Append (Content, Id & "=" & State & "," & Robot & ";");
             end;
          exception
@@ -354,6 +547,7 @@ package body Sancta.Components.GUI_Relay is
       end loop;
       if Content /= This.Last_Plan or else This.Unchanged >= Resend then
          This.Plan_Pub.Publish (Msg);
+         Publish_Markers (This, Shown);
          This.Last_Plan := Content;
          This.Unchanged := 0;
       else

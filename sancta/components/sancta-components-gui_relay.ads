@@ -18,6 +18,11 @@
 --    the robots of the round and every mission task with its points, its
 --    chosen alternative and its state (pending, assigned, active, done,
 --    reallocated: planned now for another robot than when first planned).
+--  * the same plan for RViz and Foxglove: a visualization_msgs/MarkerArray
+--    on /sancta/<team>/markers (transient-local depth 1; a sphere and a
+--    label per task coloured by state, a line strip per robot along its
+--    tour, frame "map") and, from a robot, a nav_msgs/Path of its remaining
+--    tour on /sancta/<team>/paths/<agent>.
 --  Costs are straight-line lengths (the view's drawing of the tours). Both
 --  inputs are optional: an operator relays the plan only.
 package Sancta.Components.GUI_Relay is
@@ -25,6 +30,8 @@ package Sancta.Components.GUI_Relay is
 
    Robots_Topic : constant String := "gui/robots";
    Plan_Topic   : constant String := "gui/plan";
+   Markers_Topic : constant String := "markers";
+   Paths_Topic  : constant String := "paths";
    --  Under /sancta/<team>/.
 
 end Sancta.Components.GUI_Relay;

@@ -1,4 +1,6 @@
 with Ada.Directories;
+with Ada.Numerics;
+with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Grids;
@@ -9,6 +11,7 @@ package body Sancta.Simulation.Rendering is
    use Ada.Strings.Unbounded;
    use Images;
    use Robot.Grids;
+   use Ada.Numerics.Long_Elementary_Functions;
 
    function RGB (R, G, B : Byte) return Color is ((R, G, B));
 
@@ -38,6 +41,156 @@ package body Sancta.Simulation.Rendering is
       return (if V < 0 then "-" else "") & I (2 .. I'Last) & "." & Frac;
    end Num;
 
+   ------------------
+   -- Place_Labels --
+   ------------------
+
+   function Place_Labels
+     (Anchors_X, Anchors_Y : Pixel_Array;
+      Widths               : Pixel_Array;
+      Height               : Natural;
+      Left, Top, Right, Bottom : Integer) return Label_Boxes
+   is
+      N      : constant Natural := Anchors_X'Length;
+      Result : Label_Boxes (1 .. N);
+
+      function Inside (B : Label_Box) return Boolean is
+        (B.X >= Left and then B.Y >= Top and then B.X + B.Width - 1 <= Right
+         and then B.Y + B.Height - 1 <= Bottom);
+
+      function Overlaps (A, B : Label_Box) return Boolean is
+        (A.X <= B.X + B.Width and then B.X <= A.X + A.Width
+         and then A.Y <= B.Y + B.Height and then B.Y <= A.Y + A.Height);
+      --  With one pixel of air between boxes.
+
+      function Free (B : Label_Box; Placed : Natural; Self : Positive) return Boolean is
+      begin
+         for K in 1 .. Placed loop
+            if Overlaps (B, Result (K)) then
+               return False;
+            end if;
+         end loop;
+         --  Nor over another marker.
+         for K in 1 .. N loop
+            if K /= Self and then Anchors_X (K) in B.X - 3 .. B.X + B.Width + 3
+              and then Anchors_Y (K) in B.Y - 3 .. B.Y + B.Height + 3
+            then
+               return False;
+            end if;
+         end loop;
+         return True;
+      end Free;
+   begin
+      for I in 1 .. N loop
+         declare
+            AX   : constant Integer := Anchors_X (I);
+            AY   : constant Integer := Anchors_Y (I);
+            W    : constant Natural := Widths (I);
+            H    : constant Natural := Height;
+            Near : constant array (1 .. 8) of Label_Box :=
+              [Label_Box'(AX + 7, AY - H / 2, W, H, False),
+               Label_Box'(AX - 7 - W, AY - H / 2, W, H, False),
+               Label_Box'(AX - W / 2, AY - H - 6, W, H, False),
+               Label_Box'(AX - W / 2, AY + 6, W, H, False),
+               Label_Box'(AX + 6, AY - H - 5, W, H, False),
+               Label_Box'(AX + 6, AY + 5, W, H, False),
+               Label_Box'(AX - 6 - W, AY - H - 5, W, H, False),
+               Label_Box'(AX - 6 - W, AY + 5, W, H, False)];
+            Found : Boolean := False;
+         begin
+            for B of Near loop
+               if Inside (B) and then Free (B, I - 1, I) then
+                  Result (I) := B;
+                  Found := True;
+                  exit;
+               end if;
+            end loop;
+            --  Farther, on rings around the marker, with a leader line.
+            Ring :
+            for Radius in 2 .. 12 loop
+               exit Ring when Found;
+               for Step in 0 .. 15 loop
+                  declare
+                     A  : constant Long_Float := 2.0 * Ada.Numerics.Pi * Long_Float (Step) / 16.0;
+                     CX : constant Integer := AX + Integer (Long_Float (Radius * 10) * Cos (A));
+                     CY : constant Integer := AY - Integer (Long_Float (Radius * 10) * Sin (A));
+                     B  : constant Label_Box := (CX - W / 2, CY - H / 2, W, H, True);
+                  begin
+                     if Inside (B) and then Free (B, I - 1, I) then
+                        Result (I) := B;
+                        Found := True;
+                        exit Ring;
+                     end if;
+                  end;
+               end loop;
+            end loop Ring;
+            if not Found then
+               --  Nowhere free: right of the marker, moved inside.
+               Result (I) :=
+                 (Integer'Max (Left, Integer'Min (AX + 7, Right - W + 1)),
+                  Integer'Max (Top, Integer'Min (AY - H / 2, Bottom - H + 1)), W, H, False);
+            end if;
+         end;
+      end loop;
+      return Result;
+   end Place_Labels;
+
+   --  The band below the world: legend entries left to right (wrapped), the
+   --  scale bar at the right of the first line.
+
+   Scale_Bar_Room : constant := 130;
+
+   procedure Legend_Layout
+     (S : Scene; Width : Natural; Char_Width : Positive;
+      Xs, Lines : out Pixel_Array; Line_Count : out Natural)
+   is
+      X : Integer := 8;
+      L : Natural := 1;
+   begin
+      Line_Count := (if S.Legend.Is_Empty and then not S.Scale_Bar then 0 else 1);
+      for I in 1 .. Natural (S.Legend.Length) loop
+         declare
+            W : constant Natural := 22 + Length (S.Legend (I).Text) * Char_Width;
+         begin
+            if X > 8 and then X + W > Width - (if S.Scale_Bar then Scale_Bar_Room else 8) then
+               X := 8;
+               L := L + 1;
+            end if;
+            Xs (I) := X;
+            Lines (I) := L;
+            X := X + W + 14;
+            Line_Count := Natural'Max (Line_Count, L);
+         end;
+      end loop;
+   end Legend_Layout;
+
+   function Layout_Height (S : Scene; Width : Natural; Char_Width : Positive;
+                           Line_Height : Positive) return Natural is
+      Xs, Lines  : Pixel_Array (1 .. Natural (S.Legend.Length));
+      Line_Count : Natural;
+   begin
+      Legend_Layout (S, Width, Char_Width, Xs, Lines, Line_Count);
+      return (if Line_Count = 0 then 0 else Line_Count * Line_Height + 8);
+   end Layout_Height;
+
+   function Bar_Metres (Scale : Real) return Real is
+      Lengths : constant array (1 .. 9) of Real :=
+        [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0];
+      Result  : Real := 1.0;
+   begin
+      for L of Lengths loop
+         if L * Scale <= 100.0 then
+            Result := L;
+         end if;
+      end loop;
+      return Result;
+   end Bar_Metres;
+   --  The longest round length drawn in at most 100 pixels.
+
+   function Bar_Text (Metres : Real) return String is
+     (Ada.Strings.Fixed.Trim (Integer (Metres)'Image, Ada.Strings.Left) & " m");
+
+
    ------------
    -- Render --
    ------------
@@ -48,15 +201,20 @@ package body Sancta.Simulation.Rendering is
       H_M    : constant Real := Real (F.Height) * F.Resolution;
       Width  : constant Natural := Natural'Max (1, Natural (W_M * Scale));
       Height : constant Natural := Natural'Max (1, Natural (H_M * Scale));
+      --  Of the world; the title band above it and the legend band below.
+      Line_H : constant := Glyphs.Glyph_Height + 7;
+      Top    : constant Natural := (if Length (S.Title) > 0 then Line_H + 4 else 0);
+      Below  : constant Natural := Layout_Height (S, Width, Glyphs.Advance, Line_H);
       Img    : Image :=
-        (if Width > Max_Side or else Height > Max_Side or else Width * Height > Max_Pixels
+        (if Width > Max_Side or else Height + Top + Below > Max_Side
+           or else Width * (Height + Top + Below) > Max_Pixels
          then raise Format_Error with "picture too large: lower the scale"
-         else Create (Width, Height));
+         else Create (Width, Height + Top + Below));
 
       function PX (P : Point) return Integer is
         (Integer (Real'Floor ((P.X - F.Origin.X) * Scale)) + 1);
       function PY (P : Point) return Integer is
-        (Height - Integer (Real'Floor ((P.Y - F.Origin.Y) * Scale)));
+        (Top + Height - Integer (Real'Floor ((P.Y - F.Origin.Y) * Scale)));
 
       procedure Dot (X, Y, R : Integer; C : Color) is
       begin
@@ -103,14 +261,14 @@ package body Sancta.Simulation.Rendering is
       end Circle;
    begin
       --  The world, cell by cell (pixel centres sampled).
-      for Y in 1 .. Images.Height (Img) loop
+      for Y in 1 .. Height loop
          for X in 1 .. Images.Width (Img) loop
             declare
                WX : constant Real := F.Origin.X + (Real (X) - 0.5) / Scale;
                WY : constant Real := F.Origin.Y + (Real (Height - Y) + 0.5) / Scale;
             begin
                if Worlds.Is_Occupied (World, Column (F, WX), Row (F, WY)) then
-                  Set (Img, X, Y, (50, 50, 50));
+                  Set (Img, X, Y + Top, (50, 50, 50));
                end if;
             end;
          end loop;
@@ -139,13 +297,83 @@ package body Sancta.Simulation.Rendering is
          Line (M.Where - (0.3, 0.3), M.Where + (0.3, 0.3), (200, 0, 0));
          Line (M.Where + (-0.3, 0.3), M.Where + (0.3, -0.3), (200, 0, 0));
       end loop;
-      --  Labels last, over every line (as in the SVG: right of the marker).
-      for M of S.Markers loop
-         if Length (M.Label) > 0 then
-            Glyphs.Draw_Text (Img, PX (M.Where) + 7, PY (M.Where) - Glyphs.Glyph_Height / 2,
-                              To_String (M.Label), (120, 0, 0));
-         end if;
-      end loop;
+      --  Labels last, over every line, where they fit (Place_Labels).
+      declare
+         N         : constant Natural := Natural (S.Markers.Length);
+         AX, AY, W : Pixel_Array (1 .. N);
+      begin
+         for I in 1 .. N loop
+            AX (I) := PX (S.Markers (I).Where);
+            AY (I) := PY (S.Markers (I).Where);
+            W (I) := Glyphs.Text_Width (To_String (S.Markers (I).Label)) + 1;
+         end loop;
+         declare
+            Boxes : constant Label_Boxes :=
+              Place_Labels (AX, AY, W, Glyphs.Glyph_Height + 2, 1, Top + 1, Width,
+                            Top + Height);
+         begin
+            for I in 1 .. N loop
+               if Length (S.Markers (I).Label) > 0 then
+                  if Boxes (I).Leader then
+                     Line (S.Markers (I).Where,
+                           (F.Origin.X + Real (Boxes (I).X + Boxes (I).Width / 2 - 1) / Scale,
+                            F.Origin.Y + Real (Top + Height - Boxes (I).Y
+                                               - Boxes (I).Height / 2) / Scale),
+                           (160, 160, 160), 0);
+                  end if;
+                  Glyphs.Draw_Text (Img, Boxes (I).X + 1, Boxes (I).Y + 1,
+                                    To_String (S.Markers (I).Label), (120, 0, 0));
+               end if;
+            end loop;
+         end;
+      end;
+      --  Title, legend, scale bar.
+      if Top > 0 then
+         Glyphs.Draw_Text (Img, 6, 5, To_String (S.Title), Black, Halo => False);
+      end if;
+      if Below > 0 then
+         declare
+            Xs, Lines  : Pixel_Array (1 .. Natural (S.Legend.Length));
+            Line_Count : Natural;
+            Band       : constant Integer := Top + Height;
+         begin
+            Legend_Layout (S, Width, Glyphs.Advance, Xs, Lines, Line_Count);
+            for I in Xs'Range loop
+               declare
+                  Y : constant Integer := Band + 4 + (Lines (I) - 1) * Line_H + Line_H / 2;
+               begin
+                  for DX in 0 .. 15 loop
+                     for DY in -1 .. 1 loop
+                        Set (Img, Xs (I) + DX, Y + DY, S.Legend (I).Color);
+                     end loop;
+                  end loop;
+                  Glyphs.Draw_Text (Img, Xs (I) + 20, Y - Glyphs.Glyph_Height / 2,
+                                    To_String (S.Legend (I).Text), Black, Halo => False);
+               end;
+            end loop;
+            if S.Scale_Bar then
+               declare
+                  Metres : constant Real := Bar_Metres (Scale);
+                  Pixels : constant Integer := Integer (Metres * Scale);
+                  X1     : constant Integer := Width - 8;
+                  X0     : constant Integer := X1 - Pixels;
+                  Y      : constant Integer := Band + 4 + Line_H / 2;
+                  Text   : constant String := Bar_Text (Metres);
+               begin
+                  for X in X0 .. X1 loop
+                     Set (Img, X, Y, Black);
+                     Set (Img, X, Y + 1, Black);
+                  end loop;
+                  for DY in -4 .. 4 loop
+                     Set (Img, X0, Y + DY, Black);
+                     Set (Img, X1, Y + DY, Black);
+                  end loop;
+                  Glyphs.Draw_Text (Img, X0 - Glyphs.Text_Width (Text) - 4,
+                                    Y - Glyphs.Glyph_Height / 2, Text, Black, Halo => False);
+               end;
+            end if;
+         end;
+      end if;
       return Img;
    end Render;
 
@@ -165,15 +393,45 @@ package body Sancta.Simulation.Rendering is
       H_M  : constant Real := Real (F.Height) * F.Resolution;
       Out_File : File_Type;
 
+      Char_W  : constant := 7;
+      --  Pixels per character of the 12-pixel sans-serif labels (DejaVu
+      --  Sans averages 0.55 em; a little more for safety).
+      Line_H  : constant := 20;
+      Width   : constant Natural := Natural (W_M * Scale);
+      Top     : constant Natural := (if Length (S.Title) > 0 then 26 else 0);
+      Below   : constant Natural := Layout_Height (S, Width, Char_W, Line_H);
+      Total_H : constant Real := H_M * Scale + Real (Top + Below);
+
       function SX (X : Real) return String is (Num ((X - F.Origin.X) * Scale));
-      function SY (Y : Real) return String is (Num ((F.Origin.Y + H_M - Y) * Scale));
+      function SY (Y : Real) return String is
+        (Num ((F.Origin.Y + H_M - Y) * Scale + Real (Top)));
+      function Img (N : Integer) return String is
+        (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+      function Escape (T : String) return String is
+         R : Unbounded_String;
+      begin
+         for C of T loop
+            case C is
+               when '<' => Append (R, "&lt;");
+               when '>' => Append (R, "&gt;");
+               when '&' => Append (R, "&amp;");
+               when others => Append (R, C);
+            end case;
+         end loop;
+         return To_String (R);
+      end Escape;
    begin
       Create (Out_File, Ada.Text_IO.Out_File, File_Name);
       Put_Line (Out_File, "<?xml version=""1.0"" encoding=""UTF-8""?>");
       Put_Line (Out_File, "<svg xmlns=""http://www.w3.org/2000/svg"" width="""
-                & Num (W_M * Scale) & """ height=""" & Num (H_M * Scale)
-                & """ viewBox=""0 0 " & Num (W_M * Scale) & " " & Num (H_M * Scale) & """>");
+                & Num (W_M * Scale) & """ height=""" & Num (Total_H)
+                & """ viewBox=""0 0 " & Num (W_M * Scale) & " " & Num (Total_H) & """>");
       Put_Line (Out_File, "<rect width=""100%"" height=""100%"" fill=""white""/>");
+      if Top > 0 then
+         Put_Line (Out_File, "<text class=""title"" x=""8"" y=""18"" font-size=""15"""
+                   & " font-weight=""bold"" font-family=""sans-serif"">"
+                   & Escape (To_String (S.Title)) & "</text>");
+      end if;
       Put_Line (Out_File, "<g fill=""#323232"">");
       --  Occupied cells, merged into horizontal runs.
       for J in 0 .. F.Height - 1 loop
@@ -230,13 +488,87 @@ package body Sancta.Simulation.Rendering is
       for M of S.Markers loop
          Put_Line (Out_File, "<circle cx=""" & SX (M.Where.X) & """ cy=""" & SY (M.Where.Y)
                    & """ r=""5"" fill=""#c80000""/>");
-         if Length (M.Label) > 0 then
-            Put_Line (Out_File, "<text x=""" & Num ((M.Where.X - F.Origin.X) * Scale + 7.0)
-                      & """ y=""" & SY (M.Where.Y) & """ font-size=""12"""
-                      & " font-family=""sans-serif"">"
-                      & To_String (M.Label) & "</text>");
-         end if;
       end loop;
+      declare
+         N         : constant Natural := Natural (S.Markers.Length);
+         AX, AY, W : Pixel_Array (1 .. N);
+         function Pix_X (X : Real) return Integer is (Integer ((X - F.Origin.X) * Scale));
+         function Pix_Y (Y : Real) return Integer is
+           (Integer ((F.Origin.Y + H_M - Y) * Scale) + Top);
+      begin
+         for I in 1 .. N loop
+            AX (I) := Pix_X (S.Markers (I).Where.X);
+            AY (I) := Pix_Y (S.Markers (I).Where.Y);
+            W (I) := Length (S.Markers (I).Label) * Char_W;
+         end loop;
+         declare
+            Boxes : constant Label_Boxes :=
+              Place_Labels (AX, AY, W, 13, 1, Top + 1, Width - 1,
+                            Top + Integer (H_M * Scale) - 1);
+         begin
+            for I in 1 .. N loop
+               if Length (S.Markers (I).Label) > 0 then
+                  if Boxes (I).Leader then
+                     Put_Line (Out_File, "<line x1=""" & Img (AX (I)) & """ y1="""
+                               & Img (AY (I)) & """ x2="""
+                               & Img (Boxes (I).X + Boxes (I).Width / 2)
+                               & """ y2=""" & Img (Boxes (I).Y + Boxes (I).Height / 2)
+                               & """ stroke=""#a0a0a0"" stroke-width=""1""/>");
+                  end if;
+                  Put_Line (Out_File, "<text class=""label"" x=""" & Img (Boxes (I).X)
+                            & """ y=""" & Img (Boxes (I).Y + 10)
+                            & """ data-width=""" & Img (Boxes (I).Width)
+                            & """ font-size=""12"" font-family=""sans-serif"""
+                            & " paint-order=""stroke"" stroke=""white"" stroke-width=""3"">"
+                            & Escape (To_String (S.Markers (I).Label)) & "</text>");
+               end if;
+            end loop;
+         end;
+      end;
+      if Below > 0 then
+         declare
+            Xs, Lines  : Pixel_Array (1 .. Natural (S.Legend.Length));
+            Line_Count : Natural;
+            Band       : constant Integer := Top + Integer (H_M * Scale);
+         begin
+            Legend_Layout (S, Width, Char_W, Xs, Lines, Line_Count);
+            for I in Xs'Range loop
+               declare
+                  Y : constant Integer := Band + 4 + (Lines (I) - 1) * Line_H + Line_H / 2;
+               begin
+                  Put_Line (Out_File, "<line x1=""" & Img (Xs (I)) & """ y1=""" & Img (Y)
+                            & """ x2=""" & Img (Xs (I) + 16) & """ y2=""" & Img (Y)
+                            & """ stroke=""" & Hex (S.Legend (I).Color)
+                            & """ stroke-width=""3""/>");
+                  Put_Line (Out_File, "<text class=""legend"" x=""" & Img (Xs (I) + 20)
+                            & """ y=""" & Img (Y + 4) & """ data-width="""
+                            & Img (Length (S.Legend (I).Text) * Char_W)
+                            & """ font-size=""12"" font-family=""sans-serif"">"
+                            & Escape (To_String (S.Legend (I).Text)) & "</text>");
+               end;
+            end loop;
+            if S.Scale_Bar then
+               declare
+                  Metres : constant Real := Bar_Metres (Scale);
+                  X1     : constant Integer := Width - 8;
+                  X0     : constant Integer := X1 - Integer (Metres * Scale);
+                  Y      : constant Integer := Band + 4 + Line_H / 2;
+               begin
+                  Put_Line (Out_File, "<g class=""scale-bar"" stroke=""black"" stroke-width=""2"">"
+                            & "<line x1=""" & Img (X0) & """ y1=""" & Img (Y) & """ x2="""
+                            & Img (X1) & """ y2=""" & Img (Y) & """/><line x1=""" & Img (X0)
+                            & """ y1=""" & Img (Y - 4) & """ x2=""" & Img (X0)
+                            & """ y2=""" & Img (Y + 4) & """/><line x1=""" & Img (X1)
+                            & """ y1=""" & Img (Y - 4) & """ x2=""" & Img (X1)
+                            & """ y2=""" & Img (Y + 4) & """/></g>");
+                  Put_Line (Out_File, "<text class=""scale"" x=""" & Img (X0 - 6)
+                            & """ y=""" & Img (Y + 4) & """ data-pixels="""
+                            & Img (X1 - X0) & """ text-anchor=""end"" font-size=""12"""
+                            & " font-family=""sans-serif"">" & Bar_Text (Metres) & "</text>");
+               end;
+            end if;
+         end;
+      end if;
       Put_Line (Out_File, "</svg>");
       Close (Out_File);
    end Write_SVG;

@@ -28,6 +28,12 @@ package Sancta.Simulation.Rendering is
 
    package Marker_Vectors is new Ada.Containers.Vectors (Positive, Marker);
 
+   type Legend_Entry is record
+      Color : Images.Color;
+      Text  : Ada.Strings.Unbounded.Unbounded_String;
+   end record;
+   package Legend_Vectors is new Ada.Containers.Vectors (Positive, Legend_Entry);
+
    type Scene is record
       Trajectories : Path_Vectors.Vector;
       --  One path per robot, in robot order.
@@ -35,10 +41,48 @@ package Sancta.Simulation.Rendering is
       --  Robots drawn as disks with a heading tick.
       Robot_Radius : Real := 0.2;
       Markers      : Marker_Vectors.Vector;
+      Title        : Ada.Strings.Unbounded.Unbounded_String;
+      --  A band above the world when set.
+      Legend       : Legend_Vectors.Vector;
+      Scale_Bar    : Boolean := False;
+      --  A band below the world with the legend (a colour swatch and its
+      --  text per entry, wrapped) and a scale bar (1, 2, 5, 10... m).
    end record;
+   --  Marker labels are placed where they stay inside the picture and
+   --  overlap no other label: right of the marker, else left, above,
+   --  below, the corners, else farther away with a leader line.
+
+   type Pixel_Array is array (Positive range <>) of Integer;
+
+   type Label_Box is record
+      X, Y          : Integer;  --  Top left corner, pixels.
+      Width, Height : Natural;
+      Leader        : Boolean;  --  Away from its marker: draw a line.
+   end record;
+   type Label_Boxes is array (Positive range <>) of Label_Box;
+
+   function Place_Labels
+     (Anchors_X, Anchors_Y : Pixel_Array;
+      Widths               : Pixel_Array;
+      Height               : Natural;
+      Left, Top, Right, Bottom : Integer) return Label_Boxes
+     with Pre => Anchors_X'First = 1 and then Anchors_Y'First = 1 and then Widths'First = 1
+                 and then Anchors_X'Length = Anchors_Y'Length
+                 and then Anchors_X'Length = Widths'Length,
+          Post => Place_Labels'Result'Length = Anchors_X'Length;
+   --  Boxes for labels of the given widths at the anchors (pixels), inside
+   --  Left .. Right x Top .. Bottom and not overlapping each other whenever
+   --  a place is found within 120 pixels (else clamped inside).
+
+   function Layout_Height (S : Scene; Width : Natural; Char_Width : Positive;
+                           Line_Height : Positive) return Natural;
+   --  Pixels of the band below the world (0 without legend or scale bar).
 
    function Color_Of (Robot : Positive) return Images.Color;
    --  A distinct colour per robot (cycling over ten).
+
+   function Hex (C : Images.Color) return String;
+   --  "#rrggbb".
 
    function Render
      (World : Worlds.World; S : Scene; Scale : Real := 20.0) return Images.Image

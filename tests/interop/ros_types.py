@@ -201,3 +201,26 @@ class OccupancyGrid_(IdlStruct, typename=dds("nav_msgs", "OccupancyGrid")):
     header: Header_ = field(default_factory=Header_)
     info: MapMetaData_ = field(default_factory=MapMetaData_)
     data: sequence[int8] = field(default_factory=list)
+
+
+# --- tf2_msgs -------------------------------------------------------------------
+
+@final
+@dataclass
+class Transform_(IdlStruct, typename=dds("geometry_msgs", "Transform")):
+    translation: Vector3_ = field(default_factory=Vector3_)
+    rotation: Quaternion_ = field(default_factory=Quaternion_)
+
+
+@final
+@dataclass
+class TransformStamped_(IdlStruct, typename=dds("geometry_msgs", "TransformStamped")):
+    header: Header_ = field(default_factory=Header_)
+    child_frame_id: str = ""
+    transform: Transform_ = field(default_factory=Transform_)
+
+
+@final
+@dataclass
+class TFMessage_(IdlStruct, typename=dds("tf2_msgs", "TFMessage")):
+    transforms: sequence[TransformStamped_] = field(default_factory=list)

@@ -37,7 +37,7 @@ def test_topics_have_ros2_types_and_cmd_vel_moves_the_robot():
         s = ss.latest(scan)
         assert s is not None, "no scan"
         assert len(s.ranges) == 360
-        assert s.header.frame_id == "robot1/base_link"
+        assert s.header.frame_id == "robot1/laser"  # base_link -> laser on /tf_static
         assert abs(s.angle_increment - 2 * math.pi / 360) < 1e-4
         # The robot at (5, 5) facing +x in a 20 m box (walls 0.2 m thick):
         # straight ahead the wall at x = 19.9 is beyond the 8 m range, behind

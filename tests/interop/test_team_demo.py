@@ -64,10 +64,89 @@ def check_summary(out, output):
         assert (out / name).exists(), f"{name} missing{context}"
 
 
+def check_bag(out):
+    """The demo recorded itself (issue 15): the foreign reader rosbags opens
+    out/mission and decodes ground truth, scans, cmd_vel, /tf, the map and
+    the team's database entries."""
+    from rosbags.rosbag2 import Reader
+    from rosbags.typesys import Stores, get_typestore
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    decoded = {}
+    with Reader(out / "mission") as bag:
+        topics = {c.topic: c for c in bag.connections}
+        for t in ("/r1/ground_truth", "/r1/scan", "/r1/cmd_vel", "/tf", "/tf_static", "/map",
+                  "/sancta/team/tasks", "/sancta/team/state", "/sancta/team/gui/plan"):
+            assert t in topics and topics[t].msgcount > 0, (t, sorted(topics))
+        paths = [t for t in topics if t.startswith("/sancta/team/paths/r")]
+        assert "/sancta/team/markers" in topics and len(paths) == 4, sorted(topics)
+        wanted = [topics[t] for t in ("/r1/ground_truth", "/r1/scan", "/tf", "/map",
+                                      "/sancta/team/markers", *paths)]
+        for conn, _, raw in bag.messages(connections=wanted):
+            decoded.setdefault(conn.topic, []).append(store.deserialize_cdr(raw, conn.msgtype))
+    assert decoded["/map"][0].info.width > 0
+    assert all(len(s.ranges) > 0 for s in decoded["/r1/scan"])
+    assert decoded["/r1/ground_truth"][-1].header.frame_id == "map"
+    frames = {(t.header.frame_id, t.child_frame_id) for m in decoded["/tf"] for t in m.transforms}
+    assert ("map", "r1/odom") in frames and ("r1/odom", "r1/base_link") in frames
+    # Markers (RViz/Foxglove): a sphere per task coloured by its state (the
+    # label says which), tours per robot.
+    colours = {"done": (0.2, 0.7, 0.2), "active": (1.0, 0.55, 0.0), "assigned": (0.2, 0.4, 0.9),
+               "reallocated": (0.85, 0.1, 0.1), "pending": (0.6, 0.6, 0.6)}
+    last = decoded["/sancta/team/markers"][-1].markers
+    spheres = {m.id: m for m in last if m.ns == "tasks"}
+    labels = {m.id: m.text for m in last if m.ns == "labels"}
+    assert len(spheres) == len(mission_tasks()) == len(labels), (len(spheres), len(labels))
+    for k, m in spheres.items():
+        assert m.type == 2 and m.header.frame_id == "map"
+        state = labels[k].rsplit("(", 1)[1].rstrip(")")
+        assert all(abs(a - b) < 1e-6 for a, b in zip((m.color.r, m.color.g, m.color.b),
+                                                     colours[state])), (labels[k], m.color)
+    assert sum(t.endswith("(done)") for t in labels.values()) >= len(labels) // 2, labels
+    assert any(m.ns == "tours" and m.type == 4 and len(m.points) >= 2
+               for a in decoded["/sancta/team/markers"] for m in a.markers), "no tour drawn"
+    paths = [p for t, msgs in decoded.items() if t.startswith("/sancta/team/paths/")
+             for p in msgs]
+    assert any(len(p.poses) >= 2 for p in paths), "no robot's path ever had a tour"
+    assert all(p.header.frame_id == "map" for p in paths)
+
+
+def check_pictures(out):
+    """The report pictures (issue 15): a title, a legend and a scale bar;
+    every label inside the canvas and no two labels overlapping; a Gantt
+    timeline with the loss and the re-plan marked."""
+    import re
+    for name in ("trajectories", "plan-before", "plan-after", "gantt"):
+        svg = (out / f"{name}.svg").read_text()
+        assert (out / f"{name}.png").stat().st_size > 1000, name
+        width, height = (float(v) for v in
+                         re.search(r'<svg[^>]* width="([\d.]+)" height="([\d.]+)"', svg).groups())
+        assert 'class="title"' in svg, name
+        boxes = []
+        for m in re.finditer(r'<text class="(label|legend)" x="(-?\d+)" y="(-?\d+)" '
+                             r'data-width="(\d+)"[^>]*>([^<]*)<', svg):
+            _, x, y, w, text = m.groups()
+            x, y, w = int(x), int(y), int(w)
+            assert 0 <= x and x + w <= width and y - 11 >= 0 and y <= height, \
+                (name, text, x, y, w, width, height)
+            boxes.append((x, y - 11, x + w, y + 2, text))
+        assert boxes, name
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], \
+                    (name, a, b)
+        if name != "gantt":
+            assert 'class="scale-bar"' in svg and 'class="legend"' in svg, name
+    gantt = (out / "gantt.svg").read_text()
+    assert "lost</text>" in gantt and "re-planned</text>" in gantt
+    assert gantt.count('class="task"') >= len(mission_tasks())
+
+
 def test_demo_annealer_robot_lost(tmp_path):
     code, output = run_demo(tmp_path)
     assert code == 0 and "check: passed" in output, output
     check_summary(tmp_path, output)
+    check_bag(tmp_path)
+    check_pictures(tmp_path)
 
 
 def test_demo_auctions_robot_lost_secured(tmp_path):

@@ -20,10 +20,12 @@ package body Sancta.Commands.Demo is
       Put_Line ("usage: sancta demo [CONFIG.xml] [--set NAME=VALUE]... [--rate X] [--wall-clock]");
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--max SECONDS]");
       Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check] [--view]");
-      Put_Line ("          [--secure]");
+      Put_Line ("          [--secure] [--no-record]");
       Put_Line ("  sancta-sim + one 'sancta run CONFIG --agent ID' process per agent;");
       Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
       Put_Line ("  --view: also open the live view (sancta-view) when a display is set");
+      Put_Line ("  the run is recorded into the bag OUT/mission (rclada bag record -a) unless");
+      Put_Line ("  --no-record is given (or --secure)");
       Put_Line ("  --secure: DDS-Security, a keystore in OUT/keystore, one enclave per process,");
       Put_Line ("  only the operator may publish tasks");
    end Usage;
@@ -80,6 +82,8 @@ package body Sancta.Commands.Demo is
                Config.Secure := True;
             elsif A = "--view" then
                Config.View := True;
+            elsif A = "--no-record" then
+               Config.Record_Bag := False;
             elsif A'Length > 0 and then A (A'First) = '-' then
                raise Constraint_Error with "unknown option " & A;
             else

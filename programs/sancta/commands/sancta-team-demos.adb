@@ -5,6 +5,7 @@ with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Navigators;
 with Sancta.Runtime.Values;
+with Sancta.Simulation.Glyphs;
 with Sancta.Simulation.Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Simulators;
@@ -122,6 +123,168 @@ package body Sancta.Team.Demos is
       end loop;
    end Resolve_Orphans;
 
+   -----------------
+   -- Write_Gantt --
+   -----------------
+
+   procedure Write_Gantt (Result : Demo_Result; Dir : String) is
+      --  Tasks per robot over simulated time: a bar per task from the
+      --  robot's previous completion (or the start) to its own; the loss
+      --  of a robot and the re-plan as vertical lines. gantt.svg, gantt.png.
+      package Glyphs renames Sancta.Simulation.Glyphs;
+      Rows    : constant Natural := Natural (Result.Robots.Length);
+      Left    : constant := 64;
+      Row_H   : constant := 26;
+      Top     : constant := 30;
+      Width   : constant := 900;
+      Span    : constant Long_Float :=
+        Long_Float'Max (1.0, Long_Float'Max (Result.Makespan, Result.Kill_Time + 1.0));
+      Plot_W  : constant Natural := Width - Left - 16;
+      Height  : constant Natural := Top + Rows * Row_H + 44;
+      Px      : constant Long_Float := Long_Float (Plot_W) / Span;
+      Tick    : constant Long_Float :=
+        (if Span <= 60.0 then 10.0 elsif Span <= 300.0 then 30.0 else 60.0);
+      Replan  : constant Long_Float := Result.Kill_Time + Result.Replan_Sim;
+      Red     : constant Images.Color := (200, 0, 0);
+      Orange  : constant Images.Color := (230, 130, 0);
+      Img     : Images.Image := Images.Create (Width, Height);
+      SVG     : File_Type;
+
+      function X_Of (T : Long_Float) return Integer is (Left + Integer (T * Px));
+      function Row_Y (R : Positive) return Integer is (Top + (R - 1) * Row_H);
+
+      procedure Box (X0, Y0, X1, Y1 : Integer; C : Images.Color) is
+      begin
+         for X in X0 .. X1 loop
+            for Y in Y0 .. Y1 loop
+               Images.Set (Img, X, Y, C);
+            end loop;
+         end loop;
+      end Box;
+
+      procedure Mark (T : Long_Float; C : Images.Color; Label, Hex : String; Line : Natural) is
+         X : constant Integer := X_Of (T);
+         W : constant Natural := Glyphs.Text_Width (Label);
+         LX : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));
+         LY : constant Integer := Top + Rows * Row_H + 18 + Line * 11;
+      begin
+         Box (X, Top - 4, X + 1, Top + Rows * Row_H, C);
+         Glyphs.Draw_Text (Img, LX, LY, Label, C, Halo => False);
+         Put_Line (SVG, "<line class=""event"" x1=""" & Trim (X) & """ y1="""
+                   & Trim (Top - 4) & """ x2=""" & Trim (X) & """ y2="""
+                   & Trim (Top + Rows * Row_H) & """ stroke=""" & Hex
+                   & """ stroke-width=""2"" stroke-dasharray=""5,3""/>");
+         Put_Line (SVG, "<text class=""label"" x=""" & Trim (LX) & """ y="""
+                   & Trim (LY + 9) & """ data-width=""" & Trim (Label'Length * 7)
+                   & """ fill=""" & Hex & """ font-size=""11"" font-family=""sans-serif"">"
+                   & Label & "</text>");
+      end Mark;
+   begin
+      Create (SVG, Out_File, Dir & "/gantt.svg");
+      Put_Line (SVG, "<?xml version=""1.0"" encoding=""UTF-8""?>");
+      Put_Line (SVG, "<svg xmlns=""http://www.w3.org/2000/svg"" width=""" & Trim (Width)
+                & """ height=""" & Trim (Height) & """ viewBox=""0 0 " & Trim (Width) & " "
+                & Trim (Height) & """>");
+      Put_Line (SVG, "<rect width=""100%"" height=""100%"" fill=""white""/>");
+      Put_Line (SVG, "<text class=""title"" x=""8"" y=""18"" font-size=""14"""
+                & " font-weight=""bold"" font-family=""sans-serif"">Tasks per robot over"
+                & " simulated time (s)</text>");
+      Glyphs.Draw_Text (Img, 8, 8, "Tasks per robot over simulated time (s)", Images.Black,
+                        Halo => False);
+      --  Time axis.
+      declare
+         T : Long_Float := 0.0;
+      begin
+         while T <= Span loop
+            declare
+               X    : constant Integer := X_Of (T);
+               Text : constant String := Trim (Integer (T));
+            begin
+               Box (X, Top + Rows * Row_H, X, Top + Rows * Row_H + 4, Images.Black);
+               for Y in Top .. Top + Rows * Row_H loop
+                  if Y mod 3 = 0 then
+                     Images.Set (Img, X, Y, (200, 200, 200));
+                  end if;
+               end loop;
+               Glyphs.Draw_Text (Img, X - Glyphs.Text_Width (Text) / 2, Top + Rows * Row_H + 6,
+                                 Text, Images.Black, Halo => False);
+               Put_Line (SVG, "<line x1=""" & Trim (X) & """ y1=""" & Trim (Top)
+                         & """ x2=""" & Trim (X) & """ y2=""" & Trim (Top + Rows * Row_H + 4)
+                         & """ stroke=""#c8c8c8""/>");
+               Put_Line (SVG, "<text class=""tick"" x=""" & Trim (X) & """ y="""
+                         & Trim (Top + Rows * Row_H + 15) & """ text-anchor=""middle"""
+                         & " font-size=""10"" font-family=""sans-serif"">" & Text & "</text>");
+            end;
+            T := T + Tick;
+         end loop;
+      end;
+      for R in 1 .. Rows loop
+         declare
+            Id    : constant String := To_String (Result.Robots (R).Id);
+            Color : constant Images.Color := Rendering.Color_Of (R);
+            Hex   : constant String := Rendering.Hex (Color);
+            Y     : constant Integer := Row_Y (R);
+            Since : Long_Float := 0.0;
+         begin
+            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Images.Black, Halo => False);
+            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
+                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
+            for C of Result.Completions loop
+               if To_String (C.Robot) = Id then
+                  declare
+                     X0   : constant Integer := X_Of (Since);
+                     X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+                     Name : constant String := To_String (C.Task_Id);
+                  begin
+                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
+                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
+                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                               & Trim (Row_H - 8) & """ fill=""" & Hex
+                               & """ stroke=""white""><title>" & Name & " done at "
+                               & F1 (C.Time) & " s</title></rect>");
+                     --  The task's name inside its bar when it fits there.
+                     if Glyphs.Text_Width (Name) + 4 <= X1 - X0 then
+                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Images.White,
+                                          Halo => False);
+                     end if;
+                     if Name'Length * 7 + 4 <= X1 - X0 then
+                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                                  & Trim (Name'Length * 7) & """ fill=""white"""
+                                  & " font-size=""11"" font-family=""sans-serif"">" & Name
+                                  & "</text>");
+                     end if;
+                     Since := C.Time;
+                  end;
+               end if;
+            end loop;
+            if Id = To_String (Result.Killed) then
+               --  Lost: the rest of its row hatched.
+               for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
+                  for Yy in Y + 4 .. Y + Row_H - 4 loop
+                     if (X + Yy) mod 6 = 0 then
+                        Images.Set (Img, X, Yy, Red);
+                     end if;
+                  end loop;
+               end loop;
+               Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
+                         & """ y=""" & Trim (Y + 4) & """ width="""
+                         & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
+                         & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
+            end if;
+         end;
+      end loop;
+      if Result.Killed /= Null_Unbounded_String then
+         Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000", 0);
+         if Result.Replanned then
+            Mark (Replan, Orange, "re-planned", "#e68200", 1);
+         end if;
+      end if;
+      Put_Line (SVG, "</svg>");
+      Close (SVG);
+      Images.Save_PNG (Img, Dir & "/gantt.png");
+   end Write_Gantt;
+
    procedure Write_Report
      (Result : Demo_Result;
       World  : Worlds.World;
@@ -130,30 +293,55 @@ package body Sancta.Team.Demos is
    is
       F   : File_Type;
       Map : aliased Robot.Path_Costs.Planner;
-      procedure Picture (Name : String; S : Rendering.Scene) is
+      Lost : constant String :=
+        (if Result.Killed = Null_Unbounded_String then ""
+         else To_String (Result.Killed) & " lost at " & F1 (Result.Kill_Time) & " s");
+
+      procedure Picture (Name, Title : String; S : Rendering.Scene; Tasks : Boolean) is
+         --  With a title, a legend (a colour per robot; the planned tasks'
+         --  crosses) and a scale bar.
+         Framed : Rendering.Scene := S;
       begin
-         Rendering.Write_SVG (World, S, Dir & "/" & Name & ".svg");
-         Images.Save_PNG (Rendering.Render (World, S), Dir & "/" & Name & ".png");
+         Framed.Title := To_Unbounded_String (Title);
+         for R in 1 .. Natural (Result.Robots.Length) loop
+            Framed.Legend.Append
+              (Rendering.Legend_Entry'(Rendering.Color_Of (R),
+                Result.Robots (R).Id
+                & (if Result.Robots (R).Id = Result.Killed then " (lost)" else "")));
+         end loop;
+         if Tasks then
+            Framed.Legend.Append
+              (Rendering.Legend_Entry'((200, 0, 0), To_Unbounded_String ("x task>robot")));
+         end if;
+         Framed.Scale_Bar := True;
+         Rendering.Write_SVG (World, Framed, Dir & "/" & Name & ".svg");
+         Images.Save_PNG (Rendering.Render (World, Framed), Dir & "/" & Name & ".png");
       end Picture;
    begin
       Ada.Directories.Create_Path (Dir);
       Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
-      Picture ("trajectories", Scene);
+      Picture ("trajectories", "Trajectories, " & Trim (Result.Tasks_Done) & "/"
+               & Trim (Result.Tasks_Total) & " tasks done in " & F1 (Result.Makespan) & " s"
+               & (if Lost = "" then "" else ", " & Lost), Scene, Tasks => False);
       if Result.Plan_Before.Generation > 0 then
-         Picture ("plan-before",
+         Picture ("plan-before", "First plan (round" & Result.Plan_Before.Generation'Image
+                  & "), makespan " & F1 (Result.Planned_Makespan) & " m",
                   Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
-                                 Map'Access));
+                                 Map'Access), Tasks => True);
       end if;
       if Result.Plan_After.Generation > 0 then
-         Picture ("plan-after",
+         Picture ("plan-after", "Plan after the re-planning (round"
+                  & Result.Plan_After.Generation'Image & ")"
+                  & (if Lost = "" then "" else ", " & Lost),
                   Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots,
-                                 Map'Access));
+                                 Map'Access), Tasks => True);
       end if;
+      Write_Gantt (Result, Dir);
       Create (F, Out_File, Dir & "/summary.json");
       Put (F, Summary_JSON (Result));
       Close (F);
       Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
-                & ".{svg,png}");
+                & ".{svg,png}, gantt.{svg,png}");
    end Write_Report;
 
    function Summary_JSON (Result : Demo_Result) return String is

@@ -364,10 +364,34 @@ package body Sancta.Team.Sim_Demos is
          Put_Line ("demo: live view started (sancta-view, log " & Log_Dir & "/view.log)");
       end Start_View;
 
+      procedure Start_Recorder is
+         Bag  : constant String := Dir & "/mission";
+         Args : Text_Vectors.Vector;
+      begin
+         if Ada.Directories.Exists (Bag) then
+            Ada.Directories.Delete_Tree (Bag);
+         end if;
+         Args.Append ("bag");
+         Args.Append ("record");
+         Args.Append ("-a");
+         Args.Append ("-o");
+         Args.Append (Bag);
+         Args.Append ("--discovery-period");
+         Args.Append ("0.3");
+         Children.Insert
+           ("recorder", (To_Unbounded_String ("rclada"),
+                         Spawn (Program (Config, "rclada"), Args, Log_Dir & "/recorder.log"),
+                         False));
+         Put_Line ("demo: recording every topic into " & Bag & " (rclada bag record -a)");
+      end Start_Recorder;
+
       procedure Start_Processes is
          Args : Text_Vectors.Vector;
       begin
          Ada.Directories.Create_Path (Log_Dir);
+         if Config.Record_Bag and then not Config.Secure and then Dir /= "" then
+            Start_Recorder;
+         end if;
          if Config.Secure then
             Secure_Team;
             Security.Set_Child_Enclave (Security.Simulator_Enclave);

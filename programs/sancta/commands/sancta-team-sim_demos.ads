@@ -61,6 +61,11 @@ package Sancta.Team.Sim_Demos is
       --  DDS-Security (Sancta.Team.Security): a keystore in Out_Dir/keystore,
       --  an enclave per process; only the non-robot agents (the operator)
       --  may publish the mission's tasks.
+      Record_Bag    : Boolean := True;
+      --  Record every topic into the bag Out_Dir/mission ("rclada bag record
+      --  -a", its output in Out_Dir/recorder.log): ground truth, scans,
+      --  odometry, cmd_vel, /tf, /map, the team database, plans, markers,
+      --  events. Not under Secure (the recorder has no enclave).
       View          : Boolean := False;
       --  Also start the live view (sancta-view --world WORLD, its output in
       --  Out_Dir/view.log) when a display is set (DISPLAY or

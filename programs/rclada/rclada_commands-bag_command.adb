@@ -1,0 +1,322 @@
+--  rclada bag record | info | play, as "ros2 bag" with its MCAP storage
+--  (RCL.Bags: rosbag2's directory layout and metadata.yaml).
+with Ada.Calendar.Formatting;
+with Ada.Containers;
+with Ada.Streams;
+with Interfaces;
+with RCL.Bags.Recorders;
+with RCL.MCAP;
+
+separate (Rclada_Commands)
+procedure Bag_Command (Args : Arguments) is
+   use type Interfaces.Unsigned_64;
+   use type Ada.Containers.Count_Type;
+   use type Ada.Streams.Stream_Element_Offset;
+
+   --  Options: "--name value" pairs, flags, and the rest positional.
+   Valued : constant String :=
+     " -o --output --duration -b --max-bag-size -d --max-bag-duration --compression"
+     & " -r --rate --clock --delay --discovery-period ";
+   Flags  : constant String :=
+     " -a --all --include-hidden-topics -l --loop --recover ";
+
+   Positionals : Arguments;
+   Play_Topics : Arguments;
+
+   function Is_Valued (A : String) return Boolean is
+     (Ada.Strings.Fixed.Index (Valued, " " & A & " ") /= 0);
+
+   function Starts_Number (A : String) return Boolean is
+     (A'Length > 0 and then A (A'First) in '0' .. '9' | '.');
+
+   function Value_Of (Short, Long, Default : String) return String is
+   begin
+      for I in Args.First_Index .. Args.Last_Index loop
+         if Args (I) = Short or else Args (I) = Long then
+            if I = Args.Last_Index or else
+              (Long = "--clock" and then not Starts_Number (Args (I + 1)))
+            then
+               if Long = "--clock" then
+                  return "40";  --  rosbag2's default /clock rate with --clock alone
+               end if;
+               raise Usage_Error with Long & " needs a value";
+            end if;
+            return Args (I + 1);
+         end if;
+      end loop;
+      return Default;
+   end Value_Of;
+
+   function Number (Short, Long, Default : String; Low, High : Long_Float) return Long_Float is
+      Text  : constant String := Value_Of (Short, Long, Default);
+      Value : Long_Float;
+   begin
+      begin
+         Value := Long_Float'Value (Text);
+      exception
+         when Constraint_Error =>
+            raise Usage_Error with Long & ": '" & Text & "' is not a number";
+      end;
+      if not (Value >= Low and then Value <= High) then
+         raise Usage_Error with Long & ": " & Text & " is out of range";
+      end if;
+      return Value;
+   end Number;
+
+   function Flag (Short, Long : String) return Boolean is
+     (for some A of Args => A = Short or else A = Long);
+
+   procedure Split_Arguments is
+      Skip     : Boolean := False;
+      In_Topics : Boolean := False;
+   begin
+      for I in Args.First_Index .. Args.Last_Index loop
+         declare
+            A : constant String := Args (I);
+         begin
+            if Skip then
+               Skip := False;
+            elsif A = "--topics" then
+               In_Topics := True;
+            elsif A = "--clock" then
+               In_Topics := False;
+               Skip := I < Args.Last_Index and then Starts_Number (Args (I + 1));
+            elsif A'Length > 1 and then A (A'First) = '-' then
+               In_Topics := False;
+               if Is_Valued (A) then
+                  Skip := True;
+               elsif Ada.Strings.Fixed.Index (Flags, " " & A & " ") = 0 then
+                  raise Usage_Error with "unknown option " & A;
+               end if;
+            elsif In_Topics then
+               Play_Topics.Append (A);
+            else
+               Positionals.Append (A);
+            end if;
+         end;
+      end loop;
+   end Split_Arguments;
+
+   ----------------
+   -- Record_Bag --
+   ----------------
+
+   procedure Record_Bag is
+      use Ada.Calendar;
+      Default_Name : constant String :=
+        "rosbag2_" & Formatting.Image (Clock) (1 .. 10) & "-"
+        & Formatting.Image (Clock) (12 .. 19);
+      Output   : constant String :=
+        Value_Of ("-o", "--output",
+                  Ada.Strings.Fixed.Translate
+                    (Default_Name, Ada.Strings.Maps.To_Mapping (":-", "__")));
+      Stop_After : constant Long_Float :=
+        Number ("--duration", "--duration", "0", 0.0, 1.0e9);
+      Max_Bytes : constant Long_Float :=
+        Number ("-b", "--max-bag-size", "0", 0.0, 1.0e15);
+      Max_Span : constant Long_Float :=
+        Number ("-d", "--max-bag-duration", "0", 0.0, 1.0e9);
+      Period   : constant Long_Float :=
+        Number ("--discovery-period", "--discovery-period", "0.5", 0.01, 60.0);
+      Kind     : RCL.MCAP.Compression_Kind;
+      Topics   : RCL.Bags.Recorders.Topic_List;
+      Node     : RCL.Nodes.Node := Tool_Node;
+      Rec      : RCL.Bags.Recorders.Recorder;
+      Deadline : constant Ada.Real_Time.Time :=
+        Ada.Real_Time.Clock
+        + (if Stop_After > 0.0 then Ada.Real_Time.To_Time_Span (Duration (Stop_After))
+           else Ada.Real_Time.To_Time_Span (1.0e6));
+      Next_Discovery : Ada.Real_Time.Time := Ada.Real_Time.Clock;
+   begin
+      begin
+         Kind := RCL.MCAP.Compression_Value (Value_Of ("--compression", "--compression", "zstd"));
+      exception
+         when E : RCL.MCAP.Format_Error =>
+            raise Usage_Error with "--compression: " & Ada.Exceptions.Exception_Message (E);
+      end;
+      for I in Positionals.First_Index + 1 .. Positionals.Last_Index loop
+         Topics.Append (Positionals (I));
+      end loop;
+      if Topics.Is_Empty and then not Flag ("-a", "--all") then
+         raise Usage_Error with "bag record needs topics, or -a to record every topic";
+      elsif not Topics.Is_Empty and then Flag ("-a", "--all") then
+         raise Usage_Error with "bag record takes either topics or -a, not both";
+      end if;
+      begin
+         Rec.Start (Output, Topics, Kind, Interfaces.Unsigned_64 (Max_Bytes), Duration (Max_Span),
+                    Include_Hidden => Flag ("--include-hidden-topics", "--include-hidden-topics"));
+      exception
+         when E : RCL.Bags.Bag_Error =>
+            raise Command_Error with Ada.Exceptions.Exception_Message (E);
+      end;
+      RCL.Contexts.Install_Signal_Handlers;
+      Put_Line ("Recording to '" & Output & "' (" & RCL.MCAP.Image (Kind) & ")...");
+      Flush;
+      Graph.Wait_For_Discovery (0.3);
+      while not RCL.Contexts.Is_Shutdown and then Ada.Real_Time.Clock < Deadline loop
+         if Ada.Real_Time.Clock >= Next_Discovery then
+            Rec.Discover (Node);
+            Next_Discovery := Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Duration (Period));
+         end if;
+         Node.Spin (During => Duration'Min
+                      (Duration (Period),
+                       Ada.Real_Time.To_Duration (Deadline - Ada.Real_Time.Clock)));
+      end loop;
+      Rec.Stop;
+      Put_Line ("Recorded" & Rec.Message_Count'Image & " messages on" & Rec.Topic_Count'Image
+                & " topics into '" & Output & "'");
+   end Record_Bag;
+
+   ----------
+   -- Info --
+   ----------
+
+   procedure Info_Bag is
+      Reader : RCL.Bags.Bag_Reader;
+   begin
+      if Positionals.Length /= 2 then
+         raise Usage_Error with "bag info takes one bag (directory or .mcap file)";
+      end if;
+      begin
+         Reader.Open (Positionals (2), Recover => Flag ("--recover", "--recover"));
+      exception
+         when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
+            raise Command_Error with Ada.Exceptions.Exception_Message (E);
+      end;
+      Put (Reader.Info);
+   end Info_Bag;
+
+   ----------
+   -- Play --
+   ----------
+
+   procedure Play_Bag is
+      use Ada.Real_Time;
+      Reader : RCL.Bags.Bag_Reader;
+      Rate   : constant Long_Float := Number ("-r", "--rate", "1.0", 1.0e-6, 1.0e6);
+      Clock_Hz : constant Long_Float :=
+        (if Flag ("--clock", "--clock") then Number ("--clock", "--clock", "40", 0.001, 1.0e4)
+         else 0.0);
+      Wait   : constant Long_Float := Number ("--delay", "--delay", "0.5", 0.0, 3600.0);
+      Node   : RCL.Nodes.Node := Tool_Node;
+      Stopped : exception;
+   begin
+      if Positionals.Length /= 2 then
+         raise Usage_Error with "bag play takes one bag (directory or .mcap file)";
+      end if;
+      begin
+         Reader.Open (Positionals (2));
+      exception
+         when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
+            raise Command_Error with Ada.Exceptions.Exception_Message (E);
+      end;
+      declare
+         type Publisher_Access is access RCL.Publishers.Publisher;
+         type Publisher_Array is array (RCL.Bags.Topic_Index range <>) of Publisher_Access;
+         Pubs       : Publisher_Array (1 .. RCL.Bags.Topic_Index'Base (Reader.Topic_Count));
+         Clock_Pub  : Publisher_Access;
+         Bag_Start  : constant RCL.MCAP.Time_Stamp := Reader.Start_Time;
+         Wall_Start : Time;
+         Clock_Period : constant Time_Span :=
+           (if Clock_Hz > 0.0 then To_Time_Span (Duration (1.0 / Clock_Hz)) else Time_Span_Last);
+         Next_Clock : Time;
+         Played     : Natural := 0;
+
+         function Bag_Time_At (T : Time) return RCL.MCAP.Time_Stamp is
+           (Bag_Start + RCL.MCAP.Time_Stamp
+              (Long_Float'Max (0.0, Long_Float (To_Duration (T - Wall_Start))) * Rate * 1.0e9));
+
+         procedure Publish_Clock (Stamp : RCL.MCAP.Time_Stamp) is
+            use Interfaces;
+            Sec  : constant Unsigned_32 := Unsigned_32 (Stamp / 1_000_000_000);
+            Nsec : constant Unsigned_32 := Unsigned_32 (Stamp mod 1_000_000_000);
+            Data : RCL.DDS.Byte_Array (1 .. 12) := [2 => 1, others => 0];
+         begin
+            for I in 0 .. 3 loop
+               Data (5 + Ada.Streams.Stream_Element_Offset (I)) :=
+                 Ada.Streams.Stream_Element (Shift_Right (Sec, 8 * I) and 16#FF#);
+               Data (9 + Ada.Streams.Stream_Element_Offset (I)) :=
+                 Ada.Streams.Stream_Element (Shift_Right (Nsec, 8 * I) and 16#FF#);
+            end loop;
+            Clock_Pub.Publish_Raw (Data);
+         end Publish_Clock;
+
+         procedure Each (Topic : RCL.Bags.Topic_Index; Receive_Time : RCL.MCAP.Time_Stamp;
+                         Data : RCL.MCAP.Byte_Array) is
+            Offset : constant Long_Float :=
+              (if Receive_Time > Bag_Start then Long_Float (Receive_Time - Bag_Start) / 1.0e9
+               else 0.0);
+            Due    : constant Time := Wall_Start + To_Time_Span (Duration (Offset / Rate));
+         begin
+            loop
+               exit when RCL.Contexts.Is_Shutdown;
+               if Clock_Pub /= null and then Next_Clock <= Due then
+                  delay until Next_Clock;
+                  Publish_Clock (Bag_Time_At (Next_Clock));
+                  Next_Clock := Next_Clock + Clock_Period;
+               else
+                  delay until Due;
+                  exit;
+               end if;
+            end loop;
+            if RCL.Contexts.Is_Shutdown then
+               raise Stopped;
+            end if;
+            if Topic in Pubs'Range and then Pubs (Topic) /= null and then Data'Length >= 4 then
+               Pubs (Topic).Publish_Raw (Data);
+               Played := Played + 1;
+            end if;
+         end Each;
+      begin
+         for T in Pubs'Range loop
+            declare
+               Name : constant String := Reader.Topic_Name (T);
+               Kind : constant String := Reader.Topic_Type (T);
+            begin
+               if (Play_Topics.Is_Empty or else Play_Topics.Contains (Name)) and then Kind /= ""
+               then
+                  Pubs (T) := new RCL.Publishers.Publisher'
+                    (Node.Publish_Raw (Graph.Mangle_Type (Kind), Name,
+                                       RCL.Bags.Playback_QoS (Reader.Topic_QoS (T))));
+               end if;
+            end;
+         end loop;
+         if Clock_Hz > 0.0 then
+            Clock_Pub := new RCL.Publishers.Publisher'
+              (Node.Publish_Raw ("rosgraph_msgs::msg::dds_::Clock_", "/clock", RCL.QoS.Clock));
+         end if;
+         RCL.Contexts.Install_Signal_Handlers;
+         delay Duration (Wait);  --  Discovery: let subscribers match.
+         loop
+            Wall_Start := Clock;
+            Next_Clock := Wall_Start;
+            begin
+               Reader.Iterate (Each'Access);
+            exception
+               when Stopped => null;
+            end;
+            exit when RCL.Contexts.Is_Shutdown or else not Flag ("-l", "--loop");
+         end loop;
+         Put_Line ("Played" & Played'Image & " messages");
+         delay 0.2;  --  Let reliable data reach late readers before the writers go.
+      end;
+   end Play_Bag;
+
+begin
+   Split_Arguments;
+   if Positionals.Is_Empty then
+      raise Usage_Error with "missing sub-command (record, info, play)";
+   elsif Positionals (1) = "record" then
+      Record_Bag;
+   elsif Positionals (1) = "info" then
+      Info_Bag;
+   elsif Positionals (1) = "play" then
+      Play_Bag;
+   else
+      raise Usage_Error with "unknown sub-command '" & Positionals (1)
+        & "' (record, info, play)";
+   end if;
+exception
+   when E : RCL.MCAP.Format_Error | RCL.Bags.Bag_Error =>
+      raise Command_Error with Ada.Exceptions.Exception_Message (E);
+end Bag_Command;

@@ -1,0 +1,666 @@
+with Ada.Calendar.Formatting;
+with Ada.Containers.Indefinite_Ordered_Sets;
+with Ada.Directories;
+with Ada.Streams.Stream_IO;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with ROSIDL.Definitions.Rendering;
+with ROSIDL.Interfaces;
+with RCL.YAML;
+
+package body RCL.Bags is
+
+   use Interfaces;
+   use ROSIDL.Definitions;
+
+   LF : constant Character := ASCII.LF;
+
+   function Trim (S : String) return String is
+     (Ada.Strings.Fixed.Trim (S, Ada.Strings.Both));
+
+   function Image (V : Unsigned_64) return String is (Trim (V'Image));
+
+   function Strip_Trailing_Newlines (S : String) return String is
+      Last : Natural := S'Last;
+   begin
+      while Last >= S'First and then S (Last) in LF | ASCII.CR loop
+         Last := Last - 1;
+      end loop;
+      return S (S'First .. Last);
+   end Strip_Trailing_Newlines;
+
+   -----------------------------
+   -- Message_Definition_Text --
+   -----------------------------
+
+   function Read_Whole (Path : String) return String is
+      use Ada.Streams.Stream_IO;
+      F : File_Type;
+   begin
+      Open (F, In_File, Path);
+      declare
+         Length : constant Natural := Natural (Size (F));
+         Text   : String (1 .. Length);
+      begin
+         String'Read (Stream (F), Text);
+         Close (F);
+         return Text;
+      end;
+   end Read_Whole;
+
+   function Own_Text (M : Message_Definition) return String is
+      File : constant String := To_String (M.Position.File);
+   begin
+      --  The .msg file as written (rosbag2 stores the file), else the
+      --  parsed definition rendered back.
+      if M.Namespace = Msg and then File'Length > 4
+        and then File (File'Last - 3 .. File'Last) = ".msg"
+        and then Ada.Directories.Exists (File)
+      then
+         return Strip_Trailing_Newlines (Read_Whole (File));
+      end if;
+      return Strip_Trailing_Newlines (ROSIDL.Definitions.Rendering.Show (M, Expand => False));
+   end Own_Text;
+
+   function Message_Definition_Text (Type_Name : String) return String is
+      package Name_Sets is new Ada.Containers.Indefinite_Ordered_Sets (String);
+      Root   : constant Message_Access := ROSIDL.Interfaces.Message (Type_Name);
+      Seen   : Name_Sets.Set;
+      Result : Unbounded_String := To_Unbounded_String (Own_Text (Root.all));
+
+      procedure Add_Nested (M : Message_Definition) is
+      begin
+         for F of M.Fields loop
+            if F.Of_Type.Kind = Message_Kind
+              and then not Seen.Contains (Full_Name (F.Of_Type.Nested.all))
+            then
+               Seen.Insert (Full_Name (F.Of_Type.Nested.all));
+               Append (Result, LF & [1 .. 80 => '='] & LF & "MSG: "
+                       & Full_Name (F.Of_Type.Nested.all) & LF
+                       & Own_Text (F.Of_Type.Nested.all));
+               Add_Nested (F.Of_Type.Nested.all);
+            end if;
+         end loop;
+      end Add_Nested;
+   begin
+      Seen.Insert (Full_Name (Root.all));
+      Add_Nested (Root.all);
+      return To_String (Result);
+   end Message_Definition_Text;
+
+   ----------------------
+   -- Offered_QoS_Text --
+   ----------------------
+
+   function Offered_QoS_Text (Profiles : Profile_Array) return String is
+      use RCL.QoS;
+      Result : Unbounded_String;
+
+      function Time (Name : String; D : Duration; Unset_Is_Infinite : Boolean) return String is
+      begin
+         if D = Infinite or else (Unset_Is_Infinite and then D = Unset) then
+            return "  " & Name & ":" & LF & "    sec: 2147483647" & LF
+              & "    nsec: 4294967295" & LF;
+         end if;
+         declare
+            Seconds : constant Long_Long_Integer := Long_Long_Integer (D - 0.5);
+            Nano    : constant Long_Long_Integer :=
+              Long_Long_Integer ((D - Duration (Seconds)) * 1_000_000_000);
+         begin
+            return "  " & Name & ":" & LF & "    sec:" & Seconds'Image & LF
+              & "    nsec:" & Nano'Image & LF;
+         end;
+      end Time;
+   begin
+      for P of Profiles loop
+         Append (Result,
+                 "- history: "
+                 & (case P.History is
+                      when Middleware_Default => "0", when Keep_Last => "1",
+                      when Keep_All => "2") & LF
+                 & "  depth:" & (if P.History = Keep_Last then P.Depth'Image else " 0") & LF
+                 & "  reliability: "
+                 & (case P.Reliability is
+                      when Middleware_Default => "0", when Reliable => "1",
+                      when Best_Effort => "2") & LF
+                 & "  durability: "
+                 & (case P.Durability is
+                      when Middleware_Default => "0", when Transient_Local => "1",
+                      when Volatile => "2") & LF
+                 & Time ("deadline", P.Deadline, True)
+                 & Time ("lifespan", P.Lifespan, True)
+                 & "  liveliness: "
+                 & (case P.Liveliness is
+                      when Middleware_Default => "0", when Automatic => "1",
+                      when Manual_By_Topic => "3") & LF
+                 & Time ("liveliness_lease_duration", P.Lease, True)
+                 & "  avoid_ros_namespace_conventions: false" & LF);
+      end loop;
+      return To_String (Result);
+   end Offered_QoS_Text;
+
+   ------------------
+   -- Playback_QoS --
+   ------------------
+
+   function Playback_QoS (Offered : String) return RCL.QoS.Profile is
+      use RCL.QoS;
+      use RCL.YAML;
+      Result    : Profile := Default;
+      All_Local : Boolean := True;
+      Depth     : Natural := 0;
+   begin
+      if Trim (Offered) = "" then
+         return Default;
+      end if;
+      declare
+         D : constant Document := Parse (Offered, "offered_qos_profiles");
+      begin
+         if D.Kind (D.Root) /= Sequence or else D.Length (D.Root) = 0 then
+            return Default;
+         end if;
+         for I in 1 .. D.Length (D.Root) loop
+            declare
+               P : constant Node := D.Item (D.Root, I);
+               function Field (Key : String) return String is
+                 (if D.Kind (P) = Mapping and then D.Find (P, Key) /= 0
+                  then D.Text (D.Find (P, Key)) else "");
+            begin
+               if Field ("reliability") = "2" then
+                  Result.Reliability := Best_Effort;
+               end if;
+               if Field ("durability") /= "1" then
+                  All_Local := False;
+               end if;
+               if Field ("depth") /= "" then
+                  Depth := Natural'Max (Depth, Natural'Value (Field ("depth")));
+               end if;
+            end;
+         end loop;
+      end;
+      if All_Local then
+         Result.Durability := Transient_Local;
+      end if;
+      Result.Depth := (if Depth = 0 then 10 else Depth);
+      return Result;
+   exception
+      when Parse_Error | Constraint_Error =>
+         return Default;
+   end Playback_QoS;
+
+   --  Writing -----------------------------------------------------------------------
+
+   function File_Path (This : Bag_Writer; Index : Positive) return String is
+     (Ada.Directories.Compose
+        (To_String (This.Directory),
+         Ada.Directories.Simple_Name (To_String (This.Directory)) & "_"
+         & Trim (Natural'Image (Index - 1)) & ".mcap"));
+
+   procedure Start_File (This : in out Bag_Writer) is
+      Index : constant Positive := Natural (This.Files.Length) + 1;
+   begin
+      This.File.Create (File_Path (This, Index), Profile => "ros2", Library => "rclada",
+                        Compression => This.Compression);
+      This.Files.Append
+        (File_Entry'(Name => To_Unbounded_String
+                       (Ada.Directories.Simple_Name (File_Path (This, Index))),
+                     First => 0, Last => 0, Count => 0));
+      This.Schema_Types.Clear;
+      for T of This.Topics loop
+         T.Channel := 0;
+      end loop;
+   end Start_File;
+
+   procedure Ensure_Channel (This : in out Bag_Writer; Topic : Topic_Index) is
+      T      : Topic_Entry renames This.Topics (Topic);
+      Type_Name : constant String := To_String (T.Type_Name);
+      Schema : RCL.MCAP.Schema_Id := 0;
+      Meta   : RCL.MCAP.String_Maps.Map;
+   begin
+      if T.Channel /= 0 then
+         return;
+      end if;
+      for I in 1 .. Natural (This.Schema_Types.Length) loop
+         if This.Schema_Types (I) = Type_Name then
+            Schema := RCL.MCAP.Schema_Id (I);
+         end if;
+      end loop;
+      if Schema = 0 then
+         declare
+            function Text return String is
+            begin
+               return Message_Definition_Text (Type_Name);
+            exception
+               when others => return "";
+            end Text;
+         begin
+            Schema := This.File.Add_Schema (Type_Name, "ros2msg", Text);
+            This.Schema_Types.Append (Type_Name);
+         end;
+      end if;
+      Meta.Include ("offered_qos_profiles", To_String (T.QoS_Text));
+      T.Channel := This.File.Add_Channel (To_String (T.Name), Schema, "cdr", Meta);
+   end Ensure_Channel;
+
+   procedure Create
+     (This         : in out Bag_Writer;
+      Directory    : String;
+      Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
+      Max_Bytes    : Interfaces.Unsigned_64 := 0;
+      Max_Duration : Duration := 0.0) is
+   begin
+      if Ada.Directories.Exists (Directory) then
+         raise Bag_Error with Directory & ": the output directory exists already (choose "
+           & "another with -o, or remove it)";
+      end if;
+      begin
+         Ada.Directories.Create_Path (Directory);
+      exception
+         when others =>
+            raise Bag_Error with Directory & ": cannot create the output directory";
+      end;
+      This.Directory := To_Unbounded_String (Directory);
+      This.Compression := Compression;
+      This.Max_Bytes := Max_Bytes;
+      This.Max_Span := Time_Stamp (Max_Duration * 1_000_000_000);
+      This.Files.Clear;
+      This.Topics.Clear;
+      This.Total := 0;
+      Start_File (This);
+      This.Open := True;
+   end Create;
+
+   function Is_Open (This : Bag_Writer) return Boolean is (This.Open);
+
+   function Add_Topic
+     (This : in out Bag_Writer; Name, Type_Name, Offered_QoS : String) return Topic_Index is
+   begin
+      This.Topics.Append
+        (Topic_Entry'(Name     => To_Unbounded_String (Name),
+                      Type_Name => To_Unbounded_String (Type_Name),
+                      QoS_Text => To_Unbounded_String (Offered_QoS),
+                      Count    => 0, Channel => 0));
+      Ensure_Channel (This, This.Topics.Last_Index);
+      return This.Topics.Last_Index;
+   end Add_Topic;
+
+   procedure Write
+     (This         : in out Bag_Writer;
+      Topic        : Topic_Index;
+      Receive_Time : Time_Stamp;
+      Data         : RCL.MCAP.Byte_Array;
+      Publish_Time : Time_Stamp := 0)
+   is
+   begin
+      declare
+         Current : constant File_Entry := This.Files.Last_Element;
+      begin
+         if Current.Count > 0
+           and then ((This.Max_Bytes > 0 and then This.File.Bytes_Written >= This.Max_Bytes)
+                     or else (This.Max_Span > 0
+                              and then Receive_Time >= Current.First
+                              and then Receive_Time - Current.First >= This.Max_Span))
+         then
+            This.File.Close;
+            Start_File (This);
+         end if;
+      end;
+      Ensure_Channel (This, Topic);
+      This.File.Write (This.Topics (Topic).Channel, Receive_Time, Data,
+                       Publish_Time => Publish_Time);
+      declare
+         Current : File_Entry renames This.Files (This.Files.Last_Index);
+         T       : Topic_Entry renames This.Topics (Topic);
+      begin
+         if Current.Count = 0 or else Receive_Time < Current.First then
+            Current.First := Receive_Time;
+         end if;
+         Current.Last := Time_Stamp'Max (Current.Last, Receive_Time);
+         Current.Count := Current.Count + 1;
+         T.Count := T.Count + 1;
+      end;
+      This.Total := This.Total + 1;
+   end Write;
+
+   function Message_Count (This : Bag_Writer) return Unsigned_64 is (This.Total);
+   function File_Count (This : Bag_Writer) return Natural is (Natural (This.Files.Length));
+
+   function YAML_Quoted (S : String) return String is
+      Result : Unbounded_String := To_Unbounded_String ("""");
+   begin
+      for C of S loop
+         case C is
+            when '"' => Append (Result, "\""");
+            when '\' => Append (Result, "\\");
+            when LF => Append (Result, "\n");
+            when others => Append (Result, C);
+         end case;
+      end loop;
+      return To_String (Result) & """";
+   end YAML_Quoted;
+
+   procedure Write_Metadata (This : Bag_Writer) is
+      use Ada.Text_IO;
+      F      : File_Type;
+      First  : Time_Stamp := Time_Stamp'Last;
+      Last   : Time_Stamp := 0;
+   begin
+      for E of This.Files loop
+         if E.Count > 0 then
+            First := Time_Stamp'Min (First, E.First);
+            Last := Time_Stamp'Max (Last, E.Last);
+         end if;
+      end loop;
+      if This.Total = 0 then
+         First := 0;
+      end if;
+      Create (F, Out_File, Ada.Directories.Compose (To_String (This.Directory), "metadata.yaml"));
+      Put_Line (F, "rosbag2_bagfile_information:");
+      Put_Line (F, "  version: 5");
+      Put_Line (F, "  storage_identifier: mcap");
+      Put_Line (F, "  duration:");
+      Put_Line (F, "    nanoseconds: " & Image (if This.Total = 0 then 0 else Last - First));
+      Put_Line (F, "  starting_time:");
+      Put_Line (F, "    nanoseconds_since_epoch: " & Image (First));
+      Put_Line (F, "  message_count: " & Image (This.Total));
+      Put_Line (F, "  topics_with_message_count:");
+      for T of This.Topics loop
+         Put_Line (F, "    - topic_metadata:");
+         Put_Line (F, "        name: " & To_String (T.Name));
+         Put_Line (F, "        type: " & To_String (T.Type_Name));
+         Put_Line (F, "        serialization_format: cdr");
+         Put_Line (F, "        offered_qos_profiles: " & YAML_Quoted (To_String (T.QoS_Text)));
+         Put_Line (F, "      message_count: " & Image (T.Count));
+      end loop;
+      Put_Line (F, "  compression_format: """"");
+      Put_Line (F, "  compression_mode: """"");
+      Put_Line (F, "  relative_file_paths:");
+      for E of This.Files loop
+         Put_Line (F, "    - " & To_String (E.Name));
+      end loop;
+      Put_Line (F, "  files:");
+      for E of This.Files loop
+         Put_Line (F, "    - path: " & To_String (E.Name));
+         Put_Line (F, "      starting_time:");
+         Put_Line (F, "        nanoseconds_since_epoch: " & Image (E.First));
+         Put_Line (F, "      duration:");
+         Put_Line (F, "        nanoseconds: " & Image (E.Last - E.First));
+         Put_Line (F, "      message_count: " & Image (E.Count));
+      end loop;
+      Close (F);
+   end Write_Metadata;
+
+   procedure Close (This : in out Bag_Writer) is
+   begin
+      if This.Open then
+         This.Open := False;
+         This.File.Close;
+         Write_Metadata (This);
+      end if;
+   end Close;
+
+   overriding procedure Finalize (This : in out Bag_Writer) is
+   begin
+      Close (This);
+   exception
+      when others => null;
+   end Finalize;
+
+   --  Reading ---------------------------------------------------------------------
+
+   function Find_Topic (Topics : Topic_Vectors.Vector; Name : String) return Topic_Index'Base is
+   begin
+      for I in Topics.First_Index .. Topics.Last_Index loop
+         if Topics (I).Name = Name then
+            return I;
+         end if;
+      end loop;
+      return 0;
+   end Find_Topic;
+
+   function Listed_Files (Directory : String) return Type_Vectors.Vector is
+      use Ada.Directories;
+      Result : Type_Vectors.Vector;
+      Meta   : constant String := Compose (Directory, "metadata.yaml");
+   begin
+      if Exists (Meta) then
+         begin
+            declare
+               use RCL.YAML;
+               D     : constant Document := Parse_File (Meta);
+               Info  : constant Natural := D.Find (D.Root, "rosbag2_bagfile_information");
+               Paths : constant Natural :=
+                 (if Info /= 0 then D.Find (Info, "relative_file_paths") else 0);
+            begin
+               if Paths /= 0 then
+                  for I in 1 .. D.Length (Paths) loop
+                     Result.Append (Compose (Directory, Simple_Name (D.Text (D.Item (Paths, I)))));
+                  end loop;
+               end if;
+            end;
+         exception
+            when RCL.YAML.Parse_Error =>
+               Result.Clear;  --  A metadata.yaml this reader cannot parse: list the files.
+         end;
+      end if;
+      if Result.Is_Empty then
+         declare
+            package Sorting is new Type_Vectors.Generic_Sorting;
+            Search : Search_Type;
+            Item   : Directory_Entry_Type;
+         begin
+            Start_Search (Search, Directory, "*.mcap", [Ordinary_File => True, others => False]);
+            while More_Entries (Search) loop
+               Get_Next_Entry (Search, Item);
+               Result.Append (Full_Name (Item));
+            end loop;
+            End_Search (Search);
+            Sorting.Sort (Result);
+         end;
+      end if;
+      return Result;
+   end Listed_Files;
+
+   procedure Open (This : in out Bag_Reader; Path : String; Recover : Boolean := False) is
+      use Ada.Directories;
+      Paths : Type_Vectors.Vector;
+   begin
+      This.Files.Clear;
+      This.Topics.Clear;
+      This.Total := 0;
+      This.First := 0;
+      This.Last := 0;
+      This.Size := 0;
+      This.Recover := Recover;
+      This.Compression := Null_Unbounded_String;
+      if not Exists (Path) then
+         raise Bag_Error with Path & ": no such bag (directory or .mcap file)";
+      elsif Kind (Path) = Directory then
+         Paths := Listed_Files (Path);
+         if Paths.Is_Empty then
+            raise Bag_Error with Path & ": no .mcap file in this directory";
+         end if;
+      else
+         Paths.Append (Path);
+      end if;
+      for P of Paths loop
+         if not Exists (P) then
+            raise Bag_Error with P & ": listed in metadata.yaml but missing";
+         end if;
+         This.Current.Open (P, Recover);
+         This.Size := This.Size + Unsigned_64 (Size (P));
+         if This.Compression = Null_Unbounded_String then
+            This.Compression := To_Unbounded_String (This.Current.Compression);
+         end if;
+         for I in 1 .. This.Current.Channel_Count loop
+            declare
+               C     : constant RCL.MCAP.Channel_Info := This.Current.Channel (I);
+               Found : Topic_Index'Base := Find_Topic (This.Topics, To_String (C.Topic));
+               Qos   : constant String :=
+                 (if C.Metadata.Contains ("offered_qos_profiles")
+                  then C.Metadata.Element ("offered_qos_profiles") else "");
+            begin
+               if Found = 0 then
+                  This.Topics.Append
+                    (Topic_Entry'(Name      => C.Topic,
+                                  Type_Name => (if C.Schema = 0 then Null_Unbounded_String
+                                                else This.Current.Find_Schema (C.Schema).Name),
+                                  QoS_Text  => To_Unbounded_String (Qos),
+                                  Count     => 0, Channel => 0));
+                  Found := This.Topics.Last_Index;
+               end if;
+               This.Topics (Found).Count :=
+                 This.Topics (Found).Count + This.Current.Channel_Message_Count (C.Id);
+            end;
+         end loop;
+         if This.Current.Message_Count > 0 then
+            if This.Total = 0 or else This.Current.Start_Time < This.First then
+               This.First := This.Current.Start_Time;
+            end if;
+            This.Last := Time_Stamp'Max (This.Last, This.Current.End_Time);
+         end if;
+         This.Total := This.Total + This.Current.Message_Count;
+         This.Files.Append (File_Entry'(Name  => To_Unbounded_String (P),
+                                        First => This.Current.Start_Time,
+                                        Last  => This.Current.End_Time,
+                                        Count => This.Current.Message_Count));
+         This.Current.Close;
+      end loop;
+   end Open;
+
+   function Topic_Count (This : Bag_Reader) return Natural is (Natural (This.Topics.Length));
+   function Topic_Name (This : Bag_Reader; Topic : Topic_Index) return String is
+     (To_String (This.Topics (Topic).Name));
+   function Topic_Type (This : Bag_Reader; Topic : Topic_Index) return String is
+     (To_String (This.Topics (Topic).Type_Name));
+   function Topic_QoS (This : Bag_Reader; Topic : Topic_Index) return String is
+     (To_String (This.Topics (Topic).QoS_Text));
+   function Topic_Message_Count (This : Bag_Reader; Topic : Topic_Index) return Unsigned_64 is
+     (This.Topics (Topic).Count);
+   function Message_Count (This : Bag_Reader) return Unsigned_64 is (This.Total);
+   function Start_Time (This : Bag_Reader) return Time_Stamp is (This.First);
+   function End_Time (This : Bag_Reader) return Time_Stamp is (This.Last);
+   function File_Count (This : Bag_Reader) return Natural is (Natural (This.Files.Length));
+   function File_Name (This : Bag_Reader; Index : Positive) return String is
+     (To_String (This.Files (Index).Name));
+   function Bytes (This : Bag_Reader) return Unsigned_64 is (This.Size);
+   function Compression (This : Bag_Reader) return String is (To_String (This.Compression));
+
+   procedure Iterate
+     (This    : in out Bag_Reader;
+      Process : not null access procedure
+        (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
+   is
+   begin
+      for F of This.Files loop
+         This.Current.Open (To_String (F.Name), This.Recover);
+         declare
+            type Topic_Map is array (RCL.MCAP.Channel_Id range <>) of Topic_Index'Base;
+            Largest : RCL.MCAP.Channel_Id := 0;
+         begin
+            for I in 1 .. This.Current.Channel_Count loop
+               Largest := RCL.MCAP.Channel_Id'Max (Largest, This.Current.Channel (I).Id);
+            end loop;
+            declare
+               Map : Topic_Map (0 .. Largest) := [others => 0];
+               procedure Each (Msg : RCL.MCAP.Readers.Message; Data : RCL.MCAP.Byte_Array) is
+               begin
+                  Process (Map (Msg.Channel), Msg.Log_Time, Data);
+               end Each;
+            begin
+               for I in 1 .. This.Current.Channel_Count loop
+                  declare
+                     C : constant RCL.MCAP.Channel_Info := This.Current.Channel (I);
+                  begin
+                     Map (C.Id) := Find_Topic (This.Topics, To_String (C.Topic));
+                  end;
+               end loop;
+               This.Current.Iterate (Each'Access);
+            end;
+         end;
+         This.Current.Close;
+      end loop;
+   end Iterate;
+
+   ----------
+   -- Info --
+   ----------
+
+   function Info (This : Bag_Reader) return String is
+      function Size_Image (Bytes : Unsigned_64) return String is
+         function Fixed (X : Long_Float) return String is
+            Hundredths : constant Long_Long_Integer := Long_Long_Integer (X * 100.0);
+            Frac       : constant String := Trim (Long_Long_Integer'Image (Hundredths mod 100));
+         begin
+            return Trim (Long_Long_Integer'Image (Hundredths / 100)) & "."
+              & (if Frac'Length = 1 then "0" & Frac else Frac);
+         end Fixed;
+      begin
+         if Bytes < 1024 then
+            return Image (Bytes) & " B";
+         elsif Bytes < 1024 * 1024 then
+            return Fixed (Long_Float (Bytes) / 1024.0) & " KiB";
+         elsif Bytes < 1024 * 1024 * 1024 then
+            return Fixed (Long_Float (Bytes) / 1024.0 / 1024.0) & " MiB";
+         end if;
+         return Fixed (Long_Float (Bytes) / 1024.0 / 1024.0 / 1024.0) & " GiB";
+      end Size_Image;
+
+      function Seconds (T : Time_Stamp) return String is
+         Frac : constant String := Image (T mod 1_000_000_000);
+      begin
+         return Image (T / 1_000_000_000) & "." & [1 .. 9 - Frac'Length => '0'] & Frac;
+      end Seconds;
+
+      function Date (T : Time_Stamp) return String is
+         use Ada.Calendar;
+         Epoch : constant Time := Formatting.Time_Of (1970, 1, 1, 0.0);
+      begin
+         return Formatting.Image (Epoch + Duration (T / 1_000_000_000)) & " UTC ("
+           & Seconds (T) & ")";
+      exception
+         when others => return Seconds (T);
+      end Date;
+
+      Pad    : constant String := [1 .. 19 => ' '];
+      Result : Unbounded_String;
+      Width  : Natural := 0;
+      Type_Width : Natural := 0;
+   begin
+      Append (Result, LF & "Files:             ");
+      for I in 1 .. This.File_Count loop
+         Append (Result, (if I > 1 then Pad else "")
+                 & Ada.Directories.Simple_Name (This.File_Name (I)) & LF);
+      end loop;
+      Append (Result, "Bag size:          " & Size_Image (This.Size) & LF);
+      Append (Result, "Storage id:        mcap" & LF);
+      Append (Result, "Duration:          " & Seconds (This.Last - This.First) & "s" & LF);
+      Append (Result, "Start:             " & Date (This.First) & LF);
+      Append (Result, "End:               " & Date (This.Last) & LF);
+      Append (Result, "Messages:          " & Image (This.Total) & LF);
+      Append (Result, "Compression:       "
+              & (if This.Compression = Null_Unbounded_String then "none"
+                 else To_String (This.Compression)) & " (chunks)" & LF);
+      for T of This.Topics loop
+         Width := Natural'Max (Width, Length (T.Name));
+         Type_Width := Natural'Max (Type_Width, Length (T.Type_Name));
+      end loop;
+      Append (Result, "Topic information: ");
+      if This.Topics.Is_Empty then
+         Append (Result, LF);
+      end if;
+      for I in This.Topics.First_Index .. This.Topics.Last_Index loop
+         declare
+            T : Topic_Entry renames This.Topics (I);
+         begin
+            Append (Result, (if I > This.Topics.First_Index then Pad else "")
+                    & "Topic: " & To_String (T.Name) & [1 .. Width - Length (T.Name) => ' ']
+                    & " | Type: " & To_String (T.Type_Name)
+                    & [1 .. Type_Width - Length (T.Type_Name) => ' ']
+                    & " | Count: " & Image (T.Count) & " | Serialization Format: cdr" & LF);
+         end;
+      end loop;
+      return To_String (Result);
+   end Info;
+
+end RCL.Bags;

@@ -1,0 +1,184 @@
+--  ROS 2 bags as rosbag2 writes them with its MCAP storage: a directory
+--  holding metadata.yaml and bag_0.mcap, bag_1.mcap... (one more per size or
+--  duration split). MCAP's ros2 profile: one schema per message type
+--  ("ros2msg": the type's .msg text, then each nested type's after a line of
+--  80 '=' and "MSG: pkg/msg/Name"), one channel per topic with message
+--  encoding "cdr" and metadata offered_qos_profiles (the publishers' QoS in
+--  rosbag2's YAML). RCL.Bags.Recorders records live topics; `rclada bag`
+--  is the command line.
+--
+--     W : Bag_Writer;
+--     W.Create ("out/run", Compression => RCL.MCAP.Zstd);
+--     T : constant Topic_Index := W.Add_Topic ("/chatter", "std_msgs/msg/String",
+--                                              Offered_QoS_Text ([RCL.QoS.Default]));
+--     W.Write (T, Receive_Time, Cdr_Bytes);
+--     W.Close;                  --  writes metadata.yaml
+--
+--     R : Bag_Reader;
+--     R.Open ("out/run");      --  a bag directory or one .mcap file
+--     R.Iterate (Play'Access);
+with Ada.Finalization;
+with Interfaces;
+with RCL.MCAP;
+with RCL.QoS;
+
+private with Ada.Containers.Indefinite_Vectors;
+private with Ada.Containers.Vectors;
+private with Ada.Strings.Unbounded;
+private with RCL.MCAP.Writers;
+private with RCL.MCAP.Readers;
+
+package RCL.Bags is
+
+   use type Interfaces.Unsigned_64;
+
+   Bag_Error : exception;
+   --  A bag that cannot be written or read; the message names the path.
+   --  Defects inside an MCAP file raise RCL.MCAP.Format_Error.
+
+   subtype Time_Stamp is RCL.MCAP.Time_Stamp;
+
+   function Message_Definition_Text (Type_Name : String) return String;
+   --  The ros2msg schema of "pkg/msg/Name": its definition, then every type
+   --  it nests (depth first, each once) after the rosbag2 delimiter.
+   --  ROSIDL.Unknown_Type when the interface is not on the path.
+
+   type Profile_Array is array (Positive range <>) of RCL.QoS.Profile;
+
+   function Offered_QoS_Text (Profiles : Profile_Array) return String;
+   --  rosbag2 (Humble) YAML of the publishers' QoS: "- history: 1\n  depth:
+   --  10\n  reliability: 1\n  durability: 2\n ...".
+
+   function Playback_QoS (Offered : String) return RCL.QoS.Profile;
+   --  What rosbag2 play offers for a topic recorded with Offered: reliable
+   --  unless a publisher was best effort, transient local when every one
+   --  was, depth 10 (or the largest recorded depth). Default when Offered is
+   --  empty or not understood.
+
+   --  Writing ---------------------------------------------------------------------
+
+   type Bag_Writer is new Ada.Finalization.Limited_Controlled with private;
+
+   type Topic_Index is new Positive;
+
+   procedure Create
+     (This         : in out Bag_Writer;
+      Directory    : String;
+      Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
+      Max_Bytes    : Interfaces.Unsigned_64 := 0;
+      Max_Duration : Duration := 0.0)
+     with Pre => not This.Is_Open;
+   --  Makes Directory (Bag_Error when it exists already, as ros2 bag record)
+   --  and its first file. Max_Bytes / Max_Duration (0: none) start a new
+   --  file once the current one is that large / spans that long.
+
+   function Is_Open (This : Bag_Writer) return Boolean;
+
+   function Add_Topic
+     (This : in out Bag_Writer; Name, Type_Name, Offered_QoS : String) return Topic_Index
+     with Pre => This.Is_Open;
+   --  A topic ("/chatter", "std_msgs/msg/String"); its schema is
+   --  Message_Definition_Text (Type_Name), or empty when the interface is
+   --  unknown here (the messages are still recorded).
+
+   procedure Write
+     (This         : in out Bag_Writer;
+      Topic        : Topic_Index;
+      Receive_Time : Time_Stamp;
+      Data         : RCL.MCAP.Byte_Array;
+      Publish_Time : Time_Stamp := 0)
+     with Pre => This.Is_Open;
+   --  Data: CDR with its encapsulation header.
+
+   function Message_Count (This : Bag_Writer) return Interfaces.Unsigned_64;
+   function File_Count (This : Bag_Writer) return Natural;
+
+   procedure Close (This : in out Bag_Writer);
+   --  Closes the last file and writes metadata.yaml.
+
+   overriding procedure Finalize (This : in out Bag_Writer);
+
+   --  Reading ---------------------------------------------------------------------
+
+   type Bag_Reader is new Ada.Finalization.Limited_Controlled with private;
+
+   procedure Open (This : in out Bag_Reader; Path : String; Recover : Boolean := False);
+   --  A bag directory (the files metadata.yaml lists, else its *.mcap files
+   --  in name order) or one .mcap file. Bag_Error when there is no MCAP
+   --  file; RCL.MCAP.Format_Error (with the byte offset) when one is bad;
+   --  Recover reads truncated files up to their last complete record.
+
+   function Topic_Count (This : Bag_Reader) return Natural;
+   function Topic_Name (This : Bag_Reader; Topic : Topic_Index) return String;
+   function Topic_Type (This : Bag_Reader; Topic : Topic_Index) return String;
+   function Topic_QoS (This : Bag_Reader; Topic : Topic_Index) return String;
+   --  The offered_qos_profiles text recorded ("" when none).
+   function Topic_Message_Count
+     (This : Bag_Reader; Topic : Topic_Index) return Interfaces.Unsigned_64;
+
+   function Message_Count (This : Bag_Reader) return Interfaces.Unsigned_64;
+   function Start_Time (This : Bag_Reader) return Time_Stamp;
+   function End_Time (This : Bag_Reader) return Time_Stamp;
+   function File_Count (This : Bag_Reader) return Natural;
+   function File_Name (This : Bag_Reader; Index : Positive) return String;
+   function Bytes (This : Bag_Reader) return Interfaces.Unsigned_64;
+   function Compression (This : Bag_Reader) return String;
+
+   procedure Iterate
+     (This    : in out Bag_Reader;
+      Process : not null access procedure
+        (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array));
+   --  Every message, file after file, in receive-time order within a file.
+
+   function Info (This : Bag_Reader) return String;
+   --  What "ros2 bag info" prints: files, size, storage, duration, start,
+   --  end, messages, and a line per topic (type, count, serialization).
+
+private
+
+   use Ada.Strings.Unbounded;
+
+   type Topic_Entry is record
+      Name, Type_Name, QoS_Text : Unbounded_String;
+      Count  : Interfaces.Unsigned_64 := 0;
+      Channel : RCL.MCAP.Channel_Id := 0;
+      --  In the writer's current file (0: not yet added to it).
+   end record;
+   package Topic_Vectors is new Ada.Containers.Vectors (Topic_Index, Topic_Entry);
+
+   type File_Entry is record
+      Name          : Unbounded_String;
+      First, Last   : Time_Stamp := 0;
+      Count         : Interfaces.Unsigned_64 := 0;
+   end record;
+   package File_Vectors is new Ada.Containers.Vectors (Positive, File_Entry);
+
+   package Type_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
+
+   type Bag_Writer is new Ada.Finalization.Limited_Controlled with record
+      Directory    : Unbounded_String;
+      Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
+      Max_Bytes    : Interfaces.Unsigned_64 := 0;
+      Max_Span     : Time_Stamp := 0;
+      File         : RCL.MCAP.Writers.Writer;
+      Files        : File_Vectors.Vector;
+      Topics       : Topic_Vectors.Vector;
+      Schema_Types : Type_Vectors.Vector;
+      --  The types whose schema the current file has, by schema id.
+      Total        : Interfaces.Unsigned_64 := 0;
+      Open         : Boolean := False;
+   end record;
+
+   type Bag_Reader is new Ada.Finalization.Limited_Controlled with record
+      Files       : File_Vectors.Vector;
+      --  Full paths.
+      Topics      : Topic_Vectors.Vector;
+      Total       : Interfaces.Unsigned_64 := 0;
+      First, Last : Time_Stamp := 0;
+      Size        : Interfaces.Unsigned_64 := 0;
+      Compression : Unbounded_String;
+      Recover     : Boolean := False;
+      Current     : RCL.MCAP.Readers.Reader;
+   end record;
+
+end RCL.Bags;

@@ -1,0 +1,120 @@
+--  Writing MCAP files: messages are gathered in chunks (compressed when
+--  asked), each chunk followed by one message index per channel; Close
+--  writes the summary (schemas, channels, statistics, chunk indexes) and the
+--  footer so that readers can seek. Not task-safe: one task writes.
+--
+--     W : Writer;
+--     W.Create ("run.mcap", Profile => "ros2", Compression => Zstd);
+--     S : constant Schema_Id := W.Add_Schema ("std_msgs/msg/String", "ros2msg",
+--                                            "string data");
+--     C : constant Channel_Id := W.Add_Channel ("/chatter", S, "cdr", Empty_Metadata);
+--     W.Write (C, Log_Time => 1_700_000_000_000_000_000, Data => Cdr_Bytes);
+--     W.Close;   --  also done by finalization
+with Ada.Finalization;
+
+private with Ada.Containers.Vectors;
+private with Ada.Streams.Stream_IO;
+private with Ada.Strings.Unbounded;
+private with RCL.MCAP.Buffers;
+
+package RCL.MCAP.Writers is
+
+   type Writer is new Ada.Finalization.Limited_Controlled with private;
+
+   Default_Chunk_Size : constant := 768 * 1024;
+   --  Uncompressed bytes per chunk (rosbag2's MCAP default).
+
+   procedure Create
+     (This        : in out Writer;
+      Path        : String;
+      Profile     : String := "ros2";
+      Library     : String := "rclada";
+      Compression : Compression_Kind := Zstd;
+      Chunk_Size  : Positive := Default_Chunk_Size)
+     with Pre => not This.Is_Open, Post => This.Is_Open;
+   --  Creates (or replaces) Path and writes the magic and the header.
+   --  Ada.IO_Exceptions.Name_Error/Use_Error when it cannot be created.
+
+   function Is_Open (This : Writer) return Boolean;
+
+   function Add_Schema
+     (This : in out Writer; Name, Encoding, Data : String) return Schema_Id
+     with Pre => This.Is_Open;
+   --  Ids count from 1.
+
+   function Add_Channel
+     (This             : in out Writer;
+      Topic            : String;
+      Schema           : Schema_Id;
+      Message_Encoding : String;
+      Metadata         : String_Maps.Map) return Channel_Id
+     with Pre => This.Is_Open;
+   --  Ids count from 1. Schema: one returned by Add_Schema (or 0).
+
+   procedure Write
+     (This         : in out Writer;
+      Channel      : Channel_Id;
+      Log_Time     : Time_Stamp;
+      Data         : Byte_Array;
+      Publish_Time : Time_Stamp := 0;
+      Sequence     : Interfaces.Unsigned_32 := 0)
+     with Pre => This.Is_Open;
+   --  Appends a message to the current chunk, closing the chunk when it
+   --  reaches the chunk size. Publish_Time 0 means Log_Time. Constraint_Error
+   --  for a channel that was not added.
+
+   function Bytes_Written (This : Writer) return Interfaces.Unsigned_64;
+   --  The file's size so far plus the open chunk's uncompressed size (for
+   --  splitting bags by size).
+
+   function Message_Count (This : Writer) return Interfaces.Unsigned_64;
+
+   procedure Close (This : in out Writer)
+     with Post => not This.Is_Open;
+   --  Writes the last chunk, the summary and the footer, and closes the
+   --  file. Nothing when not open.
+
+   overriding procedure Finalize (This : in out Writer);
+   --  Close, errors ignored.
+
+private
+
+   use Ada.Strings.Unbounded;
+   use type Interfaces.Unsigned_32;
+
+   type Index_Entry is record
+      Time, Offset : Time_Stamp;
+   end record;
+   package Index_Vectors is new Ada.Containers.Vectors (Positive, Index_Entry);
+
+   type Channel_State is record
+      Count : Interfaces.Unsigned_64 := 0;
+      Index : Index_Vectors.Vector;
+      --  The open chunk's messages of this channel.
+   end record;
+   package Channel_Vectors is new Ada.Containers.Vectors (Positive, Channel_State);
+
+   type Writer is new Ada.Finalization.Limited_Controlled with record
+      File           : Ada.Streams.Stream_IO.File_Type;
+      Path           : Unbounded_String;
+      Position       : Interfaces.Unsigned_64 := 0;
+      Compression    : Compression_Kind := Zstd;
+      Chunk_Size     : Positive := Default_Chunk_Size;
+      Chunk          : Buffers.Buffer;
+      Chunk_Start    : Time_Stamp := Time_Stamp'Last;
+      Chunk_End      : Time_Stamp := 0;
+      Chunk_Messages : Natural := 0;
+      Scratch        : Buffers.Buffer;
+      Compressed     : Buffers.Buffer;
+      Channels       : Channel_Vectors.Vector;
+      Schema_Count   : Interfaces.Unsigned_16 := 0;
+      Message_Total  : Interfaces.Unsigned_64 := 0;
+      First_Time     : Time_Stamp := Time_Stamp'Last;
+      Last_Time      : Time_Stamp := 0;
+      Chunk_Count    : Interfaces.Unsigned_32 := 0;
+      Schema_Records : Buffers.Buffer;
+      Channel_Records : Buffers.Buffer;
+      Chunk_Indexes  : Buffers.Buffer;
+   end record;
+
+end RCL.MCAP.Writers;
