@@ -251,7 +251,8 @@ package body Rclada_Commands is
    begin
       return RCL.Nodes.Init ("_rclada_" & Pid (Pid'First + 1 .. Pid'Last),
                              Options => (Start_Parameter_Services => False,
-                                         Use_Global_Arguments     => False));
+                                         Use_Global_Arguments     => False,
+                                         others                   => <>));
    end Tool_Node;
 
    --------------

@@ -1,9 +1,11 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
+with RCL.Allocators;
 with RCL.Events;
 with RCL.Logging;
 with RCL.Timers;
+with ROSIDL.Static.Storage;
 
 package body RCL.Executors is
 
@@ -37,15 +39,22 @@ package body RCL.Executors is
      (Node : not null Node_Access;
       Sub  : not null RCL.Nodes.Subscription_Access;
       Data : RCL.DDS.Byte_Array;
-      Info : ROSIDL.Message_Info) is
+      Info : ROSIDL.Message_Info)
+   is
+      Outer : constant RCL.Allocators.Pool_Access := ROSIDL.Static.Storage.Task_Pool;
+      --  Decoding allocates from the node's pool (RCL.Allocators).
    begin
+      ROSIDL.Static.Storage.Set_Task_Pool (Node.Pool);
       Sub.Handle.Deliver (Node.all, Data, Info);
+      ROSIDL.Static.Storage.Set_Task_Pool (Outer);
    exception
       when E : ROSIDL.Decode_Error =>
+         ROSIDL.Static.Storage.Set_Task_Pool (Outer);
          RCL.Logging.Error
            ("dropped a malformed sample on " & Sub.Topic.all & ": "
             & Ada.Exceptions.Exception_Message (E), Logger => Node.Logger_Name);
       when E : others =>
+         ROSIDL.Static.Storage.Set_Task_Pool (Outer);
          RCL.Logging.Error
            ("exception in the callback of subscription " & Sub.Topic.all & ": "
             & Ada.Exceptions.Exception_Name (E) & ": " & Ada.Exceptions.Exception_Message (E),

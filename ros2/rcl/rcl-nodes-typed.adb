@@ -103,8 +103,14 @@ package body RCL.Nodes.Typed is
       end if;
    end Deliver;
 
-   type Slot_Access is access Slot;
+   type Slot_Access is access all Slot;
    procedure Free is new Ada.Unchecked_Deallocation (Slot, Slot_Access);
+
+   procedure Release (State : System.Address) is
+      S : Slot_Access := Slot_Access (Slot_Addresses.To_Pointer (State));
+   begin
+      Free (S);
+   end Release;
 
    procedure Subscribe
      (Node     : in out Nodes.Node'Class;
@@ -117,16 +123,13 @@ package body RCL.Nodes.Typed is
    is
       Stored : constant Callback_Access with Import, Address => Callback'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      S : Slot_Access := new Slot;
+      S : constant Slot_Access := new Slot;
    begin
       S.Callback := Stored;
       Node.Subscribe_Closure (Handling.DDS_Type_Name, Topic, Deliver'Access,
                               Slot_Addresses.To_Address (Slot_Addresses.Object_Pointer (S)),
-                              QoS);
-   exception
-      when others =>
-         Free (S);
-         raise;
+                              Release'Access, QoS);
+      --  On failure the handler, then the slot, were released.
    end Subscribe;
 
 end RCL.Nodes.Typed;

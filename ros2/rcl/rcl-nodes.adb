@@ -112,6 +112,7 @@ package body RCL.Nodes is
             N.Original := To_Unbounded_String (Name);
             N.Namespace := To_Unbounded_String (NS);
             N.Remapped := Options.Use_Global_Arguments;
+            N.Pool := Options.Pool;
             RCL.Graph.Add_Node (NS, New_Name, N.Graph_Id);
             if RCL.Arguments.Rosout_Enabled then
                RCL.Rosout.Enable;
@@ -421,9 +422,32 @@ package body RCL.Nodes is
       Data  : RCL.DDS.Byte_Array;
       Info  : ROSIDL.Message_Info);
 
+   type Release_Callback is access procedure (State : System.Address);
+
+   type Release_Guard is new Ada.Finalization.Limited_Controlled with record
+      Release : Release_Callback;
+      State   : System.Address := System.Null_Address;
+   end record;
+
+   overriding procedure Finalize (This : in out Release_Guard);
+
+   overriding procedure Finalize (This : in out Release_Guard) is
+      Release : constant Release_Callback := This.Release;
+   begin
+      This.Release := null;
+      if Release /= null then
+         Release (This.State);
+      end if;
+   exception
+      when others =>
+         null;
+   end Finalize;
+
    type Closure_Handler is new Handler with record
       Deliver : Closure_Callback;
       State   : System.Address;
+      Guard   : Release_Guard;
+      --  Releases State with the handler.
    end record;
 
    overriding procedure Deliver
@@ -441,6 +465,8 @@ package body RCL.Nodes is
       This.Deliver (This.State, Node, Data, Info);
    end Deliver;
 
+   function Pool (This : Node) return RCL.Allocators.Pool_Access is (This.Pool);
+
    procedure Subscribe_Closure
      (This      : in out Node;
       Type_Name : String;
@@ -451,12 +477,18 @@ package body RCL.Nodes is
          Data  : RCL.DDS.Byte_Array;
          Info  : ROSIDL.Message_Info);
       State     : System.Address;
+      Release   : not null access procedure (State : System.Address);
       QoS       : RCL.QoS.Profile := RCL.QoS.Default)
    is
       Stored : constant Closure_Callback with Import, Address => Deliver'Address;
-      --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      H : Handler_Access := new Closure_Handler'(Deliver => Stored, State => State);
+      Stored_Release : constant Release_Callback with Import, Address => Release'Address;
+      --  GNAT: the same subprogram accesses, kept beyond the call (see spec).
+      H : Handler_Access := new Closure_Handler;
    begin
+      Closure_Handler (H.all).Deliver := Stored;
+      Closure_Handler (H.all).State := State;
+      Closure_Handler (H.all).Guard.Release := Stored_Release;
+      Closure_Handler (H.all).Guard.State := State;
       This.Add_Subscription (Type_Name, Topic, H, QoS);
    exception
       when others =>

@@ -15,6 +15,7 @@ with Ada.Real_Time;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.Allocators;
 with RCL.DDS;
 with RCL.Graph;
 with RCL.Publishers;
@@ -36,6 +37,10 @@ package RCL.Nodes is
       --  rclcpp node does unless told otherwise.
       Use_Global_Arguments     : Boolean := True;
       --  The command line's remapping rules (--ros-args -r) apply to it.
+      Pool                     : RCL.Allocators.Pool_Access :=
+        RCL.Allocators.Global_Allocator;
+      --  Where decoding for this node's subscriptions allocates (see
+      --  RCL.Allocators); the standard heap by default.
    end record;
 
    Default_Options : constant Node_Options := (others => <>);
@@ -66,6 +71,9 @@ package RCL.Nodes is
 
    function Expand_Service (This : Node; Service : String) return String;
    --  The same for a service name (rules for services apply).
+
+   function Pool (This : Node) return RCL.Allocators.Pool_Access;
+   --  Options.Pool of Init.
 
    function Original_Name (This : Node) return String;
    --  The name the program gave, before "-r __node:=" renamed it.
@@ -135,10 +143,12 @@ package RCL.Nodes is
          Data  : RCL.DDS.Byte_Array;
          Info  : ROSIDL.Message_Info);
       State     : System.Address;
+      Release   : not null access procedure (State : System.Address);
       QoS       : RCL.QoS.Profile := RCL.QoS.Default);
    --  Not for users (RCL.Nodes.Typed): as Subscribe_Raw, Deliver receiving
-   --  State with every sample. Deliver and State must stay valid as long
-   --  as the node exists.
+   --  State with every sample; Release (State) when the subscription ends
+   --  (the node's finalization, or a failed Subscribe_Closure). Deliver,
+   --  Release and State must stay valid as long as the node exists.
 
    --  Liveliness of publishers ---------------------------------------------
 
@@ -375,6 +385,7 @@ private
       Remapped  : Boolean := True;
       --  Options.Use_Global_Arguments.
       Params_On : Boolean := False;
+      Pool      : RCL.Allocators.Pool_Access;
       Entities  : Registry;
       Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
       Serial    : Node_Serial := 0;

@@ -55,3 +55,31 @@ def test_bad_plan_is_positioned(tmp_path):
     assert p.returncode == 1
     assert f"{f}:7: alternative 2 (line 5) of <or id=\"o\"> has no task" in p.stderr
     assert "raised" not in p.stderr
+
+
+def test_short_budgets_are_honoured():
+    """--time from 50 ms up: a valid plan within the budget plus a slack for
+    the set-up on a loaded machine (teams, the TSP, and a tour above the
+    1000-task size that skips the anneal)."""
+    import random
+    import time
+    rng = random.Random(5)
+    big = REPO / "obj" / "plan-cli-1200.tsp"
+    big.parent.mkdir(exist_ok=True)
+    big.write_text("NAME: r1200\nTYPE: TSP\nDIMENSION: 1200\nEDGE_WEIGHT_TYPE: EUC_2D\n"
+                   "NODE_COORD_SECTION\n"
+                   + "".join("%d %d %d\n" % (i + 1, rng.randrange(10000), rng.randrange(10000))
+                             for i in range(1200)) + "EOF\n")
+    tsplib = REPO / "share" / "tsplib"
+    for path, extra, budget in [(tsplib / "eil51.tsp", ["--robots", "3", "--objective", "minmax"], 0.05),
+                                (tsplib / "kroA100.tsp", [], 0.05),
+                                (tsplib / "eil76.tsp", ["--robots", "5"], 0.2),
+                                (big, [], 0.5)]:
+        began = time.monotonic()
+        p = run(str(path), *extra, "--time", "%gs" % budget, "--quiet", "--json", "-")
+        took = time.monotonic() - began
+        assert p.returncode == 0, p.stderr
+        d = json.loads(p.stdout)
+        assert d["valid"], path
+        assert d["time_used"] <= budget + 1.0, (path.name, budget, d["time_used"])
+        assert took <= budget + 4.0, (path.name, budget, took)

@@ -1,7 +1,9 @@
 """Allocation-free steady state of the typed message path: bin/typed_alloc_check
 publishes generated messages and takes them back (decode + callback) on one
-node, counting every Ada heap allocation (__gnat_malloc wrapped at link
-time; the program first checks that the counter sees an allocation). After
+node, counting the Ada heap allocations of the program's own code
+(__gnat_malloc wrapped at link time; the program first checks that the
+counter sees an allocation; calls inside the shared GNAT run time, such as
+Unbounded_String's, are not seen). After
 warm-up a bounded type (geometry_msgs/Twist) must allocate nothing; the
 unbounded LaserScan with unchanged sizes is reported too."""
 import re

@@ -24,6 +24,7 @@ with ROSIDL.Static.Tests;
 with ROSIDL.Type_Hashes.Tests;
 with Sancta.Allocation.Branch_And_Cut.Tests;
 with Sancta.Allocation.Local_Search.Tests;
+with Sancta.Allocation.Replanning.Tests;
 with Sancta.Allocation.Plan_Tests;
 with Sancta.Allocation.Tests;
 with Sancta.Team.Tests;
@@ -63,6 +64,7 @@ package body All_Suites is
       Result.Add_Test (Sancta.Allocation.Plan_Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Branch_And_Cut.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Local_Search.Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Replanning.Tests.Suite);
       Result.Add_Test (Sancta.Team.Tests.Suite);
       --  Each area adds its suite here, e.g.
       --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);

@@ -55,9 +55,11 @@ package body Sancta.Commands.Plan is
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
       Put_Line ("                       (evaluations per move drawn; default 0.2, 0 = none)");
-      Put_Line ("  --lk F               one robot on a closed symmetric tour: share of the");
-      Put_Line ("                       budget for iterated 2-opt/Or-opt local search after");
-      Put_Line ("                       the anneal (default 0.8, 0 = none)");
+      Put_Line ("  --lk F               one robot: share of the budget for iterated");
+      Put_Line ("                       2-opt/Or-opt/Lin-Kernighan search after the anneal");
+      Put_Line ("                       (default 0.8, 0 = none; above 1000 tasks on a closed");
+      Put_Line ("                       tour, the whole budget from a nearest-neighbour tour);");
+      Put_Line ("                       teams: every route gets one such descent");
       Put_Line ("  --t0 F, --cool R     start temperature = F x mean uphill delta (0.5),");
       Put_Line ("                       end temperature = start / R (2000)");
       Put_Line ("  --no-polish          skip the final local search");

@@ -9,6 +9,7 @@
 --     Scan.Ranges.Append (2.0);            --  Length = 721
 --     Put_Line (Scan.Ranges.Length'Image);
 with Ada.Finalization;
+with ROSIDL.Static.Storage;
 
 generic
    type Element_Type is private;
@@ -17,6 +18,9 @@ generic
    --  The value of new elements (Set_Length, Append of a default).
    with function "=" (Left, Right : Element_Type) return Boolean is <>;
 package ROSIDL.Static.Unbounded_Sequences is
+
+   Message_Pool : ROSIDL.Static.Storage.Forwarding_Pool
+     renames ROSIDL.Static.Storage.Message_Pool;
 
    type Sequence is new Ada.Finalization.Controlled with private
      with Constant_Indexing => Constant_Reference,
@@ -63,7 +67,9 @@ package ROSIDL.Static.Unbounded_Sequences is
    --  Not for users (the generated codecs): elements 0 .. Length (S) - 1
    --  of Storage (S).all are the sequence's; null when nothing was ever
    --  stored.
-   type Element_Array_Access is access Element_Array;
+   type Element_Array_Access is access Element_Array
+     with Storage_Pool => Message_Pool;
+   --  From the pool the allocating task selected (ROSIDL.Static.Storage).
    function Storage (S : Sequence) return Element_Array_Access with Inline;
 
    overriding procedure Adjust (S : in out Sequence);

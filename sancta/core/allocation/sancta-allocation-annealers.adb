@@ -1,3 +1,4 @@
+with Ada.Real_Time;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Searches;
@@ -58,6 +59,38 @@ package body Sancta.Allocation.Annealers is
       end if;
    end Improve_Tour;
 
+   --  Every route shortened by the route search (Local_Search.Polish_Routes)
+   --  in Budget (0.0: one descent each): for criteria without the mean
+   --  completion time, which route order alone does not decide.
+   procedure Polish_Routes
+     (P : Problem; Opts : Options; Budget : Duration; Kicks : Boolean;
+      Best : in out Assignment; Stats : in out Progress)
+   is
+      Search : Local_Search.Statistics;
+      Before : constant Duration := Stats.Elapsed;
+   begin
+      Local_Search.Polish_Routes (P, Best, Budget, Opts.Seed, Search,
+                                  Neighbours => Opts.Neighbours, Check => Opts.Check,
+                                  Kicks => Kicks);
+      Stats.Elapsed := Before + Search.Elapsed;
+      if Search.After < Search.Before then
+         declare
+            Old : constant Long_Float := Stats.Best;
+         begin
+            Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
+            Stats.Current := Stats.Best;
+            Stats.Polish_Gain := Stats.Polish_Gain + (Old - Stats.Best);
+            Stats.Time_To_Best := Before + Search.Time_To_Best;
+         end;
+         if Opts.Box /= null then
+            Opts.Box.Post (Best, Stats.Best);
+         end if;
+      end if;
+   end Polish_Routes;
+
+   Team_Polish_Share : constant := 0.05;
+   --  The share of a time budget kept for the routes' descents (teams).
+
    procedure Solve
      (P      : Problem;
       Opts   : Options;
@@ -65,19 +98,56 @@ package body Sancta.Allocation.Annealers is
       Stats  : out Progress;
       Report : Reporter := null)
    is
+      Single_Tour : constant Boolean := Local_Search.Applies (P);
+      Route_Polish : constant Boolean := Opts.Polish and then Opts.Criterion.Ave_Weight = 0.0;
+      One_Route : constant Boolean :=
+        Route_Polish and then P.Robots = 1 and then not Has_Plan (P)
+        and then (for all T in 1 .. P.Tasks => P.Alt_Count (T) = 1);
+      --  One robot, nothing to choose but the order (open, frozen, other
+      --  depot): the route search is the whole problem. With several
+      --  robots, the anneal keeps the budget and the routes get one descent.
       Share : constant Long_Float :=
         (if Opts.Local_Search > 0.0 and then Opts.Time_Limit > 0.0
-           and then Local_Search.Applies (P)
+           and then (Single_Tour or else One_Route)
          then Long_Float'Min (0.95, Opts.Local_Search) else 0.0);
       Anneal_Opts : Options := Opts;
       Run : Searches.Search (P.Robots, P.Tasks);
    begin
-      Anneal_Opts.Time_Limit := Duration (Long_Float (Opts.Time_Limit) * (1.0 - Share));
+      if Share > 0.0 and then Single_Tour and then P.Tasks > Local_Search.Direct_Size then
+         --  A large single tour: the search alone, from a nearest-neighbour tour.
+         declare
+            Started : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+            use type Ada.Real_Time.Time;
+         begin
+            Best := Local_Search.Nearest_Neighbour_Tour (P);
+            Stats := (others => <>);
+            Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
+            Stats.Current := Stats.Best;
+            Stats.Elapsed := Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started);
+            Improve_Tour (P, Opts, Best, Stats);
+            return;
+         end;
+      end if;
+      Anneal_Opts.Time_Limit := Duration (Long_Float (Opts.Time_Limit)
+                                          * (1.0 - (if Share > 0.0 then Share
+                                                    elsif Route_Polish then Team_Polish_Share
+                                                    else 0.0)));
       Searches.Start (Run, P, Anneal_Opts, Best, Report);
       Searches.Anneal (Run, P);
       Searches.Finish (Run, P, Best, Stats);
-      if Share > 0.0 then
+      if Share > 0.0 and then Single_Tour then
          Improve_Tour (P, Opts, Best, Stats);
+      elsif Share > 0.0 then
+         Polish_Routes (P, Opts, Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed), True,
+                        Best, Stats);
+      elsif Route_Polish then
+         --  Descents only: in what is left of the budget (at least 1 ms),
+         --  or unbounded under a move budget alone (deterministic).
+         Polish_Routes
+           (P, Opts,
+            (if Opts.Time_Limit > 0.0
+             then Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed) else 0.0),
+            False, Best, Stats);
       end if;
    end Solve;
 

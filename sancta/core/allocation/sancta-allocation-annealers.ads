@@ -23,7 +23,10 @@
 --  schedule; budgets by time, iterations and convergence; a final descent
 --  (polish) with the neighbour moves. Per-kind statistics in Progress.Kinds.
 --  On single closed tours, a share of the time may then go to iterated
---  local search (Opts.Local_Search, package Local_Search).
+--  local search (Opts.Local_Search, package Local_Search); otherwise, for
+--  criteria without the mean completion time, every route is polished by
+--  the same search (2-opt, Or-opt, LK chains of depth 5): one descent, or
+--  iterated in that share of the time for a single robot.
 --
 --     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
 --     Solve (P.all, O, Best, Stats);
@@ -108,9 +111,11 @@ package Sancta.Allocation.Annealers is
       --  (a task and some of its neighbours taken out and put back at their
       --  best places); 0 = none.
       Local_Search : Long_Float := 0.0;
-      --  One robot on a closed symmetric tour (Local_Search.Applies): the
-      --  share of Time_Limit given, after the anneal, to iterated 2-opt /
-      --  Or-opt search with candidate lists and don't-look bits; 0 = none.
+      --  The share of Time_Limit given, after the anneal, to iterated 2-opt /
+      --  Or-opt / LK search with candidate lists and don't-look bits: on the
+      --  tour (one robot on a closed symmetric tour, Local_Search.Applies)
+      --  or on one robot's route (Polish, no mean completion time, nothing
+      --  to choose but the order); 0 = none. Teams get one route descent.
       Target       : Long_Float := 0.0;
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).

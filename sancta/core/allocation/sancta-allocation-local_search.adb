@@ -1,4 +1,5 @@
 with Ada.Real_Time;
+with Ada.Unchecked_Deallocation;
 with Sancta.Allocation.Random;
 
 package body Sancta.Allocation.Local_Search is
@@ -12,27 +13,49 @@ package body Sancta.Allocation.Local_Search is
       and then (for all T in 1 .. P.Tasks => P.Alt_Count (T) = 1)
       and then P.All_Feasible);
 
-   procedure Improve
-     (P          : Problem;
-      A          : in out Assignment;
-      Time_Limit : Duration;
-      Seed       : Interfaces.Unsigned_64;
-      Stats      : out Statistics;
-      Neighbours : Positive := 8;
-      Check      : Boolean := False)
+   Bound : constant Cost := 2 ** 56;
+   --  Minus the cost of the forced arc between a route's depot and its
+   --  separate end node (so that no improving move ever breaks it).
+
+   --  Iterated local search on one robot's route: from location Depot
+   --  through the tasks Route (their locations in Route_Location), back to
+   --  Depot or, when Has_End, to End_Location (0: anywhere). The route is
+   --  held as a cycle of nodes 0 (the depot), 1 .. M (the tasks) and, with
+   --  an end, M + 1 joined to the depot by an arc of cost -Bound.
+   procedure Search_Route
+     (P              : Problem;
+      Robot          : Positive;
+      Depot          : Positive;
+      Has_End        : Boolean;
+      End_Location   : Natural;
+      Route          : in out Count_Array;
+      Route_Location : Count_Array;
+      Time_Limit     : Duration;
+      Seed           : Interfaces.Unsigned_64;
+      Stats          : in out Statistics;
+      Neighbours     : Positive;
+      Check          : Boolean;
+      Kicks          : Boolean := True)
    is
-      N : constant Positive := P.Tasks + 1;
-      --  Nodes 0 (the depot) .. Tasks, at positions 0 .. N - 1 of the cycle.
+      M : constant Natural := Route'Length;
+      Route_In : constant Count_Array (1 .. M) := Route;
+      N : constant Positive := M + 1 + (if Has_End then 1 else 0);
+      --  Nodes 0 .. N - 1, at positions 0 .. N - 1 of the cycle.
+      Last : constant Natural := N - 1;
       subtype Node is Natural range 0 .. N - 1;
       type Node_Array is array (Node) of Node;
       type Flag_Array is array (Node) of Boolean;
       K : constant Positive := Positive'Min (Neighbours, N - 2);
       type Near_Matrix is array (Node, 1 .. K) of Node;
       type Near_Access is access Near_Matrix;
-      Location : constant array (Node) of Positive :=
-        [for V in Node => (if V = 0 then P.Start (1) else Location_Of (P, V))];
+      Location : constant array (Node) of Natural :=
+        [for V in Node =>
+           (if V = 0 then Depot
+            elsif V <= M then Route_Location (Route'First + V - 1)
+            else End_Location)];
       Order, Position, Saved_Order, Saved_Position : Node_Array;
-      Near : constant Near_Access := new Near_Matrix;
+      Near : Near_Access := new Near_Matrix;
+      procedure Free is new Ada.Unchecked_Deallocation (Near_Matrix, Near_Access);
       Queue : Node_Array;
       Queued : Flag_Array := [others => False];
       Head, Count : Natural := 0;
@@ -41,7 +64,12 @@ package body Sancta.Allocation.Local_Search is
       Started  : constant Time := Clock;
       Deadline : constant Time := Started + To_Time_Span (Time_Limit);
 
-      function D (U, V : Node) return Cost is (P.Distance (Location (U), Location (V)))
+      function Forced (U, V : Node) return Boolean is
+        (Has_End and then ((U = 0 and then V = Last) or else (V = 0 and then U = Last)))
+        with Inline;
+      function D (U, V : Node) return Cost is
+        (if Forced (U, V) then -Bound
+         else Robot_Distance (P, Robot, Location (U), Location (V)))
         with Inline;
       function Next (V : Node) return Node is (Order ((Position (V) + 1) mod N)) with Inline;
       function Previous (V : Node) return Node is (Order ((Position (V) + N - 1) mod N))
@@ -101,6 +129,114 @@ package body Sancta.Allocation.Local_Search is
             Two_Opt_Move (C, S2, S1, D2);        --  ... C S1 .. S2 D2
          end if;
       end Or_Move;
+
+      function Tour_Length return Cost is
+         Sum : Cost := 0;
+      begin
+         for I in 0 .. N - 1 loop
+            Sum := Sum + D (Order (I), Order ((I + 1) mod N));
+         end loop;
+         return Sum;
+      end Tour_Length;
+
+      Max_Depth : constant := 5;
+      --  LK chains of at most this many 2-opt steps (a sequential move of
+      --  depth 5: 5 arcs out, 5 in), the widest first levels.
+      function Breadth (Level : Positive) return Positive is
+        (case Level is when 1 => 5, when 2 => 3, when others => 1);
+
+      procedure Verify is
+      begin
+         if Check and then Length /= Tour_Length then
+            raise Program_Error with "local search: length" & Length'Image
+              & " /= recomputed" & Tour_Length'Image;
+         end if;
+      end Verify;
+
+      --  One level of a Lin-Kernighan chain: the arc (T1, T2) is out (its
+      --  cost less the arcs added so far is Gain); for the best few T3 near
+      --  T2 with Gain - D (T2, T3) > 0, the 2-opt move that adds (T2, T3)
+      --  and (T1, T4) is applied (T4 the neighbour of T3 that keeps a
+      --  cycle), and the chain goes on from (T1, T4) until the tour is
+      --  shorter than Start_Length (kept) or the depth is reached (undone).
+      function Chain
+        (T1, T2 : Node; Gain : Cost; Level : Positive; Start_Length : Cost) return Boolean
+      is
+         Width : constant Positive := Breadth (Level);
+         Forward : constant Boolean := Next (T1) = T2;
+         Pick_3, Pick_4 : array (1 .. 5) of Node := [others => 0];
+         Score : array (1 .. 5) of Cost := [others => 0];
+         Found : Natural := 0;
+      begin
+         for I in 1 .. K loop
+            declare
+               T3 : constant Node := Near (T2, I);
+               G1 : constant Cost := Gain - D (T2, T3);
+            begin
+               exit when G1 <= 0;
+               if T3 /= T1 and then T3 /= Next (T2) and then T3 /= Previous (T2) then
+                  declare
+                     T4 : constant Node := (if Forward then Previous (T3) else Next (T3));
+                     G2 : constant Cost := G1 + D (T3, T4);
+                     J : Natural;
+                  begin
+                     if G2 > 0 and then (Found < Width or else G2 > Score (Found)) then
+                        if Found < Width then
+                           Found := Found + 1;
+                        end if;
+                        J := Found;
+                        while J > 1 and then Score (J - 1) < G2 loop
+                           Score (J) := Score (J - 1);
+                           Pick_3 (J) := Pick_3 (J - 1);
+                           Pick_4 (J) := Pick_4 (J - 1);
+                           J := J - 1;
+                        end loop;
+                        Score (J) := G2;
+                        Pick_3 (J) := T3;
+                        Pick_4 (J) := T4;
+                     end if;
+                  end;
+               end if;
+            end;
+         end loop;
+         for C in 1 .. Found loop
+            declare
+               T3 : constant Node := Pick_3 (C);
+               T4 : constant Node := Pick_4 (C);
+               Saving : constant Cost := D (T1, T2) + D (T4, T3) - D (T2, T3) - D (T1, T4);
+            begin
+               Two_Opt_Move (T1, T2, T4, T3);
+               Length := Length - Saving;
+               Verify;
+               if Length < Start_Length
+                 or else (Level < Max_Depth
+                          and then Chain (T1, T4, Score (C), Level + 1, Start_Length))
+               then
+                  Push (T2); Push (T3); Push (T4);
+                  return True;
+               end if;
+               Two_Opt_Move (T1, T4, T2, T3);
+               Length := Length + Saving;
+               Verify;
+            end;
+         end loop;
+         return False;
+      end Chain;
+
+      function Chain_From (T1 : Node) return Boolean is
+      begin
+         for Side in 1 .. 2 loop
+            declare
+               T2 : constant Node := (if Side = 1 then Next (T1) else Previous (T1));
+            begin
+               if Chain (T1, T2, D (T1, T2), 1, Length) then
+                  Push (T1);
+                  return True;
+               end if;
+            end;
+         end loop;
+         return False;
+      end Chain_From;
 
       function Improve_From (A : Node) return Boolean is
       begin
@@ -206,29 +342,22 @@ package body Sancta.Allocation.Local_Search is
          return False;
       end Improve_From;
 
-      function Tour_Length return Cost is
-         Sum : Cost := 0;
-      begin
-         for I in 0 .. N - 1 loop
-            Sum := Sum + D (Order (I), Order ((I + 1) mod N));
-         end loop;
-         return Sum;
-      end Tour_Length;
 
+      --  Until no move improves, or past the deadline when there is one.
       procedure Descend is
+         Pops : Natural := 0;
       begin
          while Count > 0 loop
+            Pops := Pops + 1;
+            exit when Time_Limit > 0.0 and then Pops mod 128 = 0 and then Clock >= Deadline;
             declare
                V : constant Node := Queue (Head);
             begin
                Head := (Head + 1) mod N;
                Count := Count - 1;
                Queued (V) := False;
-               while Improve_From (V) loop
-                  if Check and then Length /= Tour_Length then
-                     raise Program_Error with "local search: length" & Length'Image
-                       & " /= recomputed" & Tour_Length'Image;
-                  end if;
+               while Improve_From (V) or else Chain_From (V) loop
+                  Verify;
                end loop;
             end;
          end loop;
@@ -281,6 +410,9 @@ package body Sancta.Allocation.Local_Search is
                end loop;
             end Put;
          begin
+            if Before < -Bound / 2 then
+               return;   --  it would break the forced arc
+            end if;
             Length := Length - Before + After;
             Put (0, Cuts (1) - 1);
             Put (Cuts (2), Cuts (3) - 1);
@@ -292,17 +424,23 @@ package body Sancta.Allocation.Local_Search is
          end;
       end Kick;
 
-
+      Started_Length : Cost;
    begin
-      Stats := (others => <>);
-      --  Candidate lists: the K nearest nodes of each node.
+      if M < 5 then
+         Free (Near);
+         return;
+      end if;
+      --  Candidate lists: the K nearest nodes of each node (never the
+      --  forced arc's other end).
       for U in Node loop
          declare
             Best : array (1 .. K) of Cost := [others => Cost'Last];
             Found : Natural := 0;
          begin
             for V in Node loop
-               if V /= U and then (Found < K or else D (U, V) < Best (Found)) then
+               if V /= U and then not Forced (U, V)
+                 and then (Found < K or else D (U, V) < Best (Found))
+               then
                   declare
                      I : Natural;
                   begin
@@ -320,26 +458,29 @@ package body Sancta.Allocation.Local_Search is
                   end;
                end if;
             end loop;
+            for I in Found + 1 .. K loop
+               Near (U, I) := Near (U, 1);
+            end loop;
          end;
       end loop;
-      Order (0) := 0;
-      for I in 1 .. A.Length (1) loop
-         Order (I) := A.Tour (1, I);
-      end loop;
       for I in Node loop
-         Position (Order (I)) := I;
-         Push (Order (I));
+         Order (I) := I;
+         Position (I) := I;
+         Push (I);
       end loop;
       Length := Tour_Length;
-      Stats.Before := Length;
+      Started_Length := Length;
+      Stats.Before := Stats.Before + Length + (if Has_End then Bound else 0);
       Descend;
-      Stats.Time_To_Best := To_Duration (Clock - Started);
-      if Time_Limit > 0.0 then
+      if Length < Started_Length then
+         Stats.Time_To_Best := To_Duration (Clock - Started);
+      end if;
+      if Time_Limit > 0.0 and then Kicks then
          Saved_Order := Order;
          Saved_Position := Position;
          Saved_Length := Length;
-         loop
-            if Stats.Kicks mod 16 = 0 and then Clock >= Deadline then
+         for Kick_Number in Long_Long_Integer range 0 .. Long_Long_Integer'Last loop
+            if Kick_Number mod 16 = 0 and then Clock >= Deadline then
                exit;
             end if;
             Stats.Kicks := Stats.Kicks + 1;
@@ -361,16 +502,136 @@ package body Sancta.Allocation.Local_Search is
          end loop;
       end if;
       pragma Assert (Length = Tour_Length, "local search: length drifted");
-      --  Back to the assignment, from the depot on.
+      --  Back to the route, from the depot on (towards the end node last).
       declare
          Z : constant Node := Position (0);
+         Forward : constant Boolean := not Has_End or else Order ((Z + N - 1) mod N) = Last;
       begin
-         for I in 1 .. N - 1 loop
-            A.Tour (1, I) := Order ((Z + I) mod N);
+         for I in 1 .. M loop
+            Route (Route'First + I - 1) :=
+              Route_In (Order ((if Forward then Z + I else Z + N - I) mod N));
          end loop;
       end;
-      Stats.After := Length;
+      Stats.After := Stats.After + Length + (if Has_End then Bound else 0);
+      Free (Near);
+   end Search_Route;
+
+   procedure Improve
+     (P          : Problem;
+      A          : in out Assignment;
+      Time_Limit : Duration;
+      Seed       : Interfaces.Unsigned_64;
+      Stats      : out Statistics;
+      Neighbours : Positive := 8;
+      Check      : Boolean := False)
+   is
+      Started : constant Time := Clock;
+      Route : Count_Array (1 .. P.Tasks) := [for I in 1 .. P.Tasks => A.Tour (1, I)];
+   begin
+      Stats := (others => <>);
+      Search_Route (P, 1, P.Start (1), False, 0, Route,
+                    [for I in 1 .. P.Tasks => Location_Of (P, Route (I))],
+                    Time_Limit, Seed, Stats, Neighbours, Check);
+      for I in Route'Range loop
+         A.Tour (1, I) := Route (I);
+      end loop;
       Stats.Elapsed := To_Duration (Clock - Started);
    end Improve;
+
+   function Nearest_Neighbour_Tour (P : Problem) return Assignment is
+      Visited : Boolean_Array (1 .. P.Tasks) := [others => False];
+      Here : Positive := P.Start (1);
+   begin
+      return A : Assignment (1, P.Tasks) do
+         for Step in 1 .. P.Tasks loop
+            declare
+               Best : Natural := 0;
+               Best_Cost : Cost := Cost'Last;
+            begin
+               for T in 1 .. P.Tasks loop
+                  if not Visited (T) and then P.Distance (Here, Location_Of (P, T)) < Best_Cost then
+                     Best := T;
+                     Best_Cost := P.Distance (Here, Location_Of (P, T));
+                  end if;
+               end loop;
+               Visited (Best) := True;
+               Append (A, 1, Best);
+               Here := Location_Of (P, Best);
+            end;
+         end loop;
+      end return;
+   end Nearest_Neighbour_Tour;
+
+   function Symmetric_For (P : Problem; R : Positive; A : Assignment) return Boolean is
+   begin
+      if not Has_Own_Costs (P, R) then
+         return P.Symmetric;
+      end if;
+      declare
+         Here : constant Count_Array (1 .. A.Length (R) + 1) :=
+           [for I in 1 .. A.Length (R) + 1 =>
+              (if I = 1 then P.Start (R)
+               else Location_Of (P, A.Tour (R, I - 1), A.Choice (A.Tour (R, I - 1))))];
+      begin
+         return (for all I in Here'Range =>
+                   (for all J in I + 1 .. Here'Last =>
+                      Robot_Distance (P, R, Here (I), Here (J))
+                      = Robot_Distance (P, R, Here (J), Here (I))))
+           and then (P.Finish (R) = Nowhere or else
+                     (for all I in Here'Range =>
+                        Robot_Distance (P, R, Here (I), P.Finish (R))
+                        = Robot_Distance (P, R, P.Finish (R), Here (I))));
+      end;
+   end Symmetric_For;
+
+   procedure Polish_Routes
+     (P          : Problem;
+      A          : in out Assignment;
+      Time_Limit : Duration;
+      Seed       : Interfaces.Unsigned_64;
+      Stats      : out Statistics;
+      Neighbours : Positive := 8;
+      Check      : Boolean := False;
+      Kicks      : Boolean := True)
+   is
+      use type Interfaces.Unsigned_64;
+      Started : constant Time := Clock;
+      Free_Tasks : Natural := 0;
+   begin
+      Stats := (others => <>);
+      for R in 1 .. A.Robots loop
+         Free_Tasks := Free_Tasks
+           + (A.Length (R) - Natural'Min (A.Length (R), P.Frozen_Length (R)));
+      end loop;
+      for R in 1 .. A.Robots loop
+         declare
+            F : constant Natural := Natural'Min (A.Length (R), P.Frozen_Length (R));
+            Free : constant Natural := A.Length (R) - F;
+         begin
+            if Free >= 5 and then Symmetric_For (P, R, A) then
+               declare
+                  Route : Count_Array (1 .. Free) := [for I in 1 .. Free => A.Tour (R, F + I)];
+                  Depot : constant Positive :=
+                    (if F = 0 then P.Start (R)
+                     else Location_Of (P, A.Tour (R, F), A.Choice (A.Tour (R, F))));
+                  Closed_At_Depot : constant Boolean := P.Finish (R) = Depot;
+                  Share : constant Duration :=
+                    (if Time_Limit = 0.0 then 0.0
+                     else Time_Limit * Free / Free_Tasks);
+               begin
+                  Search_Route
+                    (P, R, Depot, not Closed_At_Depot, P.Finish (R), Route,
+                     [for I in 1 .. Free => Location_Of (P, Route (I), A.Choice (Route (I)))],
+                     Share, Seed + Interfaces.Unsigned_64 (R), Stats, Neighbours, Check,
+                     Kicks);
+                  for I in 1 .. Free loop
+                     A.Tour (R, F + I) := Route (I);
+                  end loop;
+               end;
+            end if;
+         end;
+      end loop;
+      Stats.Elapsed := To_Duration (Clock - Started);
+   end Polish_Routes;
 
 end Sancta.Allocation.Local_Search;

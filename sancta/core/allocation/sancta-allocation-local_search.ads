@@ -1,5 +1,6 @@
---  Iterated local search on one closed symmetric tour (the TSP): 2-opt and
---  Or-opt moves (segments of 1 .. 3 tasks, both orientations) over
+--  Iterated local search on symmetric tours: 2-opt, Or-opt moves (segments
+--  of 1 .. 3 tasks, both orientations) and Lin-Kernighan chains (sequential
+--  moves of depth up to 5 built of 2-opt steps, breadth 5, 3, 1, 1, 1) over
 --  candidate lists (the K nearest tasks) with don't-look bits, and
 --  Or-opt style kicks (a double bridge inside a window of nearby
 --  positions) accepted when the tour does not get longer. Memory and work
@@ -9,6 +10,12 @@
 --     if Applies (P.all) then
 --        Improve (P.all, A, Time_Limit => 5.0, Seed => 1);   --  A: one robot's tour
 --     end if;
+--     Polish_Routes (P.all, A, 0.0, 1, Stats);   --  any team: each route shortened
+--
+--  Polish_Routes works on every robot's own route (after its frozen
+--  prefix, to its end: its start, another depot or anywhere): route
+--  lengths never grow, so the makespan and the total cost never get worse
+--  (not for the mean completion time, which depends on the order).
 with Interfaces;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
@@ -40,8 +47,37 @@ package Sancta.Allocation.Local_Search is
       Check      : Boolean := False)
      with Pre => Applies (P) and then A.Robots = 1 and then A.Tasks = P.Tasks
                  and then A.Length (1) = P.Tasks;
-   --  A's tour improved for Time_Limit (0.0: one descent, no kicks).
+   --  A's tour improved for Time_Limit (0.0: one descent, no kicks), the
+   --  descents included.
    --  Check: after every move the tour length is recomputed and compared
    --  with the incremental one (Program_Error on a difference).
+
+   Direct_Size : constant := 1_000;
+   --  Above this many tasks, a single tour (Applies) is not annealed first:
+   --  the annealer's set-up and moves cost too much at that size, the
+   --  search starts from Nearest_Neighbour_Tour with the whole budget.
+
+   function Nearest_Neighbour_Tour (P : Problem) return Assignment
+     with Pre => Applies (P);
+   --  From the depot, always on to the nearest task not yet visited
+   --  (O (n^2) distance reads, no matrix of its own).
+
+   procedure Polish_Routes
+     (P          : Problem;
+      A          : in out Assignment;
+      Time_Limit : Duration;
+      Seed       : Interfaces.Unsigned_64;
+      Stats      : out Statistics;
+      Neighbours : Positive := 8;
+      Check      : Boolean := False;
+      Kicks      : Boolean := True)
+     with Pre => A.Robots = P.Robots and then A.Tasks = P.Tasks;
+   --  Each route of A with at least 5 free tasks and symmetric distances
+   --  for its robot (the shared matrix, or its own on the route's
+   --  locations) improved by the same search, Time_Limit shared among the
+   --  routes by their task counts (0.0: one descent each, unbounded; not
+   --  Kicks: descents only, each stopped at its share). Tasks, their
+   --  robots, choices and frozen prefixes stay; Stats.Before / After are
+   --  the sums of the searched routes' base lengths.
 
 end Sancta.Allocation.Local_Search;

@@ -1,8 +1,10 @@
 --  Counts the Ada heap allocations of one task: linked with
---  -Wl,--wrap=__gnat_malloc, every call of __gnat_malloc (allocators,
---  controlled objects, unbounded strings, secondary-stack chunks: all of
---  the GNAT run time's heap use) goes through Counting_Malloc. Used by the
---  zero-allocation check (typed_alloc_check.adb) only.
+--  -Wl,--wrap=__gnat_malloc, every call of __gnat_malloc from the
+--  program's own objects (allocators "new", including the library's
+--  storage pools, controlled objects) goes through Counting_Malloc.
+--  Limit: Debian links the GNAT run time as a shared library, whose
+--  internal calls (Unbounded_String storage, secondary-stack chunks) are
+--  not wrapped. Used by the zero-allocation check only.
 with System;
 with Interfaces.C;
 

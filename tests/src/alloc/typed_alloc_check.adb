@@ -32,8 +32,6 @@ procedure Typed_Alloc_Check is
    Warmup : constant := 200;
    Failed : Boolean := False;
 
-   Node : RCL.Nodes.Node := RCL.Nodes.Init ("typed_alloc_check");
-
    function Me return System.Address is
       Id  : constant Ada.Task_Identification.Task_Id := Ada.Task_Identification.Current_Task;
       Raw : constant System.Address with Import, Address => Id'Address;
@@ -49,6 +47,8 @@ procedure Typed_Alloc_Check is
 
    procedure Check is
       package Topics is new RCL.Nodes.Typed (Handling);
+      Node     : RCL.Nodes.Node := RCL.Nodes.Init ("typed_alloc_check");
+      --  Finalized before Topics: its subscription's callbacks live there.
       Pub      : constant RCL.Publishers.Publisher :=
         Topics.Publish (Node, Topic, RCL.QoS.Default);
       Received : Natural := 0;

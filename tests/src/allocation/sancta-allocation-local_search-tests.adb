@@ -92,6 +92,129 @@ package body Sancta.Allocation.Local_Search.Tests is
       Assert (not Applies (P.all), "a frozen prefix");
    end Applies_Only_To_Tours;
 
+   --  Tasks at random points for a team: robot 1 on an open tour from point
+   --  1, robot 2 from point 2 to a depot of its own (point 3) after a frozen
+   --  task, robot 3 (slower: its own distances) on a closed tour from point 1.
+   function Team_Problem (Tasks : Positive; Seed : Interfaces.Unsigned_64)
+     return Problem_Access
+   is
+      G : Random.Generator := Random.Seeded (Seed);
+      P : constant Problem_Access := Create (Tasks + 3, Tasks, 3);
+   begin
+      Set_Euclidean (P.all, [for I in 1 .. Tasks + 3 =>
+                               (Sancta.Geometry.Real (Random.Below (G, 1000)),
+                                Sancta.Geometry.Real (Random.Below (G, 1000)))], 1.0);
+      for T in 1 .. Tasks loop
+         Set_Task (P.all, T, T + 3);
+      end loop;
+      Set_Robot (P.all, 1, 1, Closed => False);
+      Set_Robot (P.all, 2, 2, Closed => True);
+      Set_Robot_End (P.all, 2, 3);
+      Freeze (P.all, 2, [1 => 1]);
+      Set_Robot (P.all, 3, 1, Closed => True);
+      Set_Robot_Factor (P.all, 3, 1.7);
+      return P;
+   end Team_Problem;
+
+   procedure Checked_Route_Polish (Unused : in out Fixture) is
+      P : constant Problem_Access := Team_Problem (60, 5);
+      A : Assignment := Empty (P.all);
+      S : Statistics;
+      G : Random.Generator := Random.Seeded (3);
+   begin
+      --  A poor start: the free tasks dealt out at random.
+      for T in 2 .. P.Tasks loop
+         Append (A, 1 + Random.Below (G, 3), T);
+      end loop;
+      declare
+         Before : constant Evaluation := Evaluate (P.all, A, Min_Sum);
+         After  : Evaluation (3);
+         Frozen_Task : constant Positive := A.Tour (2, 1);
+         Lengths : constant Count_Array := A.Length;
+      begin
+         Polish_Routes (P.all, A, 0.2, 1, S, Check => True);
+         After := Evaluate (P.all, A, Min_Sum);
+         Assert (Validate (P.all, A) = "", Validate (P.all, A));
+         Assert (A.Tour (2, 1) = Frozen_Task and then A.Length = Lengths,
+                 "frozen prefix or route sizes changed");
+         for R in 1 .. 3 loop
+            Assert (After.Robot_Cost (R) < Before.Robot_Cost (R),
+                    "robot" & R'Image & " not shorter:" & After.Robot_Cost (R)'Image);
+         end loop;
+         --  The routes searched leave out robot 2's frozen arc: compare gains.
+         Assert (S.Before - S.After = Before.Sum - After.Sum,
+                 "reported gain" & Cost'Image (S.Before - S.After) & " /="
+                 & Cost'Image (Before.Sum - After.Sum));
+         Assert (S.After < S.Before, "no gain reported");
+      end;
+   end Checked_Route_Polish;
+
+   procedure Route_Optima (Unused : in out Fixture) is
+   begin
+      --  One robot with 9 tasks, open or to another depot, after a frozen
+      --  task: the iterated search reaches Held-Karp's optimum.
+      for Seed in Interfaces.Unsigned_64 range 1 .. 6 loop
+         declare
+            P : constant Problem_Access := Scattered (10, Seed);
+            A : Assignment := Empty (P.all);
+            S : Statistics;
+         begin
+            if Interfaces."=" (Interfaces."mod" (Seed, 2), 0) then
+               Set_Robot (P.all, 1, 1, Closed => False);
+            else
+               Set_Robot_End (P.all, 1, 3);
+            end if;
+            Freeze (P.all, 1, [1 => 5]);
+            A := Empty (P.all);
+            for T in 1 .. P.Tasks loop
+               if T /= 5 then
+                  Append (A, 1, T);
+               end if;
+            end loop;
+            Polish_Routes (P.all, A, 0.05, Seed, S, Check => True);
+            declare
+               Optimum : constant Cost :=
+                 Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Sum;
+            begin
+               Assert (Validate (P.all, A) = "", Validate (P.all, A));
+               Assert (Evaluate (P.all, A, Min_Sum).Sum = Optimum,
+                       "seed" & Seed'Image & ":" & Evaluate (P.all, A, Min_Sum).Sum'Image
+                       & " /= Held-Karp" & Optimum'Image);
+            end;
+         end;
+      end loop;
+   end Route_Optima;
+
+   procedure Deterministic_Route_Polish (Unused : in out Fixture) is
+      P : constant Problem_Access := Team_Problem (120, 8);
+      A : Assignment := Annealers.Greedy_Start (P.all, Min_Max, 4);
+      B : Assignment := A;
+      S : Statistics;
+   begin
+      Polish_Routes (P.all, A, 0.0, 1, S);
+      Polish_Routes (P.all, B, 0.0, 1, S);
+      Assert (A = B, "one polish is not deterministic");
+   end Deterministic_Route_Polish;
+
+   procedure Annealer_Polishes_Routes (Unused : in out Fixture) is
+      P : constant Problem_Access := Team_Problem (80, 2);
+      Polished, Plain : Assignment (3, 80);
+      Stats, Plain_Stats : Annealers.Progress;
+      O : Annealers.Options := (Criterion => Min_Sum, Seed => 3, Time_Limit => 0.0,
+                                Iterations => 3_000, Check => True, others => <>);
+   begin
+      --  A short anneal (deterministic: a move budget) with and without
+      --  its final polish, which now includes the route search.
+      Annealers.Solve (P.all, O, Polished, Stats);
+      O.Polish := False;
+      Annealers.Solve (P.all, O, Plain, Plain_Stats);
+      Assert (Validate (P.all, Polished) = "", Validate (P.all, Polished));
+      Assert (Stats.Best = Evaluate (P.all, Polished, Min_Sum).Value,
+              "reported best" & Stats.Best'Image & " is not the allocation's value");
+      Assert (Evaluate (P.all, Polished, Min_Sum).Sum < Evaluate (P.all, Plain, Min_Sum).Sum,
+              "no better with the polish");
+   end Annealer_Polishes_Routes;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -103,6 +226,11 @@ package body Sancta.Allocation.Local_Search.Tests is
       Add ("within 2% of the kroA100 optimum", Near_KroA100_Optimum'Access);
       Add ("one descent is deterministic", Deterministic_Descent'Access);
       Add ("applies to closed symmetric single tours only", Applies_Only_To_Tours'Access);
+      Add ("route polish: checked moves, open / depot / frozen / own costs",
+           Checked_Route_Polish'Access);
+      Add ("route polish: Held-Karp optima of open and depot routes", Route_Optima'Access);
+      Add ("route polish is deterministic", Deterministic_Route_Polish'Access);
+      Add ("the annealer polishes the routes", Annealer_Polishes_Routes'Access);
       return Result;
    end Suite;
 
