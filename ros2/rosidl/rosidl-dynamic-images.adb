@@ -611,9 +611,21 @@ package body ROSIDL.Dynamic.Images is
             when String_Kind =>
                return Yaml_String (Cut (To_String (Cell.Extra.Texts (Index))));
             when WString_Kind =>
-               return Yaml_String
-                 (Cut (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
-                    (To_Wide_Wide_String (Cell.Extra.WTexts (Index)))));
+               declare
+                  --  A wstring from the wire may hold code points UTF-8 cannot
+                  --  encode (surrogates, beyond U+10FFFF): shown as U+FFFD.
+                  W : Wide_Wide_String := To_Wide_Wide_String (Cell.Extra.WTexts (Index));
+               begin
+                  for C of W loop
+                     if Wide_Wide_Character'Pos (C) in 16#D800# .. 16#DFFF#
+                       or else Wide_Wide_Character'Pos (C) > 16#10_FFFF#
+                     then
+                        C := Wide_Wide_Character'Val (16#FFFD#);
+                     end if;
+                  end loop;
+                  return Yaml_String
+                    (Cut (Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode (W)));
+               end;
             when Message_Kind =>
                raise Program_Error;
          end case;

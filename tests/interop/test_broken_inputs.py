@@ -102,3 +102,16 @@ def test_broken_input(argv, code, expect, tmp):
     for e in expect:
         e = e.replace("{data}", str(DATA)).replace("{repo}", str(REPO)).replace("{tmp}", str(tmp))
         assert e in out, f"unclear: {e!r} not in the output:\n{shown}"
+
+
+def test_cdr_tool_shows_a_wstring_code_point_utf8_cannot_encode():
+    """A wstring from the wire holding a surrogate (U+D800): shown as U+FFFD
+    (was "internal error: ENCODING_ERROR", one of cdr_tool's two causes of
+    internal errors on mutated samples)."""
+    sample = ("00010000010000000300000068000000e900000000d8000003000000610000006200"
+              "0000630000000200000000000000010000007a000000")
+    p = subprocess.run([str(BIN / "cdr_tool"), "decode", "wstrings", sample],
+                       capture_output=True, text=True, timeout=TIME_LIMIT, env=env())
+    out = p.stdout + p.stderr
+    assert p.returncode == 0 and "w: h\u00e9\ufffd" in p.stdout, out
+    assert not any(bad in out for bad in TRACEBACK), out
