@@ -292,7 +292,7 @@ def test_demo_watched_live(tmp_path):
     dp = ps.participant()
     truth = Truth(dp, ["r1", "r2", "r3", "r4"])
     window_desc = tmp_path / "window.json"
-    demo = view = snap = None
+    demo = view = snap = early = None
     lines = []
     try:
         view = start_view("--world", "office", "--size", f"{SIZE[0]}x{SIZE[1]}",
@@ -308,6 +308,13 @@ def test_demo_watched_live(tmp_path):
             if not line:
                 break
             lines.append(line)
+            if "first plan adopted" in line and early is None:
+                # Tours are checked on a snapshot taken while every robot
+                # still has several tasks: after the kill, the survivors may
+                # have done their own tasks and not yet re-planned (no tour).
+                early = start_view("--world", "office", "--size", f"{SIZE[0]}x{SIZE[1]}",
+                                   "--snapshot", tmp_path / "early.png", "--after", "1.5",
+                                   "--describe", tmp_path / "early.json")
             if "** robot " in line:
                 killed = line.split("** robot ")[1].split(":")[0]
         context = "\ndemo said:\n" + "".join(lines[-30:])
@@ -335,16 +342,21 @@ def test_demo_watched_live(tmp_path):
         marks = count_near(window, *to_pixel(desc, x, y), desc["robot_radius_px"] + 6,
                            is_lost_mark)
         assert marks >= 20, f"{killed} not crossed in red at its last pose ({marks}){context}"
-        # The snapshot: the survivors at their ground truth, tours drawn.
+        # The snapshot: the survivors at their ground truth.
         picture = read_png(tmp_path / "snapshot.png")
         sdesc = json.loads((tmp_path / "snapshot.json").read_text())
         assert (picture[0], picture[1]) == SIZE
         check_robots_at_truth(picture, sdesc, truth, (snap_done - 2.0, snap_done), context)
-        check_tours(picture, sdesc, context)
+        # The early snapshot (just after the first plan): tours drawn.
+        assert early is not None, f"no first plan adopted{context}"
+        early_out = end(early, timeout=30)
+        assert early.returncode == 0, f"early snapshot failed:\n{early_out}"
+        check_tours(read_png(tmp_path / "early.png"),
+                     json.loads((tmp_path / "early.json").read_text()), context)
         assert sdesc["tasks"] >= 20 and sdesc["rejected"] == 0, sdesc
         assert view.poll() is None, "the window ended early:\n" + end(view, stop=True)
     finally:
-        for p in (snap, demo, view):
+        for p in (early, snap, demo, view):
             if p is not None:
                 end(p, stop=True)
         truth.stop()
