@@ -250,30 +250,6 @@ procedure Rosidl_Generate is
       end case;
    end Component_Type;
 
-   function Min_Size (Def : Message_Access) return Long_Long_Integer;
-
-   function Min_Element_Size (T : Field_Type) return Long_Long_Integer is
-     (case T.Kind is
-         when Primitive_Kind => Long_Long_Integer (Primitive_Size (T.Kind)),
-         when String_Kind    => 5,
-         when WString_Kind   => 4,
-         when Message_Kind   => Min_Size (T.Nested));
-
-   function Min_Size (Def : Message_Access) return Long_Long_Integer is
-      Total : Long_Long_Integer := 0;
-   begin
-      for F of Def.Fields loop
-         Total := Total +
-           (case F.Of_Type.Collection is
-               when Single => Min_Element_Size (F.Of_Type),
-               when Fixed_Array =>
-                 Long_Long_Integer (F.Of_Type.Size) * Min_Element_Size (F.Of_Type),
-               when Bounded_Sequence | Unbounded_Sequence => 4);
-      end loop;
-      return Long_Long_Integer'Max (Total, 1);
-   end Min_Size;
-   --  As the dynamic codec: a lower bound of the encoded size.
-
    function Is_Bounded (Def : Message_Access) return Boolean is
    begin
       for F of Def.Fields loop

@@ -41,26 +41,8 @@ package body RCL.Nodes.Typed is
       Info : ROSIDL.Message_Info);
 
    --  Deliveries of one subscription may run in several executor tasks at
-   --  once: the first takes the kept record, the others decode into their
-   --  own.
-   protected type Cache_Lock is
-      procedure Try (Got : out Boolean);
-      procedure Release;
-   private
-      Taken : Boolean := False;
-   end Cache_Lock;
-
-   protected body Cache_Lock is
-      procedure Try (Got : out Boolean) is
-      begin
-         Got := not Taken;
-         Taken := True;
-      end Try;
-      procedure Release is
-      begin
-         Taken := False;
-      end Release;
-   end Cache_Lock;
+   --  once: the first takes the kept record (Cache_Lock), the others decode
+   --  into their own.
 
    --  One per subscription, allocated at Subscribe (the instance may be
    --  nested in a subprogram: its types cannot extend the library-level

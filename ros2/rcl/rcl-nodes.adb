@@ -313,13 +313,6 @@ package body RCL.Nodes is
    --  One decoded message kept per subscription and reused (no allocation
    --  per sample); a concurrent delivery that finds it taken decodes into a
    --  fresh one.
-   protected type Cache_Lock is
-      procedure Try (Got : out Boolean);
-      procedure Release;
-   private
-      Taken : Boolean := False;
-   end Cache_Lock;
-
    protected body Cache_Lock is
       procedure Try (Got : out Boolean) is
       begin

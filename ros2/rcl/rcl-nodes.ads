@@ -350,6 +350,17 @@ private
       Kind  : Callback_Group_Kind := Mutually_Exclusive;
    end record;
 
+   protected type Cache_Lock is
+      procedure Try (Got : out Boolean);
+      --  Got: the kept decoded message was free and is now taken.
+      procedure Release;
+   private
+      Taken : Boolean := False;
+   end Cache_Lock;
+   --  Guards the one decoded message a subscription keeps and reuses (no
+   --  allocation per sample); a concurrent delivery that finds it taken
+   --  decodes into a fresh one (RCL.Nodes and RCL.Nodes.Typed).
+
    type Subscription_Array is array (1 .. Max_Subscriptions) of Subscription_Access;
    type Timer_Array is array (1 .. Max_Timers) of Timer_Entry;
 

@@ -169,4 +169,13 @@ package ROSIDL.Definitions is
 
    type Action_Access is access constant Action_Definition;
 
+   function Min_Element_Size (T : Field_Type) return Long_Long_Integer;
+   --  A lower bound of the CDR size of one element of type T (a string:
+   --  its length word and NUL, 5).
+
+   function Min_Size (Def : Message_Access) return Long_Long_Integer;
+   --  A lower bound (at least 1) of the CDR size of a message of type Def,
+   --  used by the decoders to refuse a sequence count that the remaining
+   --  bytes cannot hold: Min_Size (geometry_msgs/Point) = 24.
+
 end ROSIDL.Definitions;

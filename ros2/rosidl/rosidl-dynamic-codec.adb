@@ -101,30 +101,6 @@ package body ROSIDL.Dynamic.Codec is
       return (Pos + A - 1) / A * A;
    end Aligned;
 
-   function Min_Size (Def : Message_Access) return Long_Long_Integer;
-   --  A lower bound of the encoded size of a message of type Def.
-
-   function Min_Element_Size (T : Field_Type) return Long_Long_Integer is
-     (case T.Kind is
-         when Primitive_Kind => Long_Long_Integer (Primitive_Size (T.Kind)),
-         when String_Kind    => 5,
-         when WString_Kind   => 4,
-         when Message_Kind   => Min_Size (T.Nested));
-
-   function Min_Size (Def : Message_Access) return Long_Long_Integer is
-      Total : Long_Long_Integer := 0;
-   begin
-      for F of Def.Fields loop
-         Total := Total +
-           (case F.Of_Type.Collection is
-               when Single => Min_Element_Size (F.Of_Type),
-               when Fixed_Array =>
-                 Long_Long_Integer (F.Of_Type.Size) * Min_Element_Size (F.Of_Type),
-               when Bounded_Sequence | Unbounded_Sequence => 4);
-      end loop;
-      return Long_Long_Integer'Max (Total, 1);
-   end Min_Size;
-
    ---------------------------------------------------------------------
    -- Size and bound checks --
    ---------------------------------------------------------------------
