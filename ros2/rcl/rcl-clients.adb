@@ -311,6 +311,8 @@ package body RCL.Clients is
 
    function Pending_Async (This : Client) return Natural is (This.Calls.Async_Count);
 
+   function Pending_Calls (This : Client) return Natural is (This.Calls.Count);
+
    -------------
    -- Futures --
    -------------

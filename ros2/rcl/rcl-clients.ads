@@ -90,6 +90,10 @@ package RCL.Clients is
    function Pending_Async (This : Client) return Natural;
    --  Asynchronous calls still waiting for their response.
 
+   function Pending_Calls (This : Client) return Natural;
+   --  Every call still waiting for its response: synchronous calls,
+   --  futures and asynchronous calls.
+
    --  Futures: an asynchronous call whose response the caller waits for
    --  while spinning its node (rclcpp's async_send_request with
    --  spin_until_future_complete). The response is read while somebody

@@ -386,9 +386,11 @@ package body RCL.Services.Tests is
          F : RCL.Clients.Future;
       begin
          Client.Call_Future (Request (5, 5), F);
+         Assert (Client.Pending_Calls = 1, "the future's call is pending");
       end;
+      Assert (Client.Pending_Calls = 0, "a finalized future forgets its call");
       Node.Spin (During => 0.2);
-      Assert (Client.Pending_Async = 0, "nothing left pending");
+      Assert (Client.Pending_Calls = 0, "nothing left pending");
       --  A missing service: the wait ends at its timeout.
       declare
          Nobody : RCL.Clients.Client;
