@@ -13,7 +13,7 @@ with RCL.Nodes;
 with RCL.Security;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
-with Sancta.Components.Robot_Messages;
+with Sancta.Standard_Components.Robot_Messages;
 with Sancta.Geometry;
 with Sancta.Runtime.Configurations;
 with Sancta.Runtime.Values;
@@ -467,7 +467,7 @@ package body Sancta.Team.Sim_Demos is
                Real (ROSIDL.Float64'(Msg ("pose")("position")("y").As_Float64)),
                0.0);
             T : constant Long_Float :=
-              Long_Float (Sancta.Components.Robot_Messages.Stamp_Of (Msg ("header")));
+              Long_Float (Sancta.Standard_Components.Robot_Messages.Stamp_Of (Msg ("header")));
          begin
             if not Alive (R) then
                return;

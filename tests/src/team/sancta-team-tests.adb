@@ -7,10 +7,10 @@ with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Geometry;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
-with Sancta.Team.Databases;
+with Sancta.Team.Replicated_Databases;
 with Sancta.Team.Demos;
 with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Grid_Costs;
@@ -22,7 +22,7 @@ with Sancta.Team.Plans;
 package body Sancta.Team.Tests is
 
    use Sancta.Team.Networks;
-   use Sancta.Team.Databases;
+   use Sancta.Team.Replicated_Databases;
    use type Ada.Containers.Count_Type;
    use type Plans.Tour_Vectors.Vector;
 
@@ -171,7 +171,7 @@ package body Sancta.Team.Tests is
 
    --  Replicated database -------------------------------------------------------------
 
-   type Counter is new Runtime.Databases.Listener with record
+   type Counter is new Runtime.Local_Databases.Listener with record
       Calls : Natural := 0;
       Last  : Unbounded_String;
    end record;
