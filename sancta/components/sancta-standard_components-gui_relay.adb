@@ -21,7 +21,7 @@ with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
 with Sancta.Team.Missions;
 with Sancta.Team.Plans;
-with Sancta.Team.Interfaces;
+with Sancta.Team.Interface_Paths;
 
 package body Sancta.Standard_Components.GUI_Relay is
 
@@ -92,7 +92,7 @@ package body Sancta.Standard_Components.GUI_Relay is
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
    begin
-      Sancta.Team.Interfaces.Ensure;  --  sancta_msgs on the ROS 2 library's path
+      Sancta.Team.Interface_Paths.Ensure;  --  sancta_msgs on the ROS 2 library's path
       return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
    end Support;
 

@@ -3,7 +3,7 @@ with Ada.Environment_Variables;
 with ROSIDL.Interfaces;
 with Sancta.Installation;
 
-package body Sancta.Team.Interfaces is
+package body Sancta.Team.Interface_Paths is
 
    protected Once is
       procedure Mark (First : out Boolean);
@@ -68,4 +68,4 @@ package body Sancta.Team.Interfaces is
       Add_Variable_Folders;
    end Ensure;
 
-end Sancta.Team.Interfaces;
+end Sancta.Team.Interface_Paths;

@@ -10,7 +10,7 @@
 with Ada.Finalization;
 with Sancta.Simulation.Deflate;
 
-package Sancta.Simulation.Images is
+package Sancta.Simulation.Raster_Images is
 
    subtype Byte is Deflate.Byte;
 
@@ -75,4 +75,4 @@ private
    overriding procedure Adjust (This : in out Image);
    overriding procedure Finalize (This : in out Image);
 
-end Sancta.Simulation.Images;
+end Sancta.Simulation.Raster_Images;

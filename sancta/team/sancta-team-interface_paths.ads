@@ -4,9 +4,9 @@
 --  knows nothing of SANCTA: every SANCTA program calls Ensure before it
 --  looks up a type.
 --
---     Sancta.Team.Interfaces.Ensure;
+--     Sancta.Team.Interface_Paths.Ensure;
 --     Support := ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", "Envelope");
-package Sancta.Team.Interfaces is
+package Sancta.Team.Interface_Paths is
 
    procedure Ensure;
    --  Adds the folders (once per process) with ROSIDL.Interfaces.Add_Folder:
@@ -15,4 +15,4 @@ package Sancta.Team.Interfaces is
    --  Raises Program_Error naming the folder when share/interfaces is
    --  needed and missing.
 
-end Sancta.Team.Interfaces;
+end Sancta.Team.Interface_Paths;

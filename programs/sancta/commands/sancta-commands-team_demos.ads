@@ -17,7 +17,7 @@ with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Plans;
 
-package Sancta.Team.Demos is
+package Sancta.Commands.Team_Demos is
 
    use Ada.Strings.Unbounded;
 
@@ -152,4 +152,4 @@ package Sancta.Team.Demos is
 
    subtype Point is Sancta.Geometry.Point;
 
-end Sancta.Team.Demos;
+end Sancta.Commands.Team_Demos;

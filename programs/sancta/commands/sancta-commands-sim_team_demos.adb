@@ -25,7 +25,7 @@ with Sancta.Team.Missions;
 with Sancta.Team.Plans;
 with Sancta.Team.Security;
 
-package body Sancta.Team.Sim_Demos is
+package body Sancta.Commands.Sim_Team_Demos is
 
    use Ada.Text_IO;
    use Sancta.Geometry;
@@ -284,7 +284,7 @@ package body Sancta.Team.Sim_Demos is
 
    --  Run -------------------------------------------------------------------------------------
 
-   procedure Run (Config : Sim_Demo_Config; Result : out Demos.Demo_Result) is
+   procedure Run (Config : Sim_Demo_Config; Result : out Team_Demos.Demo_Result) is
       View     : constant Team_View := Read_Team (Config);
       M        : Missions.Mission renames View.Mission;
       N        : constant Positive := Natural (View.Robots.Length);
@@ -555,7 +555,7 @@ package body Sancta.Team.Sim_Demos is
                      begin
                         Seen.Insert (Id, 1);
                         Result.Completions.Append
-                          (Demos.Completion'(T.Id, To_Unbounded_String (Who), Sim_Clock));
+                          (Team_Demos.Completion'(T.Id, To_Unbounded_String (Who), Sim_Clock));
                         if R > 0 then
                            Result.Robots (R).Tasks := Result.Robots (R).Tasks + 1;
                         end if;
@@ -636,7 +636,7 @@ package body Sancta.Team.Sim_Demos is
             Kill_Gen := Monitor.Round.Generation;
             Result.Plan_Before := Monitor.Adopted;
             Result.Round_Before := Monitor.Round;
-            Result.Orphans := Demos.Unfinished
+            Result.Orphans := Team_Demos.Unfinished
               (Result.Round_Before, Result.Plan_Before, Id, Done_Here'Access);
             GNAT.OS_Lib.Kill (Children (Id).Pid, Hard_Kill => True);
             Kill_Wall := Ada.Real_Time.Clock;
@@ -682,7 +682,7 @@ package body Sancta.Team.Sim_Demos is
 
       begin
          for R in 1 .. N loop
-            Result.Robots.Append (Demos.Robot_Summary'(Id => View.Robots (R).Id, others => <>));
+            Result.Robots.Append (Team_Demos.Robot_Summary'(Id => View.Robots (R).Id, others => <>));
             Scene.Trajectories.Append (Rendering.Point_Vectors.Empty_Vector);
             Here (R) := Position (View.Robots (R).Start);
             Final_Pose (R) := View.Robots (R).Start;
@@ -705,7 +705,7 @@ package body Sancta.Team.Sim_Demos is
             if Result.Planned_Total = 0.0 and then Monitor.Adopted.Generation > 0
               and then Monitor.Adopted.Generation = Monitor.Round.Generation
             then
-               Demos.Note_First_Plan (Result, Monitor.Round, Monitor.Adopted, World);
+               Team_Demos.Note_First_Plan (Result, Monitor.Round, Monitor.Adopted, World);
                Put_Line (Stamp & "first plan adopted (round" & Monitor.Round.Generation'Image
                          & "): total " & F1 (Result.Planned_Total) & " m, makespan "
                          & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
@@ -786,7 +786,7 @@ package body Sancta.Team.Sim_Demos is
                                 then Monitor.Database.Get_String ("done/" & To_String (T.Id))
                                 else "?")));
          end loop;
-         Demos.Resolve_Orphans (Result);
+         Team_Demos.Resolve_Orphans (Result);
          --  A task the robot finished just before its death (its record
          --  reaching this observer after the kill) was not unfinished.
          for K in reverse 1 .. Natural (Result.Orphans.Length) loop
@@ -797,7 +797,7 @@ package body Sancta.Team.Sim_Demos is
             end if;
          end loop;
          if Dir /= "" then
-            Demos.Write_Report (Result, World, Scene, Dir);
+            Team_Demos.Write_Report (Result, World, Scene, Dir);
          end if;
       end;
    exception
@@ -806,4 +806,4 @@ package body Sancta.Team.Sim_Demos is
          raise;
    end Run;
 
-end Sancta.Team.Sim_Demos;
+end Sancta.Commands.Sim_Team_Demos;

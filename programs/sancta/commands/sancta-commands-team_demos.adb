@@ -6,12 +6,12 @@ with Ada.Text_IO;
 with Sancta.Robot.Navigators;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Glyphs;
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Simulators;
 with Sancta.Team.Missions;
 
-package body Sancta.Team.Demos is
+package body Sancta.Commands.Team_Demos is
 
    use Ada.Text_IO;
    use Sancta.Geometry;
@@ -145,24 +145,24 @@ package body Sancta.Team.Demos is
       Tick    : constant Long_Float :=
         (if Span <= 60.0 then 10.0 elsif Span <= 300.0 then 30.0 else 60.0);
       Replan  : constant Long_Float := Result.Kill_Time + Result.Replan_Sim;
-      Red     : constant Images.Color := (200, 0, 0);
-      Orange  : constant Images.Color := (230, 130, 0);
-      Img     : Images.Image := Images.Create (Width, Height);
+      Red     : constant Raster_Images.Color := (200, 0, 0);
+      Orange  : constant Raster_Images.Color := (230, 130, 0);
+      Img     : Raster_Images.Image := Raster_Images.Create (Width, Height);
       SVG     : File_Type;
 
       function X_Of (T : Long_Float) return Integer is (Left + Integer (T * Px));
       function Row_Y (R : Positive) return Integer is (Top + (R - 1) * Row_H);
 
-      procedure Box (X0, Y0, X1, Y1 : Integer; C : Images.Color) is
+      procedure Box (X0, Y0, X1, Y1 : Integer; C : Raster_Images.Color) is
       begin
          for X in X0 .. X1 loop
             for Y in Y0 .. Y1 loop
-               Images.Set (Img, X, Y, C);
+               Raster_Images.Set (Img, X, Y, C);
             end loop;
          end loop;
       end Box;
 
-      procedure Mark (T : Long_Float; C : Images.Color; Label, Hex : String; Line : Natural) is
+      procedure Mark (T : Long_Float; C : Raster_Images.Color; Label, Hex : String; Line : Natural) is
          X : constant Integer := X_Of (T);
          W : constant Natural := Glyphs.Text_Width (Label);
          LX : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));
@@ -189,7 +189,7 @@ package body Sancta.Team.Demos is
       Put_Line (SVG, "<text class=""title"" x=""8"" y=""18"" font-size=""14"""
                 & " font-weight=""bold"" font-family=""sans-serif"">Tasks per robot over"
                 & " simulated time (s)</text>");
-      Glyphs.Draw_Text (Img, 8, 8, "Tasks per robot over simulated time (s)", Images.Black,
+      Glyphs.Draw_Text (Img, 8, 8, "Tasks per robot over simulated time (s)", Raster_Images.Black,
                         Halo => False);
       --  Time axis.
       declare
@@ -200,14 +200,14 @@ package body Sancta.Team.Demos is
                X    : constant Integer := X_Of (T);
                Text : constant String := Trim (Integer (T));
             begin
-               Box (X, Top + Rows * Row_H, X, Top + Rows * Row_H + 4, Images.Black);
+               Box (X, Top + Rows * Row_H, X, Top + Rows * Row_H + 4, Raster_Images.Black);
                for Y in Top .. Top + Rows * Row_H loop
                   if Y mod 3 = 0 then
-                     Images.Set (Img, X, Y, (200, 200, 200));
+                     Raster_Images.Set (Img, X, Y, (200, 200, 200));
                   end if;
                end loop;
                Glyphs.Draw_Text (Img, X - Glyphs.Text_Width (Text) / 2, Top + Rows * Row_H + 6,
-                                 Text, Images.Black, Halo => False);
+                                 Text, Raster_Images.Black, Halo => False);
                Put_Line (SVG, "<line x1=""" & Trim (X) & """ y1=""" & Trim (Top)
                          & """ x2=""" & Trim (X) & """ y2=""" & Trim (Top + Rows * Row_H + 4)
                          & """ stroke=""#c8c8c8""/>");
@@ -221,12 +221,12 @@ package body Sancta.Team.Demos is
       for R in 1 .. Rows loop
          declare
             Id    : constant String := To_String (Result.Robots (R).Id);
-            Color : constant Images.Color := Rendering.Color_Of (R);
+            Color : constant Raster_Images.Color := Rendering.Color_Of (R);
             Hex   : constant String := Rendering.Hex (Color);
             Y     : constant Integer := Row_Y (R);
             Since : Long_Float := 0.0;
          begin
-            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Images.Black, Halo => False);
+            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
             Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
                       & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
             for C of Result.Completions loop
@@ -244,7 +244,7 @@ package body Sancta.Team.Demos is
                                & F1 (C.Time) & " s</title></rect>");
                      --  The task's name inside its bar when it fits there.
                      if Glyphs.Text_Width (Name) + 4 <= X1 - X0 then
-                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Images.White,
+                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Raster_Images.White,
                                           Halo => False);
                      end if;
                      if Name'Length * 7 + 4 <= X1 - X0 then
@@ -263,7 +263,7 @@ package body Sancta.Team.Demos is
                for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
                   for Yy in Y + 4 .. Y + Row_H - 4 loop
                      if (X + Yy) mod 6 = 0 then
-                        Images.Set (Img, X, Yy, Red);
+                        Raster_Images.Set (Img, X, Yy, Red);
                      end if;
                   end loop;
                end loop;
@@ -282,7 +282,7 @@ package body Sancta.Team.Demos is
       end if;
       Put_Line (SVG, "</svg>");
       Close (SVG);
-      Images.Save_PNG (Img, Dir & "/gantt.png");
+      Raster_Images.Save_PNG (Img, Dir & "/gantt.png");
    end Write_Gantt;
 
    procedure Write_Report
@@ -315,7 +315,7 @@ package body Sancta.Team.Demos is
          end if;
          Framed.Scale_Bar := True;
          Rendering.Write_SVG (World, Framed, Dir & "/" & Name & ".svg");
-         Images.Save_PNG (Rendering.Render (World, Framed), Dir & "/" & Name & ".png");
+         Raster_Images.Save_PNG (Rendering.Render (World, Framed), Dir & "/" & Name & ".png");
       end Picture;
    begin
       Ada.Directories.Create_Path (Dir);
@@ -773,4 +773,4 @@ package body Sancta.Team.Demos is
       end;
    end Run;
 
-end Sancta.Team.Demos;
+end Sancta.Commands.Team_Demos;

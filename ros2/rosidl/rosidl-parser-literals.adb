@@ -2,7 +2,7 @@ with Ada.Characters.Handling;
 with Ada.Strings.UTF_Encoding.Wide_Wide_Strings;
 with Interfaces;
 
-package body ROSIDL.Parser.Values is
+package body ROSIDL.Parser.Literals is
 
    use Ada.Characters.Handling;
    use type Interfaces.Unsigned_64;
@@ -494,4 +494,4 @@ package body ROSIDL.Parser.Values is
       return Result;
    end Split_Array;
 
-end ROSIDL.Parser.Values;
+end ROSIDL.Parser.Literals;

@@ -4,7 +4,7 @@ with Ada.Streams.Stream_IO;
 with Ada.Unchecked_Deallocation;
 with Interfaces;
 
-package body Sancta.Simulation.Images is
+package body Sancta.Simulation.Raster_Images is
 
    use Deflate;
    use type Ada.Directories.File_Kind;
@@ -519,4 +519,4 @@ package body Sancta.Simulation.Images is
       Free (This.Pixels);
    end Finalize;
 
-end Sancta.Simulation.Images;
+end Sancta.Simulation.Raster_Images;

@@ -4,7 +4,7 @@
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 
-private package ROSIDL.Parser.Values is
+private package ROSIDL.Parser.Literals is
 
    use Ada.Strings.Unbounded;
 
@@ -51,4 +51,4 @@ private package ROSIDL.Parser.Values is
 
    function Is_Blank (C : Character) return Boolean is (C = ' ' or else C = ASCII.HT);
 
-end ROSIDL.Parser.Values;
+end ROSIDL.Parser.Literals;

@@ -3,9 +3,9 @@
 --  topics: the path of the README's run command (sancta demo).
 --
 --     Config : Sim_Demo_Config;   --  share/config/sim-team.xml, 4x, kill one
---     Result : Demos.Demo_Result;
+--     Result : Team_Demos.Demo_Result;
 --     Run (Config, Result);       --  progress lines, then the report
---     Demos.Print_Summary (Result);
+--     Team_Demos.Print_Summary (Result);
 --
 --  Run reads the configuration: its robots are the agents with a
 --  team_member component, the operator the agent with a team_operator
@@ -26,12 +26,12 @@
 --  when every task is done (or on a limit or Ctrl-C), stops the processes
 --  (SIGINT, then SIGKILL after 5 s), counts the "did TASK" lines of every
 --  robot's log (a task done twice shows there) and writes the report of
---  Demos.Write_Report.
+--  Team_Demos.Write_Report.
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Components;
-with Sancta.Team.Demos;
+with Sancta.Commands.Team_Demos;
 
-package Sancta.Team.Sim_Demos is
+package Sancta.Commands.Sim_Team_Demos is
 
    use Ada.Strings.Unbounded;
 
@@ -73,11 +73,11 @@ package Sancta.Team.Sim_Demos is
       --  left open at the end (closing it is the user's).
    end record;
 
-   procedure Run (Config : Sim_Demo_Config; Result : out Demos.Demo_Result);
+   procedure Run (Config : Sim_Demo_Config; Result : out Team_Demos.Demo_Result);
    --  Runs the demo (see above) and writes the report unless Out_Dir is
    --  empty. Raises Constraint_Error with a message naming the file and
    --  the problem for a configuration that cannot run the demo (errors in
    --  it, no team_operator, fewer than two robots, a robot without a start
    --  in the mission) or a program that cannot be started.
 
-end Sancta.Team.Sim_Demos;
+end Sancta.Commands.Sim_Team_Demos;
