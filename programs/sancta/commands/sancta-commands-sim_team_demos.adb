@@ -25,6 +25,9 @@ with Sancta.Team.Missions;
 with Sancta.Team.Plans;
 with Sancta.Team.Security;
 
+with Sancta.Team;
+use Sancta.Team;  --  the team library's units by their short names (Agents, Plans, ...)
+
 package body Sancta.Commands.Sim_Team_Demos is
 
    use Ada.Text_IO;
@@ -682,7 +685,8 @@ package body Sancta.Commands.Sim_Team_Demos is
 
       begin
          for R in 1 .. N loop
-            Result.Robots.Append (Team_Demos.Robot_Summary'(Id => View.Robots (R).Id, others => <>));
+            Result.Robots.Append
+              (Team_Demos.Robot_Summary'(Id => View.Robots (R).Id, others => <>));
             Scene.Trajectories.Append (Rendering.Point_Vectors.Empty_Vector);
             Here (R) := Position (View.Robots (R).Start);
             Final_Pose (R) := View.Robots (R).Start;

@@ -162,7 +162,8 @@ package body Sancta.Commands.Team_Demos is
          end loop;
       end Box;
 
-      procedure Mark (T : Long_Float; C : Raster_Images.Color; Label, Hex : String; Line : Natural) is
+      procedure Mark
+        (T : Long_Float; C : Raster_Images.Color; Label, Hex : String; Line : Natural) is
          X : constant Integer := X_Of (T);
          W : constant Natural := Glyphs.Text_Width (Label);
          LX : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));

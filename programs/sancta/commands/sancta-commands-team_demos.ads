@@ -16,6 +16,8 @@ with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
 with Sancta.Team.Plans;
+with Sancta.Team;
+use Sancta.Team;  --  the team library's units by their short names (Agents, Plans, ...)
 
 package Sancta.Commands.Team_Demos is
 

@@ -12,7 +12,7 @@ with Sancta.Simulation.Map_Files;
 
 package body Sancta.Simulation.Rendering.Tests is
 
-   use Images;
+   use Raster_Images;
    use type Robot.Grids.Frame;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;

@@ -561,8 +561,8 @@ package body Sancta.Team.Tests is
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
-      Config : Team_Demos.Demo_Config;
-      Result : Team_Demos.Demo_Result;
+      Config : Commands.Team_Demos.Demo_Config;
+      Result : Commands.Team_Demos.Demo_Result;
       M      : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
    begin
       Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
@@ -571,7 +571,7 @@ package body Sancta.Team.Tests is
       Config.Verbose := False;
       Config.Team := To_Unbounded_String (Team);
       Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
-      Team_Demos.Run (Config, Result);
+      Commands.Team_Demos.Run (Config, Result);
       Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
       Assert (Result.Replanned, "the survivors did not re-plan");
       Assert (Result.All_Done, "not all tasks done:" & Result.Tasks_Done'Image);
