@@ -13,10 +13,12 @@
 --     incompatible policy: RELIABILITY_QOS_POLICY
 --
 --  Callbacks get every event of one publisher or subscription:
---
+--  Example:
 --     procedure On_Event (Node : in out Nodes.Node'Class; E : Events.Event) is
 --     begin
---        if E.Kind = Events.Deadline_Missed then ...
+--        if E.Kind in Events.Deadline_Missed then
+--           Put_Line ("deadline missed on " & E.Topic.all & E.Total'Image & " times");
+--        end if;
 --     end On_Event;
 --     Events.Watch (Node, Pub, On_Event'Access);           --  a publisher
 --     Events.Watch (Node, "scan", On_Event'Access);        --  a subscription

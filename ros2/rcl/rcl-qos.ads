@@ -2,7 +2,7 @@
 --
 --  A Profile is plain data; RCL.DDS turns it into Cyclone QoS. The profiles
 --  are those of rmw/qos_profiles.h (see docs/ros2-wire.md):
---
+--  Example:
 --     Pub : Publishers.Publisher :=
 --       Node.Publish (Support, "/scan", QoS => RCL.QoS.Sensor_Data);
 --     Custom : constant RCL.QoS.Profile :=
