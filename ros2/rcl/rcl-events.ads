@@ -61,7 +61,8 @@ package RCL.Events is
    function Policy_Name (Policy : Natural) return String;
    --  As rclcpp names them: "RELIABILITY_QOS_POLICY", "DURABILITY_QOS_POLICY",
    --  "DEADLINE_QOS_POLICY", "LIVELINESS_QOS_POLICY", "HISTORY_QOS_POLICY",
-   --  "LIFESPAN_QOS_POLICY"; "UNKNOWN_QOS_POLICY" for others.
+   --  "LIFESPAN_QOS_POLICY", "DESTINATION_ORDER_QOS_POLICY" (not in rmw: see
+   --  RCL.QoS.Destination_Order_Policy); "UNKNOWN_QOS_POLICY" for others.
 
    type Callback is access procedure (Node : in out RCL.Nodes.Node'Class; E : Event);
 
