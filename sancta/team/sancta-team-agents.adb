@@ -681,7 +681,8 @@ package body Sancta.Team.Agents is
       Net : constant Networks.Network_Access := Networks.Create
         (To_String (Config.Id), Groups => (if Config.Is_Robot then "robots" else "operators"),
          Lease => Config.Lease, Team => To_String (Config.Team));
-      Db  : constant Databases.Team_Database_Access := new Databases.Team_Database (Net);
+      Db  : constant Replicated_Databases.Team_Database_Access :=
+              new Replicated_Databases.Team_Database (Net);
    begin
       Db.Attach;
       return Create (Config, Net, Db);
@@ -690,7 +691,7 @@ package body Sancta.Team.Agents is
    function Create
      (Config : Agent_Config;
       Net    : not null Networks.Network_Access;
-      Db     : not null Databases.Team_Database_Access) return Agent_Access
+      Db     : not null Replicated_Databases.Team_Database_Access) return Agent_Access
    is
       A : constant Agent_Access := new Agent;
    begin
@@ -709,7 +710,7 @@ package body Sancta.Team.Agents is
    end Create;
 
    function Id (This : Agent) return String is (To_String (This.Config.Id));
-   function Database (This : Agent) return Databases.Team_Database_Access is (This.Db);
+   function Database (This : Agent) return Replicated_Databases.Team_Database_Access is (This.Db);
    function Network (This : Agent) return Networks.Network_Access is (This.Net);
 
    procedure Stop (This : in out Agent) is

@@ -40,7 +40,7 @@ with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Interfaces;
 with Sancta.Geometry;
-with Sancta.Team.Databases;
+with Sancta.Team.Replicated_Databases;
 with Sancta.Team.Grid_Costs;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
@@ -85,14 +85,14 @@ package Sancta.Team.Agents is
    function Create
      (Config : Agent_Config;
       Net    : not null Networks.Network_Access;
-      Db     : not null Databases.Team_Database_Access) return Agent_Access
+      Db     : not null Replicated_Databases.Team_Database_Access) return Agent_Access
      with Pre => Networks.Id (Net.all) = To_String (Config.Id);
    --  The same on a network made by the caller (not started: the agent
    --  subscribes, then starts it) and its database, attached to Net (the
    --  XML components network and global_database make them).
 
    function Id (This : Agent) return String;
-   function Database (This : Agent) return Databases.Team_Database_Access;
+   function Database (This : Agent) return Replicated_Databases.Team_Database_Access;
    function Network (This : Agent) return Networks.Network_Access;
 
    function Find (Id : String) return Agent_Access;
@@ -222,7 +222,7 @@ private
    type Agent is tagged limited record
       Config   : Agent_Config;
       Net      : Networks.Network_Access;
-      Db       : Databases.Team_Database_Access;
+      Db       : Replicated_Databases.Team_Database_Access;
       Bids     : Bid_Box;
       Views    : View_Box;
       Steps    : Progress_Box;

@@ -9,7 +9,7 @@ with ROSIDL.Typesupport;
 with RCL.Contexts;
 with RCL.DDS;
 with RCL.QoS;
-with Sancta.Team.Interfaces;
+with Sancta.Team.Interface_Paths;
 
 package body Sancta.Team.Networks is
 
@@ -52,7 +52,7 @@ package body Sancta.Team.Networks is
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
    begin
-      Sancta.Team.Interfaces.Ensure;
+      Sancta.Team.Interface_Paths.Ensure;
       return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
    end Support;
 

@@ -7,11 +7,11 @@ with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Geometry;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
-with Sancta.Team.Databases;
-with Sancta.Team.Demos;
+with Sancta.Team.Replicated_Databases;
+with Sancta.Commands.Team_Demos;
 with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Grid_Costs;
 with Sancta.Robot.Grids;
@@ -22,7 +22,7 @@ with Sancta.Team.Plans;
 package body Sancta.Team.Tests is
 
    use Sancta.Team.Networks;
-   use Sancta.Team.Databases;
+   use Sancta.Team.Replicated_Databases;
    use type Ada.Containers.Count_Type;
    use type Plans.Tour_Vectors.Vector;
 
@@ -171,7 +171,7 @@ package body Sancta.Team.Tests is
 
    --  Replicated database -------------------------------------------------------------
 
-   type Counter is new Runtime.Databases.Listener with record
+   type Counter is new Runtime.Local_Databases.Listener with record
       Calls : Natural := 0;
       Last  : Unbounded_String;
    end record;
@@ -605,8 +605,8 @@ package body Sancta.Team.Tests is
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
-      Config : Demos.Demo_Config;
-      Result : Demos.Demo_Result;
+      Config : Commands.Team_Demos.Demo_Config;
+      Result : Commands.Team_Demos.Demo_Result;
       M      : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
    begin
       Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
@@ -615,7 +615,7 @@ package body Sancta.Team.Tests is
       Config.Verbose := False;
       Config.Team := To_Unbounded_String (Team);
       Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
-      Demos.Run (Config, Result);
+      Commands.Team_Demos.Run (Config, Result);
       Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
       Assert (Result.Replanned, "the survivors did not re-plan");
       Assert (Result.All_Done, "not all tasks done:" & Result.Tasks_Done'Image);
