@@ -155,18 +155,33 @@ package body Sancta.Team.Replicated_Databases is
       return To_String (Result);
    end Digest;
 
-   procedure Resynchronise (This : in out Team_Database) is
-      Map : constant Meta_Maps.Map := This.Data.Snapshot;
+   procedure Republish (This : in out Team_Database'Class; Joined : Name_Sets.Set) is
+      Map  : constant Meta_Maps.Map := This.Data.Snapshot;
+      Self : constant String := This.Net.Id;
+      Sent : Natural := 0;
    begin
       for C in Map.Iterate loop
          declare
-            M : constant Meta := Meta_Maps.Element (C);
+            M      : constant Meta := Meta_Maps.Element (C);
+            Writer : constant String := To_String (M.Writer);
          begin
-            This.Net.Publish_State
-              (Meta_Maps.Key (C), M.Item.Element.Type_Name, M.Item.Element.Image,
-               M.Revision, To_String (M.Writer));
+            if Writer = Self or else Joined.Contains (Writer)
+              or else not This.Net.Is_Member (Writer)
+            then
+               This.Net.Publish_State
+                 (Meta_Maps.Key (C), M.Item.Element.Type_Name, M.Item.Element.Image,
+                  M.Revision, Writer);
+               Sent := Sent + 1;
+            end if;
          end;
       end loop;
+      This.Republished.Add (Sent);
+   end Republish;
+
+   procedure Resynchronise (This : in out Team_Database; Joined : String := "") is
+   begin
+      Republish (This, (if Joined = "" then Name_Sets.Empty_Set
+                        else Name_Sets.To_Set (Joined)));
    end Resynchronise;
 
    overriding procedure On_State
@@ -190,34 +205,50 @@ package body Sancta.Team.Replicated_Databases is
       use type Ada.Real_Time.Time;
    begin
       if Member /= This.Net.Id then
-         This.Resynchronise;
+         This.Resynchronise (Joined => Member);
          This.Catch_Up_At.Set
-           (Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Catch_Up_Delay));
+           (Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Catch_Up_Delay), Member);
       end if;
    end On_Joined;
 
    protected body Due_Time is
-      procedure Set (At_Time : Ada.Real_Time.Time) is
+      procedure Set (At_Time : Ada.Real_Time.Time; Member : String) is
       begin
          When_Due := At_Time;
+         Members.Include (Member);
       end Set;
 
-      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean) is
+      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean; Joined : out Name_Sets.Set) is
          use type Ada.Real_Time.Time;
       begin
          Due := When_Due /= Ada.Real_Time.Time_Last and then Now >= When_Due;
+         Joined := Name_Sets.Empty_Set;
          if Due then
             When_Due := Ada.Real_Time.Time_Last;
+            Joined := Members;
+            Members.Clear;
          end if;
       end Take;
    end Due_Time;
 
+   protected body Tally is
+      procedure Add (N : Natural) is
+      begin
+         Total := Total + Long_Long_Integer (N);
+      end Add;
+      function Value return Long_Long_Integer is (Total);
+   end Tally;
+
+   function Republished_Count (This : Team_Database) return Long_Long_Integer is
+     (This.Republished.Value);
+
    procedure Catch_Up (This : in out Team_Database) is
-      Due : Boolean;
+      Due    : Boolean;
+      Joined : Name_Sets.Set;
    begin
-      This.Catch_Up_At.Take (Ada.Real_Time.Clock, Due);
+      This.Catch_Up_At.Take (Ada.Real_Time.Clock, Due, Joined);
       if Due then
-         This.Resynchronise;
+         Republish (This, Joined);
       end if;
    end Catch_Up;
 

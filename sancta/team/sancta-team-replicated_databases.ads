@@ -11,15 +11,17 @@
 --  (documented last-writer-wins, the other write is superseded, not merged).
 --  Keys meant for one writer (e.g. "pose/r1") are never contended.
 --
---  Catching up: whenever a member (re)joins, every node republishes all the
---  entries it holds, so a late joiner or a node cut off and rejoined gets
---  the current state, and the others get what it wrote while cut off.
+--  Catching up: whenever a member (re)joins, every node republishes the
+--  entries it wrote and those of writers no longer members (Resynchronise),
+--  so a late joiner or a node cut off and rejoined gets the current state,
+--  and the others get what it wrote while cut off.
 --
 --  Listeners: the same API as the local database (Sancta.Runtime.Local_Databases):
 --  Listen / Unlisten with a Listener, called when a key's value changes
 --  (local or remote write).
 with Ada.Containers.Indefinite_Holders;
 with Ada.Containers.Indefinite_Ordered_Maps;
+with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Local_Databases;
@@ -71,8 +73,18 @@ package Sancta.Team.Replicated_Databases is
    --  A text summarising every (key, revision, writer, value): equal on two
    --  replicas exactly when they hold the same state (tests, benchmark).
 
-   procedure Resynchronise (This : in out Team_Database);
-   --  Republishes every entry held (done on every member join).
+   procedure Resynchronise (This : in out Team_Database; Joined : String := "");
+   --  Republishes the entries this node wrote, those whose writer is not a
+   --  member now, and those of Joined (done on the join of a member Joined:
+   --  a restarted node has lost what it wrote before). Enough for every
+   --  replica to converge: the newest entry of a key is held by its writer
+   --  (nothing replaces it there), which republishes it while alive; once
+   --  the writer is gone, every node holding it does. With N members a
+   --  join thus costs about one copy of the database, not N (20 robots:
+   --  republishing everything on every join cost more than the annealing).
+
+   function Republished_Count (This : Team_Database) return Long_Long_Integer;
+   --  Entries republished by Resynchronise so far.
 
    procedure Catch_Up (This : in out Team_Database);
    --  Call periodically (the team agent's task does): republishes every
@@ -124,19 +136,31 @@ private
       Map : Meta_Maps.Map;
    end Store;
 
+   package Name_Sets is new Ada.Containers.Indefinite_Ordered_Sets (String);
+
    protected type Due_Time is
-      procedure Set (At_Time : Ada.Real_Time.Time);
-      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean);
-      --  Due (and cleared) when a time was set and Now is past it.
+      procedure Set (At_Time : Ada.Real_Time.Time; Member : String);
+      procedure Take (Now : Ada.Real_Time.Time; Due : out Boolean; Joined : out Name_Sets.Set);
+      --  Due (and cleared) when a time was set and Now is past it; Joined:
+      --  the members given to Set since.
    private
       When_Due : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
+      Members  : Name_Sets.Set;
    end Due_Time;
+
+   protected type Tally is
+      procedure Add (N : Natural);
+      function Value return Long_Long_Integer;
+   private
+      Total : Long_Long_Integer := 0;
+   end Tally;
 
    type Team_Database (Net : not null Networks.Network_Access) is
      limited new Networks.State_Consumer and Networks.Membership_Listener with record
       Replica  : Runtime.Local_Databases.Database;
       Data     : Store;
       Catch_Up_At : Due_Time;
+      Republished : Tally;
    end record;
 
 end Sancta.Team.Replicated_Databases;

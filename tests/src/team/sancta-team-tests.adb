@@ -325,6 +325,50 @@ package body Sancta.Team.Tests is
       C.Net.Stop;
    end Test_Cut_And_Rejoin;
 
+   procedure Test_Republish_Rule (T : in out Fixture) is
+      --  On a join a node republishes what it wrote, what the joiner wrote
+      --  and what writers no longer members wrote; not the entries of the
+      --  other members (they republish those themselves).
+      pragma Unreferenced (T);
+      A : constant Node := Make ("t_repub", "a");
+      B : constant Node := Make ("t_repub", "b");
+      function Met return Boolean is (A.Net.Is_Member ("b") and then B.Net.Is_Member ("a"));
+      function Has_All return Boolean is (A.Db.Keys.Length = 15);
+      function B_Gone return Boolean is (not A.Net.Is_Member ("b"));
+      Before : Long_Long_Integer;
+   begin
+      A.Net.Start;
+      B.Net.Start;
+      Assert (Wait_Until (Met'Access), "a and b never met");
+      for K in 1 .. 10 loop
+         A.Db.Put ("a/" & K'Image, "from a");
+      end loop;
+      for K in 1 .. 5 loop
+         B.Db.Put ("b/" & K'Image, "from b");
+      end loop;
+      Assert (Wait_Until (Has_All'Access), "a holds" & A.Db.Keys.Length'Image & " keys, not 15");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise;
+      Assert (A.Db.Republished_Count - Before = 10,
+              "a republished" & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries with b a member; expected its own 10");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise (Joined => "b");
+      Assert (A.Db.Republished_Count - Before = 15,
+              "on b's join a republished"
+              & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries; expected 15 (b may have restarted and lost its own)");
+      B.Net.Stop;
+      Assert (Wait_Until (B_Gone'Access), "b never lost");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise;
+      Assert (A.Db.Republished_Count - Before = 15,
+              "with b gone a republished"
+              & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries; expected 15 (nobody else holds b's)");
+      A.Net.Stop;
+   end Test_Republish_Rule;
+
    --  Missions and plans ---------------------------------------------------------------
 
    procedure Test_Mission_Errors (T : in out Fixture) is
@@ -619,6 +663,8 @@ package body Sancta.Team.Tests is
       Add ("replicated database converges under concurrent writes", Test_Convergence'Access);
       Add ("late joiner gets the state", Test_Late_Joiner'Access);
       Add ("cut-off node catches up after rejoining", Test_Cut_And_Rejoin'Access);
+      Add ("a join republishes own, joiner's and departed writers' entries",
+           Test_Republish_Rule'Access);
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
