@@ -1,7 +1,5 @@
-with Ada.Containers.Indefinite_Hashed_Maps;
 with Ada.Exceptions;
 with Ada.Real_Time;
-with Ada.Strings.Hash;
 with Ada.Streams;
 with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
@@ -11,6 +9,7 @@ with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Logging;
 with RCL.Pending_Calls;
+with RCL.Keyed_Caches;
 
 package body RCL.Services.Typed is
 
@@ -232,34 +231,10 @@ package body RCL.Services.Typed is
 
    type Client_Access is access Client;
 
-   package Client_Maps is new Ada.Containers.Indefinite_Hashed_Maps
-     (String, Client_Access, Ada.Strings.Hash, "=");
-
    procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
 
-   protected Cache is
-      function Find (Key : String) return Client_Access;
-      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean);
-      --  Made becomes the cached client (another task's if it came first;
-      --  Kept is then False and the caller frees its own).
-   private
-      Clients : Client_Maps.Map;
-   end Cache;
-
-   protected body Cache is
-      function Find (Key : String) return Client_Access is
-        (if Clients.Contains (Key) then Clients.Element (Key) else null);
-
-      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean) is
-      begin
-         Kept := not Clients.Contains (Key);
-         if Kept then
-            Clients.Insert (Key, Made);
-         else
-            Made := Clients.Element (Key);
-         end if;
-      end Insert;
-   end Cache;
+   package Client_Caches is new RCL.Keyed_Caches (Client_Access, null);
+   use Client_Caches;
 
    function Call
      (Node    : RCL.Nodes.Node'Class;
