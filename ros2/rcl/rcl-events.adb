@@ -4,6 +4,7 @@ with Interfaces;
 with System;
 with RCL.DDS;
 with RCL.Logging;
+with ROSIDL.Mutexes;
 
 package body RCL.Events is
 
@@ -25,23 +26,7 @@ package body RCL.Events is
 
    package Watch_Maps is new Ada.Containers.Ordered_Maps (System.Address, Watched);
 
-   protected Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Lock;
-
-   protected body Lock is
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-   end Lock;
+   Lock : ROSIDL.Mutexes.Mutex;
 
    Table : Watch_Maps.Map;
    --  Guarded by Lock. Keys: a publisher's writer, a subscription record.

@@ -13,6 +13,7 @@ with RCL.DDS.Matching;
 with RCL.Graph.Queries;
 with RCL.Logging;
 with RCL.QoS;
+with ROSIDL.Mutexes;
 
 package body RCL.Graph is
 
@@ -34,23 +35,7 @@ package body RCL.Graph is
 
    --  A mutex: updates and their publication are serialized, so the last
    --  message written is always the latest state.
-   protected Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Lock;
-
-   protected body Lock is
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-   end Lock;
+   Lock : ROSIDL.Mutexes.Mutex;
 
    --  State, guarded by Lock.
    Nodes      : Node_Vectors.Vector;

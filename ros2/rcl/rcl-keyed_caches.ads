@@ -4,13 +4,6 @@
 --  (making a client announces endpoints, which may block): Find, else make
 --  one and Insert it; when another task inserted first, Insert returns that
 --  task's object and the caller frees its own.
---
---     Found := Cache.Find (Key);
---     if Found = null then
---        Mine := Make;  Found := Mine;
---        Cache.Insert (Key, Found, Kept);
---        if not Kept then Free (Mine); end if;
---     end if;
 with Ada.Containers.Indefinite_Hashed_Maps;
 with Ada.Strings.Hash;
 

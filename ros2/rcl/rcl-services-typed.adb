@@ -44,18 +44,6 @@ package body RCL.Services.Typed is
    -- Call_Lock --
    ---------------
 
-   protected body Call_Lock is
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-   end Call_Lock;
-
    ------------
    -- Client --
    ------------

@@ -36,6 +36,7 @@ with RCL.Clients;
 
 private with Ada.Strings.Unbounded;
 private with RCL.Graph;
+private with ROSIDL.Mutexes;
 
 generic
    with package Handling is new ROSIDL.Static.Service_Support (<>);
@@ -132,12 +133,7 @@ package RCL.Services.Typed is
 
 private
 
-   protected type Call_Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Call_Lock;
+   subtype Call_Lock is ROSIDL.Mutexes.Mutex;
    --  One call at a time per client.
 
    type Client is new Ada.Finalization.Limited_Controlled with record

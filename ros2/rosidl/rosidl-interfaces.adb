@@ -12,6 +12,7 @@ with Ada.Strings.Hash;
 with Ada.Strings.Unbounded;
 with GNAT.OS_Lib;
 with ROSIDL.Parser;
+with ROSIDL.Mutexes;
 
 package body ROSIDL.Interfaces is
 
@@ -100,26 +101,7 @@ package body ROSIDL.Interfaces is
    --  loaded while its parent is parsed), look-ups of cached definitions
    --  only take the Registry's read lock.
 
-   protected Load_Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Load_Lock;
-
-   protected body Load_Lock is
-
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-
-   end Load_Lock;
+   Load_Lock : ROSIDL.Mutexes.Mutex;
 
    type Lock_Holder is new Ada.Finalization.Limited_Controlled with record
       Held : Boolean := False;

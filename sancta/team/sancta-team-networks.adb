@@ -156,17 +156,6 @@ package body Sancta.Team.Networks is
       function Contains (Member : String) return Boolean is (Last.Contains (Member));
    end Roster;
 
-   protected body Mutex is
-      entry Seize when not Held is
-      begin
-         Held := True;
-      end Seize;
-      procedure Release is
-      begin
-         Held := False;
-      end Release;
-   end Mutex;
-
    protected body Flag_Box is
       procedure Set_Isolated (Value : Boolean) is
       begin

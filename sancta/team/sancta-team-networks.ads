@@ -44,6 +44,7 @@ with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with RCL.Nodes;
 with RCL.Publishers;
+private with Sancta.Mutexes;
 
 package Sancta.Team.Networks is
 
@@ -223,12 +224,7 @@ private
       --  Member -> image of its presence writer's GID.
    end Roster;
 
-   protected type Mutex is
-      entry Seize;
-      procedure Release;
-   private
-      Held : Boolean := False;
-   end Mutex;
+   subtype Mutex is Sancta.Mutexes.Mutex;
 
    type Subscriber is record
       Channel : Unbounded_String;

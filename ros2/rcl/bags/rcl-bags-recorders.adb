@@ -9,17 +9,6 @@ package body RCL.Bags.Recorders is
 
    package Queries renames RCL.Graph.Queries;
 
-   protected body Lock is
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-   end Lock;
-
    --  A subscription's handler: writes each sample to the bag.
    type Topic_Handler is new RCL.Nodes.Handler with record
       Shared : State_Access;

@@ -19,6 +19,7 @@
 with Ada.Finalization;
 with ROSIDL.Definitions;
 with RCL.Nodes;
+private with ROSIDL.Mutexes;
 
 package RCL.Bags.Recorders is
 
@@ -55,12 +56,7 @@ package RCL.Bags.Recorders is
 
 private
 
-   protected type Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Lock;
+   subtype Lock is ROSIDL.Mutexes.Mutex;
 
    type State is limited record
       Bag       : Bag_Writer;

@@ -3,6 +3,7 @@ with Ada.Containers.Indefinite_Hashed_Maps;
 with Ada.Strings.Hash;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
+with Sancta.Mutexes;
 
 package body Sancta.Logging is
 
@@ -32,25 +33,8 @@ package body Sancta.Logging is
    File : Ada.Text_IO.File_Type;
    --  Only touched while Output_Lock is held.
 
-   protected Output_Lock is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Output_Lock;
+   Output_Lock : Sancta.Mutexes.Mutex;
    --  Serialises the output, which is done outside any protected action.
-
-   protected body Output_Lock is
-      entry Seize when not Busy is
-      begin
-         Busy := True;
-      end Seize;
-
-      procedure Release is
-      begin
-         Busy := False;
-      end Release;
-   end Output_Lock;
 
    protected State is
       procedure Count (Severity : Level; Message : String);
