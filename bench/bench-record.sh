@@ -10,8 +10,9 @@
 #    bag record` runs, here bin/bench_record record), vs a Python recorder
 #    (bench/record_peer.py record: `cyclonedds` reader taking serialized
 #    samples, `mcap` writer, zstd). Every message is checked in the bag by the
-#    Python mcap reader (lost = sent - recorded); the rate is the span of the
-#    recorded log times;
+#    Python mcap reader (lost = sent - recorded); the rate is the messages
+#    over the span from the first one's publication to the last one's
+#    reception (all clocks are this machine's);
 #  * DDS ceiling: the same publisher to a subscriber that writes nothing (ours:
 #    bench_record sink, the recorder's subscription path; Python: record_peer.py
 #    sink, the Python recorder's reader): how fast the DDS path alone goes;
@@ -94,8 +95,8 @@ for case in 64 scan; do
    row "$case" "DDS ceiling (no writing)" "${sink%%,*}" "$size" "$(span "$sink")" \
       "$(span "$py_sink")" "$((count - ${sink%%,*}))/$((count - ${py_sink%%,*}))" "${py_sink%%,*}"
 done
-echo "(lost: ours/Python; end-to-end and ceiling rates: received messages over the span of their"
-echo " reception times; writer: messages over the wall time of writing the file)"
+echo "(lost: ours/Python; end-to-end and ceiling rates: messages received over the span from the"
+echo " first one's publication to the last one's reception; writer: over the time to write the file)"
 
 if [ "${BENCH_RECORD_DEMO:-1}" != 0 ]; then
    bin/rclada bag record -a -o "$tmp/demo_bag" --discovery-period 0.3 > "$tmp/demo_rec.log" 2>&1 &

@@ -12,8 +12,10 @@ recorded:
                                             through `mcap` (ros2 profile, zstd)
     record_peer.py sink CASE TOPIC          the same reader writing nothing (the
                                             Python DDS ceiling) until SIGTERM:
-                                            "count,first_ns,last_ns"
-    record_peer.py check BAG                -> "count,first_ns,last_ns"
+                                            "count,first_ns,last_ns" (as check)
+    record_peer.py check BAG                -> "count,first_ns,last_ns": the
+                                            first publication time, the last
+                                            reception (log) time
 CASE: 64 (std_msgs/String) or scan (sensor_msgs/LaserScan).
 """
 import os
@@ -110,11 +112,10 @@ def record(case, topic, bag):
 def sink(case, topic):
     got = [0, None, 0]
 
-    def store(_data, _source_time):
-        now = time.time_ns()
+    def store(_data, source_time):
         got[0] += 1
-        got[1] = got[1] or now
-        got[2] = now
+        got[1] = got[1] or source_time
+        got[2] = time.time_ns()
     _receive(case, topic, store)
     print(f"{got[0]},{got[1] or 0},{got[2]}")
 
@@ -127,7 +128,8 @@ def check(bag):
             for _, channel, message in make_reader(f, validate_crcs=True).iter_messages():
                 if channel.topic.startswith("/bench_record"):
                     count += 1
-                    first = message.log_time if first is None else min(first, message.log_time)
+                    first = (message.publish_time if first is None
+                             else min(first, message.publish_time))
                     last = message.log_time if last is None else max(last, message.log_time)
     print(f"{count},{first or 0},{last or 0}")
 

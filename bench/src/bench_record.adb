@@ -144,7 +144,7 @@ begin
          begin
             Count := Count + 1;
             if Count = 1 then
-               First := Info.Received_Timestamp;
+               First := Info.Source_Timestamp;
             end if;
             Last := Info.Received_Timestamp;
          end Count_It;

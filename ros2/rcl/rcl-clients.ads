@@ -4,7 +4,7 @@
 --  reader with the same USER_DATA; the request header carries the request
 --  writer's instance handle and a process-wide sequence number, and only
 --  replies with this client's handle are kept.
---
+--  Example:
 --     C : Clients.Client;
 --     C.Init (Node, Get_Service_Support ("example_interfaces", "AddTwoInts"),
 --             "add_two_ints");
@@ -99,7 +99,7 @@ package RCL.Clients is
    --  spin_until_future_complete). The response is read while somebody
    --  waits: Spin_Until_Complete, Wait, or a synchronous Call of the same
    --  client.
-   --
+   --  Example:
    --     F : Clients.Future;
    --     C.Call_Future (Request, F);
    --     if Clients.Spin_Until_Complete (Node, F, Timeout => 2.0) = Clients.Success then

@@ -1,13 +1,16 @@
 --  Typed services and clients: requests and responses are the generated
 --  records of a service (ROSIDL.Static.<Pkg>.Services.<Srv>.Request /
 --  .Response). Instantiate with the service's Handling package:
---
+--  Example:
 --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
 --     package Adding is new RCL.Services.Typed (Add.Handling);
 --
 --     procedure Adder (Node : in out Nodes.Node'Class;
 --                      Req  : Add.Request.Message;
---                      Resp : in out Add.Response.Message);
+--                      Resp : in out Add.Response.Message) is
+--     begin
+--        Resp.Sum := Req.A + Req.B;
+--     end Adder;
 --     package Adder_Server is new Adding.Server (Adder);
 --     Adder_Server.Serve (Node, "add_two_ints");
 --

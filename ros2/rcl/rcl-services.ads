@@ -7,7 +7,7 @@
 --  once the reply writer has matched the requester's reply reader (found by
 --  the "clientid" of its request writer), waiting up to 100 ms for it, so
 --  that no reply is lost to a client discovered late.
---
+--  Example:
 --     procedure Adder (Node : in out Nodes.Node'Class;
 --                      Req  : ROSIDL.Dynamic.Message;
 --                      Resp : in out ROSIDL.Dynamic.Message) is

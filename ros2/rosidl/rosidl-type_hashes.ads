@@ -1,10 +1,11 @@
 --  ROS 2 type hashes (REP 2011, version RIHS01), which Jazzy endpoints
 --  announce in their USER_DATA ("typehash=RIHS01_<hex>;"): the SHA-256 of
 --  the type's description (its fields and every type it refers to,
---  without defaults or constants) written as compact JSON. Example:
---
---     Hash (ROSIDL.Interfaces.Message ("std_msgs", "String"))
---       = "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18"
+--  without defaults or constants) written as compact JSON.
+--  Example:
+--     pragma Assert
+--       (Hash (ROSIDL.Interfaces.Message ("std_msgs", "String"))
+--          = "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18");
 --
 --  A service's request and response topics carry the hashes of its
 --  <Name>_Request and <Name>_Response messages (as rmw_cyclonedds does).

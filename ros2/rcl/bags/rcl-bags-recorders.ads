@@ -8,7 +8,7 @@
 --  its serialized messages are written as they arrive (taken from DDS in
 --  batches, RCL.DDS.Take_Many), stamped with their reception time; full
 --  chunks are compressed and written by a task of the bag writer's own.
---
+--  Example:
 --     Node : Nodes.Node := Nodes.Init ("recorder");
 --     Rec  : Recorder;
 --     Rec.Start ("out/run", Topics => All_Topics);

@@ -2,7 +2,7 @@
 --  see it): participants, raw-CDR writers and readers, waitsets. Every
 --  Cyclone error becomes RCL.ROS_Exception with a message saying what was
 --  attempted and Cyclone's own text (dds_strretcode).
---
+--  Example:
 --     P : Participant;
 --     W : Writer;
 --     Create (P, Domain => 0, Localhost_Only => True);
@@ -171,11 +171,8 @@ package RCL.DDS is
    --  of the reader's history instead of one per sample): Process is called
    --  for each, in order; Count says how many (0: none was available).
    --  An exception from Process propagates after every taken sample was
-   --  released (the samples after the failing one are lost).
-   --     loop
-   --        Take_Many (R, Store'Access, Count);
-   --        exit when Count = 0;
-   --     end loop;
+   --  released (the samples after the failing one are lost). Call it until
+   --  Count = 0 to empty the reader.
 
    function Take (This : in out Reader; Info : out Sample_Info) return Byte_Array
      with Pre => Is_Open (This);

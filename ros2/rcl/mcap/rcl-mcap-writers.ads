@@ -4,7 +4,7 @@
 --  footer so that readers can seek. Not task-safe: one task writes.
 --  With Background, a task of the writer's own compresses and writes each
 --  full chunk while the next one fills (Write then only copies messages).
---
+--  Example:
 --     W : Writer;
 --     W.Create ("run.mcap", Profile => "ros2", Compression => Zstd);
 --     S : constant Schema_Id := W.Add_Schema ("std_msgs/msg/String", "ros2msg",
