@@ -122,6 +122,8 @@ begin
       begin
          Topics.Append (Argument (3));
          Rec.Start (Argument (4), Topics);
+         Ada.Text_IO.Put_Line ("ready");
+         Ada.Text_IO.Flush;
          RCL.Contexts.Install_Signal_Handlers;
          while Clock < Stop and then not RCL.Contexts.Is_Shutdown loop
             Rec.Discover (Node);
@@ -153,6 +155,8 @@ begin
            (RCL.Graph.Queries.Mangle_Type (Type_Name), Argument (3), Count_It'Access,
             (RCL.QoS.Default with delta History => RCL.QoS.Keep_All, Depth => 1000));
          RCL.Contexts.Install_Signal_Handlers;
+         Ada.Text_IO.Put_Line ("ready");
+         Ada.Text_IO.Flush;
          while Clock < Stop and then not RCL.Contexts.Is_Shutdown loop
             Node.Spin (During => 0.1);
          end loop;
