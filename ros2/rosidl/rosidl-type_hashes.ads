@@ -31,8 +31,17 @@ package ROSIDL.Type_Hashes is
 
    function Hash_Of_DDS_Type (DDS_Type_Name : String) return Type_Hash;
    --  The hash of the interface whose DDS type name is given
-   --  ("std_msgs::msg::dds_::String_"); Zero when no such interface is on
-   --  the search path (a raw-CDR endpoint of a type this program does not
-   --  know).
+   --  ("std_msgs::msg::dds_::String_"): the one registered for it (Register),
+   --  else the one computed from its definition on the search path; Zero
+   --  when neither is known (a raw-CDR endpoint of a type this program does
+   --  not know).
+
+   procedure Register (DDS_Type_Name : String; Hash : Type_Hash);
+   --  Makes Hash_Of_DDS_Type return Hash for DDS_Type_Name, whether the
+   --  type is on the search path or not. RCL's typed API registers the hash
+   --  of a generated type (computed by the generator) when it makes an
+   --  endpoint of it, so that a user type whose definition is not on the
+   --  search path announces its real hash. A second registration of the
+   --  same name keeps the first hash.
 
 end ROSIDL.Type_Hashes;
