@@ -3,7 +3,7 @@ with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Vectors;
 with Ada.Directories;
 with Ada.Strings.Fixed;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Values;
 
@@ -49,7 +49,7 @@ package body Sancta.Runtime.Configurations is
 
    type Loader is record
       Trees       : Tree_Vectors.Vector;
-      Open_Files  : Databases.Key_Vectors.Vector;
+      Open_Files  : Local_Databases.Key_Vectors.Vector;
       --  Full names of the files being included (cycle detection).
       Agents      : Ref_Vectors.Vector;
       Groups      : Group_Maps.Map;
@@ -147,7 +147,7 @@ package body Sancta.Runtime.Configurations is
    procedure Check_Attributes
      (Result : in out Configuration; T : Tree; E : Element_Id; Allowed : String)
    is
-      Words : Databases.Key_Vectors.Vector;
+      Words : Local_Databases.Key_Vectors.Vector;
       First : Positive := Allowed'First;
    begin
       for I in Allowed'Range loop
@@ -320,9 +320,9 @@ package body Sancta.Runtime.Configurations is
 
    function Port_Names
      (Info : Components.Descriptor; Direction : Components.Port_Direction)
-      return Databases.Key_Vectors.Vector
+      return Local_Databases.Key_Vectors.Vector
    is
-      Result : Databases.Key_Vectors.Vector;
+      Result : Local_Databases.Key_Vectors.Vector;
    begin
       for P of Info.Ports loop
          if P.Direction = Direction then
@@ -332,7 +332,8 @@ package body Sancta.Runtime.Configurations is
       return Result;
    end Port_Names;
 
-   function Suggest (Name : String; Candidates : Databases.Key_Vectors.Vector) return String is
+   function Suggest
+     (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String is
       Near : constant String := Factory.Closest (Name, Candidates);
    begin
       return (if Near = "" then "" else " (did you mean " & Near & "?)");
@@ -449,7 +450,7 @@ package body Sancta.Runtime.Configurations is
                null;
             elsif not (for some O of Info.Options => O.Name = Name) then
                declare
-                  Known : Databases.Key_Vectors.Vector;
+                  Known : Local_Databases.Key_Vectors.Vector;
                   All_Names : Unbounded_String;
                begin
                   for O of Info.Options loop
@@ -747,8 +748,8 @@ package body Sancta.Runtime.Configurations is
       package Provider_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Provider);
       Providers : Provider_Maps.Map;
 
-      function Provided_Keys return Databases.Key_Vectors.Vector is
-         Result : Databases.Key_Vectors.Vector;
+      function Provided_Keys return Local_Databases.Key_Vectors.Vector is
+         Result : Local_Databases.Key_Vectors.Vector;
       begin
          for C in Providers.Iterate loop
             Result.Append (Provider_Maps.Key (C));
@@ -882,8 +883,8 @@ package body Sancta.Runtime.Configurations is
       Constants : String_Map := Result.Constants;
       Members   : Ref_Vectors.Vector;
 
-      function Group_Names return Databases.Key_Vectors.Vector is
-         Result : Databases.Key_Vectors.Vector;
+      function Group_Names return Local_Databases.Key_Vectors.Vector is
+         Result : Local_Databases.Key_Vectors.Vector;
       begin
          for C in L.Groups.Iterate loop
             Result.Append (Group_Maps.Key (C));

@@ -6,13 +6,13 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with GNAT.OS_Lib;
 with Sancta.Commands.Options;
-with Sancta.Components.All_Standard;
+with Sancta.Standard_Components.All_Standard;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
 
 package body Sancta.Commands.Check is
 
-   pragma Warnings (Off, Sancta.Components.All_Standard);
+   pragma Warnings (Off, Sancta.Standard_Components.All_Standard);
    --  Withed for its registrations only.
 
    use Ada.Command_Line;
