@@ -1,4 +1,5 @@
 with Interfaces;
+with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Directories;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
@@ -10,6 +11,7 @@ with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Simulators;
 with Sancta.Team.Missions;
+with Sancta.Team.Replicated_Databases;
 
 package body Sancta.Commands.Team_Demos is
 
@@ -362,6 +364,11 @@ package body Sancta.Commands.Team_Demos is
               & ASCII.LF);
       Append (J, "  ""replan_wall_s"": " & Img (Result.Replan_Wall) & "," & ASCII.LF);
       Append (J, "  ""replan_sim_s"": " & Img (Result.Replan_Sim) & "," & ASCII.LF);
+      Append (J, "  ""cut_robot"": " & Q (To_String (Result.Cut_Robot)) & "," & ASCII.LF);
+      Append (J, "  ""converged"": " & (if Result.Converged then "true" else "false") & ","
+              & ASCII.LF);
+      Append (J, "  ""converge_wall_s"": " & Img (Result.Converge_Wall) & "," & ASCII.LF);
+      Append (J, "  ""converge_keys"": " & Trim (Result.Converge_Keys) & "," & ASCII.LF);
       Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
       Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
               & ASCII.LF);
@@ -432,6 +439,13 @@ package body Sancta.Commands.Team_Demos is
                  & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
          end loop;
          New_Line;
+      end if;
+      if Result.Cut_Robot /= Null_Unbounded_String then
+         Put_Line ("partition: " & To_String (Result.Cut_Robot) & " cut off and healed; replicas "
+                   & (if Result.Converged
+                      then "converged" & Result.Converge_Keys'Image & " keys in "
+                           & F1 (Result.Converge_Wall) & " s wall after the heal"
+                      else "did NOT converge"));
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
                 & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
@@ -522,6 +536,18 @@ package body Sancta.Commands.Team_Demos is
          Start_Wall : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
          Id         : Robot_Id;
          Count      : array (1 .. Natural (M.Tasks.Length)) of Natural := [others => 0];
+         type Cut_Phase is (Before_Cut, Cut_Off, Healed, Measured);
+         Cut_State  : Cut_Phase := (if Config.Cut_For > 0.0 then Before_Cut else Measured);
+         Cut_Index  : Natural := 0;
+         Cut_Wall   : Ada.Real_Time.Time;
+         Heal_Wall  : Ada.Real_Time.Time;
+         Next_Check : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
+         type Version is record
+            Revision : Long_Long_Integer := 0;
+            Writer   : Unbounded_String;
+         end record;
+         package Version_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Version);
+         Target     : Version_Maps.Map;
 
          function Observer return Agents.Agent_Access is
          begin
@@ -584,6 +610,116 @@ package body Sancta.Commands.Team_Demos is
             Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
                       & To_String (M.Robots (R).Id) & " killed (simulator kill, agent stopped)");
          end Kill;
+
+         procedure Newest_At_Heal is
+            --  The newest (revision, writer) of every key on any node.
+            procedure Take (Db : Replicated_Databases.Team_Database_Access) is
+            begin
+               for K of Db.Keys loop
+                  declare
+                     V : constant Version :=
+                       (Db.Revision (K), To_Unbounded_String (Db.Writer (K)));
+                  begin
+                     if not Target.Contains (K) then
+                        Target.Insert (K, V);
+                     elsif V.Revision > Target (K).Revision
+                       or else (V.Revision = Target (K).Revision
+                                and then V.Writer > Target (K).Writer)
+                     then
+                        Target.Replace (K, V);
+                     end if;
+                  end;
+               end loop;
+            end Take;
+         begin
+            Target.Clear;
+            Take (Operator.Database);
+            for R in 1 .. N loop
+               if Alive (R) then
+                  Take (Agent_List (R).Database);
+               end if;
+            end loop;
+         end Newest_At_Heal;
+
+         function Caught_Up return Boolean is
+            function Holds (Db : Replicated_Databases.Team_Database_Access) return Boolean is
+            begin
+               for C in Target.Iterate loop
+                  declare
+                     K : constant String := Version_Maps.Key (C);
+                     V : constant Version := Version_Maps.Element (C);
+                     Rev : constant Long_Long_Integer := Db.Revision (K);
+                  begin
+                     if Rev < V.Revision
+                       or else (Rev = V.Revision and then Db.Writer (K) < To_String (V.Writer))
+                     then
+                        return False;
+                     end if;
+                  end;
+               end loop;
+               return True;
+            end Holds;
+         begin
+            if not Holds (Operator.Database) then
+               return False;
+            end if;
+            for R in 1 .. N loop
+               if Alive (R) and then not Holds (Agent_List (R).Database) then
+                  return False;
+               end if;
+            end loop;
+            return True;
+         end Caught_Up;
+
+         procedure Partition_Step is
+            use type Ada.Real_Time.Time_Span;
+            Now : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+         begin
+            case Cut_State is
+               when Before_Cut =>
+                  if Long_Float (Operator.Done_Tasks)
+                    >= Config.Cut_Fraction * Long_Float (Result.Tasks_Total)
+                  then
+                     for R in reverse 1 .. N loop
+                        if Alive (R) and then Cut_Index = 0 then
+                           Cut_Index := R;
+                        end if;
+                     end loop;
+                     Agent_List (Cut_Index).Network.Isolate (True);
+                     Cut_Wall := Now;
+                     Cut_State := Cut_Off;
+                     Result.Cut_Robot := M.Robots (Cut_Index).Id;
+                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
+                               & To_String (M.Robots (Cut_Index).Id) & " cut off from the team"
+                               & " for " & F1 (Long_Float (Config.Cut_For)) & " s (wall)");
+                  end if;
+               when Cut_Off =>
+                  if Now - Cut_Wall >= Ada.Real_Time.To_Time_Span (Config.Cut_For) then
+                     Agent_List (Cut_Index).Network.Isolate (False);
+                     Heal_Wall := Now;
+                     Newest_At_Heal;
+                     Result.Converge_Keys := Natural (Target.Length);
+                     Cut_State := Healed;
+                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
+                               & To_String (M.Robots (Cut_Index).Id) & " reconnected");
+                  end if;
+               when Healed =>
+                  if Now >= Next_Check then
+                     Next_Check := Now + Ada.Real_Time.Milliseconds (50);
+                     if Caught_Up then
+                        Result.Converged := True;
+                        Result.Converge_Wall :=
+                          Long_Float (Ada.Real_Time.To_Duration (Now - Heal_Wall));
+                        Cut_State := Measured;
+                        Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  replicas converged"
+                                  & Result.Converge_Keys'Image & " keys in "
+                                  & F1 (Result.Converge_Wall) & " s (wall) after the heal");
+                     end if;
+                  end if;
+               when Measured =>
+                  null;
+            end case;
+         end Partition_Step;
 
          function Choose_Victim return Positive is
             Best   : Positive := 1;
@@ -737,11 +873,23 @@ package body Sancta.Commands.Team_Demos is
                end loop;
                Put_Line (" ]");
             end if;
+            Partition_Step;
             Sim.Step (0.1);
             delay until Start_Wall + Ada.Real_Time.To_Time_Span
               (Duration (Long_Float (Sim.Clock) / Config.Rate));
          end loop;
          Result.Makespan := Long_Float (Sim.Clock);
+         declare
+            Give_Up : constant Ada.Real_Time.Time :=
+              Ada.Real_Time.Clock + Ada.Real_Time.Seconds (15);
+         begin
+            --  The mission may end before the replicas have converged (or
+            --  before the heal): the measurement goes on, time stopped.
+            while Cut_State in Cut_Off | Healed and then Ada.Real_Time.Clock < Give_Up loop
+               Partition_Step;
+               delay 0.02;
+            end loop;
+         end;
          Result.Tasks_Done := Operator.Done_Tasks;
          Result.All_Done := Operator.All_Done;
          Result.Rounds := Observer.Round.Generation;
