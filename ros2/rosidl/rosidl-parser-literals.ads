@@ -1,4 +1,4 @@
---  Not for users: validation and normalisation of the literal values of the
+--  Validation and normalisation of the literal values of the
 --  interface language (constants and default values), as ROS 2 accepts them.
 --  Pure functions: a problem is reported in the result, never raised.
 with Ada.Containers.Vectors;
