@@ -3,7 +3,9 @@ process (`sancta team`: the simulator in-process, each robot a team agent
 with its own DDS node), at 25x simulated time. Every task must be done
 exactly once (--check) and every robot appear in the summary."""
 import json
+import os
 import re
+import signal
 import subprocess
 import sys
 
@@ -54,3 +56,32 @@ def test_partition_heal_converges_at_ten_robots(tmp_path):
     assert summary["duplicates"] <= 2, out[-3000:]
     assert re.search(r"partition: r10 cut off and healed; replicas converged [0-9]+ keys", out), \
         out[-3000:]
+
+
+def test_ten_robot_processes_demo(tmp_path):
+    """The README's 10-robot demo (share/config/sim-team-10.xml): sancta-sim
+    and eleven `sancta run` processes (10 robots + the operator) on the
+    campus world, 100 tasks, one robot's process killed at 25 %: every task
+    done exactly once, the survivors re-plan. The whole process group is
+    killed at the end, whatever happens."""
+    out_dir = tmp_path / "out"
+    p = subprocess.Popen([str(ps.BIN / "sancta"), "demo",
+                          str(ps.REPO / "share" / "config" / "sim-team-10.xml"),
+                          "--max-wall", "240", "--check", "--no-record", "--quiet",
+                          "--out", str(out_dir)],
+                         cwd=ps.REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         text=True, start_new_session=True)
+    try:
+        out, _ = p.communicate(timeout=300)
+    finally:
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        p.wait()
+    assert p.returncode == 0, out[-3000:]
+    assert "check: passed" in out, out[-3000:]
+    summary = json.loads((out_dir / "summary.json").read_text())
+    assert summary["tasks_total"] == 100 and summary["tasks_done"] == 100, summary
+    assert summary["duplicates"] == 0 and summary["replanned"], summary
+    assert summary["killed"], summary
