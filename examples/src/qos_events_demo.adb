@@ -2,7 +2,9 @@
 --  per line: "event KIND total=N change=N policy=NAME alive=N not_alive=N
 --  current=N". The publisher publishes std_msgs/String every PERIOD s.
 --     qos_events_demo pub|sub TOPIC [best_effort|reliable] [DEADLINE] [PERIOD] [LEASE]
---  DEADLINE, LEASE: seconds, 0 for none (LEASE: manual-by-topic liveliness).
+--                     [by_reception|by_source]
+--  DEADLINE, LEASE: seconds, 0 for none (LEASE: manual-by-topic liveliness);
+--  by_source: destination order by source timestamp (older samples lost).
 with Ada.Command_Line;
 with Ada.Exceptions;
 with Ada.Text_IO;
@@ -59,7 +61,10 @@ begin
                            else RCL.QoS.Reliable),
            Deadline    => Deadline,
            Liveliness  => (if Lease > 0.0 then RCL.QoS.Manual_By_Topic else RCL.QoS.Automatic),
-           Lease       => (if Lease > 0.0 then Lease else RCL.QoS.Infinite));
+           Lease       => (if Lease > 0.0 then Lease else RCL.QoS.Infinite),
+           Destination_Order =>
+             (if Arg (7, "by_reception") = "by_source" then RCL.QoS.By_Source_Timestamp
+              else RCL.QoS.By_Reception_Timestamp));
       Node     : Nodes.Node := Nodes.Init ("qos_events_" & Role);
    begin
       if Role = "pub" then

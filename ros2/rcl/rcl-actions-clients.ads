@@ -3,7 +3,7 @@
 --  results. Goals, results and cancel requests are synchronous calls (safe
 --  from several tasks at once); feedback is delivered to a callback by the
 --  executor spinning the node.
---
+--  Example:
 --     C : Clients.Client;
 --     C.Init (Node, Get_Action_Support ("example_interfaces", "Fibonacci"),
 --             "fibonacci", On_Feedback'Access);

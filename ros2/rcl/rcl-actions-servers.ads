@@ -9,7 +9,7 @@
 --  Several goals may be active at once. Results are kept for Result_Timeout
 --  after the goal ended (a get_result request for a goal still running is
 --  answered when it ends).
---
+--  Example:
 --     function On_Goal (Node : in out Nodes.Node'Class; Id : Goal_Id;
 --                       Goal : Message) return Goal_Response is
 --       (if Goal ("order").As_Int32.Element.all < 0 then Reject

@@ -12,7 +12,7 @@
 --
 --  Each goal is named by a random UUID chosen by the client. The server
 --  side is RCL.Actions.Servers, the client side RCL.Actions.Clients.
---
+--  Example:
 --     Support : constant Action_Support :=
 --       Get_Action_Support ("example_interfaces", "Fibonacci");
 --     Goal : Message := Goal_Message (Support);

@@ -3,7 +3,7 @@
 --  makes every allocation of its subscriptions' message decoding (the
 --  unbounded sequences of generated messages) from it, in whichever
 --  executor task runs the callbacks:
---
+--  Example:
 --     Pool : aliased GNAT.Debug_Pools.Debug_Pool;
 --     Node : Nodes.Node := Nodes.Init
 --       ("listener", Options => (Pool => Pool'Unchecked_Access, others => <>));

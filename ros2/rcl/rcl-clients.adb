@@ -48,28 +48,51 @@ package body RCL.Clients is
    is
       use ROSIDL.Typesupport;
       FQ : constant String := Node.Expand_Service (Name);
-      P  : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
-      Id : constant String := "clientid=" & RCL.DDS.Matching.New_Id (P.all) & ";";
    begin
       This.Name := To_Unbounded_String (FQ);
       This.Support := Support;
-      RCL.DDS.Create (This.Requests, P.all, RCL.Services.Request_Topic (FQ),
-                      DDS_Type_Name (Request_Support (Support)), QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data
-                                     (DDS_Type_Name (Request_Support (Support)), Id));
-      RCL.DDS.Create (This.Replies, P.all, RCL.Services.Reply_Topic (FQ),
-                      DDS_Type_Name (Response_Support (Support)),
-                      (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
-                      User_Data => RCL.Graph.Endpoint_User_Data
-                                     (DDS_Type_Name (Response_Support (Support)), Id));
-      RCL.DDS.Create (This.Waiting, P.all);
+      Open_Endpoints (Node, FQ, DDS_Type_Name (Request_Support (Support)),
+                      DDS_Type_Name (Response_Support (Support)), QoS,
+                      This.Requests, This.Replies, This.Handle);
+      RCL.DDS.Create (This.Waiting, RCL.Contexts.Participant.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Handle := RCL.DDS.Matching.Instance_Handle (This.Requests);
       This.Node := Node.Graph_Id;
-      RCL.Graph.Add_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
-      RCL.Graph.Add_Reader (This.Node, RCL.DDS.Endpoint_GUID (This.Replies));
       This.Open := True;
    end Init;
+
+   procedure Open_Endpoints
+     (Node          : RCL.Nodes.Node'Class;
+      Service_Name  : String;
+      Request_Type  : String;
+      Response_Type : String;
+      QoS           : RCL.QoS.Profile;
+      Requests      : in out RCL.DDS.Writer;
+      Replies       : in out RCL.DDS.Reader;
+      Handle        : out ROSIDL.UInt64)
+   is
+      P  : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
+      Id : constant String := "clientid=" & RCL.DDS.Matching.New_Id (P.all) & ";";
+   begin
+      RCL.DDS.Create (Requests, P.all, RCL.Services.Request_Topic (Service_Name),
+                      Request_Type, QoS,
+                      User_Data => RCL.Graph.Endpoint_User_Data (Request_Type, Id));
+      RCL.DDS.Create (Replies, P.all, RCL.Services.Reply_Topic (Service_Name),
+                      Response_Type,
+                      (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
+                      User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
+      Handle := RCL.DDS.Matching.Instance_Handle (Requests);
+      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Requests));
+      RCL.Graph.Add_Reader (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Replies));
+   end Open_Endpoints;
+
+   procedure Close_Endpoints
+     (Node     : RCL.Graph.Node_Id;
+      Requests : RCL.DDS.Writer;
+      Replies  : RCL.DDS.Reader) is
+   begin
+      RCL.Graph.Remove_Writer (Node, RCL.DDS.Endpoint_GUID (Requests));
+      RCL.Graph.Remove_Reader (Node, RCL.DDS.Endpoint_GUID (Replies));
+   end Close_Endpoints;
 
    function Is_Open (This : Client) return Boolean is (This.Open);
 
@@ -441,8 +464,7 @@ package body RCL.Clients is
          Free (This.Pumper);
       end if;
       if This.Open then
-         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.Requests));
-         RCL.Graph.Remove_Reader (This.Node, RCL.DDS.Endpoint_GUID (This.Replies));
+         Close_Endpoints (This.Node, This.Requests, This.Replies);
       end if;
       This.Open := False;
    exception

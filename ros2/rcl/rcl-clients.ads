@@ -4,7 +4,7 @@
 --  reader with the same USER_DATA; the request header carries the request
 --  writer's instance handle and a process-wide sequence number, and only
 --  replies with this client's handle are kept.
---
+--  Example:
 --     C : Clients.Client;
 --     C.Init (Node, Get_Service_Support ("example_interfaces", "AddTwoInts"),
 --             "add_two_ints");
@@ -27,13 +27,13 @@
 with Ada.Finalization;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with RCL.DDS;
+with RCL.Graph;
 with RCL.Nodes;
 with RCL.Pending_Calls;
 with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
-private with RCL.DDS;
-private with RCL.Graph;
 
 package RCL.Clients is
 
@@ -99,7 +99,7 @@ package RCL.Clients is
    --  spin_until_future_complete). The response is read while somebody
    --  waits: Spin_Until_Complete, Wait, or a synchronous Call of the same
    --  client.
-   --
+   --  Example:
    --     F : Clients.Future;
    --     C.Call_Future (Request, F);
    --     if Clients.Spin_Until_Complete (Node, F, Timeout => 2.0) = Clients.Success then
@@ -160,6 +160,31 @@ package RCL.Clients is
    --  RCL_Timeout when the service is not available within Timeout.
 
    overriding procedure Finalize (This : in out Client);
+
+   --  Not for users (RCL.Services.Typed) --------------------------------
+
+   procedure Open_Endpoints
+     (Node          : RCL.Nodes.Node'Class;
+      Service_Name  : String;
+      Request_Type  : String;
+      Response_Type : String;
+      QoS           : RCL.QoS.Profile;
+      Requests      : in out RCL.DDS.Writer;
+      Replies       : in out RCL.DDS.Reader;
+      Handle        : out ROSIDL.UInt64)
+     with Pre => not RCL.DDS.Is_Open (Requests) and then not RCL.DDS.Is_Open (Replies);
+   --  The request writer and reply reader of a client of the fully
+   --  qualified Service_Name with the DDS types given, with a new
+   --  "clientid" in their USER_DATA, announced in the graph as endpoints of
+   --  Node; Handle is the request writer's instance handle (the requests'
+   --  header GUID).
+
+   procedure Close_Endpoints
+     (Node     : RCL.Graph.Node_Id;
+      Requests : RCL.DDS.Writer;
+      Replies  : RCL.DDS.Reader);
+   --  Withdraws them from the graph of Node (Node.Graph_Id when they were
+   --  opened); the DDS entities go with the objects.
 
 private
 

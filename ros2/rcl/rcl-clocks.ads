@@ -2,7 +2,7 @@
 --  system time, or, with simulated time (use_sim_time), the last time
 --  received on /clock (rosgraph_msgs/msg/Clock, clock QoS), 0 before the
 --  first message.
---
+--  Example:
 --     T : constant RCL.Clocks.Nanoseconds := RCL.Clocks.Now (RCL.Clocks.ROS);
 --     RCL.Clocks.Enable_Sim_Time (Node);  --  or --ros-args -p use_sim_time:=true
 limited with RCL.Nodes;

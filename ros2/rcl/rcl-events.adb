@@ -52,6 +52,7 @@ package body RCL.Events is
          when 4      => "DEADLINE_QOS_POLICY",
          when 8      => "LIVELINESS_QOS_POLICY",
          when 11     => "RELIABILITY_QOS_POLICY",
+         when 12     => "DESTINATION_ORDER_QOS_POLICY",
          when 13     => "HISTORY_QOS_POLICY",
          when 21     => "LIFESPAN_QOS_POLICY",
          when others => "UNKNOWN_QOS_POLICY");

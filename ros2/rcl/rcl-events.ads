@@ -13,10 +13,12 @@
 --     incompatible policy: RELIABILITY_QOS_POLICY
 --
 --  Callbacks get every event of one publisher or subscription:
---
+--  Example:
 --     procedure On_Event (Node : in out Nodes.Node'Class; E : Events.Event) is
 --     begin
---        if E.Kind = Events.Deadline_Missed then ...
+--        if E.Kind in Events.Deadline_Missed then
+--           Put_Line ("deadline missed on " & E.Topic.all & E.Total'Image & " times");
+--        end if;
 --     end On_Event;
 --     Events.Watch (Node, Pub, On_Event'Access);           --  a publisher
 --     Events.Watch (Node, "scan", On_Event'Access);        --  a subscription
@@ -59,7 +61,8 @@ package RCL.Events is
    function Policy_Name (Policy : Natural) return String;
    --  As rclcpp names them: "RELIABILITY_QOS_POLICY", "DURABILITY_QOS_POLICY",
    --  "DEADLINE_QOS_POLICY", "LIVELINESS_QOS_POLICY", "HISTORY_QOS_POLICY",
-   --  "LIFESPAN_QOS_POLICY"; "UNKNOWN_QOS_POLICY" for others.
+   --  "LIFESPAN_QOS_POLICY", "DESTINATION_ORDER_QOS_POLICY" (not in rmw: see
+   --  RCL.QoS.Destination_Order_Policy); "UNKNOWN_QOS_POLICY" for others.
 
    type Callback is access procedure (Node : in out RCL.Nodes.Node'Class; E : Event);
 

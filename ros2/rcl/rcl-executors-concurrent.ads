@@ -11,7 +11,7 @@
 --  waits until every queued callback has run, then stops each pool task and
 --  waits for its termination; nothing runs after it returns. The pool is
 --  started by the first Spin.
---
+--  Example:
 --     E : Executors.Concurrent.Executor (Threads => 4);
 --     E.Add (Node);
 --     E.Spin (During => Executors.Forever);

@@ -5,7 +5,7 @@
 --  sequential executor runs it at once in the spinning task, the concurrent
 --  one queues it for a pool of tasks. An exception in a user callback is
 --  logged with the callback's topic; the node keeps running.
---
+--  Example:
 --     E : Executors.Sequential.Executor;
 --     E.Add (Node_1);  E.Add (Node_2);
 --     E.Spin (During => Executors.Forever);

@@ -15,7 +15,7 @@
 --  info. Each query reads the current state, so peers that appear or
 --  disappear are seen by the next query; a newly started process needs a
 --  moment of discovery first (Wait_For_Settled_Discovery).
---
+--  Example:
 --     RCL.Graph.Queries.Wait_For_Settled_Discovery;
 --     for T of RCL.Graph.Queries.Topic_Names_And_Types loop
 --        Put_Line (To_String (T.Name) & " [" & To_String (T.Types) & "]");
@@ -75,7 +75,7 @@ package RCL.Graph.Queries is
    --  participant (USER_DATA "enclave=...") has announced its nodes on
    --  ros_discovery_info; at most Limit. A Fast DDS node's announcement
    --  often arrives only with its next heartbeat, about 3 s after discovery.
-   --
+   --  Example:
    --     Wait_For_Settled_Discovery;  --  then Node_Names is complete
 
    function Node_Names return Node_Array;

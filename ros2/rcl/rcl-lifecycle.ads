@@ -14,7 +14,7 @@
 --  ~/get_available_transitions, ~/get_transition_graph (lifecycle_msgs)
 --  and the topic ~/transition_event (lifecycle_msgs/TransitionEvent, one
 --  event per step).
---
+--  Example:
 --     function On_Activate (Node : in out Nodes.Node'Class; Previous : State_Id)
 --       return Callback_Return is (Success);
 --     ...

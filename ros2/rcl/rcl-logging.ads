@@ -3,7 +3,7 @@
 --  RCUTILS_CONSOLE_OUTPUT_FORMAT ({severity}, {time}, {time_as_nanoseconds},
 --  {name}, {message}; {file_name}, {function_name}, {line_number} print
 --  empty), and a hook through which RCL republishes records on /rosout.
---
+--  Example:
 --     Logging.Info ("Got chatter");              --  logger of the last node
 --     Logging.Warn ("low battery", Logger => "robot1.power");
 package RCL.Logging is

@@ -1,11 +1,11 @@
 --  ROS 2 names: validation of node names and namespaces, expansion of
 --  topic names to fully qualified names (rcl's rules), and the DDS topic
 --  names derived from them.
---
---     Expand_Topic_Name ("chatter", Node => "talker", Namespace => "/ns")
---       = "/ns/chatter"
---     Expand_Topic_Name ("~/status", "talker", "/ns") = "/ns/talker/status"
---     DDS_Topic_Name ("/ns/chatter") = "rt/ns/chatter"
+--  Example:
+--     pragma Assert (Expand_Topic_Name ("chatter", Node => "talker", Namespace => "/ns")
+--                      = "/ns/chatter");
+--     pragma Assert (Expand_Topic_Name ("~/status", "talker", "/ns") = "/ns/talker/status");
+--     pragma Assert (DDS_Topic_Name ("/ns/chatter") = "rt/ns/chatter");
 package RCL.Names is
 
    Name_Error : exception;

@@ -1,6 +1,7 @@
 with Ada.Streams;
 with Ada.Unchecked_Deallocation;
 with RCL.Contexts;
+with ROSIDL.Type_Hashes;
 with System.Address_To_Access_Conversions;
 
 package body RCL.Nodes.Typed is
@@ -10,6 +11,7 @@ package body RCL.Nodes.Typed is
       Topic : String;
       QoS   : RCL.QoS.Profile := RCL.QoS.Default) return RCL.Publishers.Publisher is
    begin
+      ROSIDL.Type_Hashes.Register (Handling.DDS_Type_Name, Handling.Type_Hash);
       return Node.Publish_Raw (Handling.DDS_Type_Name, Topic, QoS);
    end Publish;
 
@@ -108,6 +110,7 @@ package body RCL.Nodes.Typed is
       S : constant Slot_Access := new Slot;
    begin
       S.Callback := Stored;
+      ROSIDL.Type_Hashes.Register (Handling.DDS_Type_Name, Handling.Type_Hash);
       Node.Subscribe_Closure (Handling.DDS_Type_Name, Topic, Deliver'Access,
                               Slot_Addresses.To_Address (Slot_Addresses.Object_Pointer (S)),
                               Release'Access, QoS);

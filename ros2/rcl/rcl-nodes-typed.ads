@@ -3,7 +3,7 @@
 --  encoded and decoded by the generated codec straight into and out of the
 --  DDS sample (no dynamic message, no intermediate buffer). Instantiate
 --  once per message type with the type's Handling package:
---
+--  Example:
 --     package Strings renames ROSIDL.Static.Std_Msgs.Messages.String;
 --     package Chatter is new RCL.Nodes.Typed (Strings.Handling);
 --     Pub : Publishers.Publisher := Chatter.Publish (Node, "/chatter");

@@ -1,7 +1,7 @@
 --  Nodes: named participants of the ROS 2 graph, owning subscriptions and
 --  timers and making publishers. All nodes of a process share the
 --  context's DDS participant (RCL.Contexts).
---
+--  Example:
 --     Node : Nodes.Node := Nodes.Init ("listener", Namespace => "/robot1");
 --     Node.Subscribe
 --       (ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String"),
@@ -228,7 +228,7 @@ package RCL.Nodes is
    --  callback even in parallel with itself). Only the concurrent executor
    --  (RCL.Executors.Concurrent) runs callbacks in parallel at all: the
    --  sequential ones run everything one at a time anyway.
-   --
+   --  Example:
    --     Sensors : constant Callback_Group := Node.Create_Callback_Group (Reentrant);
    --     Node.Set_Callback_Group (Sensors);
    --     Node.Subscribe (Scan_Support, "scan", On_Scan'Access);  --  in Sensors

@@ -15,7 +15,8 @@
 --         rate: 20                # nested maps give "a.b" names
 --         gains: [1.0, 2.5]
 --
---     Parameters.Declare (Node, "rate", To_Value (10), "publish rate (Hz)");
+--  Example:
+--     Parameters.Declare_Parameter (Node, "rate", To_Value (10), "publish rate (Hz)");
 --     Parameters.On_Set (Node, Check'Access);  --  "" accepts, else a reason
 --     Parameters.Serve (Node);                 --  the services, then spin
 --     Rate := Parameters.Get (Node, "rate").Int;

@@ -1,5 +1,5 @@
 --  Publishers: made by Node.Publish; publish messages on one topic.
---
+--  Example:
 --     Pub : Publishers.Publisher := Node.Publish (Support, "/chatter");
 --     Pub.Publish (Msg);        --  a ROSIDL.Dynamic.Message of that type
 --     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header

@@ -19,7 +19,9 @@ package body RCL.QoS is
       function Extra return String is
         ((if This.Deadline > 0.0 then ", deadline" & This.Deadline'Image else "")
          & (if This.Lifespan > 0.0 then ", lifespan" & This.Lifespan'Image else "")
-         & (if This.Lease < Infinite then ", lease" & This.Lease'Image else ""));
+         & (if This.Lease < Infinite then ", lease" & This.Lease'Image else "")
+         & (if This.Destination_Order = By_Source_Timestamp then ", BY_SOURCE_TIMESTAMP"
+            else ""));
    begin
       return Hist & ", " & Rel & ", " & Dur & Extra;
    end Image;

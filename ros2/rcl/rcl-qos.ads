@@ -2,7 +2,7 @@
 --
 --  A Profile is plain data; RCL.DDS turns it into Cyclone QoS. The profiles
 --  are those of rmw/qos_profiles.h (see docs/ros2-wire.md):
---
+--  Example:
 --     Pub : Publishers.Publisher :=
 --       Node.Publish (Support, "/scan", QoS => RCL.QoS.Sensor_Data);
 --     Custom : constant RCL.QoS.Profile :=
@@ -13,6 +13,15 @@ package RCL.QoS is
    type Reliability_Policy is (Middleware_Default, Best_Effort, Reliable);
    type Durability_Policy is (Middleware_Default, Volatile, Transient_Local);
    type Liveliness_Policy is (Middleware_Default, Automatic, Manual_By_Topic);
+
+   type Destination_Order_Policy is (By_Reception_Timestamp, By_Source_Timestamp);
+   --  DDS DESTINATION_ORDER, which rmw does not expose (ROS 2 endpoints use
+   --  By_Reception_Timestamp). A subscription By_Source_Timestamp keeps
+   --  samples in their publishers' time order: one stamped earlier than the
+   --  last sample kept (a publisher with a lagging clock, or a replay) is
+   --  dropped and counted as a Message_Lost event (RCL.Events). Publishers
+   --  must offer it too (DDS request/offer rule: an Incompatible_QoS event
+   --  otherwise); ROS 2 publishers do not.
 
    Infinite : constant Duration := Duration'Last;
    Unset    : constant Duration := 0.0;
@@ -29,6 +38,8 @@ package RCL.QoS is
       Lifespan    : Duration := Unset;
       Liveliness  : Liveliness_Policy := Automatic;
       Lease       : Duration := Infinite;
+      Destination_Order : Destination_Order_Policy := By_Reception_Timestamp;
+      --  A DDS policy ROS 2 does not expose (see Destination_Order_Policy).
    end record
      with Dynamic_Predicate =>
        Profile.Deadline >= 0.0 and then Profile.Lifespan >= 0.0

@@ -1,7 +1,7 @@
 --  A Rate keeps a loop at a frequency, as rclcpp::Rate: Sleep waits until
 --  one period after the previous wake-up, on the steady clock or on ROS
 --  time (which follows /clock under use_sim_time).
---
+--  Example:
 --     R : Rates.Rate := Rates.Create (Hz => 10.0);
 --     loop
 --        Publish_Pose;

@@ -1,6 +1,6 @@
 --  SROS2 keystores, made with the openssl command (Debian package openssl):
 --  the layout, file names, governance and permissions documents of
---  `ros2 security`, so that either tool reads the other's keystores.
+--  `ros2 security`, so that either tool reads the other's keystores:
 --
 --     DIR/public/ca.cert.pem            self-signed CA (ECDSA P-256),
 --        identity_ca.cert.pem, permissions_ca.cert.pem -> ca.cert.pem
@@ -12,6 +12,7 @@
 --        permissions.xml, permissions.p7s, and links to the two CA
 --        certificates and governance.p7s
 --
+--  Example:
 --     Create_Keystore ("/tmp/ks");
 --     Create_Enclave ("/tmp/ks", "/talker");   --  may use every topic
 --     Create_Permission ("/tmp/ks", "/talker",

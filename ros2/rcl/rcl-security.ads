@@ -14,9 +14,9 @@
 --  permissions.p7s (the names SROS2 and rmw_cyclonedds use); the
 --  participant gets them as Cyclone's dds.sec.* properties with the
 --  security plugins of Debian's libddsc0debian.
---
+--  Example:
 --     RCL.Security.Set_Enclave ("/team/r1");  --  before the first node
---     Node := RCL.Nodes.Init ("r1");          --  secured if enabled
+--     Node : RCL.Nodes.Node := RCL.Nodes.Init ("r1");  --  secured if enabled
 with Ada.Strings.Unbounded;
 
 package RCL.Security is

@@ -1,48 +1,328 @@
-with Ada.Strings.Fixed;
+with Ada.Containers.Indefinite_Hashed_Maps;
+with Ada.Exceptions;
+with Ada.Real_Time;
+with Ada.Strings.Hash;
+with Ada.Streams;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
-with ROSIDL.Dynamic;
-with ROSIDL.Typesupport;
+with ROSIDL.Static.Wire;
+with ROSIDL.Type_Hashes;
+with RCL.Contexts;
+with RCL.DDS.Matching;
+with RCL.Logging;
+with RCL.Pending_Calls;
 
 package body RCL.Services.Typed is
 
-   function Support return ROSIDL.Typesupport.Service_Support is
-      Full  : constant String := Handling.Full_Name;
-      --  "pkg/srv/Name"
-      First : constant Natural := Ada.Strings.Fixed.Index (Full, "/");
-      Last  : constant Natural := Ada.Strings.Fixed.Index (Full, "/", Ada.Strings.Backward);
+   use Ada.Real_Time;
+   use Ada.Strings.Unbounded;
+   use type Ada.Streams.Stream_Element_Offset;
+   use type ROSIDL.UInt64;
+   use type ROSIDL.Int64;
+   use type ROSIDL.CDR.Byte_Order;
+
+   package Requests renames Handling.Request_Handling;
+   package Responses renames Handling.Response_Handling;
+
+   procedure Register_Hashes is
+   --  For the endpoints' USER_DATA (Jazzy), also when the service's type
+   --  is not on the interface search path.
    begin
-      return ROSIDL.Typesupport.Get_Service_Support
-        (Full (Full'First .. First - 1), Full (Last + 1 .. Full'Last));
-   end Support;
+      ROSIDL.Type_Hashes.Register (Requests.DDS_Type_Name, Requests.Type_Hash);
+      ROSIDL.Type_Hashes.Register (Responses.DDS_Type_Name, Responses.Type_Hash);
+   end Register_Hashes;
+
+   Slice : constant Duration := 0.1;
+   --  Longest single wait for a reply (shutdown is checked in between).
+
+   function Deadline_Of (Timeout : Duration) return Time is
+     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
+
+   function Seconds_Image (Timeout : Duration) return String is
+     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
+
+   ---------------
+   -- Call_Lock --
+   ---------------
+
+   protected body Call_Lock is
+      entry Seize when not Busy is
+      begin
+         Busy := True;
+      end Seize;
+
+      procedure Release is
+      begin
+         Busy := False;
+      end Release;
+   end Call_Lock;
+
+   ------------
+   -- Client --
+   ------------
+
+   procedure Init
+     (This : in out Client;
+      Node : RCL.Nodes.Node'Class;
+      Name : String;
+      QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   is
+      FQ : constant String := Node.Expand_Service (Name);
+   begin
+      Register_Hashes;
+      RCL.Clients.Open_Endpoints
+        (Node, FQ, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS,
+         This.Requests, This.Replies, This.Handle);
+      This.Node := Node.Graph_Id;
+      This.Name := To_Unbounded_String (FQ);
+      RCL.DDS.Create (This.Waiting, RCL.Contexts.Participant.all);
+      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
+      This.Open := True;
+   end Init;
+
+   function Is_Open (This : Client) return Boolean is (This.Open);
+
+   function Service_Name (This : Client) return String is (To_String (This.Name));
+
+   function Service_Available (This : Client) return Boolean is
+     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
+
+   function Available_Before (This : Client; Deadline : Time) return Boolean is
+   begin
+      loop
+         if This.Service_Available then
+            return True;
+         end if;
+         exit when Clock >= Deadline or else RCL.Contexts.Is_Shutdown;
+         delay until (if Deadline < Clock + Milliseconds (10) then Deadline
+                      else Clock + Milliseconds (10));
+      end loop;
+      return This.Service_Available;
+   end Available_Before;
+
+   procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
+   begin
+      if not Available_Before (This, Deadline_Of (Timeout)) then
+         raise RCL_Timeout with "service " & To_String (This.Name)
+           & " not available after" & Seconds_Image (Timeout);
+      end if;
+   end Wait_For_Service;
+
+   procedure Exchange
+     (This     : in out Client;
+      Req      : Request;
+      Resp     : in out Response;
+      Timeout  : Duration;
+      Deadline : Time)
+   --  Call, with This.Lock held.
+   is
+      Sequence : ROSIDL.Int64;
+      Done     : Boolean := False;
+      Taken    : Boolean;
+      Ready    : RCL.DDS.Key_Array (1 .. 1);
+      Last     : Natural;
+
+      procedure Fill
+        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+      begin
+         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
+      end Fill;
+
+      procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
+         pragma Unreferenced (Info);
+         Start    : constant Ada.Streams.Stream_Element_Offset :=
+           Data'First + ROSIDL.CDR.Encapsulation_Size;
+         C        : ROSIDL.Static.Wire.Cursor :=
+           (Pos => Start, Origin => Start,
+            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
+         GUID     : ROSIDL.UInt64;
+         Seq      : ROSIDL.Int64;
+         Header   : ROSIDL.CDR.Request_Header;
+      begin
+         ROSIDL.Static.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
+         if GUID = This.Handle and then Seq = Sequence then
+            Responses.Decode (Data, Resp, Header);
+            Done := True;
+         end if;
+         --  Replies to other clients of this topic, and late replies to
+         --  calls that timed out, are dropped.
+      end Process;
+
+   begin
+      if not This.Available then
+         if not Available_Before (This, Deadline) then
+            raise RCL_Timeout with "service " & To_String (This.Name)
+              & " not available after" & Seconds_Image (Timeout);
+         end if;
+         This.Available := True;
+      end if;
+      Sequence := RCL.Pending_Calls.Next_Sequence;
+      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+                            Fill'Access);
+      loop
+         loop
+            begin
+               RCL.DDS.Take (This.Replies, Process'Access, Taken);
+            exception
+               when E : ROSIDL.Decode_Error =>
+                  RCL.Logging.Warn ("service " & To_String (This.Name)
+                                    & ": malformed reply dropped: "
+                                    & Ada.Exceptions.Exception_Message (E));
+                  Taken := True;
+            end;
+            exit when Done or else not Taken;
+         end loop;
+         exit when Done;
+         if RCL.Contexts.Is_Shutdown then
+            raise ROS_Exception with "shut down while waiting for service "
+              & To_String (This.Name);
+         elsif Clock >= Deadline then
+            This.Available := False;
+            raise RCL_Timeout with "no response from service " & To_String (This.Name)
+              & " after" & Seconds_Image (Timeout);
+         end if;
+         RCL.DDS.Wait (This.Waiting, Duration'Min (Slice, To_Duration (Deadline - Clock)),
+                       Ready, Last);
+      end loop;
+   end Exchange;
+
+   procedure Call
+     (This    : in out Client;
+      Req     : Request;
+      Resp    : in out Response;
+      Timeout : Duration := Forever)
+   is
+      Deadline : constant Time := Deadline_Of (Timeout);
+   begin
+      This.Lock.Seize;
+      begin
+         Exchange (This, Req, Resp, Timeout, Deadline);
+      exception
+         when others =>
+            This.Lock.Release;
+            raise;
+      end;
+      This.Lock.Release;
+   end Call;
+
+   function Call
+     (This    : in out Client;
+      Req     : Request;
+      Timeout : Duration := Forever) return Response is
+   begin
+      return Resp : Response do
+         This.Call (Req, Resp, Timeout);
+      end return;
+   end Call;
+
+   overriding procedure Finalize (This : in out Client) is
+   begin
+      if This.Open then
+         This.Open := False;
+         RCL.Clients.Close_Endpoints (This.Node, This.Requests, This.Replies);
+      end if;
+   exception
+      when others =>
+         This.Open := False;
+   end Finalize;
+
+   ------------------------
+   -- Per-node clients --
+   ------------------------
+
+   type Client_Access is access Client;
+
+   package Client_Maps is new Ada.Containers.Indefinite_Hashed_Maps
+     (String, Client_Access, Ada.Strings.Hash, "=");
+
+   procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
+
+   protected Cache is
+      function Find (Key : String) return Client_Access;
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean);
+      --  Made becomes the cached client (another task's if it came first;
+      --  Kept is then False and the caller frees its own).
+   private
+      Clients : Client_Maps.Map;
+   end Cache;
+
+   protected body Cache is
+      function Find (Key : String) return Client_Access is
+        (if Clients.Contains (Key) then Clients.Element (Key) else null);
+
+      procedure Insert (Key : String; Made : in out Client_Access; Kept : out Boolean) is
+      begin
+         Kept := not Clients.Contains (Key);
+         if Kept then
+            Clients.Insert (Key, Made);
+         else
+            Made := Clients.Element (Key);
+         end if;
+      end Insert;
+   end Cache;
 
    function Call
      (Node    : RCL.Nodes.Node'Class;
       Name    : String;
       Req     : Request;
-      Timeout : Duration := RCL.Clients.Forever) return Response
+      Timeout : Duration := Forever) return Response
    is
-      S       : constant ROSIDL.Typesupport.Service_Support := Support;
-      Dynamic : constant ROSIDL.Dynamic.Message :=
-        ROSIDL.CDR.Decode (ROSIDL.Typesupport.Request_Support (S),
-                           Handling.Request_Handling.Encode (Req));
+      --  The client is made outside the protected object: making it
+      --  announces endpoints (RCL.Graph), which may block.
+      Key    : constant String :=
+        Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name);
+      Found  : Client_Access := Cache.Find (Key);
+      Mine   : Client_Access;
+      Kept   : Boolean;
    begin
-      return Handling.Response_Handling.Decode
-        (ROSIDL.CDR.Encode (RCL.Clients.Call (Node, S, Name, Dynamic, Timeout)));
+      if Found = null then
+         Mine := new Client;
+         begin
+            Mine.Init (Node, Name);
+         exception
+            when others =>
+               Free (Mine);
+               raise;
+         end;
+         Found := Mine;
+         Cache.Insert (Key, Found, Kept);
+         if not Kept then
+            Free (Mine);
+         end if;
+      end if;
+      return Found.Call (Req, Timeout);
    end Call;
+
+   ------------
+   -- Server --
+   ------------
 
    package body Server is
 
       procedure Answer
-        (Node     : in out RCL.Nodes.Node'Class;
-         Request  : ROSIDL.Dynamic.Message;
-         Response : in out ROSIDL.Dynamic.Message)
+        (Server : in out RCL.Services.Server'Class;
+         Node   : in out RCL.Nodes.Node'Class;
+         Data   : RCL.DDS.Byte_Array;
+         Info   : ROSIDL.Message_Info)
       is
-         Req  : constant Typed.Request :=
-           Handling.Request_Handling.Decode (ROSIDL.CDR.Encode (Request));
-         Resp : Typed.Response;
+         Req    : Request;
+         Resp   : Response;
+         Header : ROSIDL.CDR.Request_Header;
+
+         procedure Fill
+           (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+         begin
+            Responses.Encode (Resp, Header, Buffer, Last);
+         end Fill;
+
       begin
+         Requests.Decode (Data, Req, Header);
+         --  (A Decode_Error is logged with the service name by the
+         --  executor, and the request dropped.)
          Callback (Node, Req, Resp);
-         ROSIDL.CDR.Decode (Handling.Response_Handling.Encode (Resp), Response);
+         RCL.Services.Respond_Filled
+           (Server, RCL.DDS.GUID (Info.Publisher_GID),
+            Responses.Encoded_Size (Resp, With_Request_Header => True), Fill'Access);
       end Answer;
 
       procedure Serve
@@ -50,7 +330,9 @@ package body RCL.Services.Typed is
          Name : String;
          QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default) is
       begin
-         RCL.Services.Serve (Node, Support, Name, Answer'Access, QoS);
+         Register_Hashes;
+         RCL.Services.Open_Raw (Node, Requests.DDS_Type_Name, Responses.DDS_Type_Name,
+                                Name, Answer'Access, QoS);
       end Serve;
 
    end Server;

@@ -1,25 +1,41 @@
 --  Typed services and clients: requests and responses are the generated
 --  records of a service (ROSIDL.Static.<Pkg>.Services.<Srv>.Request /
 --  .Response). Instantiate with the service's Handling package:
---
+--  Example:
 --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
 --     package Adding is new RCL.Services.Typed (Add.Handling);
 --
 --     procedure Adder (Node : in out Nodes.Node'Class;
 --                      Req  : Add.Request.Message;
---                      Resp : in out Add.Response.Message);
+--                      Resp : in out Add.Response.Message) is
+--     begin
+--        Resp.Sum := Req.A + Req.B;
+--     end Adder;
 --     package Adder_Server is new Adding.Server (Adder);
 --     Adder_Server.Serve (Node, "add_two_ints");
 --
---     Sum := Adding.Call (Node, "add_two_ints", (A => 2, B => 3), Timeout => 1.0).Sum;
+--     C : Adding.Client;
+--     C.Init (Node, "add_two_ints");
+--     C.Call ((A => 2, B => 3), Sum_Response, Timeout => 1.0);
+--     Sum := Adding.Call (Node, "add_two_ints", (A => 2, B => 3)).Sum;  --  one-off
 --
 --  On the wire these are the services and clients of RCL.Services and
---  RCL.Clients (rmw_cyclonedds conventions, pairing, timeouts, errors),
---  which run the dynamic path: a typed request or response is converted
---  through its CDR encoding (the service type must be on the interface
---  search path, as the bundled ones are). Not allocation-free.
+--  RCL.Clients (rmw_cyclonedds conventions: request header, pairing by
+--  "clientid"/"serviceid", a reply only once the client's reply reader is
+--  matched), so typed and dynamic peers talk to each other and to ROS 2.
+--  The generated codec writes a request or reply (header included)
+--  straight into the DDS sample and reads it straight out of the taken
+--  sample: no dynamic message, no intermediate buffer, and the type need
+--  not be on the interface search path. Steady state with bounded types
+--  (no unbounded string or sequence in request and response): a Client's
+--  Call procedure and the server's answering allocate nothing on the Ada
+--  heap (tests/src/alloc/typed_alloc_check).
+with Ada.Finalization;
 with ROSIDL.Static.Service_Support;
 with RCL.Clients;
+
+private with Ada.Strings.Unbounded;
+private with RCL.Graph;
 
 generic
    with package Handling is new ROSIDL.Static.Service_Support (<>);
@@ -28,13 +44,73 @@ package RCL.Services.Typed is
    subtype Request is Handling.Request_Message;
    subtype Response is Handling.Response_Message;
 
+   Forever : constant Duration := RCL.Clients.Forever;
+
+   -------------
+   -- Clients --
+   -------------
+
+   type Client is new Ada.Finalization.Limited_Controlled with private;
+   --  A client of one service. Calls from several tasks are served one
+   --  after the other.
+
+   procedure Init
+     (This : in out Client;
+      Node : RCL.Nodes.Node'Class;
+      Name : String;
+      QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default)
+     with Pre => not Is_Open (This);
+   --  Name is expanded like a topic name (relative to the node's
+   --  namespace); RCL.Names.Name_Error for a bad one.
+
+   function Is_Open (This : Client) return Boolean;
+
+   function Service_Name (This : Client) return String
+     with Pre => Is_Open (This);
+   --  The fully qualified service name.
+
+   function Service_Available (This : Client) return Boolean
+     with Pre => Is_Open (This);
+   --  A server's request reader and reply writer (same serviceid) matched.
+
+   procedure Wait_For_Service (This : Client; Timeout : Duration := Forever)
+     with Pre => Is_Open (This);
+   --  RCL_Timeout when the service is not available within Timeout.
+
+   procedure Call
+     (This    : in out Client;
+      Req     : Request;
+      Resp    : in out Response;
+      Timeout : Duration := Forever)
+     with Pre => Is_Open (This);
+   --  Waits for the service (the first time, and after a timeout), sends
+   --  Req and decodes the response into Resp, reusing its storage; all
+   --  within Timeout, else RCL_Timeout naming the service. ROS_Exception
+   --  when the context shuts down (Ctrl-C) meanwhile. Malformed replies
+   --  are logged and skipped; replies to other clients or to earlier calls
+   --  that timed out are dropped.
+
+   function Call
+     (This    : in out Client;
+      Req     : Request;
+      Timeout : Duration := Forever) return Response
+     with Pre => Is_Open (This);
+   --  The same, returning a fresh response.
+
+   overriding procedure Finalize (This : in out Client);
+
    function Call
      (Node    : RCL.Nodes.Node'Class;
       Name    : String;
       Req     : Request;
-      Timeout : Duration := RCL.Clients.Forever) return Response;
-   --  As Node.Client_Call: waits for the service, then for the response;
-   --  RCL_Timeout when Timeout passes.
+      Timeout : Duration := Forever) return Response;
+   --  As Node.Client_Call: the call of a Client made on first use for
+   --  (Node, Name) and kept by this instance (convenient, not
+   --  allocation-free: the lookup builds the key).
+
+   ------------
+   -- Server --
+   ------------
 
    generic
       with procedure Callback
@@ -46,9 +122,37 @@ package RCL.Services.Typed is
         (Node : in out RCL.Nodes.Node'Class;
          Name : String;
          QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default);
-      --  Offers service Name, answered by Callback while the node spins
-      --  (an exception in Callback: logged, no reply, as Node.Serve). The
-      --  instance must live as long as the node.
+      --  Offers service Name, answered by Callback while the node spins.
+      --  Resp starts as a default response for every request. An
+      --  exception in Callback is logged with the service name and no
+      --  reply is sent (the client times out), as Node.Serve does; a
+      --  malformed request is logged and dropped. The instance must live
+      --  as long as the node.
    end Server;
+
+private
+
+   protected type Call_Lock is
+      entry Seize;
+      procedure Release;
+   private
+      Busy : Boolean := False;
+   end Call_Lock;
+   --  One call at a time per client.
+
+   type Client is new Ada.Finalization.Limited_Controlled with record
+      Open      : Boolean := False;
+      Name      : Ada.Strings.Unbounded.Unbounded_String;
+      Requests  : RCL.DDS.Writer;
+      Replies   : RCL.DDS.Reader;
+      Waiting   : RCL.DDS.Waitset;
+      Handle    : ROSIDL.UInt64 := 0;
+      --  The request writer's instance handle (the requests' header GUID).
+      Node      : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Available : Boolean := False;
+      --  The service was available at the last call (not checked again
+      --  until a call times out).
+      Lock      : Call_Lock;
+   end record;
 
 end RCL.Services.Typed;

@@ -25,8 +25,8 @@ package body RCL.Services is
    function Reply_Topic (Service_Name : String) return String is
      ("rr" & Service_Name & "Reply");
 
-   function "<" (L, R : RCL.DDS.GUID) return Boolean is
-     (RCL.DDS.Image (L) < RCL.DDS.Image (R));
+   function "<" (L, R : RCL.DDS.GUID) return Boolean is (ROSIDL."<" (L, R));
+   --  Byte by byte (no image built: Ready is looked up for every reply).
 
    protected body GUID_Set is
       function Contains (G : RCL.DDS.GUID) return Boolean is (Set.Contains (G));
@@ -42,6 +42,29 @@ package body RCL.Services is
 
    overriding procedure On_Request
      (This    : in out Service_Handler;
+      Node    : in out RCL.Nodes.Node'Class;
+      Request : ROSIDL.Dynamic.Message;
+      Id      : Request_Id);
+
+   type Raw_Callback is access procedure
+     (Server : in out Services.Server'Class;
+      Node   : in out RCL.Nodes.Node'Class;
+      Data   : RCL.DDS.Byte_Array;
+      Info   : ROSIDL.Message_Info);
+
+   type Raw_Handler is new Server with record
+      On_Request : Raw_Callback;
+   end record;
+   --  Open_Raw's servers: the requests are not decoded here.
+
+   overriding procedure Deliver
+     (This : in out Raw_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info);
+
+   overriding procedure On_Request
+     (This    : in out Raw_Handler;
       Node    : in out RCL.Nodes.Node'Class;
       Request : ROSIDL.Dynamic.Message;
       Id      : Request_Id);
@@ -133,6 +156,37 @@ package body RCL.Services is
       end if;
    end Respond;
 
+   procedure Respond_Filled
+     (This      : in out Server'Class;
+      Requester : RCL.DDS.GUID;
+      Size      : Ada.Streams.Stream_Element_Count;
+      Fill      : not null access procedure
+        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset)) is
+   begin
+      if Client_Present (This, Requester) then
+         RCL.DDS.Write_Filled (This.Replies, Size, Fill);
+      end if;
+   end Respond_Filled;
+
+   overriding procedure Deliver
+     (This : in out Raw_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is
+   begin
+      This.On_Request (This, Node, Data, Info);
+   end Deliver;
+
+   overriding procedure On_Request
+     (This    : in out Raw_Handler;
+      Node    : in out RCL.Nodes.Node'Class;
+      Request : ROSIDL.Dynamic.Message;
+      Id      : Request_Id) is
+   begin
+      raise Program_Error with "raw service " & To_String (This.Name)
+        & ": requests are not decoded here";
+   end On_Request;
+
    overriding procedure On_Request
      (This    : in out Service_Handler;
       Node    : in out RCL.Nodes.Node'Class;
@@ -153,6 +207,34 @@ package body RCL.Services is
    procedure Free is new Ada.Unchecked_Deallocation
      (RCL.Nodes.Handler'Class, RCL.Nodes.Handler_Access);
 
+   procedure Open_Endpoints
+     (Node          : in out RCL.Nodes.Node'Class;
+      Handler       : not null Server_Access;
+      Request_Type  : String;
+      Response_Type : String;
+      Name          : String;
+      QoS           : RCL.QoS.Profile)
+   is
+      FQ : constant String := Node.Expand_Service (Name);
+      Id : constant String :=
+        "serviceid=" & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
+      S  : Server'Class renames Handler.all;
+   begin
+      S.Name := To_Unbounded_String (FQ);
+      RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
+                      Response_Type, QoS,
+                      User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
+      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
+      Node.Add_Endpoint
+        (Type_Name => Request_Type,
+         DDS_Topic => Request_Topic (FQ),
+         Name      => FQ,
+         User_Data => Id,
+         Handle    => RCL.Nodes.Handler_Access (Handler),
+         QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
+         Added     => S.Requests);
+   end Open_Endpoints;
+
    procedure Open
      (Node    : in out RCL.Nodes.Node'Class;
       Handler : not null Server_Access;
@@ -161,27 +243,35 @@ package body RCL.Services is
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
       use ROSIDL.Typesupport;
-      FQ : constant String := Node.Expand_Service (Name);
-      Id : constant String :=
-        "serviceid=" & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
-      S  : Server'Class renames Handler.all;
    begin
-      S.Support := Support;
-      S.Name := To_Unbounded_String (FQ);
-      RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
-                      DDS_Type_Name (Response_Support (Support)), QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data
-                                     (DDS_Type_Name (Response_Support (Support)), Id));
-      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
-      Node.Add_Endpoint
-        (Type_Name => DDS_Type_Name (Request_Support (Support)),
-         DDS_Topic => Request_Topic (FQ),
-         Name      => FQ,
-         User_Data => Id,
-         Handle    => RCL.Nodes.Handler_Access (Handler),
-         QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
-         Added     => S.Requests);
+      Handler.Support := Support;
+      Open_Endpoints (Node, Handler, DDS_Type_Name (Request_Support (Support)),
+                      DDS_Type_Name (Response_Support (Support)), Name, QoS);
    end Open;
+
+   procedure Open_Raw
+     (Node          : in out RCL.Nodes.Node'Class;
+      Request_Type  : String;
+      Response_Type : String;
+      Name          : String;
+      On_Request    : not null access procedure
+        (Server : in out Services.Server'Class;
+         Node   : in out RCL.Nodes.Node'Class;
+         Data   : RCL.DDS.Byte_Array;
+         Info   : ROSIDL.Message_Info);
+      QoS           : RCL.QoS.Profile := RCL.QoS.Services_Default)
+   is
+      Stored : constant Raw_Callback with Import, Address => On_Request'Address;
+      --  GNAT: the same subprogram access, kept beyond the call (see spec).
+      H : RCL.Nodes.Handler_Access := new Raw_Handler;
+   begin
+      Raw_Handler (H.all).On_Request := Stored;
+      Open_Endpoints (Node, Server_Access (H), Request_Type, Response_Type, Name, QoS);
+   exception
+      when others =>
+         Free (H);  --  (Add_Endpoint did not keep it.)
+         raise;
+   end Open_Raw;
 
    procedure Serve
      (Node     : in out RCL.Nodes.Node'Class;

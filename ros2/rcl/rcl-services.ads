@@ -7,7 +7,7 @@
 --  once the reply writer has matched the requester's reply reader (found by
 --  the "clientid" of its request writer), waiting up to 100 ms for it, so
 --  that no reply is lost to a client discovered late.
---
+--  Example:
 --     procedure Adder (Node : in out Nodes.Node'Class;
 --                      Req  : ROSIDL.Dynamic.Message;
 --                      Resp : in out ROSIDL.Dynamic.Message) is
@@ -22,6 +22,7 @@
 --  Callbacks run in the task spinning the node. An exception in a callback
 --  is logged with the service name and no reply is sent (the client times
 --  out), as rclcpp does; a malformed request is logged and dropped.
+with Ada.Streams;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
@@ -92,6 +93,38 @@ package RCL.Services is
       Name    : String;
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default);
    --  Offers service Name answered by Handler, which the node then owns.
+
+   --  Not for users: servers that decode their own requests -----------
+   --  (RCL.Services.Typed: generated codecs straight out of and into the
+   --  DDS samples, no dynamic message).
+
+   procedure Open_Raw
+     (Node          : in out RCL.Nodes.Node'Class;
+      Request_Type  : String;
+      Response_Type : String;
+      Name          : String;
+      On_Request    : not null access procedure
+        (Server : in out Services.Server'Class;
+         Node   : in out RCL.Nodes.Node'Class;
+         Data   : RCL.DDS.Byte_Array;
+         Info   : ROSIDL.Message_Info);
+      QoS           : RCL.QoS.Profile := RCL.QoS.Services_Default);
+   --  Offers service Name with the DDS types given
+   --  ("example_interfaces::srv::dds_::AddTwoInts_Request_"); On_Request
+   --  gets every request's bytes (header included) and answers with
+   --  Respond_Filled. On_Request must stay callable as long as the node
+   --  exists. Support (the server) is not set: the type may be unknown to
+   --  the dynamic layer.
+
+   procedure Respond_Filled
+     (This      : in out Server'Class;
+      Requester : RCL.DDS.GUID;
+      Size      : Ada.Streams.Stream_Element_Count;
+      Fill      : not null access procedure
+        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset));
+   --  Writes the reply that Fill encodes (header included, as
+   --  RCL.DDS.Write_Filled) to the request of writer Requester, once its
+   --  client's reply reader is matched (see above).
 
    Reply_Match_Wait : constant Duration := 0.1;
    --  How long a reply waits for the requester's reply reader.

@@ -10,7 +10,7 @@
 --  and continues on its grid; after a backward jump behind its last call it
 --  restarts one period from the new time; when the clock switches between
 --  simulated and steady time the timer restarts one period from now.
---
+--  Example:
 --     T : Timers.Timer := Node.Timer_Add (0.5, Tick'Access);
 --     T.Cancel;  T.Reset;  --  Reset restarts the grid from now
 with Ada.Real_Time;

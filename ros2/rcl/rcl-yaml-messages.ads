@@ -2,7 +2,7 @@
 --  service call" read their message argument ("{a: 1, b: 2}", nested
 --  mappings for nested messages, sequences for arrays). Fields not given
 --  keep their default values. Shared by the rclada tool and parameters.
---
+--  Example:
 --     Msg : constant Message := From_YAML (Support, "{data: hello}");
 --
 --  Errors raise RCL.YAML.Parse_Error with the place and the reason:

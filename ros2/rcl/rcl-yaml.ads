@@ -11,9 +11,9 @@
 --  documents.
 --
 --  Every error names the place: "params.yaml:3:7: ...".
---
+--  Example:
 --     D : constant Document := Parse ("{a: 2, b: [1, 2.5, 'x']}");
---     D.Kind (D.Root) = Mapping;  D.Text (D.Find (D.Root, "a")) = "2"
+--     pragma Assert (D.Kind (D.Root) = Mapping and D.Text (D.Find (D.Root, "a")) = "2");
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 

@@ -6,7 +6,7 @@
 --  counting a NUL, the bytes, the NUL; wstrings as uint32 character count
 --  then 4 bytes per character; fixed arrays without length; sequences with
 --  a uint32 count; nested messages inline; zero-padded to a multiple of 4.
---
+--  Example:
 --     Bytes : constant Stream_Element_Array := Encode (Msg);
 --     Copy  : constant Message := Decode (Support (Msg), Bytes);
 --

@@ -4,7 +4,7 @@
 --  nested messages expanded below their field, indented by one tab per level.
 --  Comments are not kept by the parser, so they are not shown; the member
 --  ROS 2 adds to an empty message is not shown either.
---
+--  Example:
 --     Put (Show (ROSIDL.Interfaces.Message ("geometry_msgs", "Pose").all));
 --     --  Point position
 --     --  <TAB>float64 x

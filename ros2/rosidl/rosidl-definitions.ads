@@ -5,8 +5,8 @@
 --
 --  Definitions are produced by ROSIDL.Parser, cached by ROSIDL.Interfaces
 --  and never freed, so Message_Access values stay valid for the life of the
---  program. Example:
---
+--  program.
+--  Example:
 --     Def : constant Message_Access :=
 --       ROSIDL.Interfaces.Message ("std_msgs", "String");
 --     for F of Def.Fields loop

@@ -2,7 +2,7 @@
 --  of RCLAda. A Message is a value (copying it copies its contents) that
 --  knows its type support; fields are reached by indexing with their name
 --  and yield references into the message (no copy):
---
+--  Example:
 --     Msg : constant Message :=
 --       Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
 --     Msg ("angle_min").As_Float32 := -1.57;

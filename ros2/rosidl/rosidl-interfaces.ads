@@ -11,7 +11,7 @@
 --  of the path; folders that do not exist are skipped. The first folder
 --  holding a package wins. Definitions are cached (and never freed) on
 --  first use; every operation is task-safe.
---
+--  Example:
 --     Def : constant Message_Access := Message ("geometry_msgs", "Twist");
 with ROSIDL.Definitions;
 

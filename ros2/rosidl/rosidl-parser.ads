@@ -6,8 +6,8 @@
 --
 --  Nested types are resolved through a function given by the caller (the
 --  cache of ROSIDL.Interfaces, by default), so the parser itself never
---  touches the file system. Example:
---
+--  touches the file system.
+--  Example:
 --     Def : constant Message_Access :=
 --       ROSIDL.Parser.Parse_Message
 --         (Package_Name => "my_msgs", Name => "Pose2D",

@@ -136,8 +136,43 @@ package body ROSIDL.Type_Hashes is
       end return;
    end Hash;
 
-   function Hash_Of_DDS_Type (DDS_Type_Name : String) return Type_Hash is
+   package Registered_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Type_Hash);
+
+   protected Registry is
+      procedure Add (DDS_Type_Name : String; Hash : Type_Hash);
+      function Find (DDS_Type_Name : String; Found : out Boolean) return Type_Hash;
+   private
+      Hashes : Registered_Maps.Map;
+   end Registry;
+
+   protected body Registry is
+      procedure Add (DDS_Type_Name : String; Hash : Type_Hash) is
+      begin
+         if not Hashes.Contains (DDS_Type_Name) then
+            Hashes.Insert (DDS_Type_Name, Hash);
+         end if;
+      end Add;
+
+      function Find (DDS_Type_Name : String; Found : out Boolean) return Type_Hash is
+         Position : constant Registered_Maps.Cursor := Hashes.Find (DDS_Type_Name);
+      begin
+         Found := Registered_Maps.Has_Element (Position);
+         return (if Found then Registered_Maps.Element (Position) else Zero);
+      end Find;
+   end Registry;
+
+   procedure Register (DDS_Type_Name : String; Hash : Type_Hash) is
    begin
+      Registry.Add (DDS_Type_Name, Hash);
+   end Register;
+
+   function Hash_Of_DDS_Type (DDS_Type_Name : String) return Type_Hash is
+      Found      : Boolean;
+      Registered : constant Type_Hash := Registry.Find (DDS_Type_Name, Found);
+   begin
+      if Found then
+         return Registered;
+      end if;
       return Hash (ROSIDL.Interfaces.Message_By_DDS_Name (DDS_Type_Name));
    exception
       when ROSIDL.Unknown_Type | ROSIDL.Definition_Error =>

@@ -1,7 +1,7 @@
 --  Type support: what a publisher, subscription, service or client needs to
 --  know about its interface type (its definition and its DDS type name).
 --  Named as in RCLAda:
---
+--  Example:
 --     Support : constant Message_Support :=
 --       ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String");
 --     Put_Line (DDS_Type_Name (Support));  --  std_msgs::msg::dds_::String_

@@ -62,7 +62,11 @@ package body Sancta.Components.GUI_Relay is
       --  The latest adopted plan and its round (kept while a new round
       --  is being planned).
       First_Owner : Owner_Maps.Map;
-      --  The robot each task was first planned for.
+      --  The robot each task was first planned for: its owner in the last
+      --  plan adopted in the first round that planned it (a round's plan
+      --  improves as better proposals come: that is not a re-allocation).
+      First_Round : Owner_Maps.Map;
+      --  For each task of First_Owner, the round (generation) that set it.
       Bad_Tasks   : Owner_Maps.Map;
       --  Tasks whose text did not decode (logged once).
       Last_Plan   : Unbounded_String;
@@ -283,9 +287,17 @@ package body Sancta.Components.GUI_Relay is
          This.Plan := P;
          for K in 1 .. Natural (P.Tours.Length) loop
             for Step of P.Tours (K) loop
-               if not This.First_Owner.Contains (To_String (Step.Task_Id)) then
-                  This.First_Owner.Insert (To_String (Step.Task_Id), To_String (S.Robots (K).Id));
-               end if;
+               declare
+                  Id    : constant String := To_String (Step.Task_Id);
+                  Round : constant String := P.Generation'Image;
+               begin
+                  if not This.First_Owner.Contains (Id) then
+                     This.First_Owner.Insert (Id, To_String (S.Robots (K).Id));
+                     This.First_Round.Insert (Id, Round);
+                  elsif This.First_Round (Id) = Round then
+                     This.First_Owner.Replace (Id, To_String (S.Robots (K).Id));
+                  end if;
+               end;
             end loop;
          end loop;
       end if;

@@ -88,3 +88,40 @@ def test_rclada_against_python_managed_node():
         assert rclada("lifecycle", "get", "/py_managed").stdout.strip() == "active [3]"
     finally:
         server.stop()
+
+
+def test_sancta_agent_as_managed_node():
+    """`sancta run --managed`: the agent is /sancta_Ari, unconfigured until a
+    lifecycle client configures it; its components run only while active,
+    are created anew after a deactivate, and shutdown ends the program."""
+    proc = subprocess.Popen([str(ps.BIN / "sancta"), "run",
+                             str(ps.REPO / "share" / "config" / "team.xml"),
+                             "--agent", "Ari", "--managed", "--for", "60"],
+                            cwd=ps.REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            text=True)
+    try:
+        node = "/sancta_Ari"
+        deadline = time.monotonic() + 20
+        while node not in rclada("lifecycle", "nodes").stdout.splitlines():
+            assert time.monotonic() < deadline, "the agent's managed node never appeared"
+            time.sleep(0.5)
+        assert rclada("lifecycle", "get", node).stdout.strip() == "unconfigured [1]"
+        bad = rclada("lifecycle", "set", node, "activate")
+        assert bad.returncode != 0, "activate from unconfigured was accepted"
+        for transition, state in (("configure", "inactive [2]"), ("activate", "active [3]"),
+                                  ("deactivate", "inactive [2]"), ("activate", "active [3]"),
+                                  ("deactivate", "inactive [2]"),
+                                  ("cleanup", "unconfigured [1]")):
+            r = rclada("lifecycle", "set", node, transition)
+            assert r.returncode == 0 and "Transitioning successful" in r.stdout, (transition, r)
+            assert rclada("lifecycle", "get", node).stdout.strip() == state, transition
+        assert rclada("lifecycle", "set", node, "shutdown").returncode == 0
+        out = ps.finish(proc, timeout=20)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert proc.returncode == 0, out
+    assert "stopping: every agent finalized" in out, out
+    assert out.count("agent Ari started with 4 component(s)") == 2, out
+    assert out.count("agent Ari stopped") == 2, out
+    assert out.index("configured: components created") < out.index("agent Ari started"), out

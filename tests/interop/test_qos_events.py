@@ -2,7 +2,9 @@
 the Ada side (examples/qos_events_demo): incompatible QoS both ways with
 rclcpp's warning naming the policy, requested and offered deadline missed,
 liveliness changed (a publisher appearing and going), liveliness lost (a
-manual-by-topic publisher that stops asserting), matched."""
+manual-by-topic publisher that stops asserting), matched, message lost (a
+sample stamped earlier than the last one, to a subscription ordered by
+source timestamp: the only way Cyclone DDS 0.10 loses a sample it received)."""
 import subprocess
 import time
 
@@ -28,7 +30,7 @@ def stop(proc):
         return proc.communicate()[0]
 
 
-def qos(reliable=True, deadline=None, lease=None):
+def qos(reliable=True, deadline=None, lease=None, by_source=False):
     p = [Policy.History.KeepLast(10),
          Policy.Reliability.Reliable(max_blocking_time=10**9) if reliable
          else Policy.Reliability.BestEffort,
@@ -38,6 +40,8 @@ def qos(reliable=True, deadline=None, lease=None):
         p.append(Policy.Deadline(int(deadline * 1e9)))
     if lease:
         p.append(Policy.Liveliness.ManualByTopic(int(lease * 1e9)))
+    if by_source:
+        p.append(Policy.DestinationOrder.BySourceTimestamp)
     return Qos(*p)
 
 
@@ -114,3 +118,34 @@ def test_liveliness_lost():
     out = stop(pub)
     assert events(out, "LIVELINESS_LOST"), out
     del r
+
+
+def test_message_lost():
+    sub = start("sub", "qos_f", "reliable", "0", "1.0", "0", "by_source")
+    dp = ps.participant()
+    w = DataWriter(dp, Topic(dp, "rt/qos_f", String_), qos=qos(by_source=True))
+    assert ps.wait_matched(w, 10)
+    time.sleep(0.5)
+    now = time.time_ns()
+    w.write(String_(data="now"), timestamp=now)
+    w.write(String_(data="a second ago"), timestamp=now - 10**9)   # lost
+    w.write(String_(data="later"), timestamp=now + 10**6)
+    w.write(String_(data="two seconds ago"), timestamp=now - 2 * 10**9)   # lost
+    time.sleep(1.5)
+    out = stop(sub)
+    lost = events(out, "MESSAGE_LOST")
+    assert lost and "total=2" in lost[-1], out
+    assert not events(out, "INCOMPATIBLE_QOS"), out
+    del w
+
+
+def test_message_lost_needs_a_publisher_offering_source_order():
+    sub = start("sub", "qos_g", "reliable", "0", "1.0", "0", "by_source")
+    dp = ps.participant()
+    time.sleep(1.5)
+    w = DataWriter(dp, Topic(dp, "rt/qos_g", String_), qos=qos())
+    time.sleep(1.5)
+    out = stop(sub)
+    inc = events(out, "INCOMPATIBLE_QOS")
+    assert inc and "policy=DESTINATION_ORDER_QOS_POLICY" in inc[0], out
+    del w

@@ -351,8 +351,12 @@ def test_demo_watched_live(tmp_path):
         assert early is not None, f"no first plan adopted{context}"
         early_out = end(early, timeout=30)
         assert early.returncode == 0, f"early snapshot failed:\n{early_out}"
-        check_tours(read_png(tmp_path / "early.png"),
-                     json.loads((tmp_path / "early.json").read_text()), context)
+        edesc = json.loads((tmp_path / "early.json").read_text())
+        check_tours(read_png(tmp_path / "early.png"), edesc, context)
+        if edesc["plan_round"] == 1:
+            # Within the first round a better proposal may move tasks between
+            # robots: that is planning, not a re-allocation.
+            assert edesc["tasks_reallocated"] == 0, f"{edesc}{context}"
         assert sdesc["tasks"] >= 20 and sdesc["rejected"] == 0, sdesc
         assert view.poll() is None, "the window ended early:\n" + end(view, stop=True)
     finally:

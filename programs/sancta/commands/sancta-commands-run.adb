@@ -3,6 +3,7 @@ with Ada.Exceptions;
 with Ada.IO_Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
+with Sancta.Commands.Managed_Agents;
 with Sancta.Commands.Options;
 with Sancta.Components.All_Standard;
 with Sancta.Logging;
@@ -29,7 +30,7 @@ package body Sancta.Commands.Run is
    Usage_Text : constant String :=
      "usage: sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]"
      & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]"
-     & " [--sim-time] [--ros-args -p use_sim_time:=true]";
+     & " [--sim-time] [--managed] [--ros-args -p use_sim_time:=true]";
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
 
@@ -49,6 +50,7 @@ package body Sancta.Commands.Run is
       Config    : Configurations.Configuration;
       Stats     : Boolean := False;
       Sim_Time  : Boolean := RCL.Clocks.Sim_Time_Requested;
+      Managed   : Boolean := False;
       I         : Positive := 2;
 
       procedure Set_Level (Text : String) is
@@ -104,6 +106,8 @@ package body Sancta.Commands.Run is
                Stats := True;
             elsif A = "--sim-time" then
                Sim_Time := True;
+            elsif A = "--managed" then
+               Managed := True;
             elsif A = "--ros-args" then
                --  ROS arguments (use_sim_time read by RCL.Clocks) up to "--".
                while I < Argument_Count and then Argument (I + 1) /= "--" loop
@@ -175,6 +179,17 @@ package body Sancta.Commands.Run is
          if not Attached then
             Sancta.Logging.Log ("run", Sancta.Logging.Warning,
                                 "Ctrl-C cannot be caught (reserved by the Ada runtime)");
+         end if;
+         if Managed then
+            Managed_Agents.Run (Config, Agents, Time_Of, Limit);
+            Sancta.Logging.Log ("run", Sancta.Logging.Info,
+                                "stopping: " & (if Shutdown.Requested then Shutdown.Reason
+                                                else "time limit reached"));
+            Sim_Clock.Stop;
+            if Shutdown.Failed then
+               Set_Exit_Status (Failure);
+            end if;
+            return;
          end if;
          begin
             for Index in Nodes'Range loop

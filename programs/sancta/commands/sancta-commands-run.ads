@@ -1,5 +1,5 @@
 --  sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]
---             [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]
+--             [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats] [--managed]
 --
 --  Runs one agent (--agent, may be repeated) or every agent (--all) of a
 --  configuration in this process, each with its own database and
@@ -9,7 +9,8 @@
 --  --debug lowers every log section to debug, --level one section ("Ari",
 --  "Ari/logger#3", "scheduler Ari", "database", "tasks"); --log also
 --  appends the log to FILE; --stats prints each agent's scheduler
---  statistics at the end.
+--  statistics at the end. --managed makes each agent a ROS 2 lifecycle
+--  node /sancta_<ID> that starts unconfigured (see Managed_Agents).
 package Sancta.Commands.Run is
 
    procedure Run;

@@ -690,7 +690,9 @@ package body Sancta.Views.Drawing is
       Put_Line (F, " ""robot_radius_px"": " & Num (Body_Radius (T)) & ",");
       Put_Line (F, " ""round"": " & Trim (S.Round) & ", ""plan_round"": " & Trim (S.Plan_Round)
                 & ", ""tasks"": " & Trim (Natural (S.Tasks.Length)) & ", ""tasks_done"": "
-                & Trim (Tasks_Done (S)) & ", ""rejected"": " & Trim (S.Rejected) & ",");
+                & Trim (Tasks_Done (S)) & ", ""tasks_reallocated"": "
+                & Trim (Tasks_In (S, Reallocated))
+                & ", ""rejected"": " & Trim (S.Rejected) & ",");
       Put_Line (F, " ""robots"": [");
       for R of S.Robots loop
          declare

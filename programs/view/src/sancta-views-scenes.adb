@@ -22,16 +22,18 @@ package body Sancta.Views.Scenes is
       elsif Text = "reallocated" then Reallocated
       else Pending);
 
-   function Tasks_Done (S : Scene) return Natural is
+   function Tasks_In (S : Scene; State : Task_State) return Natural is
       N : Natural := 0;
    begin
       for T of S.Tasks loop
-         if T.State = Done then
+         if T.State = State then
             N := N + 1;
          end if;
       end loop;
       return N;
-   end Tasks_Done;
+   end Tasks_In;
+
+   function Tasks_Done (S : Scene) return Natural is (Tasks_In (S, Done));
 
    function Find_Task (S : Scene; Id : String) return Natural is
    begin

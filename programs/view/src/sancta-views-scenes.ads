@@ -146,6 +146,7 @@ package Sancta.Views.Scenes is
       --  Seconds since the view started, when this copy was taken.
    end record;
 
+   function Tasks_In (S : Scene; State : Task_State) return Natural;
    function Tasks_Done (S : Scene) return Natural;
 
    function Find_Task (S : Scene; Id : String) return Natural;

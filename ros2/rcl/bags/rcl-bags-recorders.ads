@@ -7,7 +7,7 @@
 --  (a reliable publisher waits for the recorder rather than lose one), and
 --  its serialized
 --  messages are written as they arrive, stamped with their reception time.
---
+--  Example:
 --     Node : Nodes.Node := Nodes.Init ("recorder");
 --     Rec  : Recorder;
 --     Rec.Start ("out/run", Topics => All_Topics);

@@ -6,7 +6,7 @@
 --  encoding "cdr" and metadata offered_qos_profiles (the publishers' QoS in
 --  rosbag2's YAML). RCL.Bags.Recorders records live topics; `rclada bag`
 --  is the command line.
---
+--  Example:
 --     W : Bag_Writer;
 --     W.Create ("out/run", Compression => RCL.MCAP.Zstd);
 --     T : constant Topic_Index := W.Add_Topic ("/chatter", "std_msgs/msg/String",

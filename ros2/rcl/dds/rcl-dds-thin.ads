@@ -162,6 +162,10 @@ private package RCL.DDS.Thin is
    procedure Qset_Durability (Qos : Qos_Ptr; Kind : C.int)
      with Import, Convention => C, External_Name => "dds_qset_durability";
 
+   Destination_Order_By_Source_Timestamp : constant C.int := 1;
+   procedure Qset_Destination_Order (Qos : Qos_Ptr; Kind : C.int)
+     with Import, Convention => C, External_Name => "dds_qset_destination_order";
+
    procedure Qset_Deadline (Qos : Qos_Ptr; Deadline : Duration_T)
      with Import, Convention => C, External_Name => "dds_qset_deadline";
 

@@ -182,6 +182,9 @@ package body RCL.DDS is
          when Middleware_Default =>
             null;
       end case;
+      if Profile.Destination_Order = By_Source_Timestamp then
+         Thin.Qset_Destination_Order (Q, Thin.Destination_Order_By_Source_Timestamp);
+      end if;
       Thin.Qset_Writer_Data_Lifecycle (Q, C.C_bool (False));
       Thin.Qset_Data_Representation (Q, 1, Xcdr1'Address);
       if User_Data /= "" then

@@ -2,7 +2,7 @@
 --  see it): participants, raw-CDR writers and readers, waitsets. Every
 --  Cyclone error becomes RCL.ROS_Exception with a message saying what was
 --  attempted and Cyclone's own text (dds_strretcode).
---
+--  Example:
 --     P : Participant;
 --     W : Writer;
 --     Create (P, Domain => 0, Localhost_Only => True);

@@ -1,6 +1,6 @@
 --  Not for users: chunk compression through thin bindings to the system's
 --  libzstd (Zstandard frames) and liblz4 (LZ4 frames, as MCAP requires).
---
+--  Example:
 --     Last := Compress (Zstd, Chunk, Into => Buffer);  --  Buffer (1 .. Last)
 private package RCL.MCAP.Compression is
 

@@ -6,7 +6,7 @@
 --  refused unless Open is told to recover what it can. Every defect raises
 --  Format_Error with the byte offset: the reader never reads past a record
 --  or the file.
---
+--  Example:
 --     R : Reader;
 --     R.Open ("run.mcap");
 --     R.Iterate (Print'Access);   --  Print (Msg : Message; Data : Byte_Array)

@@ -2,7 +2,7 @@
 --  asked), each chunk followed by one message index per channel; Close
 --  writes the summary (schemas, channels, statistics, chunk indexes) and the
 --  footer so that readers can seek. Not task-safe: one task writes.
---
+--  Example:
 --     W : Writer;
 --     W.Create ("run.mcap", Profile => "ros2", Compression => Zstd);
 --     S : constant Schema_Id := W.Add_Schema ("std_msgs/msg/String", "ros2msg",

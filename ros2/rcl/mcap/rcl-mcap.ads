@@ -7,7 +7,7 @@
 --  Footer and the magic again; readers seek through the chunk indexes.
 --  The ros2 profile (RCL.Bags) fills schemas with .msg text ("ros2msg")
 --  and messages with CDR.
---
+--  Example:
 --     W : RCL.MCAP.Writers.Writer;
 --     W.Create ("run.mcap", Profile => "ros2", Compression => RCL.MCAP.Zstd);
 --     S := W.Add_Schema ("std_msgs/msg/String", "ros2msg", "string data");

@@ -1,8 +1,11 @@
 --  Bounded sequences (ROS 2 "T[<=N]") of generated messages: at most
 --  Capacity elements held in the record itself (no heap), indexed from 0.
---
---     Cmd.Joints := Joint_Sequences.To_Sequence ([1.0, 2.0]);
---     Cmd.Joints.Items (1) := 2.5;     --  Items (0 .. Length - 1) are used
+--  Example:
+--     use type ROSIDL.Float64;
+--     package Joint_Sequences is new ROSIDL.Static.Bounded_Sequences
+--       (ROSIDL.Float64, ROSIDL.Static.Float64_Array, Capacity => 6, Default => 0.0);
+--     Joints : Joint_Sequences.Sequence := Joint_Sequences.To_Sequence ([1.0, 2.0]);
+--     Joints.Items (1) := 2.5;     --  Items (0 .. Length - 1) are used
 generic
    type Element_Type is private;
    type Element_Array is array (Natural range <>) of aliased Element_Type;

@@ -3,7 +3,7 @@
 --  header, optional service request header, final padding) around the
 --  generated body codec. The typed publishers, subscriptions, services and
 --  clients of RCL take an instance (as RCLAda's ROSIDL.Static.Message_Support):
---
+--  Example:
 --     package Twist renames ROSIDL.Static.Geometry_Msgs.Messages.Twist;
 --     Bytes : constant Stream_Element_Array := Twist.Handling.Encode (Cmd);
 --     Copy  : constant Twist.Message := Twist.Handling.Decode (Bytes);

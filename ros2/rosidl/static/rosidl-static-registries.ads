@@ -1,6 +1,6 @@
 --  What a registry of generated types lists (rosidl_generate --registry
 --  UNIT writes UNIT.Types), for tests that go over every generated type:
---
+--  Example:
 --     for T of ROSIDL.Static.Bundled_Types.Types loop
 --        Put_Line (T.Full_Name.all & (if T.Is_Bounded then " (bounded)" else ""));
 --     end loop;

@@ -1,7 +1,7 @@
 --  What every generated service package instantiates as Handling: its
 --  request and response message types (ROSIDL.Static.Message_Support instances)
 --  and its name. RCL's typed services and clients take an instance:
---
+--  Example:
 --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
 --     Request : Add.Request.Message := (A => 2, B => 3);
 with ROSIDL.Static.Message_Support;

@@ -5,7 +5,7 @@
 --  the pool that made the storage, whichever task frees it. RCL selects a
 --  node's pool (RCL.Allocators, Node_Options.Pool) while the node's
 --  subscription callbacks run, so what decoding allocates comes from it:
---
+--  Example:
 --     Set_Task_Pool (My_Pool'Unchecked_Access);
 --     Scan.Ranges.Set_Length (720);      --  from My_Pool
 --     Set_Task_Pool (null);

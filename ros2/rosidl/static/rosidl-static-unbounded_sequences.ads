@@ -3,7 +3,7 @@
 --  elements). Storage is kept when the length shrinks, so that decoding
 --  into the same message again allocates only when a sequence grows
 --  beyond what it held before.
---
+--  Example:
 --     Scan.Ranges.Set_Length (720);
 --     Scan.Ranges (0) := 1.5;
 --     Scan.Ranges.Append (2.0);            --  Length = 721

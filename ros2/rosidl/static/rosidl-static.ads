@@ -5,7 +5,7 @@
 --  holding the record Message, its constants and its CDR codec; a service
 --  <pkg>/srv/<Srv> becomes ROSIDL.Static.<Pkg>.Services.<Srv> with nested
 --  packages Request and Response (see the README, "Generated types"):
---
+--  Example:
 --     with ROSIDL.Static.Geometry_Msgs.Messages.Twist;
 --     package Twist renames ROSIDL.Static.Geometry_Msgs.Messages.Twist;
 --     Cmd   : Twist.Message := (Linear => (X => 0.5, others => <>), others => <>);

@@ -4,7 +4,11 @@
 --  callback, Node.Spin in this task). After a warm-up, COUNT more rounds
 --  must make no Ada heap allocation in this task: every __gnat_malloc is
 --  counted (heap_counters.ads). Cyclone DDS's own C allocations (its
---  serdata per sample) are not Ada heap and not counted.
+--  serdata per sample) are not Ada heap and not counted. Then the same for
+--  a typed service (example_interfaces/srv/AddTwoInts, bounded): COUNT
+--  calls of a typed client in this task to a typed server of the same
+--  node spun by another task; the client's task and the whole process
+--  must not allocate.
 --     typed_alloc_check [COUNT]
 --  prints one line per message type and exits 1 when a bounded type
 --  allocated or too few messages came back.
@@ -16,6 +20,8 @@ with Heap_Counters;
 with RCL.Nodes.Typed;
 with RCL.Publishers;
 with RCL.QoS;
+with RCL.Services.Typed;
+with ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
 with ROSIDL.Static.Geometry_Msgs.Messages.Twist;
 with ROSIDL.Static.Message_Support;
 with ROSIDL.Static.Sensor_Msgs.Messages.LaserScan;
@@ -124,6 +130,84 @@ procedure Typed_Alloc_Check is
    procedure Check_Scan is new Check
      (ROSIDL.Static.Sensor_Msgs.Messages.LaserScan.Handling, "/alloc_check/scan", Vary_Scan);
 
+   procedure Check_Service is
+      package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
+      package Adding is new RCL.Services.Typed (Add.Handling);
+      use type ROSIDL.Int64;
+
+      procedure Adder
+        (Node : in out RCL.Nodes.Node'Class;
+         Req  : Add.Request.Message;
+         Resp : in out Add.Response.Message)
+      is
+         pragma Unreferenced (Node);
+      begin
+         Resp.Sum := Req.A + Req.B;
+      end Adder;
+
+      package Adder_Server is new Adding.Server (Adder);
+
+      Node : RCL.Nodes.Node := RCL.Nodes.Init ("typed_alloc_check_service");
+      --  Finalized before the instances: its service calls Adder.
+      Client : Adding.Client;
+      Stop   : Boolean := False with Atomic;
+      Wrong  : Natural := 0;
+
+      task Spinner;
+      task body Spinner is
+      begin
+         while not Stop loop
+            Node.Spin (Once => True, During => 0.05);
+         end loop;
+      exception
+         when others =>
+            Stop := True;
+      end Spinner;
+
+      procedure Round (N : Positive) is
+         Resp : Add.Response.Message;
+      begin
+         Client.Call ((A => ROSIDL.Int64 (N), B => -3), Resp, Timeout => 5.0);
+         if Resp.Sum /= ROSIDL.Int64 (N) - 3 then
+            Wrong := Wrong + 1;
+         end if;
+      end Round;
+
+   begin
+      Adder_Server.Serve (Node, "/alloc_check/add");
+      Client.Init (Node, "/alloc_check/add");
+      Client.Wait_For_Service (Timeout => 10.0);
+      for N in 1 .. Warmup loop
+         Round (N);
+      end loop;
+      Heap_Counters.Start (Me);
+      for N in 1 .. Count loop
+         Round (N);
+      end loop;
+      declare
+         Own : constant Natural := Heap_Counters.Task_Allocations;
+         All_Tasks : constant Natural := Heap_Counters.All_Allocations;
+      begin
+         Stop := True;
+         Put_Line (Add.Full_Name & " (bounded): called" & Count'Image & ", wrong sums"
+                   & Wrong'Image
+                   & ", Ada heap allocations in the calling task:" & Own'Image
+                   & " (all tasks of the process, the serving one included:"
+                   & All_Tasks'Image & ")");
+         if Wrong > 0 then
+            Put_Line ("  FAILED: wrong responses");
+            Failed := True;
+         elsif Own > 0 or else All_Tasks > 0 then
+            Put_Line ("  FAILED: a bounded service allocated in steady state");
+            Failed := True;
+         end if;
+      end;
+   exception
+      when others =>
+         Stop := True;
+         raise;
+   end Check_Service;
+
    type Int_Access is access Integer;
    Probe : Int_Access with Volatile;
 
@@ -139,5 +223,6 @@ begin
    end if;
    Check_Twist;
    Check_Scan;
+   Check_Service;
    Ada.Command_Line.Set_Exit_Status (if Failed then 1 else 0);
 end Typed_Alloc_Check;

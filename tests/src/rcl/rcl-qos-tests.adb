@@ -33,7 +33,7 @@ package body RCL.QoS.Tests is
       Custom : constant Profile :=
         (History => Keep_All, Depth => 1, Reliability => Reliable,
          Durability => Transient_Local, Deadline => 5.0, Lifespan => 30.0,
-         Liveliness => Manual_By_Topic, Lease => 10.0);
+         Liveliness => Manual_By_Topic, Lease => 10.0, Destination_Order => By_Source_Timestamp);
       W    : RCL.DDS.Writer;
       R    : RCL.DDS.Reader;
       Late : RCL.DDS.Reader;

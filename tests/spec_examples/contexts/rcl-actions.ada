@@ -1,0 +1,2 @@
+with RCL.Actions; use RCL.Actions;
+use ROSIDL.Dynamic;

@@ -1,0 +1,2 @@
+with RCL.Allocators;
+with GNAT.Debug_Pools;

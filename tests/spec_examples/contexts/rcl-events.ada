@@ -1,0 +1,4 @@
+with RCL.Events;
+with RCL.Publishers;
+--  DECLARATIONS
+Pub : Publishers.Publisher;

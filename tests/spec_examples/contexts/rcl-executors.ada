@@ -1,0 +1,3 @@
+with RCL.Executors.Sequential;
+--  DECLARATIONS
+Node_1, Node_2 : Nodes.Node;

@@ -1,0 +1,3 @@
+with RCL.Lifecycle; use RCL.Lifecycle;
+--  DECLARATIONS
+Support : Message_Support;

@@ -1,0 +1,1 @@
+with RCL.Names; use RCL.Names;

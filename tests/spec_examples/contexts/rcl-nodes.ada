@@ -1,0 +1,7 @@
+with RCL.Nodes; use RCL.Nodes;
+--  DECLARATIONS
+procedure Callback (Node : in out Nodes.Node'Class; Msg : in out ROSIDL.Dynamic.Message;
+                    Info : ROSIDL.Message_Info) is null;
+procedure On_Scan (Node : in out Nodes.Node'Class; Msg : in out ROSIDL.Dynamic.Message;
+                   Info : ROSIDL.Message_Info) is null;
+Scan_Support : Message_Support;

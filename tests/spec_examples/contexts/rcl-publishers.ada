@@ -1,0 +1,3 @@
+with RCL.Publishers;
+--  DECLARATIONS
+Support : Message_Support;

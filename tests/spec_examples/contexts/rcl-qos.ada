@@ -1,0 +1,4 @@
+with RCL.QoS;
+with RCL.Publishers;
+--  DECLARATIONS
+Support : Message_Support;

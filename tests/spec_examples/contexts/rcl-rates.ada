@@ -1,0 +1,3 @@
+with RCL.Rates;
+--  DECLARATIONS
+procedure Publish_Pose is null;

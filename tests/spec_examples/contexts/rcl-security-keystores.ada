@@ -1,0 +1,1 @@
+with RCL.Security.Keystores; use RCL.Security.Keystores;

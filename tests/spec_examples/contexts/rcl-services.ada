@@ -1,0 +1,2 @@
+with RCL.Services; use RCL.Services;
+use type Interfaces.Integer_64;

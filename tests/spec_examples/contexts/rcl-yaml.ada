@@ -1,0 +1,1 @@
+with RCL.YAML; use RCL.YAML;

@@ -1,0 +1,2 @@
+with ROSIDL.CDR; use ROSIDL.CDR;
+use ROSIDL.Dynamic;

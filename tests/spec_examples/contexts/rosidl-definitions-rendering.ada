@@ -1,0 +1,2 @@
+with ROSIDL.Definitions.Rendering; use ROSIDL.Definitions.Rendering;
+with ROSIDL.Interfaces;

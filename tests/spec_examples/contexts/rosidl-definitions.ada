@@ -1,0 +1,2 @@
+with ROSIDL.Definitions; use ROSIDL.Definitions;
+with ROSIDL.Interfaces;

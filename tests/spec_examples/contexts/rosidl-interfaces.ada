@@ -1,0 +1,2 @@
+with ROSIDL.Interfaces; use ROSIDL.Interfaces;
+with ROSIDL.Definitions; use ROSIDL.Definitions;
