@@ -16,7 +16,7 @@ with Ada.Text_IO;             use Ada.Text_IO;
 with Interfaces;
 with Sancta.Geometry;
 with Sancta.Team.Agents;
-with Sancta.Team.Databases;
+with Sancta.Team.Replicated_Databases;
 with Sancta.Team.Missions;    use Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;       use Sancta.Team.Plans;
@@ -215,7 +215,7 @@ procedure Bench_Missions is
 
    procedure Convergence (Nodes : Positive) is
       use Sancta.Team.Networks;
-      use Sancta.Team.Databases;
+      use Sancta.Team.Replicated_Databases;
       Team : constant String := "bench_db" & Ada.Strings.Fixed.Trim (Nodes'Image, Ada.Strings.Left);
       Nets : array (1 .. Nodes) of Network_Access;
       Dbs  : array (1 .. Nodes) of Team_Database_Access;

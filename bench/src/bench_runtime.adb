@@ -13,7 +13,7 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Components;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Schedulers;
 with Sancta.Runtime.Values;
 with Bench_Runtime_Support;
@@ -80,7 +80,7 @@ begin
    --  1. Periodic lateness.
    declare
       Clock : aliased Clocks.Real_Clock;
-      DB    : aliased Databases.Database;
+      DB    : aliased Local_Databases.Database;
       S     : Schedulers.Scheduler;
       C     : constant Components.Component_Access := new Sampler;
    begin
@@ -107,7 +107,7 @@ begin
    Put_Line ("database puts (one writer, one key, Real_Value):");
    for Listeners of Listener_Counts'(0, 1, 10) loop
       declare
-         DB       : Databases.Database;
+         DB       : Local_Databases.Database;
          Watchers : array (1 .. 10) of aliased Counting;
          Start    : Time;
          Elapsed  : Duration;

@@ -2,7 +2,7 @@
 with Ada.Real_Time;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Components;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 
 package Bench_Runtime_Support is
@@ -22,7 +22,7 @@ package Bench_Runtime_Support is
    --  A 100 Hz component that records how late each Run starts.
    overriding procedure Run (This : in out Sampler; Next : in out Clocks.Time);
 
-   type Counting is limited new Databases.Listener with record
+   type Counting is limited new Local_Databases.Listener with record
       N : Natural := 0;
    end record;
    overriding procedure On_Key_Stored

@@ -7,7 +7,7 @@ with Ada.Text_IO;
 with Interfaces;
 with Sancta.Geometry;              use Sancta.Geometry;
 with Sancta.Simulation.Demos;
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Worlds;
@@ -184,7 +184,7 @@ package body Sancta.Simulation.Render_Tool is
             Put_Line ("wrote " & To_String (SVG));
          end if;
          if Length (PNG) > 0 then
-            Images.Save_PNG (Rendering.Render (World, Scene, Scale), To_String (PNG));
+            Raster_Images.Save_PNG (Rendering.Render (World, Scene, Scale), To_String (PNG));
             Put_Line ("wrote " & To_String (PNG));
          end if;
       end;

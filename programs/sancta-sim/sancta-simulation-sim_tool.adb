@@ -19,7 +19,7 @@ with ROSIDL.Typesupport;
 with Sancta.Geometry;               use Sancta.Geometry;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
-with Sancta.Components.Robot_Messages;
+with Sancta.Standard_Components.Robot_Messages;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Robot_Lists;
 with Sancta.Simulation.Simulators;
@@ -33,7 +33,7 @@ package body Sancta.Simulation.Sim_Tool is
    use ROSIDL.Dynamic;
 
    package Math renames Ada.Numerics.Long_Elementary_Functions;
-   package Robot_Messages renames Sancta.Components.Robot_Messages;
+   package Robot_Messages renames Sancta.Standard_Components.Robot_Messages;
 
    Usage_Error : exception;
 

@@ -7,7 +7,7 @@
 --     sancta demo [CONFIG]     the team demo, an agent process per robot
 --  Each subcommand lives in a package Sancta.Commands.<Name> of its own.
 --  Those that look up ROS 2 types first put SANCTA's interfaces on the
---  ROS 2 library's search path (Sancta.Team.Interfaces.Ensure).
+--  ROS 2 library's search path (Sancta.Team.Interface_Paths.Ensure).
 pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
@@ -19,7 +19,7 @@ with Sancta.Commands.Run;
 with Sancta.Commands.Plan;
 with Sancta.Commands.Team;
 with Sancta.Commands.Team_Agent;
-with Sancta.Team.Interfaces;
+with Sancta.Team.Interface_Paths;
 
 procedure Sancta_CLI is
    use Ada.Command_Line;
@@ -53,10 +53,10 @@ begin
          Usage;
       end if;
    elsif Command = "check" then
-      Sancta.Team.Interfaces.Ensure;
+      Sancta.Team.Interface_Paths.Ensure;
       Sancta.Commands.Check.Run;
    elsif Command = "run" then
-      Sancta.Team.Interfaces.Ensure;
+      Sancta.Team.Interface_Paths.Ensure;
       Sancta.Commands.Run.Run;
    elsif Command = "plan" then
       Sancta.Commands.Plan.Run;
@@ -65,7 +65,7 @@ begin
    elsif Command = "team-agent" then
       Sancta.Commands.Team_Agent.Run;
    elsif Command = "demo" then
-      Sancta.Team.Interfaces.Ensure;
+      Sancta.Team.Interface_Paths.Ensure;
       Sancta.Commands.Demo.Run;
    else
       Put_Line (Standard_Error, "sancta: unknown command '" & Command & "'");

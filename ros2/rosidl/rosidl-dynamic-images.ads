@@ -1,5 +1,5 @@
 --  Rendering of dynamic messages as "ros2 topic echo" prints them (YAML as
---  PyYAML dumps the message's ordered dictionary). Not for users: see
+--  PyYAML dumps the message's ordered dictionary). Users call
 --  ROSIDL.Dynamic.Image.
 private package ROSIDL.Dynamic.Images is
 

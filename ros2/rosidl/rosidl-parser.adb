@@ -2,12 +2,12 @@ with Ada.Containers.Vectors;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with ROSIDL.Interfaces;
-with ROSIDL.Parser.Values;
+with ROSIDL.Parser.Literals;
 
 package body ROSIDL.Parser is
 
    use Ada.Strings.Unbounded;
-   use ROSIDL.Parser.Values;
+   use ROSIDL.Parser.Literals;
 
    ---------------------------------------------------------------------------
    --  Names

@@ -12,7 +12,7 @@ package Sancta.Installation is
 
    Interface_Path_Variable : constant String := "SANCTA_INTERFACE_PATH";
    --  Extra ROS 2 interface folders, colon-separated: read by
-   --  Sancta.Team.Interfaces, which hands them to the ROS 2 library.
+   --  Sancta.Team.Interface_Paths, which hands them to the ROS 2 library.
 
    function Share_Folder return String;
    --  Without a trailing "/".

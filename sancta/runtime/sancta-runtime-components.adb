@@ -141,7 +141,7 @@ package body Sancta.Runtime.Components is
    function Agent_Id (This : Component'Class) return String is (To_String (This.Info.Agent_Id));
    function Ctx (This : Component'Class) return Context is (This.Info);
    function Now (This : Component'Class) return Clocks.Time is (This.Info.Clock.Now);
-   function Database (This : Component'Class) return Databases.Database_Access is
+   function Database (This : Component'Class) return Local_Databases.Database_Access is
      (This.Info.Database);
 
    function Option_Text (This : Component'Class; Name : String) return String is
@@ -250,7 +250,7 @@ package body Sancta.Runtime.Components is
    begin
       if This.Has_Input (Data) then
          This.Info.Database.Listen
-           (This.Input_Key (Data), Databases.Listener_Access'(This'Unchecked_Access));
+           (This.Input_Key (Data), Local_Databases.Listener_Access'(This'Unchecked_Access));
       end if;
    end Subscribe;
 
@@ -287,7 +287,7 @@ package body Sancta.Runtime.Components is
    overriding procedure Stop (This : in out Base_Component) is
    begin
       This.Stopped := True;
-      This.Info.Database.Unlisten_All (Databases.Listener_Access'(This'Unchecked_Access));
+      This.Info.Database.Unlisten_All (Local_Databases.Listener_Access'(This'Unchecked_Access));
    end Stop;
 
 end Sancta.Runtime.Components;

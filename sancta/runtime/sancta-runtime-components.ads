@@ -34,7 +34,7 @@ with Ada.Strings.Unbounded;
 with Ada.Task_Identification;
 with Sancta.Logging;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 
 package Sancta.Runtime.Components is
@@ -146,7 +146,7 @@ package Sancta.Runtime.Components is
       Agent_Kind    : Unbounded_String;
       Instance_Name : Unbounded_String;
       --  "logger#2": the component name and its rank in the agent.
-      Database      : Databases.Database_Access;
+      Database      : Local_Databases.Database_Access;
       Clock         : Clocks.Clock_Access;
       Inputs        : String_Maps.Map;
       --  data -> external key, for each bound input.
@@ -185,7 +185,7 @@ package Sancta.Runtime.Components is
    function Agent_Id (This : Component'Class) return String;
    function Ctx (This : Component'Class) return Context;
    function Now (This : Component'Class) return Clocks.Time;
-   function Database (This : Component'Class) return Databases.Database_Access;
+   function Database (This : Component'Class) return Local_Databases.Database_Access;
 
    function Option_Text (This : Component'Class; Name : String) return String;
    function Option_Real (This : Component'Class; Name : String) return Long_Float;
@@ -241,7 +241,7 @@ package Sancta.Runtime.Components is
 
    --  A component with a database listener --
 
-   type Base_Component is abstract limited new Component and Databases.Listener with private;
+   type Base_Component is abstract limited new Component and Local_Databases.Listener with private;
 
    procedure Subscribe (This : in out Base_Component; Data : String);
    --  Receive On_Input after every store of the key bound to input Data
@@ -282,7 +282,7 @@ private
       --  Written under Guard, read without it.
    end record;
 
-   type Base_Component is abstract limited new Component and Databases.Listener with record
+   type Base_Component is abstract limited new Component and Local_Databases.Listener with record
       Stopped : Boolean := False;
       --  Set by Stop (under the component's lock): a notification already
       --  under way when the component unsubscribed is then ignored.

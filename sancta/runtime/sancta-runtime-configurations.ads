@@ -31,6 +31,9 @@ with Ada.Strings.Unbounded;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.XML_Trees;
 
+private with Ada.Characters.Handling;
+private with Sancta.Runtime.Local_Databases;
+
 package Sancta.Runtime.Configurations is
 
    use Ada.Strings.Unbounded;
@@ -118,12 +121,24 @@ package Sancta.Runtime.Configurations is
    function Agent_Ids (This : Configuration) return String;
    --  "Ari, Ben" (for diagnostics).
 
-   function Wiring_Table (This : Configuration) return String;
-   --  A text table per agent: component instances (start order) and each
-   --  external key with its type, its provider and its consumers.
+   --  The children: Loading (reading the files) and Wiring (connecting each
+   --  agent) are private; Rendering prints the wiring (table, Graphviz).
 
-   function To_Dot (This : Configuration) return String;
-   --  A Graphviz picture: a cluster per agent, a box per enabled component,
-   --  an edge per connection labelled with its key and type.
+private
+
+   procedure Report
+     (Result : in out Configuration; Level : Severity; Where : Position; Message : String);
+   --  Appends a diagnostic.
+
+   function Is_Identifier_Char (C : Character) return Boolean is
+     (Ada.Characters.Handling.Is_Alphanumeric (C) or else C = '_');
+   --  A letter, a digit or '_'.
+
+   function Trim (N : Integer) return String;
+   --  N'Image without the leading space.
+
+   function Suggest
+     (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String;
+   --  " (did you mean X?)" with the candidate closest to Name, or "".
 
 end Sancta.Runtime.Configurations;

@@ -25,7 +25,7 @@ package body Sancta.Runtime.Factory is
       procedure Add (Info : Components.Descriptor; Create : Creator; Added : out Boolean);
       function Find (Name : String) return Registration;
       function Contains (Name : String) return Boolean;
-      function All_Names return Databases.Key_Vectors.Vector;
+      function All_Names return Local_Databases.Key_Vectors.Vector;
    private
       Map : Registration_Maps.Map;
    end Registry;
@@ -44,8 +44,8 @@ package body Sancta.Runtime.Factory is
 
       function Contains (Name : String) return Boolean is (Map.Contains (Name));
 
-      function All_Names return Databases.Key_Vectors.Vector is
-         Result : Databases.Key_Vectors.Vector;
+      function All_Names return Local_Databases.Key_Vectors.Vector is
+         Result : Local_Databases.Key_Vectors.Vector;
       begin
          for Position in Map.Iterate loop
             Result.Append (Registration_Maps.Key (Position));
@@ -72,7 +72,7 @@ package body Sancta.Runtime.Factory is
    function Create (Name : String; Ctx : Components.Context) return Components.Component_Access
    is (Registry.Find (Name).Create (Ctx));
 
-   function Names return Databases.Key_Vectors.Vector is (Registry.All_Names);
+   function Names return Local_Databases.Key_Vectors.Vector is (Registry.All_Names);
 
    function Edit_Distance (A, B : String) return Natural is
       use Ada.Characters.Handling;
@@ -96,7 +96,8 @@ package body Sancta.Runtime.Factory is
       return Previous (B'Length);
    end Edit_Distance;
 
-   function Closest (Name : String; Candidates : Databases.Key_Vectors.Vector) return String is
+   function Closest
+     (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String is
       Limit  : constant Natural := Natural'Max (2, Name'Length / 3);
       Result : Unbounded_String;
       Count  : Natural := 0;

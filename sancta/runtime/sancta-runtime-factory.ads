@@ -1,18 +1,18 @@
 --  The factory: component types register themselves by name, with their
 --  Descriptor and a creator, at the elaboration of their package:
 --
---     package body Sancta.Components.Logger is
+--     package body Sancta.Standard_Components.Logger is
 --        ...
 --     begin
 --        Sancta.Runtime.Factory.Register (Info, Create'Access);
---     end Sancta.Components.Logger;
+--     end Sancta.Standard_Components.Logger;
 --
 --  There is no central list. Beware that a unit of a static library is only
 --  elaborated (and so registered) when some unit of the program "with"s
---  it: programs "with Sancta.Components.All_Standard;" to get every standard
+--  it: programs "with Sancta.Standard_Components.All_Standard;" to get every standard
 --  component, and add their own component packages the same way.
 with Sancta.Runtime.Components;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 
 package Sancta.Runtime.Factory is
 
@@ -38,13 +38,13 @@ package Sancta.Runtime.Factory is
    function Create (Name : String; Ctx : Components.Context) return Components.Component_Access
      with Pre => Is_Registered (Name);
 
-   function Names return Databases.Key_Vectors.Vector;
+   function Names return Local_Databases.Key_Vectors.Vector;
    --  Every registered component name, sorted.
 
    function Edit_Distance (A, B : String) return Natural;
    --  Levenshtein distance (insertions, deletions, substitutions).
 
-   function Closest (Name : String; Candidates : Databases.Key_Vectors.Vector) return String;
+   function Closest (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String;
    --  Up to three candidates nearest to Name by edit distance (within
    --  max (2, length / 3)), as "'a', 'b'"; "" when none is near.
 

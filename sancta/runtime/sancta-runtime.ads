@@ -1,12 +1,12 @@
 --  The component runtime of SANCTA: components wired by an XML
 --  configuration (Sancta.Runtime.Configurations), the local database they
---  share (Sancta.Runtime.Databases), the factory that creates them by name
+--  share (Sancta.Runtime.Local_Databases), the factory that creates them by name
 --  (Sancta.Runtime.Factory), the scheduler that runs them
 --  (Sancta.Runtime.Schedulers) and the node that holds one agent's
---  components together (Sancta.Runtime.Nodes).
+--  components together (Sancta.Runtime.Component_Hosts).
 --
---  Standard components live in Sancta.Components.*; a program that wants
---  them all must "with Sancta.Components.All_Standard;" (see there why).
+--  Standard components live in Sancta.Standard_Components.*; a program that wants
+--  them all must "with Sancta.Standard_Components.All_Standard;" (see there why).
 package Sancta.Runtime
   with Preelaborate
 is

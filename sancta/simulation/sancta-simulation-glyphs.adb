@@ -76,16 +76,16 @@ package body Sancta.Simulation.Glyphs is
    end Is_Inked;
 
    procedure Draw_Text
-     (Img   : in out Images.Image;
+     (Img   : in out Raster_Images.Image;
       X, Y  : Integer;
       Text  : String;
-      Color : Images.Color;
+      Color : Raster_Images.Color;
       Halo  : Boolean := True)
    is
-      procedure Plot (PX, PY : Integer; C : Images.Color) is
+      procedure Plot (PX, PY : Integer; C : Raster_Images.Color) is
       begin
-         if PX in 1 .. Images.Width (Img) and then PY in 1 .. Images.Height (Img) then
-            Images.Set (Img, PX, PY, C);
+         if PX in 1 .. Raster_Images.Width (Img) and then PY in 1 .. Raster_Images.Height (Img) then
+            Raster_Images.Set (Img, PX, PY, C);
          end if;
       end Plot;
 
@@ -102,7 +102,7 @@ package body Sancta.Simulation.Glyphs is
                         if Outline then
                            for DX in -1 .. 1 loop
                               for DY in -1 .. 1 loop
-                                 Plot (PX + DX, PY + DY, Images.White);
+                                 Plot (PX + DX, PY + DY, Raster_Images.White);
                               end loop;
                            end loop;
                         else

@@ -3,7 +3,7 @@
 --  and - _ . , : > < ( ) / + = % # ? '; other characters are drawn as '?'.
 --
 --     Glyphs.Draw_Text (Img, X => 10, Y => 4, Text => "r1: 7 tasks", Color => Black);
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 
 package Sancta.Simulation.Glyphs is
 
@@ -19,10 +19,10 @@ package Sancta.Simulation.Glyphs is
    function Text_Width (Text : String) return Natural is (Text'Length * Advance);
 
    procedure Draw_Text
-     (Img   : in out Images.Image;
+     (Img   : in out Raster_Images.Image;
       X, Y  : Integer;
       Text  : String;
-      Color : Images.Color;
+      Color : Raster_Images.Color;
       Halo  : Boolean := True);
    --  Text with its top left corner at pixel (X, Y), clipped to the image;
    --  Halo: a one-pixel white outline, legible over lines and walls.

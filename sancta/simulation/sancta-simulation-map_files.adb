@@ -220,9 +220,9 @@ package body Sancta.Simulation.Map_Files is
    -- To_World --
    --------------
 
-   function To_World (Img : Images.Image; Info : Map_Info) return Worlds.World is
-      W : constant Natural := Images.Width (Img);
-      H : constant Natural := Images.Height (Img);
+   function To_World (Img : Raster_Images.Image; Info : Map_Info) return Worlds.World is
+      W : constant Natural := Raster_Images.Width (Img);
+      H : constant Natural := Raster_Images.Height (Img);
       G : Grid_Access := new Grid (W - 1, H - 1);
    begin
       G.Origin := Position (Info.Origin);
@@ -230,7 +230,8 @@ package body Sancta.Simulation.Map_Files is
       for Y in 1 .. H loop
          for X in 1 .. W loop
             declare
-               V : constant Real := Real (Images.Gray (Images.Get (Img, X, Y))) / 255.0;
+               V : constant Real :=
+                 Real (Raster_Images.Gray (Raster_Images.Get (Img, X, Y))) / 255.0;
                P : constant Real := (if Info.Negate then V else 1.0 - V);
             begin
                --  Occupied or unknown is solid; only free cells are open.
@@ -246,7 +247,7 @@ package body Sancta.Simulation.Map_Files is
    function Load_Map (File_Name : String) return Worlds.World is
       Info : constant Map_Info := Read_YAML (File_Name);
    begin
-      return To_World (Images.Load (To_String (Info.Image_Path)), Info);
+      return To_World (Raster_Images.Load (To_String (Info.Image_Path)), Info);
    end Load_Map;
 
    ----------------

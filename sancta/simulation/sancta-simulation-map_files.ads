@@ -17,7 +17,7 @@
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;             use Sancta.Geometry;
 with Sancta.Robot.Grids;
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Worlds;
 
 package Sancta.Simulation.Map_Files is
@@ -52,7 +52,7 @@ package Sancta.Simulation.Map_Files is
    --  Load_Map for *.yaml / *.yml, Load_Walls otherwise.
 
    function To_World
-     (Img : Images.Image; Info : Map_Info) return Worlds.World;
+     (Img : Raster_Images.Image; Info : Map_Info) return Worlds.World;
    --  The map-server rule applied to an image.
 
    function World_File (Name : String) return String;

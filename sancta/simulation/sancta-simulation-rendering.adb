@@ -9,7 +9,7 @@ with Sancta.Simulation.Glyphs;
 package body Sancta.Simulation.Rendering is
 
    use Ada.Strings.Unbounded;
-   use Images;
+   use Raster_Images;
    use Robot.Grids;
    use Ada.Numerics.Long_Elementary_Functions;
 
@@ -262,7 +262,7 @@ package body Sancta.Simulation.Rendering is
    begin
       --  The world, cell by cell (pixel centres sampled).
       for Y in 1 .. Height loop
-         for X in 1 .. Images.Width (Img) loop
+         for X in 1 .. Raster_Images.Width (Img) loop
             declare
                WX : constant Real := F.Origin.X + (Real (X) - 0.5) / Scale;
                WY : constant Real := F.Origin.Y + (Real (Height - Y) + 0.5) / Scale;

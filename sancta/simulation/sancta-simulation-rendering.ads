@@ -7,11 +7,11 @@
 --     S.Trajectories := Read_Trajectories ("run.csv");
 --     S.Markers.Append ((Where => (3.0, 4.0), Label => To_Unbounded_String ("dock")));
 --     Write_SVG (World, S, "run.svg");
---     Images.Save_PNG (Render (World, S, Scale => 20.0), "run.png");
+--     Raster_Images.Save_PNG (Render (World, S, Scale => 20.0), "run.png");
 with Ada.Containers.Vectors;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;             use Sancta.Geometry;
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Worlds;
 
 package Sancta.Simulation.Rendering is
@@ -29,7 +29,7 @@ package Sancta.Simulation.Rendering is
    package Marker_Vectors is new Ada.Containers.Vectors (Positive, Marker);
 
    type Legend_Entry is record
-      Color : Images.Color;
+      Color : Raster_Images.Color;
       Text  : Ada.Strings.Unbounded.Unbounded_String;
    end record;
    package Legend_Vectors is new Ada.Containers.Vectors (Positive, Legend_Entry);
@@ -78,14 +78,14 @@ package Sancta.Simulation.Rendering is
                            Line_Height : Positive) return Natural;
    --  Pixels of the band below the world (0 without legend or scale bar).
 
-   function Color_Of (Robot : Positive) return Images.Color;
+   function Color_Of (Robot : Positive) return Raster_Images.Color;
    --  A distinct colour per robot (cycling over ten).
 
-   function Hex (C : Images.Color) return String;
+   function Hex (C : Raster_Images.Color) return String;
    --  "#rrggbb".
 
    function Render
-     (World : Worlds.World; S : Scene; Scale : Real := 20.0) return Images.Image
+     (World : Worlds.World; S : Scene; Scale : Real := 20.0) return Raster_Images.Image
      with Pre => Scale > 0.0;
    --  Scale: pixels per metre.
 

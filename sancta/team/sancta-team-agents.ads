@@ -34,12 +34,13 @@
 --  Execution (robots): Current_Goal gives the next point of the first task
 --  of the robot's tour in the adopted plan that is not done; Arrived marks
 --  progress (an explore segment has two points) and finally done/<task>.
+with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Interfaces;
 with Sancta.Geometry;
-with Sancta.Team.Databases;
+with Sancta.Team.Replicated_Databases;
 with Sancta.Team.Grid_Costs;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
@@ -84,14 +85,14 @@ package Sancta.Team.Agents is
    function Create
      (Config : Agent_Config;
       Net    : not null Networks.Network_Access;
-      Db     : not null Databases.Team_Database_Access) return Agent_Access
+      Db     : not null Replicated_Databases.Team_Database_Access) return Agent_Access
      with Pre => Networks.Id (Net.all) = To_String (Config.Id);
    --  The same on a network made by the caller (not started: the agent
    --  subscribes, then starts it) and its database, attached to Net (the
    --  XML components network and global_database make them).
 
    function Id (This : Agent) return String;
-   function Database (This : Agent) return Databases.Team_Database_Access;
+   function Database (This : Agent) return Replicated_Databases.Team_Database_Access;
    function Network (This : Agent) return Networks.Network_Access;
 
    function Find (Id : String) return Agent_Access;
@@ -110,6 +111,13 @@ package Sancta.Team.Agents is
    --  Robots ----------------------------------------------------------------------
 
    procedure Set_Pose (This : in out Agent; Where : Sancta.Geometry.Point);
+   --  The robot's position; the agent's task writes the latest one to the
+   --  team database (pose/<id>) at most every Pose_Period of wall-clock
+   --  time: a simulation run 25 times faster than real time would
+   --  otherwise write 25 times as many poses (20 robots: 1,000 writes a
+   --  second, each delivered to every node).
+
+   Pose_Period : constant Duration := 0.25;
 
    procedure Current_Goal
      (This    : in out Agent;
@@ -165,6 +173,19 @@ private
       Current : View;
    end View_Box;
 
+   type Pose_Note is record
+      Where   : Sancta.Geometry.Point := (0.0, 0.0);
+      Pending : Boolean := False;
+   end record;
+
+   protected type Pose_Box is
+      procedure Set (Where : Sancta.Geometry.Point);
+      procedure Take (Note : out Pose_Note);
+      --  The latest position not yet written (Pending), and clears it.
+   private
+      Latest : Pose_Note;
+   end Pose_Box;
+
    type Progress is record
       Active : Unbounded_String;
       Phase  : Natural := 0;
@@ -188,13 +209,25 @@ private
    overriding procedure On_Message
      (This : in out Auction_Consumer; Sender, Channel, Payload : String);
 
+   type Proposal_Entry is record
+      Revision : Long_Long_Integer := 0;
+      Writer   : Unbounded_String;
+      Round    : Natural := 0;
+      --  The entry (revision, writer) decoded for that round's snapshot.
+      Fits     : Boolean := False;
+      Proposal : Plans.Plan;
+   end record;
+   package Proposal_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Proposal_Entry);
+
    type Agent is tagged limited record
       Config   : Agent_Config;
       Net      : Networks.Network_Access;
-      Db       : Databases.Team_Database_Access;
+      Db       : Replicated_Databases.Team_Database_Access;
       Bids     : Bid_Box;
       Views    : View_Box;
       Steps    : Progress_Box;
+      Poses    : Pose_Box;
+      Next_Pose_Write : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
       Auction  : aliased Auction_Consumer (Agent'Access);
       Bundle   : Plans.Step_Vectors.Vector;
       --  The auction tour (bidder side), of Bundle_Gen.
@@ -206,6 +239,8 @@ private
       Mismatch_Since : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
       Last_Round_Text : Unbounded_String;
       Improved_Rounds : Natural := 0;
+      Proposals : Proposal_Maps.Map;
+      --  Decoded proposals by key (the agent task's cache).
    end record;
 
 end Sancta.Team.Agents;

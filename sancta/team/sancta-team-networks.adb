@@ -9,7 +9,7 @@ with ROSIDL.Typesupport;
 with RCL.Contexts;
 with RCL.DDS;
 with RCL.QoS;
-with Sancta.Team.Interfaces;
+with Sancta.Team.Interface_Paths;
 
 package body Sancta.Team.Networks is
 
@@ -52,7 +52,7 @@ package body Sancta.Team.Networks is
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
    begin
-      Sancta.Team.Interfaces.Ensure;
+      Sancta.Team.Interface_Paths.Ensure;
       return ROSIDL.Typesupport.Get_Message_Support ("sancta_msgs", Name);
    end Support;
 
@@ -129,6 +129,13 @@ package body Sancta.Team.Networks is
             Writers.Exclude (To_String (M));
          end loop;
       end Expire;
+
+      procedure Postpone (By : Time_Span) is
+      begin
+         for T of Last loop
+            T := T + By;
+         end loop;
+      end Postpone;
 
       procedure Clear is
       begin
@@ -494,6 +501,8 @@ package body Sancta.Team.Networks is
                            On_State'Access, State_QoS);
       This.Worker := new Receiver (This'Unchecked_Access);
       This.Worker.Go;
+      This.Heart := new Beater (This'Unchecked_Access);
+      This.Heart.Go;
    end Start;
 
    procedure Stop (This : in out Network) is
@@ -619,24 +628,58 @@ package body Sancta.Team.Networks is
    function Received_Count (This : Network) return Long_Long_Integer is
      (This.Counts.Received);
 
+   task body Beater is
+      Period    : constant Time_Span := To_Time_Span (Owner.Lease / 4);
+      Late_Wake : constant Time_Span := Milliseconds (50);
+      Next      : Time;
+   begin
+      accept Go;
+      Next := Clock;
+      loop
+         exit when Owner.Status.Get.Stopping or else RCL.Contexts.Is_Shutdown;
+         begin
+            Beat (Owner.all);
+         exception
+            when E : others =>
+               Log_Failure (Owner.all, "presence", E);
+         end;
+         Next := Next + Period;
+         if Next < Clock then
+            Next := Clock;  --  this task did not run for a while: no burst
+         end if;
+         delay until Next;
+         --  Woken late: this process (the members living in it, whose
+         --  silence is judged here) was kept from running that long.
+         if Clock - Next > Late_Wake then
+            Owner.Alive.Postpone (Clock - Next);
+         end if;
+      end loop;
+   end Beater;
+
    task body Receiver is
       Period : constant Time_Span := To_Time_Span (Owner.Lease / 4);
       Lost   : Name_Vectors.Vector;
       Local_Prefix : constant String :=
         Ada.Strings.Fixed.Head (RCL.DDS.Image (Owner.Presence.GID), 12 * 3 - 1);
       --  "xx.xx....": the 12-byte GUID prefix of this process's participant.
+      Last_Check : Time;
+      Check_Gap  : constant Time_Span := Period;
+      --  A turn of the loop takes about 20 ms; a longer time between two
+      --  checks of the silences means this task did not run (a loaded
+      --  machine, a long callback, a stopped process).
    begin
       accept Go;
+      Last_Check := Clock;
       loop
          exit when Owner.Status.Get.Stopping;
          --  After Ctrl-C / SIGTERM the context is shut down: nothing can be
          --  sent any more (publishing would raise at every beat).
          exit when RCL.Contexts.Is_Shutdown;
          begin
-            if Clock >= Owner.Next_Beat then
-               Beat (Owner.all);
-               Owner.Next_Beat := Clock + Period;
-            end if;
+            --  The samples waiting first: after this task was kept from
+            --  running (a loaded machine), the presence samples that came
+            --  meanwhile renew their members before any of them is expired.
+            Owner.Node.Spin (During => 0.02);
             Lost.Clear;
             loop
                declare
@@ -658,13 +701,22 @@ package body Sancta.Team.Networks is
             --  Cyclone applies no lease to the writers of its own
             --  participant: members in this process are expired on silence,
             --  as is everyone while this node is isolated.
+            --
+            --  Silence is judged on the time this process ran: the
+            --  members of this process (expired on silence) stalled with
+            --  it, and expiring them now would make a team flap on a
+            --  loaded machine (20 robots in one process: rounds re-opened
+            --  every second). Remote members' losses come from DDS.
+            if Clock - Last_Check > Check_Gap then
+               Owner.Alive.Postpone (Clock - Last_Check);
+            end if;
             Owner.Alive.Expire (Clock, Local_Prefix, Owner.Status.Get.Isolated, Lost);
+            Last_Check := Clock;
             for M of Lost loop
                if To_String (M) /= To_String (Owner.Id) then
                   Notify_Lost (Owner.all, To_String (M));
                end if;
             end loop;
-            Owner.Node.Spin (During => 0.02);
          exception
             when E : others =>
                Log_Failure (Owner.all, "receiving task", E);

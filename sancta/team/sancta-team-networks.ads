@@ -210,6 +210,9 @@ private
       --  Appends to Lost, and removes, the members silent for more than
       --  their lease among those whose presence writer's GUID starts with
       --  Local_Prefix (or all members when All_Members).
+      procedure Postpone (By : Ada.Real_Time.Time_Span);
+      --  Every member last heard By later: the receiving task was kept
+      --  from running for By, and a silence it explains is not a loss.
       procedure Clear;
       function List return Name_Vectors.Vector;
       function Contains (Member : String) return Boolean;
@@ -239,6 +242,13 @@ private
       entry Go;
    end Receiver;
    type Receiver_Access is access Receiver;
+
+   task type Beater (Owner : not null access Network) is
+      entry Go;
+   end Beater;
+   --  Writes the node's presence every Lease / 4, whatever the receiving
+   --  task is doing (a long callback must not make the node look lost).
+   type Beater_Access is access Beater;
 
    type Node_Access is access RCL.Nodes.Node;
    type Publisher_Access is access RCL.Publishers.Publisher;
@@ -295,8 +305,8 @@ private
       Counts     : Counter_Box;
       Drops      : Drop_Box;
       Worker     : Receiver_Access;
+      Heart      : Beater_Access;
       Started    : Boolean := False;
-      Next_Beat  : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
       Team       : Unbounded_String;
    end record;
 

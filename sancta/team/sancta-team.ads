@@ -1,5 +1,5 @@
 --  Team missions over DDS: the team network (Networks), the replicated team
---  database (Databases), distributed allocation (Allocators), team missions
+--  database (Replicated_Databases), distributed allocation (Allocators), team missions
 --  (Missions) and the end-to-end demo (Demos).
 package Sancta.Team is
 end Sancta.Team;

@@ -1,12 +1,12 @@
 with Simulation_Suites;
 with Harness_Tests;
-with Sancta.Components.Tests;
-with Sancta.Components.ROS2.Tests;
+with Sancta.Standard_Components.Tests;
+with Sancta.Standard_Components.ROS2.Tests;
 with Sancta.Logging.Tests;
 with Sancta.Runtime.Configurations.Tests;
-with Sancta.Runtime.Databases.Tests;
+with Sancta.Runtime.Local_Databases.Tests;
 with Sancta.Runtime.Schedulers.Tests;
-with Sancta.Components.ROS_Clocks.Tests;
+with Sancta.Standard_Components.ROS_Clocks.Tests;
 with RCL.Clocks.Tests;
 with RCL.Graph.Tests;
 with RCL.Logging.Tests;
@@ -39,17 +39,17 @@ package body All_Suites is
    begin
       Result.Add_Test (Harness_Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Configurations.Tests.Suite);
-      Result.Add_Test (Sancta.Runtime.Databases.Tests.Suite);
+      Result.Add_Test (Sancta.Runtime.Local_Databases.Tests.Suite);
       Result.Add_Test (Sancta.Runtime.Schedulers.Tests.Suite);
-      Result.Add_Test (Sancta.Components.Tests.Suite);
-      Result.Add_Test (Sancta.Components.ROS2.Tests.Suite);
+      Result.Add_Test (Sancta.Standard_Components.Tests.Suite);
+      Result.Add_Test (Sancta.Standard_Components.ROS2.Tests.Suite);
       Result.Add_Test (Sancta.Logging.Tests.Suite);
       Result.Add_Test (RCL.Names.Tests.Suite);
       Result.Add_Test (RCL.Logging.Tests.Suite);
       Result.Add_Test (RCL.Timers.Tests.Suite);
       Result.Add_Test (RCL.Nodes.Tests.Suite);
       Result.Add_Test (RCL.Clocks.Tests.Suite);
-      Result.Add_Test (Sancta.Components.ROS_Clocks.Tests.Suite);
+      Result.Add_Test (Sancta.Standard_Components.ROS_Clocks.Tests.Suite);
       Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (RCL.Graph.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);

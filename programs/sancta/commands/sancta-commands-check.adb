@@ -6,13 +6,14 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with GNAT.OS_Lib;
 with Sancta.Commands.Options;
-with Sancta.Components.All_Standard;
+with Sancta.Standard_Components.All_Standard;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
+with Sancta.Runtime.Configurations.Rendering;
 
 package body Sancta.Commands.Check is
 
-   pragma Warnings (Off, Sancta.Components.All_Standard);
+   pragma Warnings (Off, Sancta.Standard_Components.All_Standard);
    --  Withed for its registrations only.
 
    use Ada.Command_Line;
@@ -71,7 +72,7 @@ package body Sancta.Commands.Check is
       Put_Line ("configuration " & To_String (Config.Name) & " (" & To_String (File) & "): "
                 & "agents " & Configurations.Agent_Ids (Config) & ";"
                 & Configurations.Warning_Count (Config)'Image & " warning(s)");
-      Put (Configurations.Wiring_Table (Config));
+      Put (Configurations.Rendering.Wiring_Table (Config));
 
       declare
          Dir  : constant String := To_String (Output);
@@ -81,7 +82,7 @@ package body Sancta.Commands.Check is
          Tool : GNAT.OS_Lib.String_Access := GNAT.OS_Lib.Locate_Exec_On_Path ("dot");
       begin
          Ada.Directories.Create_Path (Dir);
-         Write_File (Dot, Configurations.To_Dot (Config));
+         Write_File (Dot, Configurations.Rendering.To_Dot (Config));
          Put_Line ("wiring picture: " & Dot);
          if Tool /= null then
             declare

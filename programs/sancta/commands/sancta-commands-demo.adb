@@ -5,9 +5,9 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Commands.Options;
 with Sancta.Installation;
-with Sancta.Team.Demos;
+with Sancta.Commands.Team_Demos;
 with Sancta.Team.Missions;
-with Sancta.Team.Sim_Demos;
+with Sancta.Commands.Sim_Team_Demos;
 
 package body Sancta.Commands.Demo is
 
@@ -33,10 +33,10 @@ package body Sancta.Commands.Demo is
    function Default_Config return String is (Installation.Share_File ("config/sim-team.xml"));
 
    procedure Run is
-      Config : Sancta.Team.Sim_Demos.Sim_Demo_Config;
+      Config : Sancta.Commands.Sim_Team_Demos.Sim_Demo_Config;
       Check  : Boolean := False;
       I      : Positive := 2;
-      Result : Sancta.Team.Demos.Demo_Result;
+      Result : Sancta.Commands.Team_Demos.Demo_Result;
 
       function Value return String is (Options.Next_Value (I));
       function Number (Text : String; Name : String) return Long_Float is
@@ -95,10 +95,10 @@ package body Sancta.Commands.Demo is
       if not Ada.Directories.Exists (To_String (Config.Config_File)) then
          raise Constraint_Error with To_String (Config.Config_File) & ": no such file";
       end if;
-      Sancta.Team.Sim_Demos.Run (Config, Result);
-      Sancta.Team.Demos.Print_Summary (Result);
+      Sancta.Commands.Sim_Team_Demos.Run (Config, Result);
+      Sancta.Commands.Team_Demos.Print_Summary (Result);
       if Check then
-         if Sancta.Team.Demos.Check_Passed (Result) then
+         if Sancta.Commands.Team_Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once"
                       & (if Result.Killed = Null_Unbounded_String then ")"
                          else "; the lost robot's unfinished tasks done by survivors)"));

@@ -1,6 +1,6 @@
 --  "sancta demo": the team demo with every robot a SANCTA agent of one
 --  configuration file, one process per agent, on sancta-sim
---  (Sancta.Team.Sim_Demos). The README's run command.
+--  (Sancta.Commands.Sim_Team_Demos). The README's run command.
 --
 --     sancta demo [CONFIG.xml] [--set NAME=VALUE]... [--rate 4] [--wall-clock]
 --        [--kill ID | --no-kill] [--kill-at 0.25] [--max 1200] [--max-wall 900]

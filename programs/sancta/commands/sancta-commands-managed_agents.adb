@@ -6,7 +6,7 @@ with RCL.Executors.Sequential;
 with RCL.Lifecycle;
 with RCL.Nodes;
 with Sancta.Logging;
-with Sancta.Runtime.Nodes;
+with Sancta.Runtime.Component_Hosts;
 with Sancta.Runtime.Shutdown;
 
 package body Sancta.Commands.Managed_Agents is
@@ -16,9 +16,9 @@ package body Sancta.Commands.Managed_Agents is
    package Configurations renames Sancta.Runtime.Configurations;
    package Shutdown renames Sancta.Runtime.Shutdown;
 
-   type Runtime_Node_Access is access Sancta.Runtime.Nodes.Node;
+   type Component_Host_Access is access Sancta.Runtime.Component_Hosts.Component_Host;
    procedure Free is new Ada.Unchecked_Deallocation
-     (Sancta.Runtime.Nodes.Node, Runtime_Node_Access);
+     (Sancta.Runtime.Component_Hosts.Component_Host, Component_Host_Access);
 
    type ROS_Node_Access is access RCL.Nodes.Node;
 
@@ -26,7 +26,7 @@ package body Sancta.Commands.Managed_Agents is
       Id        : Unbounded_String;
       ROS_Node  : ROS_Node_Access;
       Lifecycle : Managed_Node;
-      Runtime   : Runtime_Node_Access;
+      Runtime   : Component_Host_Access;
       --  Null while unconfigured or finalized.
       Running   : Boolean := False;
       Finalized : Boolean := False;
@@ -81,7 +81,7 @@ package body Sancta.Commands.Managed_Agents is
 
    function Create (A : in out Agent) return Callback_Return is
    begin
-      A.Runtime := new Sancta.Runtime.Nodes.Node;
+      A.Runtime := new Sancta.Runtime.Component_Hosts.Component_Host;
       A.Runtime.Create
         (The_Config.all, Configurations.Find_Agent (The_Config.all, To_String (A.Id)),
          The_Clock);
@@ -164,7 +164,7 @@ package body Sancta.Commands.Managed_Agents is
 
    procedure Run
      (Config : Sancta.Runtime.Configurations.Configuration;
-      Agents : Sancta.Runtime.Databases.Key_Vectors.Vector;
+      Agents : Sancta.Runtime.Local_Databases.Key_Vectors.Vector;
       Clock  : Sancta.Runtime.Clocks.Clock_Access;
       Limit  : Duration)
    is

@@ -18,7 +18,7 @@
 --     rclada lifecycle set /sancta_Ari activate
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Configurations;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 
 package Sancta.Commands.Managed_Agents is
 
@@ -28,7 +28,7 @@ package Sancta.Commands.Managed_Agents is
 
    procedure Run
      (Config : Sancta.Runtime.Configurations.Configuration;
-      Agents : Sancta.Runtime.Databases.Key_Vectors.Vector;
+      Agents : Sancta.Runtime.Local_Databases.Key_Vectors.Vector;
       Clock  : Sancta.Runtime.Clocks.Clock_Access;
       Limit  : Duration)
      with Pre => not Agents.Is_Empty;

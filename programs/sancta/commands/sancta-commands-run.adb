@@ -5,20 +5,20 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Commands.Managed_Agents;
 with Sancta.Commands.Options;
-with Sancta.Components.All_Standard;
+with Sancta.Standard_Components.All_Standard;
 with Sancta.Logging;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
-with Sancta.Runtime.Databases;
-with Sancta.Runtime.Nodes;
-with Sancta.Components.ROS_Clocks;
+with Sancta.Runtime.Local_Databases;
+with Sancta.Runtime.Component_Hosts;
+with Sancta.Standard_Components.ROS_Clocks;
 with RCL.Clocks;
 with Sancta.Runtime.Shutdown;
 
 package body Sancta.Commands.Run is
 
-   pragma Warnings (Off, Sancta.Components.All_Standard);
+   pragma Warnings (Off, Sancta.Standard_Components.All_Standard);
    --  Withed for its registrations only.
 
    use Ada.Command_Line;
@@ -34,16 +34,16 @@ package body Sancta.Commands.Run is
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
 
-   Sim_Clock : aliased Sancta.Components.ROS_Clocks.ROS_Clock;
+   Sim_Clock : aliased Sancta.Standard_Components.ROS_Clocks.ROS_Clock;
    --  With --sim-time (or use_sim_time:=true): the agents run on ROS time
    --  following /clock (a simulator's time), not on the wall clock.
 
-   type Node_Access is access Sancta.Runtime.Nodes.Node;
-   type Node_Array is array (Positive range <>) of Node_Access;
+   type Host_Access is access Sancta.Runtime.Component_Hosts.Component_Host;
+   type Host_Array is array (Positive range <>) of Host_Access;
 
    procedure Run is
       File      : Unbounded_String;
-      Agents    : Sancta.Runtime.Databases.Key_Vectors.Vector;
+      Agents    : Sancta.Runtime.Local_Databases.Key_Vectors.Vector;
       All_Of    : Boolean := False;
       Limit     : Duration := 0.0;
       Overrides : Sancta.Runtime.Components.String_Maps.Map;
@@ -164,7 +164,7 @@ package body Sancta.Commands.Run is
       end loop;
 
       declare
-         Nodes    : Node_Array (1 .. Natural (Agents.Length));
+         Hosts    : Host_Array (1 .. Natural (Agents.Length));
          Created  : Natural := 0;
          Attached : Boolean;
          Done     : Boolean;
@@ -192,14 +192,14 @@ package body Sancta.Commands.Run is
             return;
          end if;
          begin
-            for Index in Nodes'Range loop
-               Nodes (Index) := new Sancta.Runtime.Nodes.Node;
+            for Index in Hosts'Range loop
+               Hosts (Index) := new Sancta.Runtime.Component_Hosts.Component_Host;
                Created := Index;
-               Nodes (Index).Create
+               Hosts (Index).Create
                  (Config, Configurations.Find_Agent (Config, Agents (Index)),
                   Time_Of);
             end loop;
-            for N of Nodes loop
+            for N of Hosts loop
                N.Start;
             end loop;
          exception
@@ -214,10 +214,10 @@ package body Sancta.Commands.Run is
                              "stopping: " & (if Shutdown.Requested then Shutdown.Reason
                                              else "time limit reached"));
          for Index in reverse 1 .. Created loop
-            Nodes (Index).Stop;
+            Hosts (Index).Stop;
             if Stats then
-               Put_Line ("statistics of agent " & Nodes (Index).Id & ":");
-               Put (Nodes (Index).Statistics);
+               Put_Line ("statistics of agent " & Hosts (Index).Id & ":");
+               Put (Hosts (Index).Statistics);
             end if;
          end loop;
          Sim_Clock.Stop;

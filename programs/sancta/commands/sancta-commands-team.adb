@@ -6,7 +6,7 @@ with Sancta.Team.Agents;
 with Sancta.Commands.Options;
 with Sancta.Installation;
 with Sancta.Simulation;
-with Sancta.Team.Demos;
+with Sancta.Commands.Team_Demos;
 with Sancta.Team.Missions;
 
 package body Sancta.Commands.Team is
@@ -25,10 +25,10 @@ package body Sancta.Commands.Team is
    function Default_Mission return String is (Installation.Share_File ("missions/office-team.xml"));
 
    procedure Run is
-      Config : Sancta.Team.Demos.Demo_Config;
+      Config : Sancta.Commands.Team_Demos.Demo_Config;
       Check  : Boolean := False;
       I      : Positive := 2;
-      Result : Sancta.Team.Demos.Demo_Result;
+      Result : Sancta.Commands.Team_Demos.Demo_Result;
 
       function Value return String is (Options.Next_Value (I));
       function Number (Text : String; Name : String) return Long_Float is
@@ -81,10 +81,10 @@ package body Sancta.Commands.Team is
          end;
          I := I + 1;
       end loop;
-      Sancta.Team.Demos.Run (Config, Result);
-      Sancta.Team.Demos.Print_Summary (Result);
+      Sancta.Commands.Team_Demos.Run (Config, Result);
+      Sancta.Commands.Team_Demos.Print_Summary (Result);
       if Check then
-         if Sancta.Team.Demos.Check_Passed (Result) then
+         if Sancta.Commands.Team_Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once)");
          else
             Put_Line ("check: FAILED");

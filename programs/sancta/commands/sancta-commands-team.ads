@@ -1,4 +1,4 @@
---  "sancta team": the team mission demo (Sancta.Team.Demos).
+--  "sancta team": the team mission demo (Sancta.Commands.Team_Demos).
 --
 --     sancta team [MISSION.xml] [--method annealer|auctions] [--rate 25]
 --        [--kill ID | --no-kill] [--kill-at 0.3] [--lease 0.5] [--max 1200]

@@ -1,4 +1,4 @@
---  Not for users: growable byte buffers with MCAP's little-endian encoding
+--  Growable byte buffers with MCAP's little-endian encoding
 --  of integers, strings (uint32 length, then the bytes) and byte fields.
 --  Example:
 --     B.Put_U8 (16#05#);  B.Put_U64 (Length);  B.Put_String ("/chatter");

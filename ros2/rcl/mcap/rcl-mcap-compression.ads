@@ -1,4 +1,4 @@
---  Not for users: chunk compression through thin bindings to the system's
+--  Chunk compression through thin bindings to the system's
 --  libzstd (Zstandard frames) and liblz4 (LZ4 frames, as MCAP requires).
 --  Example:
 --     Last := Compress (Zstd, Chunk, Into => Buffer);  --  Buffer (1 .. Last)

@@ -10,7 +10,7 @@ with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
-with ROSIDL.Parser.Values;
+with ROSIDL.Parser.Literals;
 with ROSIDL.Typesupport;
 
 package body ROSIDL.Parser.Tests is
@@ -715,7 +715,7 @@ package body ROSIDL.Parser.Tests is
    ---------------------------------------------------------------------------
 
    procedure Value_Rules (Unused : in out Fixture) is
-      use ROSIDL.Parser.Values;
+      use ROSIDL.Parser.Literals;
 
       procedure Good (Kind : Element_Kind; Text, Normal : String; Bound : Natural := 0) is
          R : constant Check_Result := Check_Scalar (Kind, Bound, Text);

@@ -6,16 +6,16 @@ with Ada.Text_IO;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
-with Sancta.Components.All_Standard;
+with Sancta.Standard_Components.All_Standard;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Factory;
-with Sancta.Runtime.Nodes;
+with Sancta.Runtime.Component_Hosts;
 with Sancta.Runtime.Values;
 with Sancta.Geometry;
 
 package body Sancta.Runtime.Configurations.Tests is
 
-   pragma Warnings (Off, Sancta.Components.All_Standard);
+   pragma Warnings (Off, Sancta.Standard_Components.All_Standard);
 
    use AUnit.Assertions;
    use type Sancta.Geometry.Pose;
@@ -121,7 +121,7 @@ package body Sancta.Runtime.Configurations.Tests is
    procedure Listing_1_1 (Unused : in out Fixture) is
       Config : Configuration;
       Clock  : aliased Clocks.Manual_Clock;
-      Node   : Nodes.Node;
+      Host   : Component_Hosts.Component_Host;
    begin
       Load ("share/config/listing-1.1.xml", Config);
       Assert (Error_Count (Config) = 0, "errors:" & ASCII.LF & Diagnostics_Text (Config));
@@ -147,15 +147,15 @@ package body Sancta.Runtime.Configurations.Tests is
          Assert (Key_Of (SM, Components.Output, "pose") = "corrected_pose:types.pose",
                  "scan matching provides corrected_pose");
       end;
-      Node.Create (Config, 1, Clock'Unchecked_Access);
-      Node.Start (Run_Scheduler_Task => False);
-      Node.Scheduler.Step;
-      Assert (Node.Database.Contains ("odometric_pose"), "odometry ran");
-      Assert (Node.Database.Contains ("corrected_pose"), "scan matching reacted");
-      Assert (Values.Pose_Value (Node.Database.Get ("corrected_pose")).Data
-              = Values.Pose_Value (Node.Database.Get ("odometric_pose")).Data,
+      Host.Create (Config, 1, Clock'Unchecked_Access);
+      Host.Start (Run_Scheduler_Task => False);
+      Host.Scheduler.Step;
+      Assert (Host.Database.Contains ("odometric_pose"), "odometry ran");
+      Assert (Host.Database.Contains ("corrected_pose"), "scan matching reacted");
+      Assert (Values.Pose_Value (Host.Database.Get ("corrected_pose")).Data
+              = Values.Pose_Value (Host.Database.Get ("odometric_pose")).Data,
               "identity correction by default");
-      Node.Stop;
+      Host.Stop;
    end Listing_1_1;
 
    --  Constants (with an override), groups shared by two agents, an

@@ -3,7 +3,7 @@ with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Logging;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 
 package body Sancta.Runtime.Schedulers.Tests is
@@ -54,7 +54,7 @@ package body Sancta.Runtime.Schedulers.Tests is
 
    function New_Recorder
      (Clock      : Clocks.Clock_Access;
-      DB         : Databases.Database_Access;
+      DB         : Local_Databases.Database_Access;
       Label      : String;
       Period_Ms  : Natural;
       Cost_Ms    : Natural := 0;
@@ -86,7 +86,7 @@ package body Sancta.Runtime.Schedulers.Tests is
    --  Three periods; ties are served in the order the calls were queued.
    procedure Order_And_Periods (Unused : in out Fixture) is
       Clock : aliased Clocks.Manual_Clock;
-      DB    : aliased Databases.Database;
+      DB    : aliased Local_Databases.Database;
       S     : Scheduler;
    begin
       Trace := Null_Unbounded_String;
@@ -104,7 +104,7 @@ package body Sancta.Runtime.Schedulers.Tests is
    --  0, 10, 20, ... (next = previous due + period, not now + period).
    procedure Drift_Free (Unused : in out Fixture) is
       Clock : aliased Clocks.Manual_Clock;
-      DB    : aliased Databases.Database;
+      DB    : aliased Local_Databases.Database;
       S     : Scheduler;
       C     : constant Components.Component_Access :=
         New_Recorder (Clock'Unchecked_Access, DB'Unchecked_Access, "A", 10, Cost_Ms => 3);
@@ -124,7 +124,7 @@ package body Sancta.Runtime.Schedulers.Tests is
    --  the "cannot keep up" warning comes once the lateness passes the limit.
    procedure Overruns (Unused : in out Fixture) is
       Clock  : aliased Clocks.Manual_Clock;
-      DB     : aliased Databases.Database;
+      DB     : aliased Local_Databases.Database;
       S      : Scheduler;
       C      : constant Components.Component_Access :=
         New_Recorder (Clock'Unchecked_Access, DB'Unchecked_Access, "A", 10, Cost_Ms => 15);
@@ -155,7 +155,7 @@ package body Sancta.Runtime.Schedulers.Tests is
    --  Stop: one failure and no more calls. The other component goes on.
    procedure Failure_Policies (Unused : in out Fixture) is
       Clock   : aliased Clocks.Manual_Clock;
-      DB      : aliased Databases.Database;
+      DB      : aliased Local_Databases.Database;
       S       : Scheduler;
       Retried : constant Components.Component_Access :=
         New_Recorder (Clock'Unchecked_Access, DB'Unchecked_Access, "R", 100, Fail_Calls => 2);
@@ -209,7 +209,7 @@ package body Sancta.Runtime.Schedulers.Tests is
 
    procedure Event_Driven (Unused : in out Fixture) is
       Clock : aliased Clocks.Manual_Clock;
-      DB    : aliased Databases.Database;
+      DB    : aliased Local_Databases.Database;
       D     : constant Doubler_Access := new Doubler;
       E     : constant Doubler_Access := new Doubler;
       Ctx   : Components.Context :=
@@ -289,7 +289,7 @@ package body Sancta.Runtime.Schedulers.Tests is
 
    procedure Serialised_Inputs (Unused : in out Fixture) is
       Clock : aliased Clocks.Manual_Clock;
-      DB    : aliased Databases.Database;
+      DB    : aliased Local_Databases.Database;
       C     : constant Counter_Access := new Counter_Component;
       Ctx   : Components.Context :=
         (Agent_Id => To_Unbounded_String ("Test"), Instance_Name => To_Unbounded_String ("cnt"),

@@ -8,7 +8,7 @@ with Sancta.Simulation.Deflate;  use Sancta.Simulation.Deflate;
 
 package body Sancta.Simulation.Map_Files.Tests is
 
-   use Images;
+   use Raster_Images;
    use type Interfaces.Unsigned_32;
    use type Interfaces.Unsigned_8;
 
@@ -49,8 +49,8 @@ package body Sancta.Simulation.Map_Files.Tests is
       Zlib_Decompress (Stored_Stream, Output, Last);
       Assert (Output (0 .. Last) = Bytes ("abc"), "stored block");
       declare
-         Packed : constant Byte_Array := Images.Read_File (Dir & "dynamic.zz");
-         Plain  : constant Byte_Array := Images.Read_File (Dir & "dynamic.txt");
+         Packed : constant Byte_Array := Raster_Images.Read_File (Dir & "dynamic.zz");
+         Plain  : constant Byte_Array := Raster_Images.Read_File (Dir & "dynamic.txt");
          Bad    : Byte_Array := Packed;
          Raised : Boolean := False;
       begin

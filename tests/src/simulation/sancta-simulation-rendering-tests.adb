@@ -7,12 +7,12 @@ with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Robot.Grids;
 with Sancta.Simulation.Glyphs;
-with Sancta.Simulation.Images;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 
 package body Sancta.Simulation.Rendering.Tests is
 
-   use Images;
+   use Raster_Images;
    use type Robot.Grids.Frame;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
@@ -118,8 +118,8 @@ package body Sancta.Simulation.Rendering.Tests is
    end SVG_And_CSV;
 
    procedure Text_In_Pictures (Unused : in out Fixture) is
-      use type Images.Color;
-      Img : Images.Image := Images.Create (40, 12);
+      use type Raster_Images.Color;
+      Img : Raster_Images.Image := Raster_Images.Create (40, 12);
       function Inked_Pixels (C : Character) return Natural is
          N : Natural := 0;
       begin
@@ -130,7 +130,7 @@ package body Sancta.Simulation.Rendering.Tests is
          end loop;
          return N;
       end Inked_Pixels;
-      Red : constant Images.Color := (200, 0, 0);
+      Red : constant Raster_Images.Color := (200, 0, 0);
       Count : Natural := 0;
    begin
       Assert (Glyphs.Is_Inked ('1', 3, 1) and then not Glyphs.Is_Inked ('1', 1, 1), "glyph 1");
@@ -147,7 +147,7 @@ package body Sancta.Simulation.Rendering.Tests is
       Glyphs.Draw_Text (Img, 2, 3, "r1>t2", Red);
       for Y in 1 .. 12 loop
          for X in 1 .. 40 loop
-            if Images.Get (Img, X, Y) = Red then
+            if Raster_Images.Get (Img, X, Y) = Red then
                Count := Count + 1;
                Assert (X in 2 .. 2 + Glyphs.Text_Width ("r1>t2") and then Y in 3 .. 9,
                        "ink outside the text box");

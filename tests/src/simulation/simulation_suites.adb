@@ -1,4 +1,4 @@
-with Sancta.Components.Navigation.Tests;
+with Sancta.Standard_Components.Navigation.Tests;
 with Sancta.Robot.Tests;
 with Sancta.Simulation.Map_Files.Tests;
 with Sancta.Simulation.Rendering.Tests;
@@ -14,7 +14,7 @@ package body Simulation_Suites is
       Result.Add_Test (Sancta.Simulation.Map_Files.Tests.Suite);
       Result.Add_Test (Sancta.Simulation.Rendering.Tests.Suite);
       Result.Add_Test (Sancta.Robot.Tests.Suite);
-      Result.Add_Test (Sancta.Components.Navigation.Tests.Suite);
+      Result.Add_Test (Sancta.Standard_Components.Navigation.Tests.Suite);
       return Result;
    end Suite;
 

@@ -7,11 +7,11 @@ with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Sancta.Geometry;
-with Sancta.Runtime.Databases;
+with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
 with Sancta.Team.Agents;
-with Sancta.Team.Databases;
-with Sancta.Team.Demos;
+with Sancta.Team.Replicated_Databases;
+with Sancta.Commands.Team_Demos;
 with Sancta.Team.Goal_Trackers;
 with Sancta.Team.Grid_Costs;
 with Sancta.Robot.Grids;
@@ -22,7 +22,7 @@ with Sancta.Team.Plans;
 package body Sancta.Team.Tests is
 
    use Sancta.Team.Networks;
-   use Sancta.Team.Databases;
+   use Sancta.Team.Replicated_Databases;
    use type Ada.Containers.Count_Type;
    use type Plans.Tour_Vectors.Vector;
 
@@ -171,7 +171,7 @@ package body Sancta.Team.Tests is
 
    --  Replicated database -------------------------------------------------------------
 
-   type Counter is new Runtime.Databases.Listener with record
+   type Counter is new Runtime.Local_Databases.Listener with record
       Calls : Natural := 0;
       Last  : Unbounded_String;
    end record;
@@ -324,6 +324,50 @@ package body Sancta.Team.Tests is
       B.Net.Stop;
       C.Net.Stop;
    end Test_Cut_And_Rejoin;
+
+   procedure Test_Republish_Rule (T : in out Fixture) is
+      --  On a join a node republishes what it wrote, what the joiner wrote
+      --  and what writers no longer members wrote; not the entries of the
+      --  other members (they republish those themselves).
+      pragma Unreferenced (T);
+      A : constant Node := Make ("t_repub", "a");
+      B : constant Node := Make ("t_repub", "b");
+      function Met return Boolean is (A.Net.Is_Member ("b") and then B.Net.Is_Member ("a"));
+      function Has_All return Boolean is (A.Db.Keys.Length = 15);
+      function B_Gone return Boolean is (not A.Net.Is_Member ("b"));
+      Before : Long_Long_Integer;
+   begin
+      A.Net.Start;
+      B.Net.Start;
+      Assert (Wait_Until (Met'Access), "a and b never met");
+      for K in 1 .. 10 loop
+         A.Db.Put ("a/" & K'Image, "from a");
+      end loop;
+      for K in 1 .. 5 loop
+         B.Db.Put ("b/" & K'Image, "from b");
+      end loop;
+      Assert (Wait_Until (Has_All'Access), "a holds" & A.Db.Keys.Length'Image & " keys, not 15");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise;
+      Assert (A.Db.Republished_Count - Before = 10,
+              "a republished" & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries with b a member; expected its own 10");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise (Joined => "b");
+      Assert (A.Db.Republished_Count - Before = 15,
+              "on b's join a republished"
+              & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries; expected 15 (b may have restarted and lost its own)");
+      B.Net.Stop;
+      Assert (Wait_Until (B_Gone'Access), "b never lost");
+      Before := A.Db.Republished_Count;
+      A.Db.Resynchronise;
+      Assert (A.Db.Republished_Count - Before = 15,
+              "with b gone a republished"
+              & Long_Long_Integer'Image (A.Db.Republished_Count - Before)
+              & " entries; expected 15 (nobody else holds b's)");
+      A.Net.Stop;
+   end Test_Republish_Rule;
 
    --  Missions and plans ---------------------------------------------------------------
 
@@ -561,8 +605,8 @@ package body Sancta.Team.Tests is
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
-      Config : Demos.Demo_Config;
-      Result : Demos.Demo_Result;
+      Config : Commands.Team_Demos.Demo_Config;
+      Result : Commands.Team_Demos.Demo_Result;
       M      : constant Missions.Mission := Missions.Read ("share/missions/office-team.xml");
    begin
       Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
@@ -571,7 +615,7 @@ package body Sancta.Team.Tests is
       Config.Verbose := False;
       Config.Team := To_Unbounded_String (Team);
       Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
-      Demos.Run (Config, Result);
+      Commands.Team_Demos.Run (Config, Result);
       Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
       Assert (Result.Replanned, "the survivors did not re-plan");
       Assert (Result.All_Done, "not all tasks done:" & Result.Tasks_Done'Image);
@@ -619,6 +663,8 @@ package body Sancta.Team.Tests is
       Add ("replicated database converges under concurrent writes", Test_Convergence'Access);
       Add ("late joiner gets the state", Test_Late_Joiner'Access);
       Add ("cut-off node catches up after rejoining", Test_Cut_And_Rejoin'Access);
+      Add ("a join republishes own, joiner's and departed writers' entries",
+           Test_Republish_Rule'Access);
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);

@@ -1,0 +1,777 @@
+with Interfaces;
+with Ada.Directories;
+with Ada.Real_Time;
+with Ada.Strings.Fixed;
+with Ada.Text_IO;
+with Sancta.Robot.Navigators;
+with Sancta.Runtime.Values;
+with Sancta.Simulation.Glyphs;
+with Sancta.Simulation.Raster_Images;
+with Sancta.Simulation.Map_Files;
+with Sancta.Simulation.Simulators;
+with Sancta.Team.Missions;
+
+package body Sancta.Commands.Team_Demos is
+
+   use Ada.Text_IO;
+   use Sancta.Geometry;
+   use Sancta.Simulation;
+   use Sancta.Simulation.Simulators;
+
+   function Img (X : Long_Float) return String renames Runtime.Values.Real_Image;
+
+   function F1 (X : Long_Float) return String is
+      Scaled : constant Long_Long_Integer := Long_Long_Integer (X * 10.0);
+      Whole  : constant String :=
+        Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Scaled / 10), Ada.Strings.Left);
+   begin
+      return (if Scaled < 0 then "-" else "") & Whole & "."
+        & Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Scaled mod 10), Ada.Strings.Left);
+   end F1;
+
+   function Trim (N : Integer) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
+   --  Planned tours as polylines (for the pictures) -------------------------------
+
+   function Planned_Scene
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null) return Rendering.Scene
+   is
+      Result : Rendering.Scene;
+   begin
+      for R of Ids loop
+         declare
+            Path : Rendering.Point_Vectors.Vector;
+         begin
+            for K in 1 .. Natural (S.Robots.Length) loop
+               if S.Robots (K).Id = R.Id and then K <= Natural (P.Tours.Length) then
+                  Path.Append (S.Robots (K).Where);
+                  for St of P.Tours (K) loop
+                     declare
+                        T : constant Missions.Mission_Task :=
+                          Plans.Task_Of (S, To_String (St.Task_Id));
+                     begin
+                        if Map /= null and then not Path.Is_Empty then
+                           --  The leg along the A* path the robot would drive.
+                           for W of Robot.Path_Costs.Path
+                             (Map.all, Path.Last_Element, Missions.Entry_Point (T, St.Choice))
+                           loop
+                              Path.Append (W);
+                           end loop;
+                        end if;
+                        Path.Append (Missions.Entry_Point (T, St.Choice));
+                        Path.Append (Missions.Exit_Point (T, St.Choice));
+                        Result.Markers.Append
+                          (Rendering.Marker'(Missions.Entry_Point (T, St.Choice),
+                                             St.Task_Id & ">" & R.Id));
+                     end;
+                  end loop;
+               end if;
+            end loop;
+            Result.Trajectories.Append (Path);
+         end;
+      end loop;
+      return Result;
+   end Planned_Scene;
+
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector
+   is
+      Result : Completion_Vectors.Vector;
+   begin
+      for K in 1 .. Natural'Min (Natural (S.Robots.Length), Natural (P.Tours.Length)) loop
+         if To_String (S.Robots (K).Id) = Robot then
+            for St of P.Tours (K) loop
+               if not Is_Done (To_String (St.Task_Id)) then
+                  Result.Append (Completion'(Task_Id => St.Task_Id, others => <>));
+               end if;
+            end loop;
+         end if;
+      end loop;
+      return Result;
+   end Unfinished;
+
+   function Check_Passed (Result : Demo_Result) return Boolean is
+      Passed : Boolean := Result.All_Done and then Result.Duplicates = 0;
+   begin
+      if Result.Killed /= Null_Unbounded_String then
+         Passed := Passed and then Result.Replanned;
+         for O of Result.Orphans loop
+            Passed := Passed and then O.Robot /= Null_Unbounded_String
+              and then O.Robot /= Result.Killed;
+         end loop;
+      end if;
+      return Passed;
+   end Check_Passed;
+
+   procedure Resolve_Orphans (Result : in out Demo_Result) is
+   begin
+      for O of Result.Orphans loop
+         for C of Result.Completions loop
+            if C.Task_Id = O.Task_Id then
+               O.Robot := C.Robot;
+               O.Time := C.Time;
+            end if;
+         end loop;
+      end loop;
+   end Resolve_Orphans;
+
+   -----------------
+   -- Write_Gantt --
+   -----------------
+
+   procedure Write_Gantt (Result : Demo_Result; Dir : String) is
+      --  Tasks per robot over simulated time: a bar per task from the
+      --  robot's previous completion (or the start) to its own; the loss
+      --  of a robot and the re-plan as vertical lines. gantt.svg, gantt.png.
+      package Glyphs renames Sancta.Simulation.Glyphs;
+      Rows    : constant Natural := Natural (Result.Robots.Length);
+      Left    : constant := 64;
+      Row_H   : constant := 26;
+      Top     : constant := 30;
+      Width   : constant := 900;
+      Span    : constant Long_Float :=
+        Long_Float'Max (1.0, Long_Float'Max (Result.Makespan, Result.Kill_Time + 1.0));
+      Plot_W  : constant Natural := Width - Left - 16;
+      Height  : constant Natural := Top + Rows * Row_H + 44;
+      Px      : constant Long_Float := Long_Float (Plot_W) / Span;
+      Tick    : constant Long_Float :=
+        (if Span <= 60.0 then 10.0 elsif Span <= 300.0 then 30.0 else 60.0);
+      Replan  : constant Long_Float := Result.Kill_Time + Result.Replan_Sim;
+      Red     : constant Raster_Images.Color := (200, 0, 0);
+      Orange  : constant Raster_Images.Color := (230, 130, 0);
+      Img     : Raster_Images.Image := Raster_Images.Create (Width, Height);
+      SVG     : File_Type;
+
+      function X_Of (T : Long_Float) return Integer is (Left + Integer (T * Px));
+      function Row_Y (R : Positive) return Integer is (Top + (R - 1) * Row_H);
+
+      procedure Box (X0, Y0, X1, Y1 : Integer; C : Raster_Images.Color) is
+      begin
+         for X in X0 .. X1 loop
+            for Y in Y0 .. Y1 loop
+               Raster_Images.Set (Img, X, Y, C);
+            end loop;
+         end loop;
+      end Box;
+
+      procedure Mark
+        (T : Long_Float; C : Raster_Images.Color; Label, Hex : String; Line : Natural) is
+         X : constant Integer := X_Of (T);
+         W : constant Natural := Glyphs.Text_Width (Label);
+         LX : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));
+         LY : constant Integer := Top + Rows * Row_H + 18 + Line * 11;
+      begin
+         Box (X, Top - 4, X + 1, Top + Rows * Row_H, C);
+         Glyphs.Draw_Text (Img, LX, LY, Label, C, Halo => False);
+         Put_Line (SVG, "<line class=""event"" x1=""" & Trim (X) & """ y1="""
+                   & Trim (Top - 4) & """ x2=""" & Trim (X) & """ y2="""
+                   & Trim (Top + Rows * Row_H) & """ stroke=""" & Hex
+                   & """ stroke-width=""2"" stroke-dasharray=""5,3""/>");
+         Put_Line (SVG, "<text class=""label"" x=""" & Trim (LX) & """ y="""
+                   & Trim (LY + 9) & """ data-width=""" & Trim (Label'Length * 7)
+                   & """ fill=""" & Hex & """ font-size=""11"" font-family=""sans-serif"">"
+                   & Label & "</text>");
+      end Mark;
+   begin
+      Create (SVG, Out_File, Dir & "/gantt.svg");
+      Put_Line (SVG, "<?xml version=""1.0"" encoding=""UTF-8""?>");
+      Put_Line (SVG, "<svg xmlns=""http://www.w3.org/2000/svg"" width=""" & Trim (Width)
+                & """ height=""" & Trim (Height) & """ viewBox=""0 0 " & Trim (Width) & " "
+                & Trim (Height) & """>");
+      Put_Line (SVG, "<rect width=""100%"" height=""100%"" fill=""white""/>");
+      Put_Line (SVG, "<text class=""title"" x=""8"" y=""18"" font-size=""14"""
+                & " font-weight=""bold"" font-family=""sans-serif"">Tasks per robot over"
+                & " simulated time (s)</text>");
+      Glyphs.Draw_Text (Img, 8, 8, "Tasks per robot over simulated time (s)", Raster_Images.Black,
+                        Halo => False);
+      --  Time axis.
+      declare
+         T : Long_Float := 0.0;
+      begin
+         while T <= Span loop
+            declare
+               X    : constant Integer := X_Of (T);
+               Text : constant String := Trim (Integer (T));
+            begin
+               Box (X, Top + Rows * Row_H, X, Top + Rows * Row_H + 4, Raster_Images.Black);
+               for Y in Top .. Top + Rows * Row_H loop
+                  if Y mod 3 = 0 then
+                     Raster_Images.Set (Img, X, Y, (200, 200, 200));
+                  end if;
+               end loop;
+               Glyphs.Draw_Text (Img, X - Glyphs.Text_Width (Text) / 2, Top + Rows * Row_H + 6,
+                                 Text, Raster_Images.Black, Halo => False);
+               Put_Line (SVG, "<line x1=""" & Trim (X) & """ y1=""" & Trim (Top)
+                         & """ x2=""" & Trim (X) & """ y2=""" & Trim (Top + Rows * Row_H + 4)
+                         & """ stroke=""#c8c8c8""/>");
+               Put_Line (SVG, "<text class=""tick"" x=""" & Trim (X) & """ y="""
+                         & Trim (Top + Rows * Row_H + 15) & """ text-anchor=""middle"""
+                         & " font-size=""10"" font-family=""sans-serif"">" & Text & "</text>");
+            end;
+            T := T + Tick;
+         end loop;
+      end;
+      for R in 1 .. Rows loop
+         declare
+            Id    : constant String := To_String (Result.Robots (R).Id);
+            Color : constant Raster_Images.Color := Rendering.Color_Of (R);
+            Hex   : constant String := Rendering.Hex (Color);
+            Y     : constant Integer := Row_Y (R);
+            Since : Long_Float := 0.0;
+         begin
+            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
+            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
+                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
+            for C of Result.Completions loop
+               if To_String (C.Robot) = Id then
+                  declare
+                     X0   : constant Integer := X_Of (Since);
+                     X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+                     Name : constant String := To_String (C.Task_Id);
+                  begin
+                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
+                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
+                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                               & Trim (Row_H - 8) & """ fill=""" & Hex
+                               & """ stroke=""white""><title>" & Name & " done at "
+                               & F1 (C.Time) & " s</title></rect>");
+                     --  The task's name inside its bar when it fits there.
+                     if Glyphs.Text_Width (Name) + 4 <= X1 - X0 then
+                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Raster_Images.White,
+                                          Halo => False);
+                     end if;
+                     if Name'Length * 7 + 4 <= X1 - X0 then
+                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                                  & Trim (Name'Length * 7) & """ fill=""white"""
+                                  & " font-size=""11"" font-family=""sans-serif"">" & Name
+                                  & "</text>");
+                     end if;
+                     Since := C.Time;
+                  end;
+               end if;
+            end loop;
+            if Id = To_String (Result.Killed) then
+               --  Lost: the rest of its row hatched.
+               for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
+                  for Yy in Y + 4 .. Y + Row_H - 4 loop
+                     if (X + Yy) mod 6 = 0 then
+                        Raster_Images.Set (Img, X, Yy, Red);
+                     end if;
+                  end loop;
+               end loop;
+               Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
+                         & """ y=""" & Trim (Y + 4) & """ width="""
+                         & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
+                         & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
+            end if;
+         end;
+      end loop;
+      if Result.Killed /= Null_Unbounded_String then
+         Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000", 0);
+         if Result.Replanned then
+            Mark (Replan, Orange, "re-planned", "#e68200", 1);
+         end if;
+      end if;
+      Put_Line (SVG, "</svg>");
+      Close (SVG);
+      Raster_Images.Save_PNG (Img, Dir & "/gantt.png");
+   end Write_Gantt;
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Worlds.World;
+      Scene  : Rendering.Scene;
+      Dir    : String)
+   is
+      F   : File_Type;
+      Map : aliased Robot.Path_Costs.Planner;
+      Lost : constant String :=
+        (if Result.Killed = Null_Unbounded_String then ""
+         else To_String (Result.Killed) & " lost at " & F1 (Result.Kill_Time) & " s");
+
+      procedure Picture (Name, Title : String; S : Rendering.Scene; Tasks : Boolean) is
+         --  With a title, a legend (a colour per robot; the planned tasks'
+         --  crosses) and a scale bar.
+         Framed : Rendering.Scene := S;
+      begin
+         Framed.Title := To_Unbounded_String (Title);
+         for R in 1 .. Natural (Result.Robots.Length) loop
+            Framed.Legend.Append
+              (Rendering.Legend_Entry'(Rendering.Color_Of (R),
+                Result.Robots (R).Id
+                & (if Result.Robots (R).Id = Result.Killed then " (lost)" else "")));
+         end loop;
+         if Tasks then
+            Framed.Legend.Append
+              (Rendering.Legend_Entry'((200, 0, 0), To_Unbounded_String ("x task>robot")));
+         end if;
+         Framed.Scale_Bar := True;
+         Rendering.Write_SVG (World, Framed, Dir & "/" & Name & ".svg");
+         Raster_Images.Save_PNG (Rendering.Render (World, Framed), Dir & "/" & Name & ".png");
+      end Picture;
+   begin
+      Ada.Directories.Create_Path (Dir);
+      Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
+      Picture ("trajectories", "Trajectories, " & Trim (Result.Tasks_Done) & "/"
+               & Trim (Result.Tasks_Total) & " tasks done in " & F1 (Result.Makespan) & " s"
+               & (if Lost = "" then "" else ", " & Lost), Scene, Tasks => False);
+      if Result.Plan_Before.Generation > 0 then
+         Picture ("plan-before", "First plan (round" & Result.Plan_Before.Generation'Image
+                  & "), makespan " & F1 (Result.Planned_Makespan) & " m",
+                  Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
+                                 Map'Access), Tasks => True);
+      end if;
+      if Result.Plan_After.Generation > 0 then
+         Picture ("plan-after", "Plan after the re-planning (round"
+                  & Result.Plan_After.Generation'Image & ")"
+                  & (if Lost = "" then "" else ", " & Lost),
+                  Planned_Scene (Result.Round_After, Result.Plan_After, Result.Robots,
+                                 Map'Access), Tasks => True);
+      end if;
+      Write_Gantt (Result, Dir);
+      Create (F, Out_File, Dir & "/summary.json");
+      Put (F, Summary_JSON (Result));
+      Close (F);
+      Put_Line ("report: " & Dir & "/{summary.json,trajectories,plan-before,plan-after}"
+                & ".{svg,png}, gantt.{svg,png}");
+   end Write_Report;
+
+   function Summary_JSON (Result : Demo_Result) return String is
+      J : Unbounded_String;
+      function Q (S : String) return String renames Runtime.Values.JSON_String;
+   begin
+      Append (J, "{" & ASCII.LF);
+      Append (J, "  ""tasks_total"": " & Trim (Result.Tasks_Total) & "," & ASCII.LF);
+      Append (J, "  ""tasks_done"": " & Trim (Result.Tasks_Done) & "," & ASCII.LF);
+      Append (J, "  ""duplicates"": " & Trim (Result.Duplicates) & "," & ASCII.LF);
+      Append (J, "  ""all_done"": " & (if Result.All_Done then "true" else "false") & ","
+              & ASCII.LF);
+      Append (J, "  ""makespan_s"": " & Img (Result.Makespan) & "," & ASCII.LF);
+      Append (J, "  ""killed"": " & Q (To_String (Result.Killed)) & "," & ASCII.LF);
+      Append (J, "  ""kill_time_s"": " & Img (Result.Kill_Time) & "," & ASCII.LF);
+      Append (J, "  ""replanned"": " & (if Result.Replanned then "true" else "false") & ","
+              & ASCII.LF);
+      Append (J, "  ""replan_wall_s"": " & Img (Result.Replan_Wall) & "," & ASCII.LF);
+      Append (J, "  ""replan_sim_s"": " & Img (Result.Replan_Sim) & "," & ASCII.LF);
+      Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
+      Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
+              & ASCII.LF);
+      Append (J, "  ""planned_grid_total_m"": " & Img (Result.Grid_Total) & "," & ASCII.LF);
+      Append (J, "  ""planned_grid_makespan_m"": " & Img (Result.Grid_Makespan) & ","
+              & ASCII.LF);
+      Append (J, "  ""executed_total_m"": " & Img (Result.Executed_Total) & "," & ASCII.LF);
+      Append (J, "  ""rounds"": " & Trim (Result.Rounds) & "," & ASCII.LF);
+      Append (J, "  ""collisions"": " & Trim (Result.Collisions) & "," & ASCII.LF);
+      Append (J, "  ""robots"": [" & ASCII.LF);
+      for K in 1 .. Natural (Result.Robots.Length) loop
+         declare
+            R : constant Robot_Summary := Result.Robots (K);
+         begin
+            Append (J, "    {""id"": " & Q (To_String (R.Id)) & ", ""tasks"": "
+                    & Trim (R.Tasks) & ", ""distance_m"": " & Img (R.Distance)
+                    & ", ""alive"": " & (if R.Alive then "true" else "false") & "}"
+                    & (if K < Natural (Result.Robots.Length) then "," else "") & ASCII.LF);
+         end;
+      end loop;
+      Append (J, "  ]," & ASCII.LF & "  ""completions"": [" & ASCII.LF);
+      for K in 1 .. Natural (Result.Completions.Length) loop
+         declare
+            C : constant Completion := Result.Completions (K);
+         begin
+            Append (J, "    {""task"": " & Q (To_String (C.Task_Id)) & ", ""robot"": "
+                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time) & "}"
+                    & (if K < Natural (Result.Completions.Length) then "," else "")
+                    & ASCII.LF);
+         end;
+      end loop;
+      Append (J, "  ]," & ASCII.LF & "  ""reallocated"": [" & ASCII.LF);
+      for K in 1 .. Natural (Result.Orphans.Length) loop
+         declare
+            C : constant Completion := Result.Orphans (K);
+         begin
+            Append (J, "    {""task"": " & Q (To_String (C.Task_Id)) & ", ""done_by"": "
+                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time) & "}"
+                    & (if K < Natural (Result.Orphans.Length) then "," else "")
+                    & ASCII.LF);
+         end;
+      end loop;
+      Append (J, "  ]" & ASCII.LF & "}" & ASCII.LF);
+      return To_String (J);
+   end Summary_JSON;
+
+   procedure Print_Summary (Result : Demo_Result) is
+   begin
+      Put_Line ("== summary ==");
+      Put_Line ("tasks done:" & Result.Tasks_Done'Image & " /" & Result.Tasks_Total'Image
+                & (if Result.All_Done then "  (all done)" else "  (NOT all done)")
+                & "; completed more than once:" & Result.Duplicates'Image);
+      Put_Line ("robot       tasks   distance (m)");
+      for R of Result.Robots loop
+         Put_Line (Ada.Strings.Fixed.Head (To_String (R.Id) & (if R.Alive then "" else " (lost)"),
+                   12) & Ada.Strings.Fixed.Tail (Trim (R.Tasks), 5) & "   "
+                   & Ada.Strings.Fixed.Tail (F1 (R.Distance), 10));
+      end loop;
+      Put_Line ("makespan: " & F1 (Result.Makespan) & " s (simulated)");
+      if Result.Killed /= Null_Unbounded_String then
+         Put_Line ("robot lost: " & To_String (Result.Killed) & " at " & F1 (Result.Kill_Time)
+                   & " s; re-planned: " & (if Result.Replanned then "yes" else "no")
+                   & ", " & F1 (Result.Replan_Wall) & " s wall ("
+                   & F1 (Result.Replan_Sim) & " s simulated) after the loss, lease included");
+         Put ("its unfinished tasks, re-allocated:");
+         for O of Result.Orphans loop
+            Put (" " & To_String (O.Task_Id) & ">"
+                 & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
+         end loop;
+         New_Line;
+      end if;
+      Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
+                & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
+                & " legs; " & F1 (Result.Grid_Total) & " m, makespan "
+                & F1 (Result.Grid_Makespan) & " m along A* paths");
+      Put_Line ("executed: total distance " & F1 (Result.Executed_Total) & " m; rounds of"
+                & " allocation:" & Result.Rounds'Image & "; collisions:" & Result.Collisions'Image);
+   end Print_Summary;
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Worlds.World)
+   is
+      Map : Robot.Path_Costs.Planner;
+
+      function Leg (From, To : Point) return Long_Float is
+         C : constant Real := Map.Cost (From, To);
+      begin
+         return (if C = Robot.Path_Costs.Unreachable then Long_Float (Distance (From, To))
+                 else Long_Float (C));
+      end Leg;
+   begin
+      Map.Initialize (Worlds.Occupancy (Grid), Robot_Radius => 0.3);
+      Result.Planned_Total := Plans.Total (S, P);
+      Result.Planned_Makespan := Plans.Makespan (S, P);
+      Result.Grid_Total := Plans.Total (S, P, Leg'Access);
+      Result.Grid_Makespan := Plans.Makespan (S, P, Leg'Access);
+   end Note_First_Plan;
+
+   procedure Run (Config : Demo_Config; Result : out Demo_Result) is
+      use type Ada.Real_Time.Time;
+      M       : constant Missions.Mission := Missions.Read (To_String (Config.Mission_File));
+      World_F : constant String :=
+        (if Config.World_File /= Null_Unbounded_String then To_String (Config.World_File)
+         else To_String (M.World));
+      World   : Worlds.World;
+      Map     : Robot.Path_Costs.Planner;
+      Sim     : Simulator;
+      N       : constant Natural := Natural (M.Robots.Length);
+   begin
+      Result := (others => <>);
+      if N < 2 then
+         raise Constraint_Error with To_String (Config.Mission_File)
+           & ": the demo needs at least two <robot> starts";
+      elsif World_F = "" then
+         raise Constraint_Error with To_String (Config.Mission_File)
+           & ": no world (attribute world= of <mission>, or --world)";
+      end if;
+      World := Map_Files.Load_World (World_F);
+      Map.Initialize (Worlds.Occupancy (World), Robot_Radius => 0.3);
+      Sim.Initialize (World, Seed => 1);
+      for R of M.Robots loop
+         if not Map.Is_Free (Position (R.Start)) then
+            raise Missions.Format_Error with To_String (Config.Mission_File) & ": robot "
+              & To_String (R.Id) & ": start " & F1 (Long_Float (R.Start.X)) & ","
+              & F1 (Long_Float (R.Start.Y)) & " is outside the world or in a wall of "
+              & World_F;
+         end if;
+      end loop;
+      for T of M.Tasks loop
+         for P of T.Points loop
+            if not Map.Is_Free (P)
+              or else Map.Cost (Position (M.Robots (1).Start), P) = Robot.Path_Costs.Unreachable
+            then
+               raise Missions.Format_Error with To_String (Config.Mission_File) & ": task "
+                 & To_String (T.Id) & ": point " & F1 (Long_Float (P.X)) & ","
+                 & F1 (Long_Float (P.Y)) & " is not reachable in " & World_F;
+            end if;
+         end loop;
+      end loop;
+      declare
+         Agent_List : array (1 .. N) of Agents.Agent_Access;
+         Navs       : array (1 .. N) of Robot.Navigators.Navigator;
+         Nav_Task   : array (1 .. N) of Unbounded_String;
+         Nav_Goal   : array (1 .. N) of Point := [others => (Real'Last, Real'Last)];
+         Last_Pos   : array (1 .. N) of Point;
+         Next_Pose  : Long_Float := 0.0;
+         Next_Rec   : Long_Float := 0.0;
+         Next_Print : Long_Float := 0.0;
+         Alive      : array (1 .. N) of Boolean := [others => True];
+         Victim     : Natural := 0;
+         Kill_Wall  : Ada.Real_Time.Time;
+         Kill_Gen   : Natural := 0;
+         Scene      : Rendering.Scene;
+         Operator   : Agents.Agent_Access;
+         Start_Wall : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+         Id         : Robot_Id;
+         Count      : array (1 .. Natural (M.Tasks.Length)) of Natural := [others => 0];
+
+         function Observer return Agents.Agent_Access is
+         begin
+            for R in 1 .. N loop
+               if Alive (R) then
+                  return Agent_List (R);
+               end if;
+            end loop;
+            return Operator;
+         end Observer;
+
+         function Robot_Of (Id : Unbounded_String) return Natural is
+         begin
+            for R in 1 .. N loop
+               if M.Robots (R).Id = Id then
+                  return R;
+               end if;
+            end loop;
+            return 0;
+         end Robot_Of;
+
+         procedure Record_Completion (R : Positive; Task_Id : Unbounded_String) is
+         begin
+            Result.Completions.Append
+              (Completion'(Task_Id, M.Robots (R).Id, Long_Float (Sim.Clock)));
+            Result.Robots (R).Tasks := Result.Robots (R).Tasks + 1;
+            for T in 1 .. Natural (M.Tasks.Length) loop
+               if M.Tasks (T).Id = Task_Id then
+                  Count (T) := Count (T) + 1;
+               end if;
+            end loop;
+            if Config.Verbose then
+               Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  " & To_String (M.Robots (R).Id)
+                         & " did " & To_String (Task_Id) & "  ("
+                         & Trim (Natural (Result.Completions.Length)) & "/"
+                         & Trim (Result.Tasks_Total)
+                         & ")");
+            end if;
+         end Record_Completion;
+
+         function Done_Here (Task_Id : String) return Boolean is
+           (Operator.Database.Contains ("done/" & Task_Id));
+
+         procedure Kill (R : Positive) is
+         begin
+            Victim := R;
+            Alive (R) := False;
+            Sim.Kill (Robot_Id (R));
+            Agent_List (R).Stop;
+            Kill_Wall := Ada.Real_Time.Clock;
+            Result.Killed := M.Robots (R).Id;
+            Result.Kill_Time := Long_Float (Sim.Clock);
+            Result.Robots (R).Alive := False;
+            Kill_Gen := Observer.Round.Generation;
+            Result.Plan_Before := Observer.Adopted;
+            Result.Round_Before := Observer.Round;
+            Result.Orphans := Unfinished
+              (Result.Round_Before, Result.Plan_Before, To_String (M.Robots (R).Id),
+               Done_Here'Access);
+            Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
+                      & To_String (M.Robots (R).Id) & " killed (simulator kill, agent stopped)");
+         end Kill;
+
+         function Choose_Victim return Positive is
+            Best   : Positive := 1;
+            Most   : Integer := -1;
+            P      : constant Plans.Plan := Observer.Adopted;
+            S      : constant Plans.Snapshot := Observer.Round;
+         begin
+            if Config.Kill_Robot /= Null_Unbounded_String then
+               if Robot_Of (Config.Kill_Robot) = 0 then
+                  raise Constraint_Error with "--kill " & To_String (Config.Kill_Robot)
+                    & ": no such robot in the mission";
+               end if;
+               return Robot_Of (Config.Kill_Robot);
+            end if;
+            for K in 1 .. Natural (P.Tours.Length) loop
+               declare
+                  Left : Natural := 0;
+               begin
+                  for St of P.Tours (K) loop
+                     if not Operator.Database.Contains ("done/" & To_String (St.Task_Id)) then
+                        Left := Left + 1;
+                     end if;
+                  end loop;
+                  if Left > Most and then Robot_Of (S.Robots (K).Id) /= 0 then
+                     Most := Left;
+                     Best := Robot_Of (S.Robots (K).Id);
+                  end if;
+               end;
+            end loop;
+            return Best;
+         end Choose_Victim;
+      begin
+         Result.Tasks_Total := Natural (M.Tasks.Length);
+         Put_Line ("demo: mission " & To_String (M.Name) & ":" & Result.Tasks_Total'Image
+                   & " tasks," & N'Image & " robots, world " & World_F & ", allocation by "
+                   & (case Config.How is when Agents.Annealing => "the distributed annealer",
+                                         when Agents.Auctions => "auctions")
+                   & ", simulation at" & Integer (Config.Rate)'Image & "x");
+         for R in 1 .. N loop
+            Sim.Add_Robot (Default_Robot, M.Robots (R).Start, Id,
+                           Name => To_String (M.Robots (R).Id));
+            Last_Pos (R) := Position (M.Robots (R).Start);
+            Scene.Trajectories.Append (Rendering.Point_Vectors.Empty_Vector);
+            Result.Robots.Append (Robot_Summary'(Id => M.Robots (R).Id, others => <>));
+            Agent_List (R) := Agents.Create
+              ((Id => M.Robots (R).Id, Team => Config.Team, Is_Robot => True,
+                Lease => Config.Lease, Verbose => Config.Verbose,
+                How => Config.How, Seed => Interfaces.Unsigned_64 (R), others => <>));
+            Agent_List (R).Set_Pose (Position (M.Robots (R).Start));
+         end loop;
+         Operator := Agents.Create
+           ((Id => To_Unbounded_String ("operator"), Team => Config.Team, Is_Robot => False,
+             Lease => Config.Lease,
+             How => Config.How, others => <>));
+         Operator.Publish_Mission (M);
+         Sim.Step (0.1);
+         while Long_Float (Sim.Clock) < Config.Max_Seconds and then not Operator.All_Done loop
+            for R in 1 .. N loop
+               if Alive (R) then
+                  declare
+                     Rid   : constant Robot_Id := Robot_Id (R);
+                     Truth : constant Pose := Sim.Ground_Truth (Rid).Pose;
+                     Here  : constant Point := Position (Truth);
+                     Found : Boolean;
+                     Goal  : Point;
+                     Tid   : Unbounded_String;
+                     Done  : Boolean;
+                  begin
+                     Result.Robots (R).Distance := Result.Robots (R).Distance
+                       + Long_Float (Distance (Here, Last_Pos (R)));
+                     Last_Pos (R) := Here;
+                     if Long_Float (Sim.Clock) >= Next_Pose then
+                        Agent_List (R).Set_Pose (Here);
+                     end if;
+                     Agent_List (R).Current_Goal (Found, Goal, Tid);
+                     if not Found then
+                        Sim.Set_Command (Rid, (0.0, 0.0));
+                     else
+                        if Tid /= Nav_Task (R) or else Goal /= Nav_Goal (R) then
+                           Nav_Task (R) := Tid;
+                           Nav_Goal (R) := Goal;
+                           Navs (R).Set_Goal (Map, Truth, Goal);
+                        end if;
+                        if Distance (Here, Goal) < 0.35 then
+                           Agent_List (R).Arrived (To_String (Tid), Done);
+                           if Done then
+                              Record_Completion (R, Tid);
+                           end if;
+                           Sim.Set_Command (Rid, (0.0, 0.0));
+                        else
+                           Sim.Set_Command
+                             (Rid, Navs (R).Command (Map, Truth, Sim.Latest_Scan (Rid),
+                                                     Sim.Clock));
+                        end if;
+                     end if;
+                     if Long_Float (Sim.Clock) >= Next_Rec then
+                        Scene.Trajectories (R).Append (Here);
+                     end if;
+                  end;
+               end if;
+            end loop;
+            if Long_Float (Sim.Clock) >= Next_Pose then
+               Next_Pose := Next_Pose + 0.5;
+            end if;
+            if Long_Float (Sim.Clock) >= Next_Rec then
+               Next_Rec := Next_Rec + 0.5;
+            end if;
+            if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
+               Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
+               Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
+                         & F1 (Result.Planned_Total) & " m, makespan "
+                         & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
+                         & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
+            end if;
+            if Config.Kill and then Victim = 0
+              and then Long_Float (Operator.Done_Tasks)
+                >= Config.Kill_Fraction * Long_Float (Result.Tasks_Total)
+              and then Observer.Adopted.Generation > 0
+            then
+               Kill (Choose_Victim);
+            end if;
+            if Victim /= 0 and then not Result.Replanned then
+               declare
+                  S : constant Plans.Snapshot := Observer.Round;
+                  P : constant Plans.Plan := Observer.Adopted;
+               begin
+                  if S.Generation > Kill_Gen and then P.Generation = S.Generation
+                    and then (for all R of S.Robots => R.Id /= M.Robots (Victim).Id)
+                  then
+                     Result.Replanned := True;
+                     Result.Replan_Wall := Long_Float
+                       (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Kill_Wall));
+                     Result.Replan_Sim := Long_Float (Sim.Clock) - Result.Kill_Time;
+                     Result.Plan_After := P;
+                     Result.Round_After := S;
+                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  survivors re-planned "
+                               & Trim (Natural (S.Tasks.Length)) & " tasks among "
+                               & Trim (Natural (S.Robots.Length)) & " robots in "
+                               & F1 (Result.Replan_Wall) & " s (wall, lease included)");
+                  end if;
+               end;
+            end if;
+            if Config.Verbose and then Long_Float (Sim.Clock) >= Next_Print then
+               Next_Print := Next_Print + 20.0;
+               Put ("t=" & F1 (Long_Float (Sim.Clock)) & " s  progress "
+                    & Trim (Operator.Done_Tasks) & "/" & Trim (Result.Tasks_Total)
+                    & "  round" & Observer.Round.Generation'Image & "  [");
+               for R in 1 .. N loop
+                  Put (" " & To_String (M.Robots (R).Id) & ":" & Trim (Result.Robots (R).Tasks)
+                       & (if Alive (R) then "" else "x"));
+               end loop;
+               Put_Line (" ]");
+            end if;
+            Sim.Step (0.1);
+            delay until Start_Wall + Ada.Real_Time.To_Time_Span
+              (Duration (Long_Float (Sim.Clock) / Config.Rate));
+         end loop;
+         Result.Makespan := Long_Float (Sim.Clock);
+         Result.Tasks_Done := Operator.Done_Tasks;
+         Result.All_Done := Operator.All_Done;
+         Result.Rounds := Observer.Round.Generation;
+         for C of Count loop
+            if C > 1 then
+               Result.Duplicates := Result.Duplicates + 1;
+            end if;
+         end loop;
+         for R in 1 .. N loop
+            Result.Executed_Total := Result.Executed_Total + Result.Robots (R).Distance;
+            Result.Collisions := Result.Collisions + Sim.Collision_Count (Robot_Id (R));
+            Scene.Robots.Append (Sim.Ground_Truth (Robot_Id (R)).Pose);
+         end loop;
+         for T of M.Tasks loop
+            Scene.Markers.Append
+              (Rendering.Marker'(T.Points (1),
+                                 T.Id & ">"
+                                 & Operator.Database.Get_String ("done/" & To_String (T.Id))));
+         end loop;
+         for R in 1 .. N loop
+            if Alive (R) then
+               Agent_List (R).Stop;
+            end if;
+         end loop;
+         Operator.Stop;
+         Resolve_Orphans (Result);
+         if Config.Out_Dir /= Null_Unbounded_String then
+            Write_Report (Result, World, Scene, To_String (Config.Out_Dir));
+         end if;
+      end;
+   end Run;
+
+end Sancta.Commands.Team_Demos;

@@ -1,0 +1,157 @@
+--  The end-to-end team demo: a mission for a team of robots in the bundled
+--  simulator world. Each robot is a team agent (Sancta.Team.Agents) with
+--  its own team network node; the agents and the operator talk only over
+--  DDS (the team topics). The simulator is driven in this process (the
+--  simros branch's sancta-sim ROS 2 interface was not available): each
+--  step it moves the robots, gives each robot's position to its agent and
+--  drives it to the goal its agent chooses (A* path plus laser avoidance).
+--  Mid-mission one robot is killed (simulator kill and its agent stopped,
+--  as a host dying); the survivors detect the loss after the lease,
+--  re-plan and finish.
+with Ada.Containers.Vectors;
+with Ada.Strings.Unbounded;
+with Sancta.Geometry;
+with Sancta.Robot.Path_Costs;
+with Sancta.Simulation.Rendering;
+with Sancta.Simulation.Worlds;
+with Sancta.Team.Agents;
+with Sancta.Team.Plans;
+with Sancta.Team;
+use Sancta.Team;  --  the team library's units by their short names (Agents, Plans, ...)
+
+package Sancta.Commands.Team_Demos is
+
+   use Ada.Strings.Unbounded;
+
+   type Demo_Config is record
+      Mission_File  : Unbounded_String;
+      World_File    : Unbounded_String;
+      --  Empty: the mission's world.
+      How           : Agents.Method := Agents.Annealing;
+      Rate          : Long_Float := 25.0;
+      --  Simulated seconds per wall-clock second.
+      Kill          : Boolean := True;
+      Kill_Robot    : Unbounded_String;
+      --  Empty: the robot with the most tasks left when the kill happens.
+      Kill_Fraction : Long_Float := 0.3;
+      --  Kill when this fraction of the tasks is done.
+      Max_Seconds   : Long_Float := 1200.0;
+      --  Simulated time limit.
+      Lease         : Duration := 0.5;
+      Out_Dir       : Unbounded_String := To_Unbounded_String ("out/demo");
+      Verbose       : Boolean := True;
+      Team          : Unbounded_String := To_Unbounded_String ("team");
+      --  The team's topics (/sancta/<team>/...).
+   end record;
+
+   type Completion is record
+      Task_Id : Unbounded_String;
+      Robot   : Unbounded_String;
+      Time    : Long_Float := 0.0;
+   end record;
+   package Completion_Vectors is new Ada.Containers.Vectors (Positive, Completion);
+
+   type Robot_Summary is record
+      Id       : Unbounded_String;
+      Tasks    : Natural := 0;
+      Distance : Long_Float := 0.0;
+      Alive    : Boolean := True;
+   end record;
+   package Robot_Summary_Vectors is new Ada.Containers.Vectors (Positive, Robot_Summary);
+
+   type Demo_Result is record
+      Tasks_Total     : Natural := 0;
+      Tasks_Done      : Natural := 0;
+      Duplicates      : Natural := 0;
+      --  Tasks completed more than once.
+      All_Done        : Boolean := False;
+      Completions     : Completion_Vectors.Vector;
+      Robots          : Robot_Summary_Vectors.Vector;
+      Makespan        : Long_Float := 0.0;
+      Killed          : Unbounded_String;
+      Kill_Time       : Long_Float := 0.0;
+      Replan_Wall     : Long_Float := 0.0;
+      --  Wall seconds from the kill to the survivors' adopted new plan
+      --  (includes the loss detection, i.e. the lease).
+      Replan_Sim      : Long_Float := 0.0;
+      Replanned       : Boolean := False;
+      Planned_Total   : Long_Float := 0.0;
+      Planned_Makespan : Long_Float := 0.0;
+      --  The first adopted plan's costs in the planners' model (straight
+      --  legs between task points).
+      Grid_Total      : Long_Float := 0.0;
+      Grid_Makespan   : Long_Float := 0.0;
+      --  The same plan with A* path lengths on the world's grid (robot
+      --  radius 0.3 m) for the legs: comparable to the executed distance.
+      Executed_Total  : Long_Float := 0.0;
+      Rounds          : Natural := 0;
+      Collisions      : Natural := 0;
+      Plan_Before     : Plans.Plan;
+      Round_Before    : Plans.Snapshot;
+      Plan_After      : Plans.Plan;
+      Round_After     : Plans.Snapshot;
+      Orphans         : Completion_Vectors.Vector;
+      --  The killed robot's tasks not done at the kill (its tour in the
+      --  plan before the loss), each with the robot that finally did it
+      --  (Resolve_Orphans; empty Robot: nobody).
+   end record;
+
+   function Unfinished
+     (S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Robot  : String;
+      Is_Done : not null access function (Task_Id : String) return Boolean)
+      return Completion_Vectors.Vector;
+   --  The tasks of Robot's tour in plan P of round S not done yet.
+
+   procedure Resolve_Orphans (Result : in out Demo_Result);
+   --  Fills each orphan's Robot and Time from Result.Completions.
+
+   function Planned_Scene
+     (S   : Plans.Snapshot;
+      P   : Plans.Plan;
+      Ids : Robot_Summary_Vectors.Vector;
+      Map : access Sancta.Robot.Path_Costs.Planner := null)
+      return Sancta.Simulation.Rendering.Scene;
+   --  The planned tours as polylines from each robot's position (with Map:
+   --  the legs along A* paths on it; without, straight), with a marker
+   --  "task>robot" per task.
+
+   procedure Write_Report
+     (Result : Demo_Result;
+      World  : Sancta.Simulation.Worlds.World;
+      Scene  : Sancta.Simulation.Rendering.Scene;
+      Dir    : String);
+   --  Dir/summary.json, trajectories.svg/png (World with Scene: executed
+   --  trajectories, tasks, robots), plan-before and plan-after .svg/.png
+   --  (when the result has those plans; legs along A* paths on World).
+   --  Creates Dir.
+
+   procedure Run (Config : Demo_Config; Result : out Demo_Result);
+   --  Runs the mission and, unless Out_Dir is empty, writes the report:
+   --  Out_Dir/summary.json, trajectories.svg/png (world, executed
+   --  trajectories, tasks), plan-before.svg/png and plan-after.svg/png (the
+   --  planned tours before and after the loss). Raises Missions.Format_Error
+   --  (bad mission) or Constraint_Error with a message (unreachable task,
+   --  fewer than two robots).
+
+   procedure Print_Summary (Result : Demo_Result);
+
+   function Check_Passed (Result : Demo_Result) return Boolean;
+   --  What "--check" asserts: every task done exactly once and, when a
+   --  robot was lost, a re-planning round and each of its unfinished tasks
+   --  done by a survivor.
+
+   procedure Note_First_Plan
+     (Result : in out Demo_Result;
+      S      : Plans.Snapshot;
+      P      : Plans.Plan;
+      Grid   : Sancta.Simulation.Worlds.World);
+   --  Sets the planned costs of Result from plan P of round S (Grid: the
+   --  world whose occupancy gives the A* legs).
+
+   function Summary_JSON (Result : Demo_Result) return String;
+
+   subtype Point is Sancta.Geometry.Point;
+
+end Sancta.Commands.Team_Demos;

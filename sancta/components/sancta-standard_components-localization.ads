@@ -1,0 +1,43 @@
+--  Robot-side localisation and mapping components (wrapping
+--  Sancta.Robot.*; scans and GPS fixes come from ros2_subscriber bridges as
+--  ROS 2 messages, maps go out through a ros2_publisher):
+--
+--  "scan_matcher" (event-driven on "scan"): point-to-line ICP odometry
+--  correction (Scan_Matchers.Corrector). Requires "odometry" (types.pose)
+--  and "scan" (ros2:sensor_msgs/msg/LaserScan); provides "pose"
+--  (types.pose: the corrected pose, same frame as the odometry; the first
+--  odometry pose is taken as exact) and "error" (types.real, mean
+--  point-to-line distance of the last match). Options keyframe_distance
+--  (0.4), keyframe_angle (0.3), max_iterations (50).
+--
+--  "scan_matching" (the paper's Listing 1.1 and Figure 2): the same ICP
+--  with the paper's ports. Requires "pose" (types.pose, odometric) and,
+--  optionally, "scan"; provides "pose" (corrected) on every odometric pose
+--  -- the odometric pose corrected by the drift the last match measured --
+--  and "error". Options as scan_matcher, plus dx, dy, dyaw: a fixed pose
+--  of the odometric frame in the corrected frame (identity by default),
+--  applied on top; with no scan wired, that fixed correction is all it
+--  does (Listing 1.1 as written).
+--
+--  "aligner" (event-driven on "pose" and "scan"): heading correction from
+--  walls at multiples of 90 degrees (Aligners). Requires "pose"
+--  (types.pose, world) and "scan"; provides "pose": the input pose with
+--  its yaw corrected by the last heading error measured (kept between
+--  scans). Option tolerance (rad, 0.17).
+--
+--  "gps_fusion" (event-driven on "odometry" and "gps"): Kalman fusion of
+--  odometry with absolute fixes (GPS_Fusion). Requires "odometry"
+--  (types.pose, odometry frame) and "gps"
+--  (ros2:geometry_msgs/msg/PoseWithCovarianceStamped); provides "pose"
+--  (types.pose, world) and "variance" (types.real). Options x, y, yaw (the
+--  start pose in the world), variance (0.0), odometry_noise (0.01).
+--
+--  "mapper": log-odds occupancy grid (Mappers). Event-driven on "scan",
+--  periodic publication. Requires "pose" (types.pose, world) and "scan";
+--  provides "map" (ros2:nav_msgs/msg/OccupancyGrid) every "period" s
+--  (default 1.0) and "known" (types.real: fraction of observed cells).
+--  Options origin_x, origin_y (0), resolution (0.1), width, height (cells,
+--  200), frame_id ("map").
+package Sancta.Standard_Components.Localization is
+   pragma Elaborate_Body;
+end Sancta.Standard_Components.Localization;
