@@ -1,17 +1,13 @@
-with RCL.Arguments;
-with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
-with ROSIDL.CDR;
-with ROSIDL.Typesupport;
-with RCL.Clocks;
-with RCL.DDS;
-with RCL.Publishers;
-with RCL.QoS;
-with RCL.Services;
+with RCL.Parameters.Initial_Values;
+with RCL.Parameters.Serving;
+with RCL.Parameters.Stores;
 
 package body RCL.Parameters is
+
+   use Stores;
 
    use ROSIDL.Dynamic;
    use type RCL.YAML.Node_Kind;
@@ -254,149 +250,6 @@ package body RCL.Parameters is
       return From_YAML (D, D.Root);
    end Parse;
 
-   -----------
-   -- Store --
-   -----------
-
-   type Entry_Record is record
-      Desc    : Descriptor;
-      Current : Value;
-   end record;
-
-   package Entry_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Entry_Record);
-   package Validator_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Validator);
-
-   type Publisher_Access is access RCL.Publishers.Publisher;
-   package Publisher_Maps is new Ada.Containers.Indefinite_Ordered_Maps
-     (String, Publisher_Access);
-
-   type Override is record
-      Pattern, Name : Unbounded_String;
-      New_Value     : Value;
-   end record;
-
-   package Override_Vectors is new Ada.Containers.Vectors (Positive, Override);
-
-   function Key (Node_Name, Name : String) return String is (Node_Name & ASCII.NUL & Name);
-
-   function Matches (Pattern, Node_Name : String) return Boolean is
-      Base : constant Natural := Ada.Strings.Fixed.Index (Node_Name, "/", Ada.Strings.Backward);
-   begin
-      return Pattern in "/**" | "**"
-        or else Pattern = Node_Name
-        or else Pattern = Node_Name (Base + 1 .. Node_Name'Last);
-   end Matches;
-
-   protected Store is
-      procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean);
-      function Contains (Node_Name, Name : String) return Boolean;
-      function Get (Node_Name, Name : String) return Entry_Record;
-      procedure Put_Value (Node_Name, Name : String; V : Value);
-      function Names_Of (Node_Name : String) return Text_Vectors.Vector;
-      procedure Set_Validator (Node_Name : String; Check : Validator);
-      function Validator_Of (Node_Name : String) return Validator;
-      procedure Set_Publisher (Node_Name : String; P : Publisher_Access);
-      function Publisher_Of (Node_Name : String) return Publisher_Access;
-      procedure Add_Override (O : Override);
-      procedure Clear_Overrides;
-      procedure Find_Override
-        (Node_Name, Name : String; Found : out Boolean; V : out Value;
-         Pattern : out Unbounded_String);
-      procedure Mark_Loaded (Was_Loaded : out Boolean);
-   private
-      Entries    : Entry_Maps.Map;
-      Validators : Validator_Maps.Map;
-      Publishers : Publisher_Maps.Map;
-      Overrides  : Override_Vectors.Vector;
-      Loaded     : Boolean := False;
-   end Store;
-
-   protected body Store is
-
-      procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean) is
-      begin
-         Done := not Entries.Contains (Key (Node_Name, Name));
-         if Done then
-            Entries.Insert (Key (Node_Name, Name), E);
-         end if;
-      end Insert;
-
-      function Contains (Node_Name, Name : String) return Boolean is
-        (Entries.Contains (Key (Node_Name, Name)));
-
-      function Get (Node_Name, Name : String) return Entry_Record is
-        (Entries.Element (Key (Node_Name, Name)));
-
-      procedure Put_Value (Node_Name, Name : String; V : Value) is
-      begin
-         Entries.Reference (Key (Node_Name, Name)).Current := V;
-      end Put_Value;
-
-      function Names_Of (Node_Name : String) return Text_Vectors.Vector is
-         Prefix : constant String := Node_Name & ASCII.NUL;
-      begin
-         return R : Text_Vectors.Vector do
-            for C in Entries.Iterate loop
-               declare
-                  K : constant String := Entry_Maps.Key (C);
-               begin
-                  if K'Length > Prefix'Length
-                    and then K (K'First .. K'First + Prefix'Length - 1) = Prefix
-                  then
-                     R.Append (To_Unbounded_String (K (K'First + Prefix'Length .. K'Last)));
-                  end if;
-               end;
-            end loop;
-         end return;
-      end Names_Of;
-
-      procedure Set_Validator (Node_Name : String; Check : Validator) is
-      begin
-         Validators.Include (Node_Name, Check);
-      end Set_Validator;
-
-      function Validator_Of (Node_Name : String) return Validator is
-        (if Validators.Contains (Node_Name) then Validators.Element (Node_Name) else null);
-
-      procedure Set_Publisher (Node_Name : String; P : Publisher_Access) is
-      begin
-         Publishers.Include (Node_Name, P);
-      end Set_Publisher;
-
-      function Publisher_Of (Node_Name : String) return Publisher_Access is
-        (if Publishers.Contains (Node_Name) then Publishers.Element (Node_Name) else null);
-
-      procedure Add_Override (O : Override) is
-      begin
-         Overrides.Append (O);
-      end Add_Override;
-
-      procedure Clear_Overrides is
-      begin
-         Overrides.Clear;
-      end Clear_Overrides;
-
-      procedure Find_Override
-        (Node_Name, Name : String; Found : out Boolean; V : out Value;
-         Pattern : out Unbounded_String) is
-      begin
-         Found := False;
-         for O of Overrides loop
-            if To_String (O.Name) = Name and then Matches (To_String (O.Pattern), Node_Name) then
-               Found := True;
-               V := O.New_Value;
-               Pattern := O.Pattern;
-            end if;
-         end loop;
-      end Find_Override;
-
-      procedure Mark_Loaded (Was_Loaded : out Boolean) is
-      begin
-         Was_Loaded := Loaded;
-         Loaded := True;
-      end Mark_Loaded;
-
-   end Store;
 
    procedure Add_Override (Node_Pattern, Name : String; New_Value : Value) is
    begin
@@ -408,13 +261,6 @@ package body RCL.Parameters is
    begin
       Store.Clear_Overrides;
    end Clear_Overrides;
-
-   ------------
-   -- Events --
-   ------------
-
-   Event_Support : ROSIDL.Typesupport.Message_Support;
-   Event_Support_Set : Boolean := False;
 
    procedure Put_Parameter_Value (Ref : Field_Ref; V : Value) is
    begin
@@ -523,33 +369,6 @@ package body RCL.Parameters is
       return V;
    end Get_Parameter_Value;
 
-   procedure Publish_Event (Node_Name : String; Names : Text_Vectors.Vector; Is_New : Boolean) is
-      P : constant Publisher_Access := Store.Publisher_Of (Node_Name);
-   begin
-      if P = null or else not Event_Support_Set then
-         return;
-      end if;
-      declare
-         Event : constant Message := Init (Event_Support);
-         Now   : constant RCL.DDS.Time_Ns := RCL.DDS.Now;
-         use type RCL.DDS.Time_Ns;
-         List  : constant Array_Ref :=
-           Event ((if Is_New then "new_parameters" else "changed_parameters")).As_Array;
-      begin
-         Event ("stamp")("sec").As_Int32.Element.all := ROSIDL.Int32 (Now / 1_000_000_000);
-         Event ("stamp")("nanosec").As_UInt32.Element.all :=
-           ROSIDL.UInt32 (Now mod 1_000_000_000);
-         Event ("node").Set_String (Node_Name);
-         List.Resize (Natural (Names.Length));
-         for I in 1 .. Natural (Names.Length) loop
-            List.Element (I).Field_Reference ("name").Set_String (To_String (Names (I)));
-            Put_Parameter_Value (List.Element (I).Field_Reference ("value"),
-                                 Store.Get (Node_Name, To_String (Names (I))).Current);
-         end loop;
-         P.Publish_Raw (ROSIDL.CDR.Encode (Event));
-      end;
-   end Publish_Event;
-
    ---------------------
    -- Declare and get --
    ---------------------
@@ -611,7 +430,8 @@ package body RCL.Parameters is
          raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name
            & " is already declared";
       end if;
-      Publish_Event (Node_Name, Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), True);
+      Serving.Publish_Event (Node_Name,
+                            Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), True);
    end Declare_Parameter;
 
    function Has_Parameter (Node : RCL.Nodes.Node'Class; Name : String) return Boolean is
@@ -673,7 +493,8 @@ package body RCL.Parameters is
    begin
       if Reason = "" then
          Store.Put_Value (Node_Name, Name, New_Value);
-         Publish_Event (Node_Name, Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), False);
+         Serving.Publish_Event (Node_Name,
+                               Text_Vectors.To_Vector (To_Unbounded_String (Name), 1), False);
       end if;
       return Reason;
    end Try_Set;
@@ -702,7 +523,7 @@ package body RCL.Parameters is
          Store.Put_Value (Node_Name, To_String (A.Name), A.New_Value);
          Changed.Append (A.Name);
       end loop;
-      Publish_Event (Node_Name, Changed, False);
+      Serving.Publish_Event (Node_Name, Changed, False);
       return "";
    end Try_Set_Atomically;
 
@@ -711,308 +532,19 @@ package body RCL.Parameters is
    function Describe (Node_Name, Name : String) return Descriptor is
      (if Store.Contains (Node_Name, Name) then Store.Get (Node_Name, Name).Desc
       else (Name => To_Unbounded_String (Name), others => <>));
-
-   --------------
-   -- Services --
-   --------------
-
-   function Node_Of (Node : RCL.Nodes.Node'Class) return String is (Node.Fully_Qualified_Name);
-
-   procedure Get_Parameters
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Req_Names : constant Array_Ref := Request ("names").As_Array;
-      Values    : constant Array_Ref := Response ("values").As_Array;
-   begin
-      Values.Resize (Req_Names.Length);
-      for I in 1 .. Req_Names.Length loop
-         declare
-            Name : constant String := Req_Names.Element (I).Get_String;
-         begin
-            if Store.Contains (Node_Of (Node), Name) then
-               Put_Parameter_Value (Values.Element (I),
-                                    Store.Get (Node_Of (Node), Name).Current);
-            end if;
-         end;
-      end loop;
-   end Get_Parameters;
-
-   procedure Get_Parameter_Types
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Req_Names : constant Array_Ref := Request ("names").As_Array;
-      Types     : UInt8_Array (1 .. Req_Names.Length);
-   begin
-      for I in Types'Range loop
-         Types (I) := Parameter_Type'Pos
-           (Describe (Node_Of (Node), Req_Names.Element (I).Get_String).Kind);
-      end loop;
-      Response ("types").Set_UInt8_Array (Types);
-   end Get_Parameter_Types;
-
-   procedure Set_Parameters
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Params  : constant Array_Ref := Request ("parameters").As_Array;
-      Results : constant Array_Ref := Response ("results").As_Array;
-   begin
-      Results.Resize (Params.Length);
-      for I in 1 .. Params.Length loop
-         declare
-            Reason : constant String :=
-              Try_Set (Node_Of (Node), Params.Element (I).Field_Reference ("name").Get_String,
-                       Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
-         begin
-            Results.Element (I).Field_Reference ("successful").As_Bool.Element.all :=
-              Reason = "";
-            Results.Element (I).Field_Reference ("reason").Set_String (Reason);
-         end;
-      end loop;
-   end Set_Parameters;
-
-   procedure Set_Parameters_Atomically
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Params : constant Array_Ref := Request ("parameters").As_Array;
-      List   : Assignment_Array (1 .. Params.Length);
-   begin
-      for I in List'Range loop
-         List (I) := (To_Unbounded_String (Params.Element (I).Field_Reference ("name").Get_String),
-                      Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
-      end loop;
-      declare
-         Reason : constant String := Try_Set_Atomically (Node_Of (Node), List);
-      begin
-         Response ("result")("successful").As_Bool.Element.all := Reason = "";
-         Response ("result")("reason").Set_String (Reason);
-      end;
-   end Set_Parameters_Atomically;
-
-   procedure Describe_Parameters
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Req_Names : constant Array_Ref := Request ("names").As_Array;
-      Descs     : constant Array_Ref := Response ("descriptors").As_Array;
-   begin
-      Descs.Resize (Req_Names.Length);
-      for I in 1 .. Req_Names.Length loop
-         declare
-            D : constant Descriptor := Describe (Node_Of (Node), Req_Names.Element (I).Get_String);
-            R : constant Field_Ref := Descs.Element (I);
-         begin
-            R.Field_Reference ("name").Set_String (To_String (D.Name));
-            R.Field_Reference ("type").As_UInt8.Element.all := Parameter_Type'Pos (D.Kind);
-            R.Field_Reference ("description").Set_String (To_String (D.Description));
-            R.Field_Reference ("read_only").As_Bool.Element.all := D.Read_Only;
-         end;
-      end loop;
-   end Describe_Parameters;
-
-   procedure List_Parameters
-     (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
-   is
-      Prefixes : constant Array_Ref := Request ("prefixes").As_Array;
-      Depth    : constant Natural := Natural'Min
-        (Natural'Last / 2, Natural (ROSIDL.UInt64'Min (Request ("depth").As_UInt64.Element.all,
-                                                        ROSIDL.UInt64 (Natural'Last / 2))));
-      Found    : Text_Vectors.Vector;
-      Groups   : Text_Vectors.Vector;
-
-      function Dots (S : String) return Natural is
-        (Ada.Strings.Fixed.Count (S, "."));
-   begin
-      for N of Names (Node_Of (Node)) loop
-         declare
-            Name : constant String := To_String (N);
-            Ok   : Boolean := Prefixes.Length = 0;
-         begin
-            for I in 1 .. Prefixes.Length loop
-               declare
-                  P : constant String := Prefixes.Element (I).Get_String;
-               begin
-                  if Name = P
-                    or else (Name'Length > P'Length
-                             and then Name (Name'First .. Name'First + P'Length) = P & ".")
-                  then
-                     Ok := Ok or (Depth = 0 or else Dots (Name) - Dots (P) <= Depth);
-                  end if;
-               end;
-            end loop;
-            if Prefixes.Length = 0 and then Depth > 0 and then Dots (Name) >= Depth then
-               Ok := False;
-            end if;
-            if Ok then
-               Found.Append (N);
-               declare
-                  Last_Dot : constant Natural :=
-                    Ada.Strings.Fixed.Index (Name, ".", Ada.Strings.Backward);
-               begin
-                  if Last_Dot > 0
-                    and then not Groups.Contains
-                      (To_Unbounded_String (Name (Name'First .. Last_Dot - 1)))
-                  then
-                     Groups.Append (To_Unbounded_String (Name (Name'First .. Last_Dot - 1)));
-                  end if;
-               end;
-            end if;
-         end;
-      end loop;
-      declare
-         Out_Names : constant Array_Ref := Response ("result")("names").As_Array;
-         Out_Pref  : constant Array_Ref := Response ("result")("prefixes").As_Array;
-      begin
-         Out_Names.Resize (Natural (Found.Length));
-         for I in 1 .. Natural (Found.Length) loop
-            Out_Names.Element (I).Set_String (To_String (Found (I)));
-         end loop;
-         Out_Pref.Resize (Natural (Groups.Length));
-         for I in 1 .. Natural (Groups.Length) loop
-            Out_Pref.Element (I).Set_String (To_String (Groups (I)));
-         end loop;
-      end;
-   end List_Parameters;
-
    procedure Serve (Node : in out RCL.Nodes.Node'Class) is
-      use ROSIDL.Typesupport;
-      function Srv (Name : String) return Service_Support is
-        (Get_Service_Support ("rcl_interfaces", Name));
-      Q : constant RCL.QoS.Profile := RCL.QoS.Parameters;
-      Declared : Boolean;
    begin
-      if Node.Serves_Parameters then
-         return;  --  Done by Nodes.Init already.
-      end if;
-      Node.Set_Serves_Parameters;
-      if not Event_Support_Set then
-         Event_Support := Get_Message_Support ("rcl_interfaces", "ParameterEvent");
-         Event_Support_Set := True;
-      end if;
-      if not Has_Parameter (Node, "use_sim_time") then
-         --  As every ROS 2 node has it. Read-only here: simulated time is
-         --  chosen at start (--ros-args -p use_sim_time:=true, RCL.Clocks).
-         Store.Insert
-           (Node.Fully_Qualified_Name, "use_sim_time",
-            (Desc    => (Name        => To_Unbounded_String ("use_sim_time"),
-                         Kind        => Bool_Type,
-                         Description => To_Unbounded_String
-                           ("ROS time follows /clock (set at start only)"),
-                         Read_Only   => True),
-             Current => To_Value (RCL.Clocks.Sim_Time_Enabled
-                                  or else RCL.Clocks.Sim_Time_Requested)),
-            Declared);
-      end if;
-      RCL.Services.Serve (Node, Srv ("GetParameters"), "~/get_parameters",
-                          Get_Parameters'Access, Q);
-      RCL.Services.Serve (Node, Srv ("GetParameterTypes"), "~/get_parameter_types",
-                          Get_Parameter_Types'Access, Q);
-      RCL.Services.Serve (Node, Srv ("SetParameters"), "~/set_parameters",
-                          Set_Parameters'Access, Q);
-      RCL.Services.Serve (Node, Srv ("SetParametersAtomically"), "~/set_parameters_atomically",
-                          Set_Parameters_Atomically'Access, Q);
-      RCL.Services.Serve (Node, Srv ("DescribeParameters"), "~/describe_parameters",
-                          Describe_Parameters'Access, Q);
-      RCL.Services.Serve (Node, Srv ("ListParameters"), "~/list_parameters",
-                          List_Parameters'Access, Q);
-      Store.Set_Publisher
-        (Node.Fully_Qualified_Name,
-         new RCL.Publishers.Publisher'
-           (Node.Publish_Raw (DDS_Type_Name (Event_Support), "/parameter_events",
-                              RCL.QoS.Parameter_Events)));
+      Serving.Serve (Node);
    end Serve;
 
-   --------------------
-   -- Initial values --
-   --------------------
-
    procedure Load_File (Path : String) is
-      use RCL.YAML;
-      D : constant Document := Parse_File (Path);
-
-      procedure Flatten (Pattern : String; Prefix : String; N : Node) is
-      begin
-         for I in 1 .. D.Length (N) loop
-            declare
-               K : constant String := D.Key (N, I);
-               V : constant Node := D.Item (N, I);
-            begin
-               if D.Kind (V) = Mapping then
-                  Flatten (Pattern, Prefix & K & ".", V);
-               else
-                  Add_Override (Pattern, Prefix & K, From_YAML (D, V));
-               end if;
-            end;
-         end loop;
-      end Flatten;
-
-      procedure Walk (Scope : String; N : Node) is
-      begin
-         if D.Kind (N) /= Mapping then
-            raise Parse_Error with D.Where (N) & ": expected 'node_name: ros__parameters: ...'";
-         end if;
-         for I in 1 .. D.Length (N) loop
-            declare
-               K : constant String := D.Key (N, I);
-               V : constant Node := D.Item (N, I);
-            begin
-               if K = "ros__parameters" then
-                  if Scope = "" then
-                     raise Parse_Error with D.Key_Where (N, I)
-                       & ": 'ros__parameters' must be under a node name";
-                  end if;
-                  if D.Kind (V) = Mapping then
-                     Flatten (Scope, "", V);
-                  elsif D.Kind (V) /= Null_Value then
-                     raise Parse_Error with D.Where (V)
-                       & ": 'ros__parameters' must hold a mapping of parameters";
-                  end if;
-               elsif D.Kind (V) = Mapping then
-                  Walk ((if Scope = "" then K
-                         elsif K (K'First) = '/' then Scope & K
-                         else (if Scope (Scope'First) = '/' then Scope else "/" & Scope)
-                              & "/" & K), V);
-               else
-                  raise Parse_Error with D.Key_Where (N, I) & ": expected '" & K
-                    & ": ros__parameters: ...' (a node name and its parameters)";
-               end if;
-            end;
-         end loop;
-      end Walk;
    begin
-      if D.Kind (D.Root) /= Null_Value then
-         Walk ("", D.Root);
-      end if;
+      Initial_Values.Load_File (Path);
    end Load_File;
 
    procedure Load_Arguments is
-      Args : RCL.Arguments.Argument_List;
-      I    : Positive := 1;
    begin
-      RCL.Arguments.Load;
-      Args := RCL.Arguments.Parameter_Arguments;
-      --  Pairs (flag, value) in command-line order, checked by RCL.Arguments.
-      while I < Natural (Args.Length) loop
-         declare
-            A   : constant String := Args (I);
-            Arg : constant String := Args (I + 1);
-         begin
-            if A in "-p" | "--param" then
-               declare
-                  Sep : constant Natural := Ada.Strings.Fixed.Index (Arg, ":=");
-               begin
-                  if Sep <= Arg'First then
-                     raise Parameter_Error with "--ros-args " & A & " '" & Arg
-                       & "': expected name:=value";
-                  end if;
-                  Add_Override ("/**", Arg (Arg'First .. Sep - 1),
-                                Parse (Arg (Sep + 2 .. Arg'Last),
-                                       "--ros-args " & A & " " & Arg (Arg'First .. Sep - 1)));
-               end;
-            else
-               Load_File (Arg);
-            end if;
-         end;
-         I := I + 2;
-      end loop;
+      Initial_Values.Load_Arguments;
    end Load_Arguments;
 
 end RCL.Parameters;

@@ -1,0 +1,99 @@
+with Ada.Strings.Fixed;
+with RCL.Arguments;
+
+package body RCL.Parameters.Initial_Values is
+
+   use type RCL.YAML.Node_Kind;
+
+   procedure Load_File (Path : String) is
+      use RCL.YAML;
+      D : constant Document := Parse_File (Path);
+
+      procedure Flatten (Pattern : String; Prefix : String; N : Node) is
+      begin
+         for I in 1 .. D.Length (N) loop
+            declare
+               K : constant String := D.Key (N, I);
+               V : constant Node := D.Item (N, I);
+            begin
+               if D.Kind (V) = Mapping then
+                  Flatten (Pattern, Prefix & K & ".", V);
+               else
+                  Add_Override (Pattern, Prefix & K, From_YAML (D, V));
+               end if;
+            end;
+         end loop;
+      end Flatten;
+
+      procedure Walk (Scope : String; N : Node) is
+      begin
+         if D.Kind (N) /= Mapping then
+            raise Parse_Error with D.Where (N) & ": expected 'node_name: ros__parameters: ...'";
+         end if;
+         for I in 1 .. D.Length (N) loop
+            declare
+               K : constant String := D.Key (N, I);
+               V : constant Node := D.Item (N, I);
+            begin
+               if K = "ros__parameters" then
+                  if Scope = "" then
+                     raise Parse_Error with D.Key_Where (N, I)
+                       & ": 'ros__parameters' must be under a node name";
+                  end if;
+                  if D.Kind (V) = Mapping then
+                     Flatten (Scope, "", V);
+                  elsif D.Kind (V) /= Null_Value then
+                     raise Parse_Error with D.Where (V)
+                       & ": 'ros__parameters' must hold a mapping of parameters";
+                  end if;
+               elsif D.Kind (V) = Mapping then
+                  Walk ((if Scope = "" then K
+                         elsif K (K'First) = '/' then Scope & K
+                         else (if Scope (Scope'First) = '/' then Scope else "/" & Scope)
+                              & "/" & K), V);
+               else
+                  raise Parse_Error with D.Key_Where (N, I) & ": expected '" & K
+                    & ": ros__parameters: ...' (a node name and its parameters)";
+               end if;
+            end;
+         end loop;
+      end Walk;
+   begin
+      if D.Kind (D.Root) /= Null_Value then
+         Walk ("", D.Root);
+      end if;
+   end Load_File;
+
+   procedure Load_Arguments is
+      Args : RCL.Arguments.Argument_List;
+      I    : Positive := 1;
+   begin
+      RCL.Arguments.Load;
+      Args := RCL.Arguments.Parameter_Arguments;
+      --  Pairs (flag, value) in command-line order, checked by RCL.Arguments.
+      while I < Natural (Args.Length) loop
+         declare
+            A   : constant String := Args (I);
+            Arg : constant String := Args (I + 1);
+         begin
+            if A in "-p" | "--param" then
+               declare
+                  Sep : constant Natural := Ada.Strings.Fixed.Index (Arg, ":=");
+               begin
+                  if Sep <= Arg'First then
+                     raise Parameter_Error with "--ros-args " & A & " '" & Arg
+                       & "': expected name:=value";
+                  end if;
+                  Add_Override ("/**", Arg (Arg'First .. Sep - 1),
+                                Parse (Arg (Sep + 2 .. Arg'Last),
+                                       "--ros-args " & A & " " & Arg (Arg'First .. Sep - 1)));
+               end;
+            else
+               Load_File (Arg);
+            end if;
+         end;
+         I := I + 2;
+      end loop;
+   end Load_Arguments;
+
+end RCL.Parameters.Initial_Values;
