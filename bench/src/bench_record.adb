@@ -19,6 +19,7 @@ with Interfaces;
 with RCL.Bags;
 with RCL.Bags.Recorders;
 with RCL.Contexts;
+with RCL.DDS;
 with RCL.Graph.Queries;
 with RCL.MCAP.Writers;
 with RCL.Nodes;
@@ -73,6 +74,9 @@ procedure Bench_Record is
    end Payload;
 
    Data : constant Stream_Element_Array := Payload;
+
+   function Trim (Image : String) return String is
+     (if Image (Image'First) = ' ' then Image (Image'First + 1 .. Image'Last) else Image);
 begin
    if Argument (1) = "payload" then
       declare
@@ -118,6 +122,8 @@ begin
       begin
          Topics.Append (Argument (3));
          Rec.Start (Argument (4), Topics);
+         Ada.Text_IO.Put_Line ("ready");
+         Ada.Text_IO.Flush;
          RCL.Contexts.Install_Signal_Handlers;
          while Clock < Stop and then not RCL.Contexts.Is_Shutdown loop
             Rec.Discover (Node);
@@ -125,6 +131,37 @@ begin
          end loop;
          Rec.Stop;
          Ada.Text_IO.Put_Line ("Recorded" & Rec.Message_Count'Image & " messages");
+      end;
+   elsif Argument (1) = "sink" then
+      declare
+         Node  : RCL.Nodes.Node := RCL.Nodes.Init ("bench_record_sink");
+         Stop  : constant Time := Clock + To_Time_Span (Duration'Value (Argument (4)));
+         Count : Natural := 0;
+         First, Last : ROSIDL.Int64 := 0;
+         procedure Count_It
+           (N : in out RCL.Nodes.Node'Class; Data : RCL.DDS.Byte_Array;
+            Info : ROSIDL.Message_Info)
+         is
+            pragma Unreferenced (N, Data);
+         begin
+            Count := Count + 1;
+            if Count = 1 then
+               First := Info.Source_Timestamp;
+            end if;
+            Last := Info.Received_Timestamp;
+         end Count_It;
+      begin
+         Node.Subscribe_Raw
+           (RCL.Graph.Queries.Mangle_Type (Type_Name), Argument (3), Count_It'Access,
+            (RCL.QoS.Default with delta History => RCL.QoS.Keep_All, Depth => 1000));
+         RCL.Contexts.Install_Signal_Handlers;
+         Ada.Text_IO.Put_Line ("ready");
+         Ada.Text_IO.Flush;
+         while Clock < Stop and then not RCL.Contexts.Is_Shutdown loop
+            Node.Spin (During => 0.1);
+         end loop;
+         Ada.Text_IO.Put_Line
+           (Trim (Count'Image) & "," & Trim (First'Image) & "," & Trim (Last'Image));
       end;
    elsif Argument (1) = "pub" then
       declare

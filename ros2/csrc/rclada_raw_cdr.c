@@ -411,6 +411,35 @@ int32_t rclada_dds_take_raw (dds_entity_t reader, void **serdata, struct rclada_
   return 1;
 }
 
+int32_t rclada_dds_take_raw_many (dds_entity_t reader, void **serdata,
+                                  struct rclada_raw_info *info, int32_t max)
+{
+  struct ddsi_serdata *sd[RCLADA_TAKE_MAX];
+  dds_sample_info_t si[RCLADA_TAKE_MAX];
+  dds_return_t n;
+  int32_t i, valid;
+  if (max < 1 || max > RCLADA_TAKE_MAX)
+    return DDS_RETCODE_BAD_PARAMETER;
+  for (;;) {
+    n = dds_takecdr (reader, sd, (uint32_t) max, si, DDS_ANY_STATE);
+    if (n <= 0)
+      return n;
+    valid = 0;
+    for (i = 0; i < n; i++) {
+      if (si[i].valid_data) {
+        serdata[valid] = sd[i];
+        info[valid].source_timestamp = si[i].source_timestamp;
+        info[valid].publication_handle = si[i].publication_handle;
+        valid++;
+      } else {
+        ddsi_serdata_unref (sd[i]); /* an instance state change: nothing to deliver */
+      }
+    }
+    if (valid > 0)
+      return valid;
+  }
+}
+
 const unsigned char *rclada_dds_serdata_bytes (const void *serdata, uint32_t *size)
 {
   const struct raw_serdata *d = serdata;

@@ -35,6 +35,13 @@ dds_return_t rclada_dds_write_raw (dds_entity_t writer, const void *sertype,
 int32_t rclada_dds_take_raw (dds_entity_t reader, void **serdata,
                              struct rclada_raw_info *info);
 
+/* Takes up to max (1..RCLADA_TAKE_MAX) samples in one DDS take: returns how
+   many valid ones it stored in serdata[0..n-1] / info[0..n-1] (each a
+   reference to release), 0 when none is available, < 0 on error. */
+#define RCLADA_TAKE_MAX 64
+int32_t rclada_dds_take_raw_many (dds_entity_t reader, void **serdata,
+                                  struct rclada_raw_info *info, int32_t max);
+
 const unsigned char *rclada_dds_serdata_bytes (const void *serdata, uint32_t *size);
 void rclada_dds_serdata_release (void *serdata);
 

@@ -14,11 +14,12 @@ package body RCL.Executors.Concurrent is
       begin
          Pools.Put_Sample (This.Workers, Node, Sub, Data, To_Info (Info));
       end Queue_It;
-      Taken : Boolean := True;
+      Count : Natural;
    begin
       Start (This);
-      while Taken loop
-         RCL.DDS.Take (Sub.Reader, Queue_It'Access, Taken);
+      loop
+         RCL.DDS.Take_Many (Sub.Reader, Queue_It'Access, Count);
+         exit when Count = 0;
       end loop;
    end Dispatch_Sample;
 

@@ -10,10 +10,11 @@ package body RCL.Executors.Sequential is
       begin
          Run_Subscription (Node, Sub, Data, To_Info (Info));
       end Process;
-      Taken : Boolean := True;
+      Count : Natural;
    begin
-      while Taken loop
-         RCL.DDS.Take (Sub.Reader, Process'Access, Taken);
+      loop
+         RCL.DDS.Take_Many (Sub.Reader, Process'Access, Count);
+         exit when Count = 0;
       end loop;
    end Dispatch_Sample;
 

@@ -6,7 +6,10 @@ package body Sancta.Team.Security is
 
    package Keystores renames RCL.Security.Keystores;
 
-   procedure Create_Keystore (Dir, Team : String; Task_Writers, Other_Nodes : Id_List) is
+   procedure Create_Keystore
+     (Dir, Team : String; Task_Writers, Other_Nodes : Id_List;
+      Readers : Id_List := [1 .. 0 => <>])
+   is
       Tasks : constant String := "rt" & Networks.Tasks_Topic (Team);
       No_Tasks : constant Keystores.Topic_Rules :=
         [1 => (Allow => False, Kind => Keystores.Publish, Topic => To_Unbounded_String (Tasks)),
@@ -20,6 +23,10 @@ package body Sancta.Team.Security is
       for Id of Other_Nodes loop
          Keystores.Create_Enclave (Dir, Enclave (Team, To_String (Id)));
          Keystores.Create_Permission (Dir, Enclave (Team, To_String (Id)), No_Tasks);
+      end loop;
+      for Id of Readers loop
+         Keystores.Create_Enclave (Dir, Enclave (Team, To_String (Id)));
+         Keystores.Create_Permission (Dir, Enclave (Team, To_String (Id)), Reader_Rules);
       end loop;
       Keystores.Create_Enclave (Dir, Simulator_Enclave);
       Keystores.Create_Permission (Dir, Simulator_Enclave, No_Tasks);

@@ -159,3 +159,12 @@ def test_demo_auctions_robot_lost_secured(tmp_path):
     assert (keystore / "sancta" / "sim" / "cert.pem").exists()
     assert "<topic>rt/sancta/team/tasks</topic>" in \
         (keystore / "sancta" / "team" / "r1" / "permissions.xml").read_text()
+    # The recorder ran in its own enclave, which may read everything and
+    # publish only about itself; it recorded the (encrypted) team traffic.
+    import re
+    recorder = (keystore / "sancta" / "team" / "recorder" / "permissions.xml").read_text()
+    publish = re.search(r"<publish>(.*?)</publish>", recorder, re.S).group(1)
+    assert set(re.findall(r"<topic>(.*?)</topic>", publish)) == \
+        {"ros_discovery_info", "rt/rosout", "rt/parameter_events", "rr/*"}, recorder
+    assert "<deny_rule>" not in recorder and "<topic>*</topic>" in recorder
+    check_bag(tmp_path)

@@ -25,7 +25,7 @@ package body Sancta.Commands.Demo is
       Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
       Put_Line ("  --view: also open the live view (sancta-view) when a display is set");
       Put_Line ("  the run is recorded into the bag OUT/mission (rclada bag record -a) unless");
-      Put_Line ("  --no-record is given (or --secure)");
+      Put_Line ("  --no-record is given (under --secure in an enclave that may only read)");
       Put_Line ("  --secure: DDS-Security, a keystore in OUT/keystore, one enclave per process,");
       Put_Line ("  only the operator may publish tasks");
    end Usage;

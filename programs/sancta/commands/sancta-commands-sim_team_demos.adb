@@ -339,7 +339,8 @@ package body Sancta.Commands.Sim_Team_Demos is
          Robot_Ids (N + 1) := To_Unbounded_String ("demo_monitor");
          Robot_Ids (N + 2) := To_Unbounded_String ("view");  --  sancta-view (--view)
          Security.Create_Keystore (Log_Dir & "/keystore", To_String (View.Team),
-                                   Task_Writers => Writers, Other_Nodes => Robot_Ids);
+                                   Task_Writers => Writers, Other_Nodes => Robot_Ids,
+                                   Readers => [1 => To_Unbounded_String ("recorder")]);
          Security.Enable (Log_Dir & "/keystore");
          RCL.Security.Set_Enclave (Security.Enclave (To_String (View.Team), "demo_monitor"));
       end Secure_Team;
@@ -381,6 +382,10 @@ package body Sancta.Commands.Sim_Team_Demos is
          Args.Append (Bag);
          Args.Append ("--discovery-period");
          Args.Append ("0.3");
+         if Config.Secure then
+            --  Its enclave may read every topic and inject none.
+            Security.Set_Child_Enclave (Security.Enclave (To_String (View.Team), "recorder"));
+         end if;
          Children.Insert
            ("recorder", (To_Unbounded_String ("rclada"),
                          Spawn (Program (Config, "rclada"), Args, Log_Dir & "/recorder.log"),
@@ -392,11 +397,13 @@ package body Sancta.Commands.Sim_Team_Demos is
          Args : Text_Vectors.Vector;
       begin
          Ada.Directories.Create_Path (Log_Dir);
-         if Config.Record_Bag and then not Config.Secure and then Dir /= "" then
+         if Config.Secure then
+            Secure_Team;
+         end if;
+         if Config.Record_Bag and then Dir /= "" then
             Start_Recorder;
          end if;
          if Config.Secure then
-            Secure_Team;
             Security.Set_Child_Enclave (Security.Simulator_Enclave);
          end if;
          Args.Append (To_String (View.World));

@@ -60,7 +60,7 @@ package body RCL.Bags.Recorders is
       if This.Shared = null then
          This.Shared := new State;
       end if;
-      This.Shared.Bag.Create (Output, Compression, Max_Bytes, Max_Duration);
+      This.Shared.Bag.Create (Output, Compression, Max_Bytes, Max_Duration, Background => True);
       This.Shared.Recording := True;
       This.Shared.Count := 0;
       This.Wanted.Clear;

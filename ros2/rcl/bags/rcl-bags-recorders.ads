@@ -5,8 +5,9 @@
 --  subscribed with the QoS its publishers offer (best effort when one of
 --  them is, transient local when all of them are), keeping all samples
 --  (a reliable publisher waits for the recorder rather than lose one), and
---  its serialized
---  messages are written as they arrive, stamped with their reception time.
+--  its serialized messages are written as they arrive (taken from DDS in
+--  batches, RCL.DDS.Take_Many), stamped with their reception time; full
+--  chunks are compressed and written by a task of the bag writer's own.
 --  Example:
 --     Node : Nodes.Node := Nodes.Init ("recorder");
 --     Rec  : Recorder;

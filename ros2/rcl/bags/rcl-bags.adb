@@ -200,7 +200,7 @@ package body RCL.Bags is
       Index : constant Positive := Natural (This.Files.Length) + 1;
    begin
       This.File.Create (File_Path (This, Index), Profile => "ros2", Library => "rclada",
-                        Compression => This.Compression);
+                        Compression => This.Compression, Background => This.Background);
       This.Files.Append
         (File_Entry'(Name => To_Unbounded_String
                        (Ada.Directories.Simple_Name (File_Path (This, Index))),
@@ -247,7 +247,8 @@ package body RCL.Bags is
       Directory    : String;
       Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes    : Interfaces.Unsigned_64 := 0;
-      Max_Duration : Duration := 0.0) is
+      Max_Duration : Duration := 0.0;
+      Background   : Boolean := False) is
    begin
       if Ada.Directories.Exists (Directory) then
          raise Bag_Error with Directory & ": the output directory exists already (choose "
@@ -261,6 +262,7 @@ package body RCL.Bags is
       end;
       This.Directory := To_Unbounded_String (Directory);
       This.Compression := Compression;
+      This.Background := Background;
       This.Max_Bytes := Max_Bytes;
       This.Max_Span := Time_Stamp (Max_Duration * 1_000_000_000);
       This.Files.Clear;

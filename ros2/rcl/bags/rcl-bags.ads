@@ -66,11 +66,14 @@ package RCL.Bags is
       Directory    : String;
       Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes    : Interfaces.Unsigned_64 := 0;
-      Max_Duration : Duration := 0.0)
+      Max_Duration : Duration := 0.0;
+      Background   : Boolean := False)
      with Pre => not This.Is_Open;
    --  Makes Directory (Bag_Error when it exists already, as ros2 bag record)
    --  and its first file. Max_Bytes / Max_Duration (0: none) start a new
    --  file once the current one is that large / spans that long.
+   --  Background: each file's full chunks are compressed and written by a
+   --  task while the next fills (RCL.MCAP.Writers.Create).
 
    function Is_Open (This : Bag_Writer) return Boolean;
 
@@ -158,6 +161,7 @@ private
    type Bag_Writer is new Ada.Finalization.Limited_Controlled with record
       Directory    : Unbounded_String;
       Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
+      Background   : Boolean := False;
       Max_Bytes    : Interfaces.Unsigned_64 := 0;
       Max_Span     : Time_Stamp := 0;
       File         : RCL.MCAP.Writers.Writer;

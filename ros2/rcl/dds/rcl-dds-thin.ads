@@ -217,6 +217,20 @@ private package RCL.DDS.Thin is
       return Integer_32
      with Import, Convention => C, External_Name => "rclada_dds_take_raw";
 
+   Take_Max : constant := 64;
+   --  RCLADA_TAKE_MAX.
+   type Serdata_Array is array (1 .. Take_Max) of System.Address
+     with Convention => C;
+   type Raw_Info_Array is array (1 .. Take_Max) of Raw_Info
+     with Convention => C;
+
+   function Take_Raw_Many
+     (Reader  : Entity_T;
+      Serdata : out Serdata_Array;
+      Info    : out Raw_Info_Array;
+      Max     : Integer_32) return Integer_32
+     with Import, Convention => C, External_Name => "rclada_dds_take_raw_many";
+
    function Serdata_Bytes
      (Serdata : System.Address; Size : out Unsigned_32) return System.Address
      with Import, Convention => C, External_Name => "rclada_dds_serdata_bytes";

@@ -576,6 +576,58 @@ package body RCL.DDS is
       Thin.Serdata_Release (Serdata);
    end Take;
 
+   procedure Take_Many
+     (This    : in out Reader;
+      Process : not null access procedure (Data : Byte_Array; Info : Sample_Info);
+      Count   : out Natural)
+   is
+      Serdata : Thin.Serdata_Array;
+      Raw     : Thin.Raw_Info_Array;
+      Result  : constant Integer_32 :=
+        Thin.Take_Raw_Many (C.int (This.Handle), Serdata, Raw, Take_Batch);
+      Done    : Natural := 0;
+      --  Samples processed and released.
+   begin
+      Count := 0;
+      Check (Integer (Result), "taking from """ & Topic_Name (This) & """");
+      if Result = 0 then
+         return;
+      end if;
+      Count := Natural (Result);
+      for I in 1 .. Count loop
+         declare
+            Size  : Unsigned_32;
+            Bytes : constant System.Address := Thin.Serdata_Bytes (Serdata (I), Size);
+            Info  : constant Sample_Info :=
+              (Source_Timestamp => Time_Ns (Raw (I).Source_Timestamp),
+               Publisher        => Publisher_Of (This, Raw (I).Publication_Handle));
+         begin
+            if Size = 0 or else Bytes = System.Null_Address then
+               declare
+                  Empty : constant Byte_Array (1 .. 0) := [others => 0];
+               begin
+                  Process (Empty, Info);
+               end;
+            else
+               declare
+                  Data : constant Byte_Array (1 .. Ada.Streams.Stream_Element_Offset (Size))
+                    with Import, Address => Bytes;
+               begin
+                  Process (Data, Info);
+               end;
+            end if;
+         end;
+         Thin.Serdata_Release (Serdata (I));
+         Done := I;
+      end loop;
+   exception
+      when others =>
+         for I in Done + 1 .. Count loop
+            Thin.Serdata_Release (Serdata (I));
+         end loop;
+         raise;
+   end Take_Many;
+
    function Take (This : in out Reader; Info : out Sample_Info) return Byte_Array is
       type Bytes_Access is access Byte_Array;
       procedure Free is new Ada.Unchecked_Deallocation (Byte_Array, Bytes_Access);

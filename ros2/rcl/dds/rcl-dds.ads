@@ -160,6 +160,20 @@ package RCL.DDS is
    --  Takes one sample, if any, and calls Process with its bytes (valid
    --  only during the call: no copy is made).
 
+   Take_Batch : constant := 64;
+
+   procedure Take_Many
+     (This    : in out Reader;
+      Process : not null access procedure (Data : Byte_Array; Info : Sample_Info);
+      Count   : out Natural)
+     with Pre => Is_Open (This), Post => Count <= Take_Batch;
+   --  As Take, for up to Take_Batch samples taken in one DDS take (one lock
+   --  of the reader's history instead of one per sample): Process is called
+   --  for each, in order; Count says how many (0: none was available).
+   --  An exception from Process propagates after every taken sample was
+   --  released (the samples after the failing one are lost). Call it until
+   --  Count = 0 to empty the reader.
+
    function Take (This : in out Reader; Info : out Sample_Info) return Byte_Array
      with Pre => Is_Open (This);
    --  A copy of the next sample; an empty array when there is none.

@@ -28,6 +28,16 @@ package body RCL.MCAP.Buffers is
       end if;
    end Reserve;
 
+   procedure Swap (Left, Right : in out Buffer) is
+      Data   : constant Byte_Array_Access := Left.Data;
+      Length : constant Stream_Element_Offset := Left.Length;
+   begin
+      Left.Data := Right.Data;
+      Left.Length := Right.Length;
+      Right.Data := Data;
+      Right.Length := Length;
+   end Swap;
+
    procedure Clear (This : in out Buffer) is
    begin
       This.Length := 0;

@@ -19,6 +19,9 @@ private package RCL.MCAP.Buffers is
    procedure Reserve (This : in out Buffer; Extra : Stream_Element_Offset);
    --  Room for Extra more bytes (the capacity at least doubles).
 
+   procedure Swap (Left, Right : in out Buffer);
+   --  Exchanges the bytes (and the memory) of Left and Right, no copy.
+
    procedure Clear (This : in out Buffer);
    --  Length := 0, keeping the memory.
 

@@ -1,7 +1,9 @@
+with Ada.Unchecked_Deallocation;
 with RCL.MCAP.Compression;
 
 package body RCL.MCAP.Writers is
 
+   use Ada.Exceptions;
    use Ada.Streams;
    use Interfaces;
 
@@ -30,6 +32,10 @@ package body RCL.MCAP.Writers is
       end if;
    end Emit;
 
+   procedure Wait_Finished (This : in out Writer);
+   --  Background: waits until the Finisher is idle and raises its error,
+   --  if any. Then the writer may touch the file again.
+
    procedure Begin_Record (B : in out Buffers.Buffer; Opcode : Unsigned_8;
                            Length_At : out Stream_Element_Offset) is
    begin
@@ -53,7 +59,8 @@ package body RCL.MCAP.Writers is
       Profile     : String := "ros2";
       Library     : String := "rclada";
       Compression : Compression_Kind := Zstd;
-      Chunk_Size  : Positive := Default_Chunk_Size)
+      Chunk_Size  : Positive := Default_Chunk_Size;
+      Background  : Boolean := False)
    is
       At_Length : Stream_Element_Offset;
    begin
@@ -83,6 +90,10 @@ package body RCL.MCAP.Writers is
       This.Scratch.Put_String (Library);
       End_Record (This.Scratch, At_Length);
       Emit (This, This.Scratch);
+      This.Jobs.Set_Written (This.Position);
+      if Background and then This.Worker = null then
+         This.Worker := new Finisher (This'Unchecked_Access);
+      end if;
    end Create;
 
    function Is_Open (This : Writer) return Boolean is (Stream_IO.Is_Open (This.File));
@@ -97,6 +108,7 @@ package body RCL.MCAP.Writers is
       At_Length : Stream_Element_Offset;
       Start     : constant Stream_Element_Offset := This.Schema_Records.Length;
    begin
+      Wait_Finished (This);
       This.Schema_Count := This.Schema_Count + 1;
       Begin_Record (This.Schema_Records, Op_Schema, At_Length);
       This.Schema_Records.Put_U16 (This.Schema_Count);
@@ -105,6 +117,7 @@ package body RCL.MCAP.Writers is
       This.Schema_Records.Put_String (Data);  --  uint32 length + bytes, as a string
       End_Record (This.Schema_Records, At_Length);
       Emit (This, This.Schema_Records.Data (Start + 1 .. This.Schema_Records.Length));
+      This.Jobs.Set_Written (This.Position);
       return This.Schema_Count;
    end Add_Schema;
 
@@ -124,6 +137,7 @@ package body RCL.MCAP.Writers is
       Id        : constant Channel_Id := Channel_Id (Natural (This.Channels.Length) + 1);
       New_State : Channel_State;
    begin
+      Wait_Finished (This);
       This.Channels.Append (New_State);
       Begin_Record (This.Channel_Records, Op_Channel, At_Length);
       This.Channel_Records.Put_U16 (Id);
@@ -133,16 +147,19 @@ package body RCL.MCAP.Writers is
       This.Channel_Records.Put_Map (Metadata);
       End_Record (This.Channel_Records, At_Length);
       Emit (This, This.Channel_Records.Data (Start + 1 .. This.Channel_Records.Length));
+      This.Jobs.Set_Written (This.Position);
       return Id;
    end Add_Channel;
 
-   -----------------
-   -- Flush_Chunk --
-   -----------------
+   ----------------
+   -- Finish_Job --
+   ----------------
 
-   procedure Flush_Chunk (This : in out Writer) is
+   --  Writes the chunk in the Job fields: its record (CRC'd, compressed),
+   --  its message indexes, and its chunk index kept for the summary.
+   procedure Finish_Job (This : in out Writer) is
       Chunk_Start_Offset : constant Unsigned_64 := This.Position;
-      Uncompressed       : Byte_Array renames This.Chunk.Data (1 .. This.Chunk.Length);
+      Uncompressed       : Byte_Array renames This.Job_Chunk.Data (1 .. This.Job_Chunk.Length);
       CRC                : constant Unsigned_32 := CRC32 (Uncompressed);
       Name               : constant String := Image (This.Compression);
       Compressed_Last    : Stream_Element_Offset;
@@ -153,9 +170,6 @@ package body RCL.MCAP.Writers is
       Offsets            : Buffers.Buffer;
       Offsets_Count      : Unsigned_32 := 0;
    begin
-      if This.Chunk_Messages = 0 then
-         return;
-      end if;
       if This.Compression /= None then
          This.Compressed.Clear;
          This.Compressed.Reserve (Compression.Bound (This.Compression, Uncompressed'Length));
@@ -167,8 +181,8 @@ package body RCL.MCAP.Writers is
       --  The chunk record: its fixed fields, then the records.
       Head.Clear;
       Begin_Record (Head, Op_Chunk, At_Length);
-      Head.Put_U64 (This.Chunk_Start);
-      Head.Put_U64 (This.Chunk_End);
+      Head.Put_U64 (This.Job_Start);
+      Head.Put_U64 (This.Job_End);
       Head.Put_U64 (Unsigned_64 (Uncompressed'Length));
       Head.Put_U32 (CRC);
       Head.Put_String (Name);
@@ -183,25 +197,25 @@ package body RCL.MCAP.Writers is
       Chunk_Length := This.Position - Chunk_Start_Offset;
       --  One message index per channel with messages in the chunk.
       Index_Start := This.Position;
-      for Id in 1 .. Natural (This.Channels.Length) loop
+      for Id in 1 .. Natural (This.Job_Indexes.Length) loop
          declare
-            State : Channel_State renames This.Channels (Id);
+            Index : Index_Vectors.Vector renames This.Job_Indexes (Id);
          begin
-            if not State.Index.Is_Empty then
+            if not Index.Is_Empty then
                Offsets.Put_U16 (Channel_Id (Id));
                Offsets.Put_U64 (This.Position);
                Offsets_Count := Offsets_Count + 1;
                Head.Clear;
                Begin_Record (Head, Op_Message_Index, At_Length);
                Head.Put_U16 (Channel_Id (Id));
-               Head.Put_U32 (Unsigned_32 (State.Index.Length) * 16);
-               for E of State.Index loop
+               Head.Put_U32 (Unsigned_32 (Index.Length) * 16);
+               for E of Index loop
                   Head.Put_U64 (E.Time);
                   Head.Put_U64 (E.Offset);
                end loop;
                End_Record (Head, At_Length);
                Emit (This, Head);
-               State.Index.Clear;
+               Index.Clear;
             end if;
          end;
       end loop;
@@ -210,8 +224,8 @@ package body RCL.MCAP.Writers is
          B : Buffers.Buffer renames This.Chunk_Indexes;
       begin
          Begin_Record (B, Op_Chunk_Index, At_Length);
-         B.Put_U64 (This.Chunk_Start);
-         B.Put_U64 (This.Chunk_End);
+         B.Put_U64 (This.Job_Start);
+         B.Put_U64 (This.Job_End);
          B.Put_U64 (Chunk_Start_Offset);
          B.Put_U64 (Chunk_Length);
          B.Put_U32 (Offsets_Count * 10);
@@ -225,10 +239,137 @@ package body RCL.MCAP.Writers is
          End_Record (B, At_Length);
       end;
       This.Chunk_Count := This.Chunk_Count + 1;
+      This.Job_Chunk.Clear;
+   end Finish_Job;
+
+   --------------
+   -- Finisher --
+   --------------
+
+   task body Finisher is
+   begin
+      loop
+         select
+            accept Start;
+         or
+            accept Quit;
+            exit;
+         or
+            terminate;
+         end select;
+         begin
+            Finish_Job (Owner.all);
+            Owner.Jobs.Done (Owner.Position, Null_Occurrence);
+         exception
+            when E : others =>
+               Owner.Jobs.Done (Owner.Position, E);
+         end;
+      end loop;
+   end Finisher;
+
+   protected body Handoff is
+
+      procedure Submit (Length : Unsigned_64) is
+      begin
+         Queued := Length;
+         Busy := True;
+      end Submit;
+
+      procedure Done (Position : Unsigned_64; Error : Exception_Occurrence) is
+      begin
+         Written := Position;
+         Queued := 0;
+         if Exception_Identity (Error) /= Null_Id then
+            Save_Occurrence (Failure, Error);
+         end if;
+         Busy := False;
+      end Done;
+
+      entry Wait_Idle when not Busy is
+      begin
+         null;
+      end Wait_Idle;
+
+      procedure Take_Error (Error : out Exception_Occurrence) is
+      begin
+         Save_Occurrence (Error, Failure);
+         Save_Occurrence (Failure, Null_Occurrence);
+      end Take_Error;
+
+      function Bytes_Written return Unsigned_64 is (Written + Queued);
+
+      procedure Set_Written (Position : Unsigned_64) is
+      begin
+         Written := Position;
+         Queued := 0;
+         Save_Occurrence (Failure, Null_Occurrence);
+      end Set_Written;
+
+   end Handoff;
+
+   procedure Wait_Finished (This : in out Writer) is
+      Error : Exception_Occurrence;
+   begin
+      if This.Worker /= null then
+         This.Jobs.Wait_Idle;
+         This.Jobs.Take_Error (Error);
+         Reraise_Occurrence (Error);  --  Nothing for Null_Occurrence.
+      end if;
+   end Wait_Finished;
+
+   procedure Stop_Worker (This : in out Writer) is
+      procedure Free is new Ada.Unchecked_Deallocation (Finisher, Finisher_Access);
+   begin
+      if This.Worker /= null then
+         This.Jobs.Wait_Idle;
+         This.Worker.Quit;
+         while not This.Worker'Terminated loop
+            delay 0.001;
+         end loop;
+         Free (This.Worker);
+      end if;
+   end Stop_Worker;
+
+   -----------------
+   -- Flush_Chunk --
+   -----------------
+
+   --  Hands the open chunk over as the job (no copy) and finishes it, in
+   --  the Finisher when Background.
+   procedure Flush_Chunk (This : in out Writer) is
+   begin
+      if This.Chunk_Messages = 0 then
+         return;
+      end if;
+      Wait_Finished (This);
+      Buffers.Swap (This.Chunk, This.Job_Chunk);
       This.Chunk.Clear;
+      This.Job_Start := This.Chunk_Start;
+      This.Job_End := This.Chunk_End;
+      if Natural (This.Job_Indexes.Length) < Natural (This.Channels.Length) then
+         This.Job_Indexes.Set_Length (This.Channels.Length);
+      end if;
+      for Id in 1 .. Natural (This.Channels.Length) loop
+         declare
+            Spare : Index_Vectors.Vector;
+         begin
+            --  Exchanged, so that both vectors keep their capacity.
+            Index_Vectors.Move (Target => Spare, Source => This.Job_Indexes (Id));
+            Index_Vectors.Move (Target => This.Job_Indexes (Id),
+                                Source => This.Channels (Id).Index);
+            Index_Vectors.Move (Target => This.Channels (Id).Index, Source => Spare);
+            This.Channels (Id).Index.Clear;
+         end;
+      end loop;
       This.Chunk_Messages := 0;
       This.Chunk_Start := Time_Stamp'Last;
       This.Chunk_End := 0;
+      if This.Worker /= null then
+         This.Jobs.Submit (Unsigned_64 (This.Job_Chunk.Length));
+         This.Worker.Start;
+      else
+         Finish_Job (This);
+      end if;
    end Flush_Chunk;
 
    -----------
@@ -268,7 +409,8 @@ package body RCL.MCAP.Writers is
    end Write;
 
    function Bytes_Written (This : Writer) return Unsigned_64 is
-     (This.Position + Unsigned_64 (This.Chunk.Length));
+     ((if This.Worker /= null then This.Jobs.Bytes_Written else This.Position)
+      + Unsigned_64 (This.Chunk.Length));
 
    function Message_Count (This : Writer) return Unsigned_64 is (This.Message_Total);
 
@@ -302,7 +444,15 @@ package body RCL.MCAP.Writers is
       if not This.Is_Open then
          return;
       end if;
-      Flush_Chunk (This);
+      begin
+         Flush_Chunk (This);
+         Wait_Finished (This);
+      exception
+         when others =>
+            Stop_Worker (This);
+            raise;
+      end;
+      Stop_Worker (This);
       This.Scratch.Clear;
       Begin_Record (This.Scratch, Op_Data_End, At_Length);
       This.Scratch.Put_U32 (0);  --  No data section CRC.
@@ -347,6 +497,11 @@ package body RCL.MCAP.Writers is
       Close (This);
    exception
       when others =>
+         begin
+            Stop_Worker (This);
+         exception
+            when others => null;
+         end;
          if This.Is_Open then
             begin
                Stream_IO.Close (This.File);

@@ -2,6 +2,8 @@
 --  asked), each chunk followed by one message index per channel; Close
 --  writes the summary (schemas, channels, statistics, chunk indexes) and the
 --  footer so that readers can seek. Not task-safe: one task writes.
+--  With Background, a task of the writer's own compresses and writes each
+--  full chunk while the next one fills (Write then only copies messages).
 --  Example:
 --     W : Writer;
 --     W.Create ("run.mcap", Profile => "ros2", Compression => Zstd);
@@ -13,6 +15,8 @@
 with Ada.Finalization;
 
 private with Ada.Containers.Vectors;
+private with Ada.Exceptions;
+private with System;
 private with Ada.Streams.Stream_IO;
 private with Ada.Strings.Unbounded;
 private with RCL.MCAP.Buffers;
@@ -30,10 +34,16 @@ package RCL.MCAP.Writers is
       Profile     : String := "ros2";
       Library     : String := "rclada";
       Compression : Compression_Kind := Zstd;
-      Chunk_Size  : Positive := Default_Chunk_Size)
+      Chunk_Size  : Positive := Default_Chunk_Size;
+      Background  : Boolean := False)
      with Pre => not This.Is_Open, Post => This.Is_Open;
    --  Creates (or replaces) Path and writes the magic and the header.
    --  Ada.IO_Exceptions.Name_Error/Use_Error when it cannot be created.
+   --  Background: full chunks are CRC'd, compressed and written by a task
+   --  (one chunk at a time: a Write that fills the next chunk first waits
+   --  for the previous one); the file is the same byte for byte. An error
+   --  of that task (disk full) is raised by the next Write, Add_Schema,
+   --  Add_Channel or Close.
 
    function Is_Open (This : Writer) return Boolean;
 
@@ -65,14 +75,15 @@ package RCL.MCAP.Writers is
 
    function Bytes_Written (This : Writer) return Interfaces.Unsigned_64;
    --  The file's size so far plus the open chunk's uncompressed size (for
-   --  splitting bags by size).
+   --  splitting bags by size); Background: plus the uncompressed size of
+   --  the chunk its task is writing.
 
    function Message_Count (This : Writer) return Interfaces.Unsigned_64;
 
    procedure Close (This : in out Writer)
      with Post => not This.Is_Open;
    --  Writes the last chunk, the summary and the footer, and closes the
-   --  file. Nothing when not open.
+   --  file (and ends the Background task). Nothing when not open.
 
    overriding procedure Finalize (This : in out Writer);
    --  Close, errors ignored.
@@ -93,6 +104,42 @@ private
       --  The open chunk's messages of this channel.
    end record;
    package Channel_Vectors is new Ada.Containers.Vectors (Positive, Channel_State);
+   package Chunk_Index_Vectors is new Ada.Containers.Vectors
+     (Positive, Index_Vectors.Vector, Index_Vectors."=");
+
+   protected type Handoff is
+      procedure Submit (Length : Interfaces.Unsigned_64);
+      --  The writer's Job fields hold a chunk of Length bytes that its
+      --  Finisher is about to finish.
+      procedure Done (Position : Interfaces.Unsigned_64;
+                      Error    : Ada.Exceptions.Exception_Occurrence);
+      --  The job is written (Error: Null_Occurrence, or what went wrong).
+      entry Wait_Idle;
+      procedure Take_Error (Error : out Ada.Exceptions.Exception_Occurrence);
+      --  The error of a finished job, if any (then forgotten).
+      function Bytes_Written return Interfaces.Unsigned_64;
+      --  The file's size after the last finished job plus the pending
+      --  chunk's size.
+      procedure Set_Written (Position : Interfaces.Unsigned_64);
+      --  After the writer itself wrote (no job under way, no error kept).
+   private
+      Busy     : Boolean := False;
+      Written  : Interfaces.Unsigned_64 := 0;
+      Queued   : Interfaces.Unsigned_64 := 0;
+      Failure  : Ada.Exceptions.Exception_Occurrence;
+   end Handoff;
+
+   type Writer_Access is access all Writer;
+
+   task type Finisher (Owner : not null Writer_Access)
+     with Priority => System.Default_Priority
+   is
+      entry Start;
+      --  Finishes Owner's job (then Owner.Jobs.Done).
+      entry Quit;
+   end Finisher;
+   --  Terminates on Quit, or with its master when nobody can call it.
+   type Finisher_Access is access Finisher;
 
    type Writer is new Ada.Finalization.Limited_Controlled with record
       File           : Ada.Streams.Stream_IO.File_Type;
@@ -115,6 +162,15 @@ private
       Schema_Records : Buffers.Buffer;
       Channel_Records : Buffers.Buffer;
       Chunk_Indexes  : Buffers.Buffer;
+      --  The chunk being finished: while Background's task works on it,
+      --  only that task touches these fields and File, Position, Scratch,
+      --  Compressed, Chunk_Indexes and Chunk_Count.
+      Job_Chunk      : Buffers.Buffer;
+      Job_Indexes    : Chunk_Index_Vectors.Vector;
+      Job_Start      : Time_Stamp := 0;
+      Job_End        : Time_Stamp := 0;
+      Jobs           : Handoff;
+      Worker         : Finisher_Access;
    end record;
 
 end RCL.MCAP.Writers;

@@ -1,5 +1,6 @@
 with Ada.Directories;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
@@ -15,6 +16,7 @@ package body RCL.MCAP.Tests is
 
    use Ada.Streams;
    use Ada.Strings.Unbounded;
+   use type Interfaces.Unsigned_16;
    use type Interfaces.Unsigned_64;
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
@@ -43,13 +45,22 @@ package body RCL.MCAP.Tests is
      (Base + Time_Stamp (I) * 1_000_000 - (if I mod 10 = 9 then 3_000_000 else 0));
 
    procedure Write_Sample
-     (Path : String; Kind : Compression_Kind; Count : Natural; Chunk_Size : Positive) is
+     (Path       : String;
+      Kind       : Compression_Kind;
+      Count      : Natural;
+      Chunk_Size : Positive;
+      Background : Boolean := False;
+      Late       : Natural := Natural'Last)
+   is
+      --  Late: after that many messages, a fourth channel is added and
+      --  gets every 4th message from then on.
       W  : Writers.Writer;
       S1 : Schema_Id;
       C  : array (0 .. 2) of Channel_Id;
+      C4 : Channel_Id := 0;
       M  : String_Maps.Map;
    begin
-      W.Create (Path, Compression => Kind, Chunk_Size => Chunk_Size);
+      W.Create (Path, Compression => Kind, Chunk_Size => Chunk_Size, Background => Background);
       S1 := W.Add_Schema ("std_msgs/msg/String", "ros2msg", "string data");
       M.Include ("offered_qos_profiles", "- history: 1" & ASCII.LF);
       for K in C'Range loop
@@ -57,7 +68,12 @@ package body RCL.MCAP.Tests is
                                  S1, "cdr", M);
       end loop;
       for I in 0 .. Count - 1 loop
-         W.Write (C (I mod 3), Time_Of (I), Payload (I), Sequence => Interfaces.Unsigned_32 (I));
+         if I = Late then
+            C4 := W.Add_Channel ("/late", W.Add_Schema ("std_msgs/msg/Empty", "ros2msg", ""),
+                                 "cdr", M);
+         end if;
+         W.Write ((if C4 /= 0 and then I mod 4 = 0 then C4 else C (I mod 3)), Time_Of (I),
+                  Payload (I), Sequence => Interfaces.Unsigned_32 (I));
       end loop;
       W.Close;
    end Write_Sample;
@@ -128,6 +144,49 @@ package body RCL.MCAP.Tests is
          return Data;
       end;
    end Read_All;
+
+   procedure Background_Writer (Unused : in out Fixture) is
+   begin
+      for Kind in Compression_Kind loop
+         declare
+            Plain : constant String := Temp ("plain.mcap");
+            Tasked : constant String := Temp ("tasked.mcap");
+         begin
+            Write_Sample (Plain, Kind, 3000, Chunk_Size => 2048, Late => 1500);
+            Write_Sample (Tasked, Kind, 3000, Chunk_Size => 2048, Background => True,
+                          Late => 1500);
+            declare
+               A : constant Byte_Array := Read_All (Plain);
+               B : constant Byte_Array := Read_All (Tasked);
+            begin
+               Assert (A'Length > 20_000 or else Kind /= None, "several chunks written");
+               Assert (A = B, Image (Kind) & ": the background writer's file differs ("
+                       & A'Length'Image & " /" & B'Length'Image & " bytes)");
+            end;
+            Ada.Directories.Delete_File (Plain);
+            Ada.Directories.Delete_File (Tasked);
+         end;
+      end loop;
+      --  A write error in the task comes back to the writer's caller.
+      declare
+         W      : Writers.Writer;
+         C      : Channel_Id;
+         Raised : Boolean := False;
+      begin
+         W.Create ("/dev/full", Compression => None, Chunk_Size => 2048, Background => True);
+         C := W.Add_Channel ("/t", 0, "cdr", Empty_Metadata);
+         begin
+            for I in 0 .. 20_000 loop
+               W.Write (C, Time_Of (I), Payload (I));
+            end loop;
+            W.Close;
+         exception
+            when Ada.IO_Exceptions.Device_Error =>
+               Raised := True;
+         end;
+         Assert (Raised, "no error writing to /dev/full");
+      end;
+   end Background_Writer;
 
    procedure Write_All (Path : String; Data : Byte_Array) is
       use Ada.Streams.Stream_IO;
@@ -313,6 +372,8 @@ package body RCL.MCAP.Tests is
       Result.Add_Test (Caller.Create ("mcap: single-byte corruptions refused",
                                       Corrupt_Files'Access));
       Result.Add_Test (Caller.Create ("mcap: not an MCAP file", Not_MCAP'Access));
+      Result.Add_Test (Caller.Create ("mcap: background chunk writer, same bytes, errors",
+                                      Background_Writer'Access));
       Result.Add_Test (Caller.Create ("mcap: ros2 profile schema and QoS text",
                                       Ros2_Profile'Access));
       return Result;
