@@ -479,7 +479,7 @@ package body Sancta.Standard_Components.ROS2 is
 
 begin
    Values.Register_Family ("ros2:", Is_Message_Family'Access);
-   Shutdown.Add_Condition (ROS_Shut_Down'Access, "ROS 2 context shut down (Ctrl-C)");
+   Shutdown.Add_Condition (ROS_Shut_Down'Access, "ROS 2 context shut down (Ctrl-C or SIGTERM)");
    Factory.Register
      ((Name       => To_Unbounded_String ("ros2_subscriber"),
        Doc        => To_Unbounded_String ("stores the messages of a ROS 2 topic"),

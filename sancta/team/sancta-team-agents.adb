@@ -182,6 +182,16 @@ package body Sancta.Team.Agents is
 
    --  Reading the round and the proposals ------------------------------------------
 
+   function Tasks_Known (This : Agent'Class; Round_Text : String) return Boolean is
+      --  Every task of the round is in this replica (a round may arrive
+      --  before the task entries it names: the view waits for them).
+      S   : Plans.Snapshot;
+      Ids : Missions.Task_Vectors.Vector;
+   begin
+      Plans.Decode (Round_Text, S, Ids);
+      return (for all T of Ids => This.Db.Contains ("task/" & To_String (T.Id)));
+   end Tasks_Known;
+
    function Read_Round (This : Agent'Class) return Plans.Snapshot is
       S   : Plans.Snapshot;
       Ids : Missions.Task_Vectors.Vector;
@@ -255,6 +265,9 @@ package body Sancta.Team.Agents is
          return;
       end if;
       if Text /= To_String (This.Last_Round_Text) then
+         if not Tasks_Known (This, Text) then
+            return;  --  the round's task entries are still on their way
+         end if;
          V.Round := Read_Round (This);
          This.Last_Round_Text := To_Unbounded_String (Text);
          This.Improved_Rounds := 0;

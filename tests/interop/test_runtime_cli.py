@@ -6,6 +6,7 @@ import re
 import select
 import signal
 import subprocess
+import sys
 import time
 
 import pubsub_support as ps
@@ -76,3 +77,33 @@ def test_run_refuses_a_wrong_configuration():
     r = sancta("run", CONFIG / "bad-type-connection.xml", "--all", "--for", 1)
     assert r.returncode == 1, r
     assert "nothing started" in r.stderr, r.stderr
+
+
+def test_team_ends_on_sigterm(tmp_path):
+    """`sancta team` (every agent in-process, on ROS 2) stops its agents and
+    ends when sent SIGTERM, as `timeout` or a process manager does; it used
+    to report an internal error and hang, its agents' tasks still running."""
+    make = ps.REPO / "share" / "missions" / "make_campus.py"
+    world = ps.REPO / "share" / "worlds" / "campus.yaml"
+    text = subprocess.run([sys.executable, str(make), "5", "12"], capture_output=True,
+                          text=True, check=True).stdout
+    mission = tmp_path / "campus-5.xml"
+    mission.write_text(text.replace('world="../worlds/campus.yaml"', f'world="{world}"'))
+    proc = subprocess.Popen([SANCTA, "team", str(mission), "--rate", "1", "--no-kill",
+                             "--out", str(tmp_path / "out")], cwd=ps.REPO,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    seen, deadline = b"", time.monotonic() + 60.0
+    fd = proc.stdout.fileno()
+    while b"first plan adopted" not in seen:
+        ready, _, _ = select.select([fd], [], [], max(deadline - time.monotonic(), 0))
+        chunk = os.read(fd, 65536) if ready else b""
+        if not chunk:
+            proc.kill()
+            raise AssertionError("no plan in time:\n" + seen.decode() + ps.finish(proc))
+        seen += chunk
+    proc.send_signal(signal.SIGTERM)
+    out = seen.decode() + ps.finish(proc, timeout=20)
+    assert "demo: interrupted (SIGINT or SIGTERM)" in out, out
+    assert "internal error" not in out, out
+    assert "makespan:" in out, out     # the summary of what was done
+    assert proc.returncode == 0, out   # a requested stop, as `sancta run` on Ctrl-C

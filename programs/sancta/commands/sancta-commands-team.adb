@@ -20,6 +20,9 @@ package body Sancta.Commands.Team is
       Put_Line ("usage: sancta team [MISSION.xml] [--method annealer|auctions] [--rate X]");
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--lease SECONDS]");
       Put_Line ("          [--max SECONDS] [--world FILE] [--out DIR] [--quiet] [--check]");
+      Put_Line ("          [--cut-for SECONDS [--cut-at FRACTION]]");
+      Put_Line ("  --cut-for S: when FRACTION (default 0.5) of the tasks is done, cut one robot");
+      Put_Line ("  off the team for S wall-clock seconds, then measure the replicas' convergence");
    end Usage;
 
    function Default_Mission return String is (Installation.Share_File ("missions/office-team.xml"));
@@ -62,6 +65,16 @@ package body Sancta.Commands.Team is
                Config.Lease := Duration (Number (Value, A));
                if Config.Lease < 0.1 then
                   raise Constraint_Error with "option --lease must be at least 0.1 s";
+               end if;
+            elsif A = "--cut-for" then
+               Config.Cut_For := Duration (Number (Value, A));
+               if Config.Cut_For not in 0.0 .. 3600.0 then
+                  raise Constraint_Error with "option --cut-for: expected 0 .. 3600 seconds";
+               end if;
+            elsif A = "--cut-at" then
+               Config.Cut_Fraction := Number (Value, A);
+               if Config.Cut_Fraction not in 0.0 .. 1.0 then
+                  raise Constraint_Error with "option --cut-at: expected a fraction in [0, 1]";
                end if;
             elsif A = "--max" then
                Config.Max_Seconds := Number (Value, A);

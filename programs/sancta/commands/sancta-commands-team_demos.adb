@@ -1,8 +1,11 @@
 with Interfaces;
+with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Directories;
+with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
+with RCL.Contexts;
 with Sancta.Robot.Navigators;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Glyphs;
@@ -10,6 +13,7 @@ with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Simulators;
 with Sancta.Team.Missions;
+with Sancta.Team.Replicated_Databases;
 
 package body Sancta.Commands.Team_Demos is
 
@@ -362,6 +366,11 @@ package body Sancta.Commands.Team_Demos is
               & ASCII.LF);
       Append (J, "  ""replan_wall_s"": " & Img (Result.Replan_Wall) & "," & ASCII.LF);
       Append (J, "  ""replan_sim_s"": " & Img (Result.Replan_Sim) & "," & ASCII.LF);
+      Append (J, "  ""cut_robot"": " & Q (To_String (Result.Cut_Robot)) & "," & ASCII.LF);
+      Append (J, "  ""converged"": " & (if Result.Converged then "true" else "false") & ","
+              & ASCII.LF);
+      Append (J, "  ""converge_wall_s"": " & Img (Result.Converge_Wall) & "," & ASCII.LF);
+      Append (J, "  ""converge_keys"": " & Trim (Result.Converge_Keys) & "," & ASCII.LF);
       Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
       Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
               & ASCII.LF);
@@ -432,6 +441,13 @@ package body Sancta.Commands.Team_Demos is
                  & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
          end loop;
          New_Line;
+      end if;
+      if Result.Cut_Robot /= Null_Unbounded_String then
+         Put_Line ("partition: " & To_String (Result.Cut_Robot) & " cut off and healed; replicas "
+                   & (if Result.Converged
+                      then "converged" & Result.Converge_Keys'Image & " keys in "
+                           & F1 (Result.Converge_Wall) & " s wall after the heal"
+                      else "did NOT converge"));
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
                 & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
@@ -514,6 +530,8 @@ package body Sancta.Commands.Team_Demos is
          Next_Rec   : Long_Float := 0.0;
          Next_Print : Long_Float := 0.0;
          Alive      : array (1 .. N) of Boolean := [others => True];
+         Stopped    : array (0 .. N) of Boolean := [others => False];
+         --  Agents (0: the operator) already stopped by Stop_All.
          Victim     : Natural := 0;
          Kill_Wall  : Ada.Real_Time.Time;
          Kill_Gen   : Natural := 0;
@@ -522,6 +540,18 @@ package body Sancta.Commands.Team_Demos is
          Start_Wall : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
          Id         : Robot_Id;
          Count      : array (1 .. Natural (M.Tasks.Length)) of Natural := [others => 0];
+         type Cut_Phase is (Before_Cut, Cut_Off, Healed, Measured);
+         Cut_State  : Cut_Phase := (if Config.Cut_For > 0.0 then Before_Cut else Measured);
+         Cut_Index  : Natural := 0;
+         Cut_Wall   : Ada.Real_Time.Time;
+         Heal_Wall  : Ada.Real_Time.Time;
+         Next_Check : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
+         type Version is record
+            Revision : Long_Long_Integer := 0;
+            Writer   : Unbounded_String;
+         end record;
+         package Version_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Version);
+         Target     : Version_Maps.Map;
 
          function Observer return Agents.Agent_Access is
          begin
@@ -585,6 +615,144 @@ package body Sancta.Commands.Team_Demos is
                       & To_String (M.Robots (R).Id) & " killed (simulator kill, agent stopped)");
          end Kill;
 
+         procedure Newest_At_Heal is
+            --  The newest (revision, writer) of every key on any node.
+            procedure Take (Db : Replicated_Databases.Team_Database_Access) is
+            begin
+               for K of Db.Keys loop
+                  declare
+                     V : constant Version :=
+                       (Db.Revision (K), To_Unbounded_String (Db.Writer (K)));
+                  begin
+                     if not Target.Contains (K) then
+                        Target.Insert (K, V);
+                     elsif V.Revision > Target (K).Revision
+                       or else (V.Revision = Target (K).Revision
+                                and then V.Writer > Target (K).Writer)
+                     then
+                        Target.Replace (K, V);
+                     end if;
+                  end;
+               end loop;
+            end Take;
+         begin
+            Target.Clear;
+            Take (Operator.Database);
+            for R in 1 .. N loop
+               if Alive (R) then
+                  Take (Agent_List (R).Database);
+               end if;
+            end loop;
+         end Newest_At_Heal;
+
+         function Caught_Up return Boolean is
+            function Holds (Db : Replicated_Databases.Team_Database_Access) return Boolean is
+            begin
+               for C in Target.Iterate loop
+                  declare
+                     K : constant String := Version_Maps.Key (C);
+                     V : constant Version := Version_Maps.Element (C);
+                     Rev : constant Long_Long_Integer := Db.Revision (K);
+                  begin
+                     if Rev < V.Revision
+                       or else (Rev = V.Revision and then Db.Writer (K) < To_String (V.Writer))
+                     then
+                        return False;
+                     end if;
+                  end;
+               end loop;
+               return True;
+            end Holds;
+         begin
+            if not Holds (Operator.Database) then
+               return False;
+            end if;
+            for R in 1 .. N loop
+               if Alive (R) and then not Holds (Agent_List (R).Database) then
+                  return False;
+               end if;
+            end loop;
+            return True;
+         end Caught_Up;
+
+         procedure Partition_Step is
+            use type Ada.Real_Time.Time_Span;
+            Now : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+         begin
+            case Cut_State is
+               when Before_Cut =>
+                  if Long_Float (Operator.Done_Tasks)
+                    >= Config.Cut_Fraction * Long_Float (Result.Tasks_Total)
+                  then
+                     for R in reverse 1 .. N loop
+                        if Alive (R) and then Cut_Index = 0 then
+                           Cut_Index := R;
+                        end if;
+                     end loop;
+                     Agent_List (Cut_Index).Network.Isolate (True);
+                     Cut_Wall := Now;
+                     Cut_State := Cut_Off;
+                     Result.Cut_Robot := M.Robots (Cut_Index).Id;
+                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
+                               & To_String (M.Robots (Cut_Index).Id) & " cut off from the team"
+                               & " for " & F1 (Long_Float (Config.Cut_For)) & " s (wall)");
+                  end if;
+               when Cut_Off =>
+                  if Now - Cut_Wall >= Ada.Real_Time.To_Time_Span (Config.Cut_For) then
+                     Agent_List (Cut_Index).Network.Isolate (False);
+                     Heal_Wall := Now;
+                     Newest_At_Heal;
+                     Result.Converge_Keys := Natural (Target.Length);
+                     Cut_State := Healed;
+                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  ** robot "
+                               & To_String (M.Robots (Cut_Index).Id) & " reconnected");
+                  end if;
+               when Healed =>
+                  if Now >= Next_Check then
+                     Next_Check := Now + Ada.Real_Time.Milliseconds (50);
+                     if Caught_Up then
+                        Result.Converged := True;
+                        Result.Converge_Wall :=
+                          Long_Float (Ada.Real_Time.To_Duration (Now - Heal_Wall));
+                        Cut_State := Measured;
+                        Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  replicas converged"
+                                  & Result.Converge_Keys'Image & " keys in "
+                                  & F1 (Result.Converge_Wall) & " s (wall) after the heal");
+                     end if;
+                  end if;
+               when Measured =>
+                  null;
+            end case;
+         end Partition_Step;
+
+         procedure Stop_All is
+            --  Every agent still running (and the operator), each even if
+            --  another fails: their tasks would keep the program alive.
+         begin
+            for R in 1 .. N loop
+               if Alive (R) and then not Stopped (R) then
+                  Stopped (R) := True;
+                  begin
+                     Agent_List (R).Stop;
+                  exception
+                     when E : others =>
+                        Put_Line (Standard_Error, "demo: stopping " & To_String (M.Robots (R).Id)
+                                  & ": " & Ada.Exceptions.Exception_Message (E));
+                  end;
+               end if;
+            end loop;
+            if not Stopped (0) then
+               Stopped (0) := True;
+               begin
+                  Operator.Stop;
+               exception
+                  when E : others =>
+                     Put_Line (Standard_Error, "demo: stopping the operator: "
+                               & Ada.Exceptions.Exception_Message (E));
+               end;
+            end if;
+         end Stop_All;
+
          function Choose_Victim return Positive is
             Best   : Positive := 1;
             Most   : Integer := -1;
@@ -640,108 +808,140 @@ package body Sancta.Commands.Team_Demos is
              How => Config.How, others => <>));
          Operator.Publish_Mission (M);
          Sim.Step (0.1);
-         while Long_Float (Sim.Clock) < Config.Max_Seconds and then not Operator.All_Done loop
-            for R in 1 .. N loop
-               if Alive (R) then
-                  declare
-                     Rid   : constant Robot_Id := Robot_Id (R);
-                     Truth : constant Pose := Sim.Ground_Truth (Rid).Pose;
-                     Here  : constant Point := Position (Truth);
-                     Found : Boolean;
-                     Goal  : Point;
-                     Tid   : Unbounded_String;
-                     Done  : Boolean;
-                  begin
-                     Result.Robots (R).Distance := Result.Robots (R).Distance
-                       + Long_Float (Distance (Here, Last_Pos (R)));
-                     Last_Pos (R) := Here;
-                     if Long_Float (Sim.Clock) >= Next_Pose then
-                        Agent_List (R).Set_Pose (Here);
-                     end if;
-                     Agent_List (R).Current_Goal (Found, Goal, Tid);
-                     if not Found then
-                        Sim.Set_Command (Rid, (0.0, 0.0));
-                     else
-                        if Tid /= Nav_Task (R) or else Goal /= Nav_Goal (R) then
-                           Nav_Task (R) := Tid;
-                           Nav_Goal (R) := Goal;
-                           Navs (R).Set_Goal (Map, Truth, Goal);
+         begin
+            while Long_Float (Sim.Clock) < Config.Max_Seconds and then not Operator.All_Done
+              and then not RCL.Contexts.Is_Shutdown
+            loop
+               for R in 1 .. N loop
+                  if Alive (R) then
+                     declare
+                        Rid   : constant Robot_Id := Robot_Id (R);
+                        Truth : constant Pose := Sim.Ground_Truth (Rid).Pose;
+                        Here  : constant Point := Position (Truth);
+                        Found : Boolean;
+                        Goal  : Point;
+                        Tid   : Unbounded_String;
+                        Done  : Boolean;
+                     begin
+                        Result.Robots (R).Distance := Result.Robots (R).Distance
+                          + Long_Float (Distance (Here, Last_Pos (R)));
+                        Last_Pos (R) := Here;
+                        if Long_Float (Sim.Clock) >= Next_Pose then
+                           Agent_List (R).Set_Pose (Here);
                         end if;
-                        if Distance (Here, Goal) < 0.35 then
-                           Agent_List (R).Arrived (To_String (Tid), Done);
-                           if Done then
-                              Record_Completion (R, Tid);
-                           end if;
+                        Agent_List (R).Current_Goal (Found, Goal, Tid);
+                        if not Found then
                            Sim.Set_Command (Rid, (0.0, 0.0));
                         else
-                           Sim.Set_Command
-                             (Rid, Navs (R).Command (Map, Truth, Sim.Latest_Scan (Rid),
-                                                     Sim.Clock));
+                           if Tid /= Nav_Task (R) or else Goal /= Nav_Goal (R) then
+                              Nav_Task (R) := Tid;
+                              Nav_Goal (R) := Goal;
+                              Navs (R).Set_Goal (Map, Truth, Goal);
+                           end if;
+                           if Distance (Here, Goal) < 0.35 then
+                              Agent_List (R).Arrived (To_String (Tid), Done);
+                              if Done then
+                                 Record_Completion (R, Tid);
+                              end if;
+                              Sim.Set_Command (Rid, (0.0, 0.0));
+                           else
+                              Sim.Set_Command
+                                (Rid, Navs (R).Command (Map, Truth, Sim.Latest_Scan (Rid),
+                                                        Sim.Clock));
+                           end if;
                         end if;
-                     end if;
-                     if Long_Float (Sim.Clock) >= Next_Rec then
-                        Scene.Trajectories (R).Append (Here);
+                        if Long_Float (Sim.Clock) >= Next_Rec then
+                           Scene.Trajectories (R).Append (Here);
+                        end if;
+                     end;
+                  end if;
+               end loop;
+               if Long_Float (Sim.Clock) >= Next_Pose then
+                  Next_Pose := Next_Pose + 0.5;
+               end if;
+               if Long_Float (Sim.Clock) >= Next_Rec then
+                  Next_Rec := Next_Rec + 0.5;
+               end if;
+               if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
+                  Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
+                  Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
+                            & F1 (Result.Planned_Total) & " m, makespan "
+                            & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
+                            & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
+               end if;
+               if Config.Kill and then Victim = 0
+                 and then Long_Float (Operator.Done_Tasks)
+                   >= Config.Kill_Fraction * Long_Float (Result.Tasks_Total)
+                 and then Observer.Adopted.Generation > 0
+               then
+                  Kill (Choose_Victim);
+               end if;
+               if Victim /= 0 and then not Result.Replanned then
+                  declare
+                     S : constant Plans.Snapshot := Observer.Round;
+                     P : constant Plans.Plan := Observer.Adopted;
+                  begin
+                     if S.Generation > Kill_Gen and then P.Generation = S.Generation
+                       and then (for all R of S.Robots => R.Id /= M.Robots (Victim).Id)
+                     then
+                        Result.Replanned := True;
+                        Result.Replan_Wall := Long_Float
+                          (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Kill_Wall));
+                        Result.Replan_Sim := Long_Float (Sim.Clock) - Result.Kill_Time;
+                        Result.Plan_After := P;
+                        Result.Round_After := S;
+                        Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  survivors re-planned "
+                                  & Trim (Natural (S.Tasks.Length)) & " tasks among "
+                                  & Trim (Natural (S.Robots.Length)) & " robots in "
+                                  & F1 (Result.Replan_Wall) & " s (wall, lease included)");
                      end if;
                   end;
                end if;
+               if Config.Verbose and then Long_Float (Sim.Clock) >= Next_Print then
+                  Next_Print := Next_Print + 20.0;
+                  Put ("t=" & F1 (Long_Float (Sim.Clock)) & " s  progress "
+                       & Trim (Operator.Done_Tasks) & "/" & Trim (Result.Tasks_Total)
+                       & "  round" & Observer.Round.Generation'Image & "  [");
+                  for R in 1 .. N loop
+                     Put (" " & To_String (M.Robots (R).Id) & ":" & Trim (Result.Robots (R).Tasks)
+                          & (if Alive (R) then "" else "x"));
+                  end loop;
+                  Put_Line (" ]");
+               end if;
+               Partition_Step;
+               Sim.Step (0.1);
+               delay until Start_Wall + Ada.Real_Time.To_Time_Span
+                 (Duration (Long_Float (Sim.Clock) / Config.Rate));
             end loop;
-            if Long_Float (Sim.Clock) >= Next_Pose then
-               Next_Pose := Next_Pose + 0.5;
-            end if;
-            if Long_Float (Sim.Clock) >= Next_Rec then
-               Next_Rec := Next_Rec + 0.5;
-            end if;
-            if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
-               Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
-               Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
-                         & F1 (Result.Planned_Total) & " m, makespan "
-                         & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
-                         & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
-            end if;
-            if Config.Kill and then Victim = 0
-              and then Long_Float (Operator.Done_Tasks)
-                >= Config.Kill_Fraction * Long_Float (Result.Tasks_Total)
-              and then Observer.Adopted.Generation > 0
-            then
-               Kill (Choose_Victim);
-            end if;
-            if Victim /= 0 and then not Result.Replanned then
-               declare
-                  S : constant Plans.Snapshot := Observer.Round;
-                  P : constant Plans.Plan := Observer.Adopted;
-               begin
-                  if S.Generation > Kill_Gen and then P.Generation = S.Generation
-                    and then (for all R of S.Robots => R.Id /= M.Robots (Victim).Id)
-                  then
-                     Result.Replanned := True;
-                     Result.Replan_Wall := Long_Float
-                       (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Kill_Wall));
-                     Result.Replan_Sim := Long_Float (Sim.Clock) - Result.Kill_Time;
-                     Result.Plan_After := P;
-                     Result.Round_After := S;
-                     Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  survivors re-planned "
-                               & Trim (Natural (S.Tasks.Length)) & " tasks among "
-                               & Trim (Natural (S.Robots.Length)) & " robots in "
-                               & F1 (Result.Replan_Wall) & " s (wall, lease included)");
-                  end if;
-               end;
-            end if;
-            if Config.Verbose and then Long_Float (Sim.Clock) >= Next_Print then
-               Next_Print := Next_Print + 20.0;
-               Put ("t=" & F1 (Long_Float (Sim.Clock)) & " s  progress "
-                    & Trim (Operator.Done_Tasks) & "/" & Trim (Result.Tasks_Total)
-                    & "  round" & Observer.Round.Generation'Image & "  [");
-               for R in 1 .. N loop
-                  Put (" " & To_String (M.Robots (R).Id) & ":" & Trim (Result.Robots (R).Tasks)
-                       & (if Alive (R) then "" else "x"));
-               end loop;
-               Put_Line (" ]");
-            end if;
-            Sim.Step (0.1);
-            delay until Start_Wall + Ada.Real_Time.To_Time_Span
-              (Duration (Long_Float (Sim.Clock) / Config.Rate));
-         end loop;
+         exception
+            when E : RCL.ROS_Exception =>
+               if not RCL.Contexts.Is_Shutdown then
+                  Stop_All;
+                  Ada.Exceptions.Reraise_Occurrence (E);
+               end if;
+               --  Else published as the context shut down (SIGINT/SIGTERM).
+            when others =>
+               Stop_All;  --  Their tasks would keep the program alive.
+               raise;
+         end;
+         if RCL.Contexts.Is_Shutdown then
+            Put_Line ("demo: interrupted (SIGINT or SIGTERM) at" & Integer (Sim.Clock)'Image
+                      & " s (simulated): stopping the agents");
+         end if;
          Result.Makespan := Long_Float (Sim.Clock);
+         declare
+            Give_Up : constant Ada.Real_Time.Time :=
+              Ada.Real_Time.Clock + Ada.Real_Time.Seconds (15);
+         begin
+            --  The mission may end before the replicas have converged (or
+            --  before the heal): the measurement goes on, time stopped.
+            while Cut_State in Cut_Off | Healed and then Ada.Real_Time.Clock < Give_Up
+              and then not RCL.Contexts.Is_Shutdown
+            loop
+               Partition_Step;
+               delay 0.02;
+            end loop;
+         end;
          Result.Tasks_Done := Operator.Done_Tasks;
          Result.All_Done := Operator.All_Done;
          Result.Rounds := Observer.Round.Generation;
@@ -761,12 +961,7 @@ package body Sancta.Commands.Team_Demos is
                                  T.Id & ">"
                                  & Operator.Database.Get_String ("done/" & To_String (T.Id))));
          end loop;
-         for R in 1 .. N loop
-            if Alive (R) then
-               Agent_List (R).Stop;
-            end if;
-         end loop;
-         Operator.Stop;
+         Stop_All;
          Resolve_Orphans (Result);
          if Config.Out_Dir /= Null_Unbounded_String then
             Write_Report (Result, World, Scene, To_String (Config.Out_Dir));

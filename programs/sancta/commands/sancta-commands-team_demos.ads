@@ -42,6 +42,13 @@ package Sancta.Commands.Team_Demos is
       Verbose       : Boolean := True;
       Team          : Unbounded_String := To_Unbounded_String ("team");
       --  The team's topics (/sancta/<team>/...).
+      Cut_For       : Duration := 0.0;
+      --  > 0: a partition. When Cut_Fraction of the tasks is done, one
+      --  robot (the last alive in the mission's order) is cut off from the
+      --  team (Networks.Isolate) for Cut_For wall-clock seconds; after the
+      --  heal the demo measures how long until every replica holds the
+      --  newest entry, as of the heal, of every key (Converge_Wall).
+      Cut_Fraction  : Long_Float := 0.5;
    end record;
 
    type Completion is record
@@ -90,6 +97,14 @@ package Sancta.Commands.Team_Demos is
       Round_Before    : Plans.Snapshot;
       Plan_After      : Plans.Plan;
       Round_After     : Plans.Snapshot;
+      Cut_Robot       : Unbounded_String;
+      --  The robot cut off (Cut_For > 0); empty: no partition.
+      Converged       : Boolean := False;
+      Converge_Wall   : Long_Float := 0.0;
+      --  Wall seconds from the heal until every node's replica held, for
+      --  every key, the newest (revision, writer) any node held at the heal.
+      Converge_Keys   : Natural := 0;
+      --  Keys compared.
       Orphans         : Completion_Vectors.Vector;
       --  The killed robot's tasks not done at the kill (its tour in the
       --  plan before the loss), each with the robot that finally did it
