@@ -4,7 +4,9 @@
 # reliable, loopback only, between two processes of the same implementation:
 #   C       bench/messaging_c.c directly on Cyclone DDS, idlc-generated type
 #           (the limit; generated here under out/, never committed)
-#   Ada     bin/bench_messaging (RCL typed API: ROSIDL.Dynamic + ROSIDL.CDR)
+#   Ada     bin/bench_messaging (RCL dynamic API: ROSIDL.Dynamic + ROSIDL.CDR)
+#   Ada-typed bin/bench_messaging --typed (generated record and codec,
+#           RCL.Nodes.Typed: encoded into / decoded out of the DDS sample)
 #   Ada-raw bin/bench_messaging --raw (RCL raw bytes: the transport alone)
 #   Python  bench/messaging_py.py (cyclonedds Python package)
 # Ping-pong uses the ROS 2 default QoS (reliable, keep last 10); throughput
@@ -14,6 +16,8 @@
 # Throughput is the best of BENCH_REPEAT runs (default 3) of BENCH_SECONDS
 # (default 1) each: the machine is shared, the best run is the least
 # disturbed. BENCH_QUICK=1: fewer round trips, one throughput run.
+# BENCH_IMPLS="C Ada-typed": only these implementations (default: all).
+# Ada-typed's RTT target at 64 B is 1.1x C (issue 12).
 set -uo pipefail
 source "$(dirname "$0")/../scripts/env.sh"
 cd "$repo_root"
@@ -40,6 +44,7 @@ run_impl() {  # impl -> command prefix
    case $1 in
       C) echo "$build/messaging_c" ;;
       Ada) echo "bin/bench_messaging" ;;
+      Ada-typed) echo "bin/bench_messaging --typed" ;;
       Ada-raw) echo "bin/bench_messaging --raw" ;;
       Python) echo "$python bench/messaging_py.py" ;;
    esac
@@ -56,7 +61,8 @@ count_for() {  # impl size -> round trips
 csv=$out/messaging.csv
 echo "impl,size,rtt_median_us,rtt_p99_us,msgs_per_s,mb_per_s" > "$csv"
 
-for impl in C Ada Ada-raw Python; do
+impls=${BENCH_IMPLS:-C Ada Ada-typed Ada-raw Python}
+for impl in $impls; do
    cmd=$(run_impl $impl)
    for size in "${sizes[@]}"; do
       # Ping-pong.
@@ -96,23 +102,24 @@ def f(x):
         return float(x)
     except ValueError:
         return math.nan
-print(f"{'impl':8} {'size':>7} {'RTT med us':>11} {'RTT p99 us':>11} {'msg/s':>10} {'MB/s':>9}")
+print(f"{'impl':9} {'size':>7} {'RTT med us':>11} {'RTT p99 us':>11} {'msg/s':>10} {'MB/s':>9}")
 for r in rows:
-    print(f"{r['impl']:8} {r['size']:>7} {f(r['rtt_median_us']):11.1f} {f(r['rtt_p99_us']):11.1f}"
+    print(f"{r['impl']:9} {r['size']:>7} {f(r['rtt_median_us']):11.1f} {f(r['rtt_p99_us']):11.1f}"
           f" {f(r['msgs_per_s']):10.0f} {f(r['mb_per_s']):9.2f}")
 by = {(r['impl'], r['size']): r for r in rows}
 ratios = []
 print("\nratios vs C (targets: RTT <= 1.25, throughput >= 0.8)")
-for impl in ("Ada", "Ada-raw", "Python"):
+for impl in ("Ada", "Ada-typed", "Ada-raw", "Python"):
     for size in ("64", "4096", "262144"):
         c, a = by.get(("C", size)), by.get((impl, size))
         if not c or not a:
             continue
         rtt = f(a['rtt_median_us']) / f(c['rtt_median_us'])
         thr = f(a['msgs_per_s']) / f(c['msgs_per_s'])
+        rtt_target = 1.1 if impl == "Ada-typed" and size == "64" else 1.25
         ok = "" if impl == "Python" else (
-            "  ok" if rtt <= 1.25 and thr >= 0.8 else "  MISSES TARGET")
-        print(f"{impl:8} {size:>7}  RTT x{rtt:5.2f}  throughput x{thr:5.2f}{ok}")
+            "  ok" if rtt <= rtt_target and thr >= 0.8 else "  MISSES TARGET")
+        print(f"{impl:9} {size:>7}  RTT x{rtt:5.2f}  throughput x{thr:5.2f}{ok}")
         ratios.append({"impl": impl, "size": int(size), "rtt_ratio": rtt, "throughput_ratio": thr})
 json.dump({"rows": rows, "ratios_vs_c": ratios}, open(sys.argv[2], "w"), indent=1)
 PY

@@ -17,8 +17,10 @@ build=obj/bench-typed-c
 mkdir -p "$build"
 [ -x bin/bench_typed_cdr ] || { echo "bench-typed: bin/bench_typed_cdr missing (make bench builds it)"; exit 1; }
 bin/bench_typed_cdr "$seconds" out/bench/typed-ada.csv >/dev/null
-# The C side needs dds_get_entity_sertype, which Debian's Cyclone DDS 0.10
-# library does not export: without it the C columns are empty (nan).
+# The C side runs Cyclone's exported serializer (dds_stream_write/_read and
+# dds_stream_normalize_data on the idlc descriptor's ops: what its default
+# serdata calls per sample; see bench/typed_cdr_c.c). If it does not build
+# (no idlc, another Cyclone), the C columns are empty (nan).
 if idlc -o "$build" bench/typed_cdr.idl \
    && gcc -O2 -Wall -I"$build" bench/typed_cdr_c.c "$build/typed_cdr.c" -lddsc \
           -o "$build/typed_cdr_c" 2>"$build/gcc.log"; then

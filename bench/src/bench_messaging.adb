@@ -1,12 +1,13 @@
 --  The Ada side of bench/bench-messaging.sh: the same runs as
 --  bench/messaging_c.c, through the RCL API with std_msgs/UInt8MultiArray
---  (typed: ROSIDL.Dynamic messages and ROSIDL.CDR; or --raw: pre-encoded
---  bytes through Publish_Raw / Subscribe_Raw, the transport alone).
+--  (default: ROSIDL.Dynamic messages and ROSIDL.CDR; --typed: the generated
+--  record and codec, RCL.Nodes.Typed; --raw: pre-encoded bytes through
+--  Publish_Raw / Subscribe_Raw, the transport alone).
 --
---     bench_messaging [--raw] ping SIZE COUNT  prints "rtt_us <median> <p99>"
---     bench_messaging [--raw] pong
---     bench_messaging [--raw] pub SIZE SECONDS
---     bench_messaging [--raw] sub              prints "throughput <msg/s> <MB/s>"
+--     bench_messaging [--raw|--typed] ping SIZE COUNT  prints "rtt_us <median> <p99>"
+--     bench_messaging [--raw|--typed] pong
+--     bench_messaging [--raw|--typed] pub SIZE SECONDS
+--     bench_messaging [--raw|--typed] sub      prints "throughput <msg/s> <MB/s>"
 --  A message with layout.data_offset = 16#FFFF_FFFF# ends pong and sub.
 with Ada.Command_Line;
 with Ada.Containers.Generic_Array_Sort;
@@ -19,8 +20,10 @@ with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Nodes;
+with RCL.Nodes.Typed;
 with RCL.Publishers;
 with RCL.QoS;
+with ROSIDL.Static.Std_Msgs.Messages.UInt8MultiArray;
 
 procedure Bench_Messaging is
 
@@ -31,7 +34,8 @@ procedure Bench_Messaging is
    package CL renames Ada.Command_Line;
 
    Raw   : constant Boolean := CL.Argument_Count >= 1 and then CL.Argument (1) = "--raw";
-   First : constant Positive := (if Raw then 2 else 1);
+   Typed : constant Boolean := CL.Argument_Count >= 1 and then CL.Argument (1) = "--typed";
+   First : constant Positive := (if Raw or Typed then 2 else 1);
    Mode  : constant String := CL.Argument (First);
 
    function Arg (I : Positive) return String is (CL.Argument (First + I));
@@ -47,7 +51,22 @@ procedure Bench_Messaging is
      (RCL.QoS.Default with delta History => RCL.QoS.Keep_All);
    --  Keep all: every sample counts (flow control instead of loss).
 
+   package Arrays renames ROSIDL.Static.Std_Msgs.Messages.UInt8MultiArray;
+   package Typed_Topics is new RCL.Nodes.Typed (Arrays.Handling);
+   --  Before Node: its typed subscriptions' callbacks live here.
+
    Node : RCL.Nodes.Node := RCL.Nodes.Init ("bench_messaging");
+
+   function Make_Typed (Size : Natural; Offset : ROSIDL.UInt32) return Arrays.Message is
+   begin
+      return Msg : Arrays.Message do
+         Msg.Layout.Data_Offset := Offset;
+         Msg.Data.Set_Length (Size);
+      end return;
+   end Make_Typed;
+
+   procedure Publish (Pub : RCL.Publishers.Publisher; Msg : Arrays.Message)
+     renames Typed_Topics.Publish;
 
    function Make (Size : Natural; Offset : ROSIDL.UInt32) return ROSIDL.Dynamic.Message is
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
@@ -108,9 +127,21 @@ begin
             Pub.Publish_Raw (Data);
             Stopped := Raw_Offset (Data) = Stop_Mark;
          end Echo_Raw;
+
+         procedure Echo_Typed
+           (Node : in out RCL.Nodes.Node'Class; Msg : Arrays.Message;
+            Info : ROSIDL.Message_Info)
+         is
+            pragma Unreferenced (Node, Info);
+         begin
+            Publish (Pub, Msg);
+            Stopped := Msg.Layout.Data_Offset = Stop_Mark;
+         end Echo_Typed;
       begin
          if Raw then
             Node.Subscribe_Raw (Type_Name, "/bench_ping", Echo_Raw'Access, Ping_QoS);
+         elsif Typed then
+            Typed_Topics.Subscribe (Node, "/bench_ping", Echo_Typed'Access, Ping_QoS);
          else
             Node.Subscribe (Support, "/bench_ping", Echo'Access, Ping_QoS);
          end if;
@@ -128,6 +159,7 @@ begin
          Pub   : RCL.Publishers.Publisher := Node.Publish (Support, "/bench_ping", Ping_QoS);
          Msg   : constant ROSIDL.Dynamic.Message := Make (Size, 0);
          Bytes : constant Stream_Element_Array := ROSIDL.CDR.Encode (Msg);
+         Typed_Msg : constant Arrays.Message := Make_Typed (Size, 0);
          type Span_Array is array (Positive range <>) of Duration;
          procedure Sort is new Ada.Containers.Generic_Array_Sort (Positive, Duration, Span_Array);
          RTT   : Span_Array (1 .. N);
@@ -149,9 +181,20 @@ begin
          begin
             Got := True;
          end On_Pong_Raw;
+
+         procedure On_Pong_Typed
+           (Node : in out RCL.Nodes.Node'Class; Msg : Arrays.Message;
+            Info : ROSIDL.Message_Info)
+         is
+            pragma Unreferenced (Node, Msg, Info);
+         begin
+            Got := True;
+         end On_Pong_Typed;
       begin
          if Raw then
             Node.Subscribe_Raw (Type_Name, "/bench_pong", On_Pong_Raw'Access, Ping_QoS);
+         elsif Typed then
+            Typed_Topics.Subscribe (Node, "/bench_pong", On_Pong_Typed'Access, Ping_QoS);
          else
             Node.Subscribe (Support, "/bench_pong", On_Pong'Access, Ping_QoS);
          end if;
@@ -163,6 +206,8 @@ begin
                Got := False;
                if Raw then
                   Pub.Publish_Raw (Bytes);
+               elsif Typed then
+                  Publish (Pub, Typed_Msg);
                else
                   Pub.Publish (Msg);
                end if;
@@ -189,6 +234,7 @@ begin
          Pub     : RCL.Publishers.Publisher := Node.Publish (Support, "/bench_thr", Thr_QoS);
          Msg     : constant ROSIDL.Dynamic.Message := Make (Size, 0);
          Bytes   : constant Stream_Element_Array := ROSIDL.CDR.Encode (Msg);
+         Typed_Msg : constant Arrays.Message := Make_Typed (Size, 0);
          Stop_At : Time;
          Sent    : Natural := 0;
       begin
@@ -197,6 +243,8 @@ begin
          while Clock < Stop_At loop
             if Raw then
                Pub.Publish_Raw (Bytes);
+            elsif Typed then
+               Publish (Pub, Typed_Msg);
             else
                Pub.Publish (Msg);
             end if;
@@ -244,9 +292,24 @@ begin
                Count_It (Natural (Data'Length) - 16);
             end if;
          end On_Raw;
+
+         procedure On_Typed
+           (Node : in out RCL.Nodes.Node'Class; Msg : Arrays.Message;
+            Info : ROSIDL.Message_Info)
+         is
+            pragma Unreferenced (Node, Info);
+         begin
+            if Msg.Layout.Data_Offset = Stop_Mark then
+               Stopped := True;
+            else
+               Count_It (Msg.Data.Length);
+            end if;
+         end On_Typed;
       begin
          if Raw then
             Node.Subscribe_Raw (Type_Name, "/bench_thr", On_Raw'Access, Thr_QoS);
+         elsif Typed then
+            Typed_Topics.Subscribe (Node, "/bench_thr", On_Typed'Access, Thr_QoS);
          else
             Node.Subscribe (Support, "/bench_thr", On_Data'Access, Thr_QoS);
          end if;

@@ -7,7 +7,8 @@
 --  <pkg>/msg/<Type> the package ROSIDL.Static.<Pkg>.Messages.<Type>,
 --  <pkg>/srv/<Srv> ROSIDL.Static.<Pkg>.Services.<Srv> (nested Request and
 --  Response), <pkg>/action/<Act> ROSIDL.Static.<Pkg>.Actions.<Act> (nested
---  Goal, Result, Feedback, FeedbackMessage, SendGoal_Request, ...). Types
+--  Goal, Result, Feedback, FeedbackMessage, SendGoal_Request, ...; Handling,
+--  a ROSIDL.Static.Action_Support instance for RCL.Actions.Typed). Types
 --  they refer to are found on the library's search path (the bundled
 --  share/ros2_interfaces first; ROSIDL.Interfaces). With --registry, UNIT
 --  lists every generated type (for tests); with --project, NAME.gpr in
@@ -827,6 +828,11 @@ procedure Rosidl_Generate is
       if Is_Service then
          Line (E.Spec, 3, "package Handling is new ROSIDL.Static.Service_Support");
          Line (E.Spec, 5, "(Request.Handling, Response.Handling, Full_Name);");
+         Line (E.Spec, 0, "");
+      else
+         E.Withs.Include ("ROSIDL.Static.Action_Support");
+         Line (E.Spec, 3, "package Handling is new ROSIDL.Static.Action_Support");
+         Line (E.Spec, 5, "(Goal.Handling, Result.Handling, Feedback.Handling, Full_Name);");
          Line (E.Spec, 0, "");
       end if;
       Line (E.Spec, 0, "end " & Unit & ";");

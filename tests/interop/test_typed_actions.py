@@ -1,0 +1,88 @@
+"""Typed actions (RCL.Actions.Typed over the generated
+example_interfaces/action/Fibonacci records), both ways, on the rclpy action
+protocol: the typed Ada server (examples/typed_fibonacci server) against a
+Python peer implementing rclpy's action client, and the typed Ada client
+(typed_fibonacci client) against a Python peer implementing rclpy's action
+server."""
+import subprocess
+import time
+
+import pytest
+
+import pubsub_support as ps
+from action_support import ActionClient, ActionServer, STATUS
+
+FIB = [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55, 89, 144, 233, 377, 610, 987]
+
+
+@pytest.fixture(scope="module")
+def client():
+    proc = subprocess.Popen([str(ps.BIN / "typed_fibonacci"), "server", "typed_fib", "0.05"],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        dp = ps.participant()
+        c = ActionClient(dp, "/typed_fib")
+        assert c.wait_for_server(15), "the typed Ada action server's services are not matched"
+        yield c
+    finally:
+        proc.terminate()
+        try:
+            proc.communicate(timeout=5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+
+
+def test_typed_server_goal_feedback_result(client):
+    hex_id, gid, resp = client.send_goal(7)
+    assert resp.accepted
+    res = client.get_result(gid)
+    assert res is not None, "no result"
+    assert STATUS[res.status] == "SUCCEEDED"
+    assert list(res.sequence) == FIB[:8]
+    time.sleep(0.3)
+    client.poll()
+    feedback = client.feedbacks.get(hex_id, [])
+    # One number more per step: [0, 1, 1], [0, 1, 1, 2], ... up to the result.
+    assert feedback and feedback[0] == FIB[:3] and feedback[-1] == FIB[:8], feedback
+
+
+def test_typed_server_two_goals_and_rejection(client):
+    goals = [client.send_goal(n) for n in (5, 9)]
+    assert all(resp.accepted for _, _, resp in goals)
+    for (_, gid, _), n in zip(goals, (5, 9)):
+        res = client.get_result(gid)
+        assert res is not None and STATUS[res.status] == "SUCCEEDED"
+        assert list(res.sequence) == FIB[:n + 1]
+    _, gid, resp = client.send_goal(-4)
+    assert not resp.accepted
+
+
+def test_typed_server_cancel(client):
+    hex_id, gid, resp = client.send_goal(60)
+    assert resp.accepted
+    time.sleep(0.3)
+    c = client.cancel(gid)
+    assert c is not None and c.return_code == 0
+    assert [bytes(g.goal_id.uuid).hex() for g in c.goals_canceling] == [hex_id]
+    res = client.get_result(gid)
+    assert res is not None and STATUS[res.status] == "CANCELED"
+    assert 2 <= len(res.sequence) < 61 and list(res.sequence) == FIB[:len(res.sequence)]
+
+
+def test_typed_client_against_python_server():
+    dp = ps.participant()
+    server = ActionServer(dp, "/typed_fib_py", step=0.03)
+    try:
+        ok = subprocess.run([str(ps.BIN / "typed_fibonacci"), "client", "6", "typed_fib_py", "20"],
+                            capture_output=True, text=True, timeout=60)
+        out = ok.stdout + ok.stderr
+        assert ok.returncode == 0, out
+        assert "result (SUCCEEDED): [ 0, 1, 1, 2, 3, 5, 8 ]" in out, out
+        assert out.count("feedback of ") >= 2, out
+        rejected = subprocess.run([str(ps.BIN / "typed_fibonacci"), "client", "-2", "typed_fib_py",
+                                   "20"], capture_output=True, text=True, timeout=60)
+        assert rejected.returncode == 1
+        assert "rejected" in rejected.stdout + rejected.stderr
+    finally:
+        server.stop()

@@ -1,0 +1,1 @@
+with ROSIDL.Static.Example_Interfaces.Actions.Fibonacci;
