@@ -51,6 +51,11 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --target V           stop as soon as the objective is <= V");
       Put_Line ("  --balance W          minmax: initial weight of the total cost in the");
       Put_Line ("                       search objective (default 0.05, 0 = none)");
+      Put_Line ("  --balance-decay      minmax: the total cost's weight decays to a mere");
+      Put_Line ("                       tie-break over the budget");
+      Put_Line ("  --square W           minmax: weight of the sum of squared tour costs in");
+      Put_Line ("                       the search objective, per unit of a mean tour");
+      Put_Line ("                       (default 0 = none)");
       Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
@@ -556,6 +561,10 @@ package body Sancta.Commands.Plan is
                Opts.Ruin_Share := Number_In (A, 0.0, 1.0);
             elsif A = "--lk" then
                Opts.Local_Search := Number_In (A, 0.0, 0.95);
+            elsif A = "--balance-decay" then
+               Opts.Balance_Decay := True;
+            elsif A = "--square" then
+               Opts.Square_Balance := Number_In (A, 0.0, 10.0);
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);

@@ -70,7 +70,7 @@ package body Sancta.Allocation.Annealers.Construction is
       Order : Count_Array (1 .. P.Tasks);
       N     : Natural := 0;
       Done  : Boolean_Array (1 .. P.Tasks) := [others => False];
-      W     : Weights := (C, 0.0);
+      W     : Weights := (C, 0.0, 0.0);
       Empty_A : Assignment := Empty (P);
    begin
       if Has_Plan (P) then

@@ -39,9 +39,9 @@ package body Sancta.Allocation.Annealers.Moves is
       if C.Sum_Weight = 0.0 and then C.Ave_Weight = 0.0 and then P.Robots > 1 then
          --  Pure makespan: plateaus everywhere; a tiny total-cost term
          --  breaks ties without ever trading a unit of makespan.
-         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)));
+         return (C, 0.5 / Long_Float (Cost'Max (1, Scale_Sum) * Cost (P.Robots)), 0.0);
       end if;
-      return (C, 0.0);
+      return (C, 0.0, 0.0);
    end Make_Weights;
 
    --  The cost (length, sum of completion times, both with the multiplier
@@ -153,7 +153,15 @@ package body Sancta.Allocation.Annealers.Moves is
       Mv.New_Max := Max;
       Mv.New_Sum := Sum;
       Mv.New_Completion := Completion;
-      Mv.Value := Objective (W, Max, Sum, Completion, S.Active_Tasks);
+      if W.Square /= 0.0 then
+         Mv.New_Square := S.Total_Square - Square_Of (S.Robot_Cost (A))
+           + Square_Of (Mv.New_A_Cost);
+         if B /= 0 then
+            Mv.New_Square := Mv.New_Square - Square_Of (S.Robot_Cost (B))
+              + Square_Of (Mv.New_B_Cost);
+         end if;
+      end if;
+      Mv.Value := Objective (W, Max, Sum, Completion, S.Active_Tasks, Mv.New_Square);
    end Evaluate_Move;
 
    --  Writes a planned tour into Buffer (tasks); Keep is the length of the
@@ -225,6 +233,7 @@ package body Sancta.Allocation.Annealers.Moves is
 
    procedure Verify (P : Problem; S : State; Mv : Move; Predicted : Boolean) is
       Sum, Completion, Max : Cost := 0;
+      Square : Long_Float := 0.0;
       Seen : Count_Array (1 .. S.Tasks) := [others => 0];
 
       procedure Fail (What : String) with No_Return;
@@ -288,6 +297,7 @@ package body Sancta.Allocation.Annealers.Moves is
                end if;
             end if;
             Sum := Sum + RC;
+            Square := Square + Square_Of (RC);
             Completion := Completion + RCm;
             Max := Cost'Max (Max, RC);
          end;
@@ -320,6 +330,9 @@ package body Sancta.Allocation.Annealers.Moves is
       then
          Fail ("totals: sum" & S.Total_Cost'Image & " vs" & Sum'Image & ", max"
                & Current_Max (S)'Image & " vs" & Max'Image);
+      end if;
+      if abs (Square - S.Total_Square) > 1.0E-7 * Long_Float'Max (1.0, Square) then
+         Fail ("sum of squared costs" & S.Total_Square'Image & " vs" & Square'Image);
       end if;
    end Verify;
 

@@ -49,6 +49,8 @@ private package Sancta.Allocation.Annealers.Moves is
       New_A_Completion, New_B_Completion : Cost := 0;
       New_A_Length, New_B_Length : Natural := 0;
       New_Max, New_Sum, New_Completion : Cost := 0;
+      New_Square  : Long_Float := 0.0;
+      --  The sum of squared robot costs (only when the weights use it).
       Value       : Long_Float := 0.0;
       --  The search objective after the move.
    end record;
@@ -68,16 +70,22 @@ private package Sancta.Allocation.Annealers.Moves is
    type Weights is record
       C   : Criterion;
       Tie : Long_Float := 0.0;  --  weight of the total cost added to break MinMax ties
+      Square : Long_Float := 0.0;
+      --  Weight of the sum of squared robot costs: a makespan search's
+      --  balance term (each robot's cost counts by its size, so every long
+      --  tour, not only the longest, is pushed down).
    end record;
-   --  A search objective: the criterion and a tie-break.
+   --  A search objective: the criterion and its tie-break / balance terms.
 
-   function Objective (W : Weights; Max, Sum, Completion : Cost; Tasks : Natural)
+   function Objective (W : Weights; Max, Sum, Completion : Cost; Tasks : Natural;
+                       Square : Long_Float := 0.0)
      return Long_Float
-   is (Value (W.C, Max, Sum, Completion, Tasks) + W.Tie * Long_Float (Sum));
+   is (Value (W.C, Max, Sum, Completion, Tasks) + W.Tie * Long_Float (Sum)
+       + W.Square * Square);
 
    function Current_Value (P : Problem; S : State; W : Weights) return Long_Float is
      (Objective (W, Current_Max (S), S.Total_Cost, S.Total_Completion,
-                 Natural'Min (S.Active_Tasks, P.Tasks)));
+                 Natural'Min (S.Active_Tasks, P.Tasks), S.Total_Square));
 
    function Make_Weights (P : Problem; C : Criterion; Scale_Sum : Cost) return Weights;
    --  C, and for a pure makespan with several robots a tie-break so small

@@ -252,6 +252,7 @@ package body Sancta.Allocation.Annealers.Plan_Trees is
          Sum  : Cost := S.Total_Cost;
          Completion : Cost := S.Total_Completion;
          Max  : Cost := 0;
+         Square : Long_Float := S.Total_Square;
       begin
          for R in 1 .. S.Robots loop
             if D.Changed (R) then
@@ -262,6 +263,7 @@ package body Sancta.Allocation.Annealers.Plan_Trees is
                Sum := Sum - S.Robot_Cost (R) + D.Robot_Cost (R);
                Completion := Completion - S.Robot_Completion (R) + D.Robot_Completion (R);
                Max := Cost'Max (Max, D.Robot_Cost (R));
+               Square := Square - Square_Of (S.Robot_Cost (R)) + Square_Of (D.Robot_Cost (R));
             else
                Max := Cost'Max (Max, S.Robot_Cost (R));
             end if;
@@ -273,7 +275,8 @@ package body Sancta.Allocation.Annealers.Plan_Trees is
          Mv.New_Completion := Completion;
          Mv.New_Max := Max;
          Mv.New_Active := Active_After;
-         Mv.Value := Objective (W, Max, Sum, Completion, Active_After);
+         Mv.New_Square := Square;
+         Mv.Value := Objective (W, Max, Sum, Completion, Active_After, Square);
          Ok := True;
       end;
    end Propose_Switch;

@@ -1,4 +1,5 @@
 with Ada.Numerics.Long_Elementary_Functions;
+with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Annealers.Construction; use Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Neighbourhoods;
 use Sancta.Allocation.Annealers.Neighbourhoods;
@@ -13,8 +14,9 @@ package body Sancta.Allocation.Annealers.Searches is
       Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
       Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
       Segment_Move => 0.5, Random_Reverse => 0.5,
-      Switch_Subtree => 0.5, Ruin_Recreate => 0.0];
-   --  Ruin_Recreate is not drawn: it runs on its share of evaluations.
+      Switch_Subtree => 0.5, Ruin_Recreate => 0.0, Route_Search => 0.0];
+   --  Ruin_Recreate is not drawn: it runs on its share of evaluations;
+   --  Route_Search every Route_Search_Interval x tasks moves.
 
    overriding procedure Finalize (This : in out Search) is
    begin
@@ -283,8 +285,8 @@ package body Sancta.Allocation.Annealers.Searches is
                   Swap (S, T, U, Mv, Ok);
                end if;
             end;
-         when Ruin_Recreate =>
-            null;  --  Not a single move: see Ruin_And_Recreate.
+         when Ruin_Recreate | Route_Search =>
+            null;  --  Not single moves: see Ruin_And_Recreate, Search_Routes.
          when Switch_Or =>
             if P.Alt_Count (T) > 1 then
                Propose_Switch_Or (This, P, T, Mv, Ok);
@@ -403,6 +405,37 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
       Check (This, P);
    end Ruin_And_Recreate;
+
+   --  The current routes shortened by a descent of the route search
+   --  (Local_Search.Polish_Routes: 2-opt, Or-opt, LK chains, no kicks):
+   --  route lengths never grow, so neither does the search objective (no
+   --  mean completion time here); a new best is noted.
+   procedure Search_Routes (This : in out Search; P : Problem) is
+      S : State renames This.Tours.all;
+      X : Kind_Stats renames This.Kinds (Route_Search);
+      Found : Local_Search.Statistics;
+   begin
+      X.Tries := X.Tries + 1;
+      Store (S, This.Backup);
+      Local_Search.Polish_Routes (P, This.Backup, 0.0, This.Opts.Seed, Found,
+                                  Check => This.Opts.Check, Kicks => False);
+      if Found.After >= Found.Before then
+         return;
+      end if;
+      X.Legal := X.Legal + 1;
+      X.Accepted := X.Accepted + 1;
+      X.Improving := X.Improving + 1;
+      Load (P, S, This.Backup);
+      Check (This, P);
+      Restart_From_Current (This, P);
+      declare
+         Goal_Value : constant Long_Float := Current_Value (P, S, This.Goal);
+      begin
+         if Goal_Value < This.Best_Value - 1.0E-9 then
+            Note_New_Best (This, Route_Search, Goal_Value);
+         end if;
+      end;
+   end Search_Routes;
 
    --  A drawn move: proposed, evaluated, accepted by the Metropolis rule
    --  (the best is saved before leaving a better solution).
@@ -548,6 +581,9 @@ package body Sancta.Allocation.Annealers.Searches is
          This.Locked (O) := Is_Locked (P, O);
       end loop;
       Choose_Move_Kinds (This, P);
+      This.Route_Searches := Opts.Polish and then Opts.Criterion.Ave_Weight = 0.0
+        and then Opts.Enabled (Route_Search);
+      This.Next_Route_Search := Route_Search_Interval * Long_Long_Integer (P.Tasks);
       if Opts.Initial then
          declare
             V : constant String := Validate (P, Best);
@@ -566,6 +602,12 @@ package body Sancta.Allocation.Annealers.Searches is
          This.Initial_Balance :=
            (if Opts.Balance >= 0.0 then Opts.Balance else 1.0 / Long_Float (P.Robots));
          This.Guide.Tie := Long_Float'Max (This.Goal.Tie, This.Initial_Balance);
+         if Opts.Square_Balance > 0.0 and then P.All_Feasible then
+            --  d/dc (W c^2) = Square_Balance at the mean tour cost.
+            This.Guide.Square := Opts.Square_Balance
+              / (2.0 * Long_Float'Max (1.0, Long_Float (This.Tours.Total_Cost)
+                                          / Long_Float (P.Robots)));
+         end if;
       end if;
       Check (This, P);
       Restart_From_Current (This, P);
@@ -729,7 +771,11 @@ package body Sancta.Allocation.Annealers.Searches is
             exit when This.Stop;
          end if;
          This.Moves := This.Moves + 1;
-         if Ruin_Due (This) then
+         if This.Route_Searches and then This.Moves >= This.Next_Route_Search then
+            This.Next_Route_Search :=
+              This.Moves + Route_Search_Interval * Long_Long_Integer (P.Tasks);
+            Search_Routes (This, P);
+         elsif Ruin_Due (This) then
             Ruin_And_Recreate (This, P);
             --  A target reached here stops at the next checkpoint.
          else

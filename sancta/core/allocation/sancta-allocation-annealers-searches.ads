@@ -71,6 +71,10 @@ private package Sancta.Allocation.Annealers.Searches is
       --  No drawn move kind is enabled: every move is a ruin and recreate.
       Kinds           : Kind_Stats_Array;
       Polish_Gain     : Long_Float := 0.0;
+      Route_Searches  : Boolean := False;
+      Next_Route_Search : Long_Long_Integer := 0;
+      --  Route search inside the anneal (see Move_Kind): on, and the move
+      --  count of the next one.
       Stop            : Boolean := False;
    end record;
 

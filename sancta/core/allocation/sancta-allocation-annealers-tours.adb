@@ -91,6 +91,7 @@ package body Sancta.Allocation.Annealers.Tours is
       S.Robot_Completion (R) := M * S.Forward_Sum (R, N) + Cost (Bad) * Infinity;
       S.Total_Cost := S.Total_Cost - Old_Cost + S.Robot_Cost (R);
       S.Total_Completion := S.Total_Completion - Old_Completion + S.Robot_Completion (R);
+      S.Total_Square := S.Total_Square - Square_Of (Old_Cost) + Square_Of (S.Robot_Cost (R));
       Set_Tree_Cost (S, R, S.Robot_Cost (R));
    end Rebuild;
 
@@ -146,6 +147,7 @@ package body Sancta.Allocation.Annealers.Tours is
          S.Position (T) := 0;
       end loop;
       S.Total_Cost := 0;
+      S.Total_Square := 0.0;
       S.Total_Completion := 0;
       S.Robot_Cost := [others => 0];
       S.Robot_Completion := [others => 0];

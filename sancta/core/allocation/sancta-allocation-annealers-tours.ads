@@ -46,6 +46,9 @@ private package Sancta.Allocation.Annealers.Tours is
       --  Tour cost and sum of completion times (times the multiplier,
       --  Infinity per infeasible task).
       Total_Cost, Total_Completion : Cost := 0;
+      Total_Square    : Long_Float := 0.0;
+      --  The sum of Square_Of (robot cost) (the makespan search's balance
+      --  term, Moves.Weights.Square).
       Max_Tree        : Cost_Array (1 .. Tree_Size) := [others => 0];
       --  Robot costs in a max segment tree: leaves Robots .. 2 Robots - 1.
       Near            : Neighbour_Grid (1 .. Tasks, 1 .. Neighbours) :=
@@ -66,6 +69,11 @@ private package Sancta.Allocation.Annealers.Tours is
 
    function New_State (P : Problem; Neighbours : Positive) return State_Access
    is (new State (P.Robots, P.Tasks, Neighbours, P.Tasks + 1, 2 * P.Robots));
+
+   function Square_Of (C : Cost) return Long_Float is
+     (if Is_Infinite (C) then 0.0 else Long_Float (C) ** 2) with Inline;
+   --  A robot cost squared; 0 for an infeasible tour (its 2 ** 80 would
+   --  swallow the other robots' terms in a running sum).
 
    function Max_Except (S : State; A, B : Natural) return Cost with Inline;
    --  The largest robot cost but those of robots A and B (0: none).

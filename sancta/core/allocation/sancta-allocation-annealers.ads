@@ -26,7 +26,10 @@
 --  local search (Opts.Local_Search, package Local_Search); otherwise, for
 --  criteria without the mean completion time, every route is polished by
 --  the same search (2-opt, Or-opt, LK chains of depth 5): one descent, or
---  iterated in that share of the time for a single robot.
+--  iterated in that share of the time for a single robot. For those
+--  criteria the current routes also get one such descent every
+--  Route_Search_Interval x tasks moves during the anneal (kind
+--  Route_Search), so that the inter-route moves work on short routes.
 --
 --     O : Options := (Criterion => Min_Max, Seed => 7, Time_Limit => 2.0, others => <>);
 --     Solve (P.all, O, Best, Stats);
@@ -58,12 +61,19 @@ package Sancta.Allocation.Annealers is
    type Move_Kind is
      (Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Random_Move, Move_Owner,
       Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse,
-      Switch_Subtree, Ruin_Recreate);
-   --  The annealer's neighbourhoods (see the package comment).
+      Switch_Subtree, Ruin_Recreate, Route_Search);
+   --  The annealer's neighbourhoods (see the package comment). Route_Search
+   --  is not drawn: every Route_Search_Interval x tasks moves, the current
+   --  routes get a descent of the route search (2-opt, Or-opt, LK chains;
+   --  criteria without the mean completion time), so that the anneal goes
+   --  on from shorter routes.
 
    type Kind_Flags is array (Move_Kind) of Boolean;
 
    Max_Runs : constant := 4;
+
+   Route_Search_Interval : constant := 50;
+   --  Moves per task between two route searches inside the anneal.
 
    type Options is record
       Criterion    : Allocation.Criterion := Min_Sum;
@@ -104,6 +114,13 @@ package Sancta.Allocation.Annealers is
       --  Pure makespan only: weight of the total cost in the search
       --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
       Balance_Decay : Boolean := False;
+      Square_Balance : Long_Float := 0.0;
+      --  Pure makespan, every task feasible for every robot: weight of the
+      --  sum of squared robot costs in the search objective, scaled so that
+      --  a unit of a mean-length tour weighs this much (each tour pushed
+      --  down by its size, not only the longest); 0 = none. Off by default:
+      --  0.1 measured no better than the total-cost balance alone (kroA100,
+      --  rat99, kroA200 with 5 robots).
       Enabled      : Kind_Flags := [others => True];
       --  The move kinds used (tests exercise one kind at a time).
       Ruin_Share   : Long_Float := 0.2;

@@ -333,6 +333,40 @@ package body Sancta.Allocation.Tests is
       Assert (Validate (P.all, A) = "", Validate (P.all, A));
    end Deterministic;
 
+   --  The route search inside the anneal (every Route_Search_Interval x
+   --  tasks moves) and the makespan search's squared-cost term, under the
+   --  expensive check (recomputed costs and sum of squares after every
+   --  move and every route search): run, applied, deterministic.
+   procedure Route_Search_In_Anneal (Unused : in out Fixture) is
+      P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil51.tsp").all, 3);
+      Moves : constant := 20_000;
+      use Annealers;
+   begin
+      for C of Criterion_Array'[Min_Sum, Min_Max] loop
+         declare
+            O : constant Options :=
+              (Criterion => C, Seed => 5, Time_Limit => 0.0, Iterations => Moves,
+               Check => True, Square_Balance => 0.1, others => <>);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            Off : Options := O;
+         begin
+            Solve (P.all, O, A, S);
+            Assert (S.Kinds (Route_Search).Tries
+                      >= Long_Long_Integer (Moves / (Route_Search_Interval * P.Tasks) - 1),
+                    "route searches:" & S.Kinds (Route_Search).Tries'Image);
+            Assert (S.Kinds (Route_Search).Improving > 0, "no route search shortened a route");
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+            Solve (P.all, O, B, T);
+            Assert (A = B, "two runs with the same seed differ");
+            Off.Enabled (Route_Search) := False;
+            Solve (P.all, Off, B, T);
+            Assert (T.Kinds (Route_Search).Tries = 0, "route search ran while disabled");
+         end;
+      end loop;
+   end Route_Search_In_Anneal;
+
    ---------------------------------------------------------------------------
 
    procedure Optimal_Tours (Unused : in out Fixture) is
@@ -730,6 +764,7 @@ package body Sancta.Allocation.Tests is
            Annealer_Reaches_Optimum'Access);
       Add ("baselines valid with constraints", Baselines_Valid_On_Larger'Access);
       Add ("same seed, same result", Deterministic'Access);
+      Add ("route search inside the anneal, checked", Route_Search_In_Anneal'Access);
       Add ("anytime best box", Anytime_Box'Access);
       Add ("TSPLIB optimal tours give the optimal lengths", Optimal_Tours'Access);
       Add ("TSPLIB explicit matrix formats", Explicit_Formats'Access);
