@@ -296,12 +296,16 @@ package body Sancta.Team.Agents is
       Needed   : Boolean;
    begin
       if Tasks.Is_Empty or else Alive.Is_Empty
+        or else Clock - This.Started_At < To_Time_Span (2 * This.Config.Lease)
         or else Alive.First_Element /= To_String (This.Config.Id)
         or else (for all T of Tasks => Is_Done (This, T))
         or else not Has_Quorum (This)
       then
-         --  Not the coordinator, nothing left to allocate, or cut off from
-         --  the majority (a minority side never re-plans).
+         --  Not the coordinator, nothing left to allocate, cut off from
+         --  the majority (a minority side never re-plans), or started less
+         --  than two leases ago: a node that has not yet heard the others
+         --  would take itself for the coordinator and plan every task for
+         --  itself alone (the 10-process demo: rounds of 1 robot at start).
          This.Mismatch_Since := Time_Last;
          return;
       end if;
@@ -709,6 +713,7 @@ package body Sancta.Team.Agents is
       A : constant Agent_Access := new Agent;
    begin
       A.Config := Config;
+      A.Started_At := Clock;
       A.Net := Net;
       A.Db := Db;
       A.Net.Subscribe ("auction", A.Auction'Unchecked_Access);

@@ -16,7 +16,8 @@
 --  mission task is neither done nor in the round: the round holds every
 --  alive robot's position and every task not done. A robot lost (silent
 --  for its lease) thus returns its unfinished tasks to the plan, a robot
---  joining gets tasks, and tasks done stay done.
+--  joining gets tasks, and tasks done stay done. A node opens no round in
+--  its first two leases (it has not heard the others yet).
 --
 --  Allocation of a round, as configured:
 --  * Annealing: every robot anneals the round (its own seed) and publishes
@@ -239,6 +240,7 @@ private
       Mismatch_Since : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
       Last_Round_Text : Unbounded_String;
       Improved_Rounds : Natural := 0;
+      Started_At : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
       Proposals : Proposal_Maps.Map;
       --  Decoded proposals by key (the agent task's cache).
    end record;
