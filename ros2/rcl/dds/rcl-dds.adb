@@ -532,6 +532,36 @@ package body RCL.DDS is
       return GUID (G);
    end Publisher_Of;
 
+   procedure Deliver
+     (This    : in out Reader;
+      Serdata : System.Address;
+      Raw     : Thin.Raw_Info;
+      Process : not null access procedure (Data : Byte_Array; Info : Sample_Info))
+   is
+      --  Passes one taken sample's bytes to Process in place (no copy); the
+      --  caller releases Serdata.
+      Size  : Unsigned_32;
+      Bytes : constant System.Address := Thin.Serdata_Bytes (Serdata, Size);
+      Info  : constant Sample_Info :=
+        (Source_Timestamp => Time_Ns (Raw.Source_Timestamp),
+         Publisher        => Publisher_Of (This, Raw.Publication_Handle));
+   begin
+      if Size = 0 or else Bytes = System.Null_Address then
+         declare
+            Empty : constant Byte_Array (1 .. 0) := [others => 0];
+         begin
+            Process (Empty, Info);
+         end;
+      else
+         declare
+            Data : constant Byte_Array (1 .. Ada.Streams.Stream_Element_Offset (Size))
+              with Import, Address => Bytes;
+         begin
+            Process (Data, Info);
+         end;
+      end if;
+   end Deliver;
+
    procedure Take
      (This    : in out Reader;
       Process : not null access procedure (Data : Byte_Array; Info : Sample_Info);
@@ -547,27 +577,8 @@ package body RCL.DDS is
          return;
       end if;
       Taken := True;
-      declare
-         Size  : Unsigned_32;
-         Bytes : constant System.Address := Thin.Serdata_Bytes (Serdata, Size);
-         Info  : constant Sample_Info :=
-           (Source_Timestamp => Time_Ns (Raw.Source_Timestamp),
-            Publisher        => Publisher_Of (This, Raw.Publication_Handle));
       begin
-         if Size = 0 or else Bytes = System.Null_Address then
-            declare
-               Empty : constant Byte_Array (1 .. 0) := [others => 0];
-            begin
-               Process (Empty, Info);
-            end;
-         else
-            declare
-               Data : constant Byte_Array (1 .. Ada.Streams.Stream_Element_Offset (Size))
-                 with Import, Address => Bytes;
-            begin
-               Process (Data, Info);
-            end;
-         end if;
+         Deliver (This, Serdata, Raw, Process);
       exception
          when others =>
             Thin.Serdata_Release (Serdata);
@@ -595,28 +606,7 @@ package body RCL.DDS is
       end if;
       Count := Natural (Result);
       for I in 1 .. Count loop
-         declare
-            Size  : Unsigned_32;
-            Bytes : constant System.Address := Thin.Serdata_Bytes (Serdata (I), Size);
-            Info  : constant Sample_Info :=
-              (Source_Timestamp => Time_Ns (Raw (I).Source_Timestamp),
-               Publisher        => Publisher_Of (This, Raw (I).Publication_Handle));
-         begin
-            if Size = 0 or else Bytes = System.Null_Address then
-               declare
-                  Empty : constant Byte_Array (1 .. 0) := [others => 0];
-               begin
-                  Process (Empty, Info);
-               end;
-            else
-               declare
-                  Data : constant Byte_Array (1 .. Ada.Streams.Stream_Element_Offset (Size))
-                    with Import, Address => Bytes;
-               begin
-                  Process (Data, Info);
-               end;
-            end if;
-         end;
+         Deliver (This, Serdata (I), Raw (I), Process);
          Thin.Serdata_Release (Serdata (I));
          Done := I;
       end loop;
