@@ -14,8 +14,9 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 EXTRACT = REPO / "tests" / "spec_examples" / "extract.py"
+sys.path.insert(0, str(EXTRACT.parent))
+import extract  # noqa: E402  (the block scanner the extraction uses)
 GPR = REPO / "tests" / "spec_examples" / "spec_examples.gpr"
-CODE = re.compile(r"^\s*--     (.*)$")
 ADA_STATEMENT = re.compile(r"(:=.*|\)|^\s*end\b.*|^\s*[\w.]+(\s*\(.*\))?)\s*;\s*$")
 # A line of Ada: an assignment, a call, an end; not prose ending in ";".
 
@@ -63,21 +64,9 @@ def test_every_marked_example_of_the_ros2_specs_compiles(tmp_path):
 def test_code_blocks_are_marked_as_examples():
     unmarked = []
     for spec in specs():
-        lines = (REPO / spec).read_text().split("\n")
-        i = 0
-        while i < len(lines):
-            if CODE.match(lines[i]):
-                start = i
-                while i < len(lines) and (CODE.match(lines[i])
-                                          or re.match(r"^\s*--\s*$", lines[i])
-                                          and i + 1 < len(lines) and CODE.match(lines[i + 1])):
-                    i += 1
-                block = [CODE.match(l).group(1) for l in lines[start:i] if CODE.match(l)]
-                marked = start > 0 and lines[start - 1].rstrip().endswith("Example:")
-                if not marked and any(ADA_STATEMENT.search(l.split("--")[0]) for l in block):
-                    unmarked.append("%s:%d" % (spec, start + 1))
-            else:
-                i += 1
+        for first, marked, body in extract.code_blocks((REPO / spec).read_text().split("\n")):
+            if not marked and any(ADA_STATEMENT.search(code.split("--")[0]) for _, code in body):
+                unmarked.append("%s:%d" % (spec, first))
     assert not unmarked, "Ada code blocks without \"Example:\": " + ", ".join(unmarked)
 
 

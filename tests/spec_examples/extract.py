@@ -46,32 +46,36 @@ class Example:
         self.spec, self.line, self.lines = spec, line, lines
 
 
+def code_blocks(text):
+    """Every code block of the lines TEXT (comment lines indented five
+    spaces after "--", with the empty comment lines between them) as
+    (first line number, marked as an example, [(line number, code)])."""
+    blocks = []
+    i = 0
+    while i < len(text):
+        if CODE.match(text[i]):
+            start, body = i, []
+            while i < len(text):
+                m = CODE.match(text[i])
+                if m:
+                    body.append((i + 1, m.group(2)))
+                elif (EMPTY_COMMENT.match(text[i]) and i + 1 < len(text)
+                      and CODE.match(text[i + 1])):
+                    body.append((i + 1, ""))
+                else:
+                    break
+                i += 1
+            blocks.append((start + 1, start > 0 and bool(MARKER.match(text[start - 1])), body))
+        else:
+            i += 1
+    return blocks
+
+
 def find_examples(spec):
     """Every marked block of SPEC as an Example (line numbers 1-based)."""
     with open(spec, encoding="utf-8") as f:
         text = f.read().split("\n")
-    found = []
-    i = 0
-    while i < len(text):
-        if MARKER.match(text[i]) and i + 1 < len(text) and CODE.match(text[i + 1]):
-            start = i + 1
-            body = []
-            j = start
-            while j < len(text):
-                m = CODE.match(text[j])
-                if m:
-                    body.append((j + 1, m.group(2)))
-                elif (EMPTY_COMMENT.match(text[j]) and j + 1 < len(text)
-                      and CODE.match(text[j + 1])):
-                    body.append((j + 1, ""))
-                else:
-                    break
-                j += 1
-            found.append(Example(spec, start + 1, body))
-            i = j
-        else:
-            i += 1
-    return found
+    return [Example(spec, first, body) for first, marked, body in code_blocks(text) if marked]
 
 
 def chunks(lines):
