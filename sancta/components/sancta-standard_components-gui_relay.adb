@@ -44,6 +44,7 @@ package body Sancta.Standard_Components.GUI_Relay is
    procedure Free is new Ada.Unchecked_Deallocation (RCL.Publishers.Publisher, Publisher_Access);
 
    package Owner_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, String);
+   package Round_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Natural);
    package Text_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
 
    type Relay is new Base_Component with record
@@ -65,7 +66,7 @@ package body Sancta.Standard_Components.GUI_Relay is
       --  The robot each task was first planned for: its owner in the last
       --  plan adopted in the first round that planned it (a round's plan
       --  improves as better proposals come: that is not a re-allocation).
-      First_Round : Owner_Maps.Map;
+      First_Round : Round_Maps.Map;
       --  For each task of First_Owner, the round (generation) that set it.
       Bad_Tasks   : Owner_Maps.Map;
       --  Tasks whose text did not decode (logged once).
@@ -288,13 +289,12 @@ package body Sancta.Standard_Components.GUI_Relay is
          for K in 1 .. Natural (P.Tours.Length) loop
             for Step of P.Tours (K) loop
                declare
-                  Id    : constant String := To_String (Step.Task_Id);
-                  Round : constant String := P.Generation'Image;
+                  Id : constant String := To_String (Step.Task_Id);
                begin
                   if not This.First_Owner.Contains (Id) then
                      This.First_Owner.Insert (Id, To_String (S.Robots (K).Id));
-                     This.First_Round.Insert (Id, Round);
-                  elsif This.First_Round (Id) = Round then
+                     This.First_Round.Insert (Id, P.Generation);
+                  elsif This.First_Round (Id) = P.Generation then
                      This.First_Owner.Replace (Id, To_String (S.Robots (K).Id));
                   end if;
                end;

@@ -63,9 +63,10 @@ package body Sancta.Commands.Managed_Agents is
       raise Program_Error with "no agent for node " & Node.Name;
    end Agent_Of;
 
-   procedure Log (A : Agent; Text : String) is
+   procedure Log
+     (A : Agent; Text : String; Level : Sancta.Logging.Level := Sancta.Logging.Info) is
    begin
-      Sancta.Logging.Log ("managed " & To_String (A.Id), Sancta.Logging.Info, Text);
+      Sancta.Logging.Log ("managed " & To_String (A.Id), Level, Text);
    end Log;
 
    procedure Discard (A : in out Agent) is
@@ -88,9 +89,8 @@ package body Sancta.Commands.Managed_Agents is
       return Success;
    exception
       when E : others =>
-         Sancta.Logging.Log ("managed " & To_String (A.Id), Sancta.Logging.Error,
-                             "cannot create the components: "
-                             & Ada.Exceptions.Exception_Message (E));
+         Log (A, "cannot create the components: " & Ada.Exceptions.Exception_Message (E),
+              Sancta.Logging.Error);
          Discard (A);
          return Failure;
    end Create;
@@ -120,8 +120,8 @@ package body Sancta.Commands.Managed_Agents is
       return Success;
    exception
       when E : others =>
-         Sancta.Logging.Log ("managed " & To_String (A.Id), Sancta.Logging.Error,
-                             "cannot start: " & Ada.Exceptions.Exception_Message (E));
+         Log (A.all, "cannot start: " & Ada.Exceptions.Exception_Message (E),
+              Sancta.Logging.Error);
          return Failure;
    end On_Activate;
 
