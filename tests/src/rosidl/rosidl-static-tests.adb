@@ -377,7 +377,7 @@ package body ROSIDL.Static.Tests is
 
    begin
       Use_User_Interfaces;
-      for Support of ROSIDL.CDR.Samples.All_Types loop
+      for Support of ROSIDL.CDR_Samples.All_Types loop
          if not Is_Generated_Package (Types, ROSIDL.Typesupport.Full_Name (Support)) then
             goto Next_Type;
          end if;
@@ -387,7 +387,7 @@ package body ROSIDL.Static.Tests is
             Order : constant Byte_Order :=
               (if Checked mod 2 = 0 then Little_Endian else Big_Endian);
             Data  : constant Stream_Element_Array :=
-              Encode (ROSIDL.CDR.Samples.Random_Message (Support, Gen), Order);
+              Encode (ROSIDL.CDR_Samples.Random_Message (Support, Gen), Order);
             Size  : constant Stream_Element_Offset := Data'Length;
          begin
             if Name in "sensor_msgs/msg/LaserScan" | "sancta_test_msgs/msg/Everything"
