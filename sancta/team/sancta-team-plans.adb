@@ -192,31 +192,27 @@ package body Sancta.Team.Plans is
       return Result;
    end Tour_Cost;
 
+   type Cost_Array is array (Positive range <>) of Long_Float;
+
+   function Tour_Costs
+     (S   : Snapshot;
+      P   : Plan;
+      Leg : access function (From, To : Point) return Long_Float) return Cost_Array
+   is ([for R in 1 .. Natural (P.Tours.Length) =>
+          Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg)]);
+   --  Each robot's tour cost.
+
    function Makespan
      (S   : Snapshot;
       P   : Plan;
       Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
-   is
-      Result : Long_Float := 0.0;
-   begin
-      for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg));
-      end loop;
-      return Result;
-   end Makespan;
+   is (Tour_Costs (S, P, Leg)'Reduce (Long_Float'Max, 0.0));
 
    function Total
      (S   : Snapshot;
       P   : Plan;
       Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
-   is
-      Result : Long_Float := 0.0;
-   begin
-      for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg);
-      end loop;
-      return Result;
-   end Total;
+   is (Tour_Costs (S, P, Leg)'Reduce ("+", 0.0));
 
    function Evaluate
      (S   : Snapshot;
