@@ -13,6 +13,7 @@ with Sancta.Team.Agents;
 with Sancta.Team.Replicated_Databases;
 with Sancta.Commands.Team_Demos;
 with Sancta.Team.Goal_Trackers;
+with Sancta.Team.Goal_Trackers.Contract_Tests;
 with Sancta.Team.Grid_Costs;
 with Sancta.Robot.Grids;
 with Sancta.Team.Missions;
@@ -704,9 +705,9 @@ package body Sancta.Team.Tests is
       Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
       Config.How := How;
       Config.Rate := 40.0;
-      Config.Verbose := False;
+      Config.Run.Verbose := False;
       Config.Team := To_Unbounded_String (Team);
-      Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
+      Config.Run.Out_Dir := To_Unbounded_String ("out/test-" & Team);
       Commands.Team_Demos.Run (Config, Result);
       Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
       Assert (Result.Replanned, "the survivors did not re-plan");
@@ -766,6 +767,7 @@ package body Sancta.Team.Tests is
       Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
+      Result.Add_Test (Goal_Trackers.Contract_Tests.Suite);
       return Result;
    end Suite;
 
