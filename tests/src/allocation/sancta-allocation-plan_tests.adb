@@ -99,7 +99,7 @@ package body Sancta.Allocation.Plan_Tests is
          for A in 1 .. L loop
             for B in 1 .. L loop
                if A /= B then
-                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 300)));
+                  Set_Distance (P.all, A, B, Distance (P.all, A, B) + Cost (Random.Below (G, 300)));
                end if;
             end loop;
          end loop;
@@ -126,7 +126,7 @@ package body Sancta.Allocation.Plan_Tests is
             for B in 1 .. L loop
                if A /= B then
                   Set_Robot_Distance (P.all, 2, A, B,
-                                      P.Distance (A, B) / 2 + Cost (Random.Below (G, 400)));
+                                      Distance (P.all, A, B) / 2 + Cost (Random.Below (G, 400)));
                end if;
             end loop;
          end loop;
@@ -439,7 +439,7 @@ package body Sancta.Allocation.Plan_Tests is
               "the fast robot does both:" & Evaluate (P.all, A, Min_Sum).Sum'Image);
       --  Robot 1 cannot reach task 1's location (3): robot 2 must take it.
       Set_Robot_Costs (P.all, 1, Blocked'Access);
-      Assert (Robot_Distance (P.all, 1, 1, 3) = Infinity and then P.Distance (1, 3) = 10,
+      Assert (Robot_Distance (P.all, 1, 1, 3) = Infinity and then Distance (P.all, 1, 3) = 10,
               "callback costs are robot 1's only");
       for C of Pure_Criteria loop
          Annealers.Solve (P.all, (Criterion => C, Time_Limit => 0.0, Iterations => 2_000,
