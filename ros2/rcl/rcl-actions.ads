@@ -85,7 +85,9 @@ package RCL.Actions is
    Feedback_Suffix   : constant String := "/_action/feedback";
    Status_Suffix     : constant String := "/_action/status";
 
-   --  Field helpers (not for users) -------------------------------------------
+private
+
+   --  Field helpers of RCL.Actions.Servers and RCL.Actions.Clients.
 
    procedure Put_Id (Ref : ROSIDL.Dynamic.Field_Ref; Id : Goal_Id);
    function Get_Id (Ref : ROSIDL.Dynamic.Field_Ref) return Goal_Id;
@@ -94,8 +96,6 @@ package RCL.Actions is
    procedure Put_Stamp (Ref : ROSIDL.Dynamic.Field_Ref; Nanoseconds : Long_Long_Integer);
    function Get_Stamp (Ref : ROSIDL.Dynamic.Field_Ref) return Long_Long_Integer;
    --  Ref: a field of type builtin_interfaces/Time.
-
-private
 
    type Action_Support is record
       Definition : ROSIDL.Definitions.Action_Access;

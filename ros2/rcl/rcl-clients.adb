@@ -2,11 +2,12 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
+with RCL.Client_Endpoints;
 with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Logging;
-with RCL.Services;
 with RCL.Keyed_Caches;
+with RCL.Process_Context;
 
 package body RCL.Clients is
 
@@ -16,12 +17,6 @@ package body RCL.Clients is
    use type ROSIDL.UInt64;
    use type RCL.Pending_Calls.Outcome;
    use type RCL.Pending_Calls.Response_Callback;
-
-   Deep_History : constant := 1000;
-   --  The reply reader keeps at least this many replies: many calls in
-   --  flight (tasks, asynchronous calls) must not push replies out of a
-   --  KEEP_LAST history before they are taken. History depth does not
-   --  affect matching.
 
    Slice : constant Duration := 0.05;
    --  Longest single wait of the task reading replies.
@@ -50,48 +45,15 @@ package body RCL.Clients is
    begin
       This.Name := To_Unbounded_String (FQ);
       This.Support := Support;
-      Open_Endpoints (Node, FQ, DDS_Type_Name (Request_Support (Support)),
-                      DDS_Type_Name (Response_Support (Support)), QoS,
-                      This.Requests, This.Replies, This.Handle);
-      RCL.DDS.Create (This.Waiting, RCL.Contexts.Participant.all);
+      RCL.Client_Endpoints.Open_Endpoints
+        (Node, FQ, DDS_Type_Name (Request_Support (Support)),
+         DDS_Type_Name (Response_Support (Support)), QoS,
+         This.Requests, This.Replies, This.Handle);
+      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Node := Node.Graph_Id;
       This.Open := True;
    end Init;
-
-   procedure Open_Endpoints
-     (Node          : RCL.Nodes.Node'Class;
-      Service_Name  : String;
-      Request_Type  : String;
-      Response_Type : String;
-      QoS           : RCL.QoS.Profile;
-      Requests      : in out RCL.DDS.Writer;
-      Replies       : in out RCL.DDS.Reader;
-      Handle        : out ROSIDL.UInt64)
-   is
-      P  : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
-      Id : constant String := "clientid=" & RCL.DDS.Matching.New_Id (P.all) & ";";
-   begin
-      RCL.DDS.Create (Requests, P.all, RCL.Services.Request_Topic (Service_Name),
-                      Request_Type, QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Request_Type, Id));
-      RCL.DDS.Create (Replies, P.all, RCL.Services.Reply_Topic (Service_Name),
-                      Response_Type,
-                      (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
-                      User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
-      Handle := RCL.DDS.Matching.Instance_Handle (Requests);
-      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Requests));
-      RCL.Graph.Add_Reader (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Replies));
-   end Open_Endpoints;
-
-   procedure Close_Endpoints
-     (Node     : RCL.Graph.Node_Id;
-      Requests : RCL.DDS.Writer;
-      Replies  : RCL.DDS.Reader) is
-   begin
-      RCL.Graph.Remove_Writer (Node, RCL.DDS.Endpoint_GUID (Requests));
-      RCL.Graph.Remove_Reader (Node, RCL.DDS.Endpoint_GUID (Replies));
-   end Close_Endpoints;
 
    function Is_Open (This : Client) return Boolean is (This.Open);
 
@@ -314,7 +276,8 @@ package body RCL.Clients is
       Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
       Start    : Boolean;
    begin
-      This.Calls.Add_Async (Sequence, Callback, Deadline_Of (Timeout), Start);
+      This.Calls.Add_Async
+        (Sequence, RCL.Pending_Calls.Response_Callback (Callback), Deadline_Of (Timeout), Start);
       if Start then
          if This.Pumper /= null then
             while not This.Pumper'Terminated loop
@@ -463,7 +426,7 @@ package body RCL.Clients is
          Free (This.Pumper);
       end if;
       if This.Open then
-         Close_Endpoints (This.Node, This.Requests, This.Replies);
+         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
       end if;
       This.Open := False;
    exception

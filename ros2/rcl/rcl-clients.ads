@@ -30,16 +30,17 @@ with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Graph;
 with RCL.Nodes;
-with RCL.Pending_Calls;
 with RCL.QoS;
 
 private with Ada.Strings.Unbounded;
+private with RCL.Pending_Calls;
 
 package RCL.Clients is
 
    Forever : constant Duration := RCL.Nodes.Forever;
 
-   subtype Response_Callback is RCL.Pending_Calls.Response_Callback;
+   type Response_Callback is access procedure (Response : ROSIDL.Dynamic.Message);
+   --  What Call_Async runs with the response.
 
    type Client is new Ada.Finalization.Limited_Controlled with private;
 
@@ -160,31 +161,6 @@ package RCL.Clients is
    --  RCL_Timeout when the service is not available within Timeout.
 
    overriding procedure Finalize (This : in out Client);
-
-   --  Not for users (RCL.Services.Typed) --------------------------------
-
-   procedure Open_Endpoints
-     (Node          : RCL.Nodes.Node'Class;
-      Service_Name  : String;
-      Request_Type  : String;
-      Response_Type : String;
-      QoS           : RCL.QoS.Profile;
-      Requests      : in out RCL.DDS.Writer;
-      Replies       : in out RCL.DDS.Reader;
-      Handle        : out ROSIDL.UInt64)
-     with Pre => not RCL.DDS.Is_Open (Requests) and then not RCL.DDS.Is_Open (Replies);
-   --  The request writer and reply reader of a client of the fully
-   --  qualified Service_Name with the DDS types given, with a new
-   --  "clientid" in their USER_DATA, announced in the graph as endpoints of
-   --  Node; Handle is the request writer's instance handle (the requests'
-   --  header GUID).
-
-   procedure Close_Endpoints
-     (Node     : RCL.Graph.Node_Id;
-      Requests : RCL.DDS.Writer;
-      Replies  : RCL.DDS.Reader);
-   --  Withdraws them from the graph of Node (Node.Graph_Id when they were
-   --  opened); the DDS entities go with the objects.
 
 private
 

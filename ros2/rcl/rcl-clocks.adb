@@ -2,9 +2,9 @@ with Ada.Real_Time;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Arguments;
-with RCL.Contexts;
 with RCL.DDS;
 with RCL.Nodes;
+with RCL.Process_Context;
 with RCL.QoS;
 
 package body RCL.Clocks is
@@ -56,10 +56,13 @@ package body RCL.Clocks is
    function To_Duration (Span : Nanoseconds) return Duration is
      (Duration (Span / 1_000_000_000) + Duration (Span rem 1_000_000_000) / 1_000_000_000);
 
+   procedure Set_Sim_Time (Time : Nanoseconds);
+   --  What each /clock message does.
+
    procedure Set_Sim_Time (Time : Nanoseconds) is
    begin
       Sim.Set (Time);
-      RCL.Contexts.Wake_Executors;
+      RCL.Process_Context.Wake_Executors;
       --  Their timers on simulated time may be due now.
    end Set_Sim_Time;
 
@@ -77,16 +80,28 @@ package body RCL.Clocks is
          + Nanoseconds (ROSIDL.UInt32'(Msg ("clock") ("nanosec").As_UInt32)));
    end On_Clock;
 
+   procedure Subscribe_To_Clock (Node : in out RCL.Nodes.Node'Class) is
+   begin
+      Node.Subscribe
+        (ROSIDL.Typesupport.Get_Message_Support ("rosgraph_msgs", "Clock"),
+         "/clock", On_Clock'Access, RCL.QoS.Clock);
+   end Subscribe_To_Clock;
+
    procedure Enable_Sim_Time (Node : in out RCL.Nodes.Node'Class) is
       Was : Boolean;
    begin
       Sim.Enable (Was);
       if not Was then
-         Node.Subscribe
-           (ROSIDL.Typesupport.Get_Message_Support ("rosgraph_msgs", "Clock"),
-            "/clock", On_Clock'Access, RCL.QoS.Clock);
+         Subscribe_To_Clock (Node);
       end if;
    end Enable_Sim_Time;
+
+   procedure Follow_Clock (Node : in out RCL.Nodes.Node'Class) is
+      Was : Boolean;
+   begin
+      Sim.Enable (Was);
+      Subscribe_To_Clock (Node);
+   end Follow_Clock;
 
    function Sim_Time_Requested return Boolean is
       Args : RCL.Arguments.Argument_List;

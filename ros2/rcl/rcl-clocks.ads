@@ -22,13 +22,15 @@ package RCL.Clocks is
    procedure Enable_Sim_Time (Node : in out RCL.Nodes.Node'Class);
    --  ROS time follows /clock from now on, received by Node (spin it).
 
+   procedure Follow_Clock (Node : in out RCL.Nodes.Node'Class);
+   --  As Enable_Sim_Time, and Node subscribes to /clock even when another
+   --  node already does: ROS time follows /clock while Node lives and is
+   --  spun, whatever becomes of the first node that enabled simulated time.
+
    function Sim_Time_Enabled return Boolean;
 
    function Sim_Time_Requested return Boolean;
    --  The command line has "--ros-args ... -p use_sim_time:=true" (the
    --  first node then calls Enable_Sim_Time on itself).
-
-   procedure Set_Sim_Time (Time : Nanoseconds);
-   --  Not for users (the /clock subscription).
 
 end RCL.Clocks;

@@ -30,9 +30,6 @@ package RCL.Contexts is
 
    function Localhost_Only return Boolean;
 
-   function Participant return not null access RCL.DDS.Participant;
-   --  Not for users. Calls Init.
-
    procedure Shutdown;
    --  Stops every spin of the process (idempotent).
 
@@ -40,16 +37,6 @@ package RCL.Contexts is
 
    procedure Install_Signal_Handlers;
    --  SIGINT and SIGTERM call Shutdown (done by Init).
-
-   type Waitset_Access is access all RCL.DDS.Waitset;
-
-   procedure Register_Waker (Set : not null Waitset_Access; Key : out Positive);
-   procedure Unregister_Waker (Key : Positive);
-   --  Not for users: executors register to be woken by Shutdown.
-
-   procedure Wake_Executors;
-   --  Not for users: wakes every spinning executor once (simulated time
-   --  advanced: their timers may be due).
 
    function Enclave return String;
    --  The security enclave of the participant ("/" unless --ros-args -e).

@@ -1,3 +1,5 @@
+with RCL.Executors.Pools;
+
 package body RCL.Executors.Concurrent is
 
    procedure Start (This : in out Tuned_Executor) is

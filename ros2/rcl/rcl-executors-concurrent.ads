@@ -17,7 +17,6 @@
 --     E.Spin (During => Executors.Forever);
 with System;
 with System.Multiprocessors;
-with RCL.Executors.Pools;
 
 package RCL.Executors.Concurrent is
 
@@ -29,7 +28,7 @@ package RCL.Executors.Concurrent is
       Threads    : Positive;
       Priority   : System.Priority) is
      new Executors.Executor (Max_Nodes) with record
-      Workers : RCL.Executors.Pools.Pool;
+      Workers : Task_Pool;
    end record;
    --  Threads pool tasks run the callbacks at Priority; the queue holds
    --  Queue_Size pending callbacks (then the spinning task waits).

@@ -155,67 +155,89 @@ package body RCL.Executors.Pools is
    procedure Free is new Ada.Unchecked_Deallocation (Runner_Set, Runner_Set_Access);
    procedure Free is new Ada.Unchecked_Deallocation (Work_Queue, Queue_Access);
 
+   type Pool is new Task_Pool_State with record
+      Queue   : Queue_Access;
+      Runners : Runner_Set_Access;
+   end record;
+
+   procedure Free is new Ada.Unchecked_Deallocation
+     (Task_Pool_State'Class, Task_Pool_State_Access);
+
    procedure Start
-     (This       : in out Pool;
+     (This       : in out Task_Pool;
       Queue_Size : Positive;
       Threads    : Positive;
       Priority   : System.Priority) is
    begin
-      if This.Queue = null then
-         This.Queue := new Work_Queue (Queue_Size);
-         This.Runners := new Runner_Set (1 .. Threads);
-         for R of This.Runners.all loop
-            R := new Runner (This.Queue, Priority);
-         end loop;
+      if This.State = null then
+         declare
+            Made : constant Queue_Access := new Work_Queue (Queue_Size);
+            P    : constant Task_Pool_State_Access :=
+              new Pool'(Queue => Made, Runners => new Runner_Set (1 .. Threads));
+         begin
+            for R of Pool (P.all).Runners.all loop
+               R := new Runner (Made, Priority);
+            end loop;
+            This.State := P;
+         end;
       end if;
    end Start;
 
-   function Started (This : Pool) return Boolean is (This.Queue /= null);
+   function Started (This : Task_Pool) return Boolean is (This.State /= null);
+
+   function Queue (This : Task_Pool) return Queue_Access is
+     (Pool (This.State.all).Queue)
+     with Pre => Started (This);
 
    procedure Put_Sample
-     (This : in out Pool;
+     (This : in out Task_Pool;
       Node : not null Node_Access;
       Sub  : not null RCL.Nodes.Subscription_Access;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info) is
    begin
-      This.Queue.Put ((Kind => Sample, Node => Node, Sub => Sub,
-                       Data => new RCL.DDS.Byte_Array'(Data), Info => Info));
+      Queue (This).Put ((Kind => Sample, Node => Node, Sub => Sub,
+                         Data => new RCL.DDS.Byte_Array'(Data), Info => Info));
    end Put_Sample;
 
    procedure Put_Timer
-     (This    : in out Pool;
+     (This    : in out Task_Pool;
       Node    : not null Node_Access;
       Timer   : RCL.Nodes.Timer_Entry;
       Elapsed : Duration) is
    begin
-      This.Queue.Put ((Kind => Tick, Node => Node, Timer => Timer, Elapsed => Elapsed));
+      Queue (This).Put ((Kind => Tick, Node => Node, Timer => Timer, Elapsed => Elapsed));
    end Put_Timer;
 
-   procedure Flush (This : in out Pool) is
+   procedure Flush (This : in out Task_Pool) is
    begin
-      if This.Queue /= null then
-         This.Queue.Wait_Idle;
+      if Started (This) then
+         Queue (This).Wait_Idle;
       end if;
    end Flush;
 
-   procedure Shutdown (This : in out Pool) is
+   procedure Shutdown (This : in out Task_Pool) is
    begin
-      if This.Queue = null then
+      if not Started (This) then
          return;
       end if;
-      This.Queue.Wait_Idle;
-      for I in This.Runners'Range loop
-         This.Queue.Put ((Kind => Stop, Node => null));
-      end loop;
-      for R of This.Runners.all loop
-         while not R'Terminated loop
-            delay 0.001;
+      declare
+         P : Pool renames Pool (This.State.all);
+      begin
+         P.Queue.Wait_Idle;
+         for I in P.Runners'Range loop
+            P.Queue.Put ((Kind => Stop, Node => null));
          end loop;
-         Free (R);
-      end loop;
-      Free (This.Runners);
-      Free (This.Queue);
+         for R of P.Runners.all loop
+            while not R'Terminated loop
+               delay 0.001;
+            end loop;
+            Free (R);
+         end loop;
+         Free (P.Runners);
+         Free (P.Queue);
+      end;
+      Free (This.State);
    end Shutdown;
 
 end RCL.Executors.Pools;

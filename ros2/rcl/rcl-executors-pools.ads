@@ -1,26 +1,24 @@
---  Not for users: the task pool of the concurrent executor
---  (RCL.Executors.Concurrent): a bounded queue of callbacks to run and the
---  tasks that run them.
+--  The task pool of the concurrent executor (RCL.Executors.Concurrent):
+--  a bounded queue of callbacks to run and the tasks that run them, kept
+--  in an RCL.Executors.Task_Pool. A private child of RCL.Executors.
 with System;
 with ROSIDL;
 with RCL.DDS;
 with RCL.Nodes;
 
-package RCL.Executors.Pools is
-
-   type Pool is limited private;
+private package RCL.Executors.Pools is
 
    procedure Start
-     (This       : in out Pool;
+     (This       : in out Task_Pool;
       Queue_Size : Positive;
       Threads    : Positive;
       Priority   : System.Priority);
    --  Makes the queue and the tasks unless started.
 
-   function Started (This : Pool) return Boolean;
+   function Started (This : Task_Pool) return Boolean;
 
    procedure Put_Sample
-     (This : in out Pool;
+     (This : in out Task_Pool;
       Node : not null Node_Access;
       Sub  : not null RCL.Nodes.Subscription_Access;
       Data : RCL.DDS.Byte_Array;
@@ -29,16 +27,16 @@ package RCL.Executors.Pools is
    --  Queues a copy of Data (waits while the queue is full).
 
    procedure Put_Timer
-     (This    : in out Pool;
+     (This    : in out Task_Pool;
       Node    : not null Node_Access;
       Timer   : RCL.Nodes.Timer_Entry;
       Elapsed : Duration)
      with Pre => Started (This);
 
-   procedure Flush (This : in out Pool);
+   procedure Flush (This : in out Task_Pool);
    --  Waits until every queued callback has run.
 
-   procedure Shutdown (This : in out Pool);
+   procedure Shutdown (This : in out Task_Pool);
    --  Flush, then stops the tasks and waits for their termination.
 
 private
@@ -47,10 +45,5 @@ private
    type Queue_Access is access Work_Queue;
    type Runner_Set;
    type Runner_Set_Access is access Runner_Set;
-
-   type Pool is limited record
-      Queue   : Queue_Access;
-      Runners : Runner_Set_Access;
-   end record;
 
 end RCL.Executors.Pools;

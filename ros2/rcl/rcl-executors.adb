@@ -2,6 +2,7 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with RCL.Allocators;
+with RCL.Contexts;
 with RCL.Events;
 with RCL.Logging;
 with RCL.Timers;
@@ -10,7 +11,7 @@ with ROSIDL.Static.Storage;
 package body RCL.Executors is
 
    use Ada.Real_Time;
-   use type RCL.Contexts.Waitset_Access;
+   use type RCL.Process_Context.Waitset_Access;
 
    procedure Add (This : in out Executor; Node : in out RCL.Nodes.Node'Class) is
    begin
@@ -124,10 +125,10 @@ package body RCL.Executors is
       RCL.Contexts.Install_Signal_Handlers;
       if This.Set = null then
          This.Set := new RCL.DDS.Waitset;
-         RCL.DDS.Create (This.Set.all, RCL.Contexts.Participant.all);
+         RCL.DDS.Create (This.Set.all, RCL.Process_Context.Participant.all);
       end if;
       This.Stopping := False;
-      RCL.Contexts.Register_Waker (This.Set, Waker);
+      RCL.Process_Context.Register_Waker (This.Set, Waker);
       loop
          exit when RCL.Contexts.Is_Shutdown or else This.Stopping;
          Refresh (This);
@@ -184,17 +185,17 @@ package body RCL.Executors is
             exit when Clock >= Deadline;
          end;
       end loop;
-      RCL.Contexts.Unregister_Waker (Waker);
+      RCL.Process_Context.Unregister_Waker (Waker);
       This.Flush;
    exception
       when others =>
-         RCL.Contexts.Unregister_Waker (Waker);
+         RCL.Process_Context.Unregister_Waker (Waker);
          raise;
    end Spin;
 
    overriding procedure Finalize (This : in out Executor) is
       procedure Free is new Ada.Unchecked_Deallocation
-        (RCL.DDS.Waitset, RCL.Contexts.Waitset_Access);
+        (RCL.DDS.Waitset, RCL.Process_Context.Waitset_Access);
    begin
       if This.Set /= null then
          for I in 1 .. This.N_Attached loop

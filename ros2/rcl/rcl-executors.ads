@@ -16,7 +16,7 @@ with ROSIDL;
 with RCL.DDS;
 with RCL.Nodes;
 
-private with RCL.Contexts;
+private with RCL.Process_Context;
 
 package RCL.Executors is
 
@@ -77,7 +77,20 @@ package RCL.Executors is
 
    overriding procedure Finalize (This : in out Executor);
 
+   type Task_Pool is limited private;
+   --  The queue and tasks of a concurrent executor (the Workers of
+   --  RCL.Executors.Concurrent.Tuned_Executor): opaque, started by its
+   --  first Spin, stopped by its Shutdown or finalization.
+
 private
+
+   type Task_Pool_State is abstract tagged limited null record;
+   --  Extended by the private child RCL.Executors.Pools (queue and tasks).
+   type Task_Pool_State_Access is access Task_Pool_State'Class;
+
+   type Task_Pool is limited record
+      State : Task_Pool_State_Access;
+   end record;
 
    type Node_Array is array (Positive range <>) of Node_Access;
 
@@ -95,7 +108,7 @@ private
       Nodes      : Node_Array (1 .. Max_Nodes) := [others => null];
       N_Nodes    : Natural := 0;
       Versions   : Version_Array (1 .. Max_Nodes) := [others => -1];
-      Set        : RCL.Contexts.Waitset_Access;
+      Set        : RCL.Process_Context.Waitset_Access;
       Attached   : Attached_Array;
       N_Attached : Natural := 0;
       Stopping   : Boolean := False with Atomic;

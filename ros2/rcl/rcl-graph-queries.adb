@@ -8,8 +8,8 @@ with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Unchecked_Deallocation;
 with Interfaces;
-with RCL.Contexts;
 with RCL.DDS.Matching;
+with RCL.Process_Context;
 
 package body RCL.Graph.Queries is
 
@@ -262,7 +262,7 @@ package body RCL.Graph.Queries is
          Info : RCL.DDS.Sample_Info;
       begin
          if not RCL.DDS.Is_Open (Reader) then
-            RCL.DDS.Create (Reader, RCL.Contexts.Participant.all, Graph.Topic_Name,
+            RCL.DDS.Create (Reader, RCL.Process_Context.Participant.all, Graph.Topic_Name,
                             Graph.Type_Name,
                             Discovery_Profile);
          end if;
@@ -347,7 +347,7 @@ package body RCL.Graph.Queries is
    is
       use Ada.Real_Time;
       use RCL.DDS.Matching;
-      P     : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
+      P     : constant not null access RCL.DDS.Participant := RCL.Process_Context.Participant;
       Own   : constant String := Prefix_Image (RCL.DDS.Instance_GUID (P.all));
       Start : constant Time := Clock;
       Last_Change : Time := Start;
@@ -414,7 +414,7 @@ package body RCL.Graph.Queries is
       R : Unbounded_String;
    begin
       for P of RCL.DDS.Matching.Builtin
-        (RCL.Contexts.Participant.all, RCL.DDS.Matching.Participants)
+        (RCL.Process_Context.Participant.all, RCL.DDS.Matching.Participants)
       loop
          Append (R, Prefix_Image (P.Key) & " ");
       end loop;
@@ -474,7 +474,7 @@ package body RCL.Graph.Queries is
 
    function All_Endpoints return Endpoint_Array is
       use RCL.DDS.Matching;
-      P      : constant not null access RCL.DDS.Participant := RCL.Contexts.Participant;
+      P      : constant not null access RCL.DDS.Participant := RCL.Process_Context.Participant;
       Pubs   : constant RCL.DDS.Matching.Endpoint_Array := Builtin (P.all, Publications);
       Subs   : constant RCL.DDS.Matching.Endpoint_Array := Builtin (P.all, Subscriptions);
       Result : Queries.Endpoint_Array (1 .. Pubs'Length + Subs'Length);

@@ -8,10 +8,10 @@ with ROSIDL.Dynamic;
 with ROSIDL.Interfaces;
 with ROSIDL.Parser;
 with ROSIDL.Typesupport;
-with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Graph.Queries;
 with RCL.Logging;
+with RCL.Process_Context;
 with RCL.QoS;
 with ROSIDL.Mutexes;
 
@@ -100,7 +100,7 @@ package body RCL.Graph is
       end if;
       Writer := new RCL.DDS.Writer;
       RCL.DDS.Create
-        (Writer.all, RCL.Contexts.Participant.all, Topic_Name, Type_Name,
+        (Writer.all, RCL.Process_Context.Participant.all, Topic_Name, Type_Name,
          (RCL.QoS.Default with delta Depth => 1, Durability => RCL.QoS.Transient_Local),
          User_Data =>
            (if Layout = Jazzy_16
@@ -125,7 +125,7 @@ package body RCL.Graph is
       List : constant Array_Ref := Msg ("node_entities_info_seq").As_Array;
    begin
       Msg ("gid") ("data").Set_UInt8_Array
-        (Gid_Bytes (RCL.DDS.Instance_GUID (RCL.Contexts.Participant.all)));
+        (Gid_Bytes (RCL.DDS.Instance_GUID (RCL.Process_Context.Participant.all)));
       List.Resize (Natural (Nodes.Length));
       for I in 1 .. Natural (Nodes.Length) loop
          declare

@@ -9,6 +9,7 @@ with RCL.Executors.Sequential;
 with RCL.Logging;
 with RCL.Names;
 with RCL.Parameters;
+with RCL.Process_Context;
 with RCL.Rosout;
 with RCL.Services;
 
@@ -229,7 +230,7 @@ package body RCL.Nodes is
       S.Topic := new String'(FQ);
       S.Handle := Handle;
       S.Group := This.Current;
-      RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
+      RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Entities.Add (S);
       RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
@@ -254,7 +255,7 @@ package body RCL.Nodes is
       S.Topic := new String'(Name);
       S.Handle := Handle;
       S.Group := This.Current;
-      RCL.DDS.Create (S.Reader, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, QoS,
+      RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Type_Name, User_Data));
       This.Entities.Add (S);
       RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));

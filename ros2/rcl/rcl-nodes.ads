@@ -133,23 +133,6 @@ package RCL.Nodes is
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
 
-   procedure Subscribe_Closure
-     (This      : in out Node;
-      Type_Name : String;
-      Topic     : String;
-      Deliver   : not null access procedure
-        (State : System.Address;
-         Node  : in out Nodes.Node'Class;
-         Data  : RCL.DDS.Byte_Array;
-         Info  : ROSIDL.Message_Info);
-      State     : System.Address;
-      Release   : not null access procedure (State : System.Address);
-      QoS       : RCL.QoS.Profile := RCL.QoS.Default);
-   --  Not for users (RCL.Nodes.Typed): as Subscribe_Raw, Deliver receiving
-   --  State with every sample; Release (State) when the subscription ends
-   --  (the node's finalization, or a failed Subscribe_Closure). Deliver,
-   --  Release and State must stay valid as long as the node exists.
-
    --  Liveliness of publishers ---------------------------------------------
 
    procedure Track_Liveliness (This : in out Node; Topic : String);
@@ -339,6 +322,23 @@ package RCL.Nodes is
 private
 
    use Ada.Strings.Unbounded;
+
+   procedure Subscribe_Closure
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Deliver   : not null access procedure
+        (State : System.Address;
+         Node  : in out Nodes.Node'Class;
+         Data  : RCL.DDS.Byte_Array;
+         Info  : ROSIDL.Message_Info);
+      State     : System.Address;
+      Release   : not null access procedure (State : System.Address);
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default);
+   --  For RCL.Nodes.Typed: as Subscribe_Raw, Deliver receiving
+   --  State with every sample; Release (State) when the subscription ends
+   --  (the node's finalization, or a failed Subscribe_Closure). Deliver,
+   --  Release and State must stay valid as long as the node exists.
 
    type Node_Serial is new Natural;
    --  Tells the nodes of a process apart (Belongs_To).

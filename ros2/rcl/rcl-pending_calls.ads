@@ -1,20 +1,22 @@
---  Not for users: the pairing of service requests and replies of one client
---  (RCL.Clients). Each request gets a process-wide sequence number; the
---  reply carrying it is handed to the task waiting for it (synchronous
---  call) or returned with its callback (asynchronous call). A reply whose
---  sequence number is unknown (late after a timeout, duplicate, someone
---  else's) is reported and dropped. One task at a time reads the reply
---  reader (the "leader"); the others wait on their own slot.
+--  The pairing of service requests and replies of one client
+--  (RCL.Clients; a private child of RCL: internal to the library). Each
+--  request gets a process-wide sequence number; the reply carrying it is
+--  handed to the task waiting for it (synchronous call) or returned with
+--  its callback (asynchronous call). A reply whose sequence number is
+--  unknown (late after a timeout, duplicate, someone else's) is reported
+--  and dropped. One task at a time reads the reply reader (the "leader");
+--  the others wait on their own slot.
 with Ada.Real_Time;
 with Interfaces;
 with ROSIDL.Dynamic;
 
 private with Ada.Containers.Ordered_Maps;
 
-package RCL.Pending_Calls is
+private package RCL.Pending_Calls is
 
    type Response_Callback is access procedure (Response : ROSIDL.Dynamic.Message);
-   --  What an asynchronous call runs with its response.
+   --  What an asynchronous call runs with its response (the same profile
+   --  as RCL.Clients.Response_Callback, which converts to it).
 
    function Next_Sequence return ROSIDL.Int64;
    --  1, 2, 3... for the whole process (as rmw_cyclonedds).

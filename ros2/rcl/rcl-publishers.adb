@@ -2,6 +2,7 @@ with Ada.Streams;
 with ROSIDL.CDR;
 with RCL.Contexts;
 with RCL.Events;
+with RCL.Process_Context;
 
 package body RCL.Publishers is
 
@@ -61,7 +62,7 @@ package body RCL.Publishers is
       DDS_Topic  : String;
       Node       : RCL.Graph.Node_Id) is
    begin
-      RCL.DDS.Create (This.W, RCL.Contexts.Participant.all, DDS_Topic, Type_Name, Profile,
+      RCL.DDS.Create (This.W, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, Profile,
                       User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Topic := To_Unbounded_String (Topic);
       This.Node := Node;

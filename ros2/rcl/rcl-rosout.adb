@@ -7,6 +7,7 @@ with RCL.Contexts;
 with RCL.Graph;
 with RCL.DDS;
 with RCL.Logging;
+with RCL.Process_Context;
 with RCL.QoS;
 
 package body RCL.Rosout is
@@ -86,7 +87,7 @@ package body RCL.Rosout is
       end if;
       Support := ROSIDL.Typesupport.Get_Message_Support ("rcl_interfaces", "Log");
       Writer := new RCL.DDS.Writer;
-      RCL.DDS.Create (Writer.all, RCL.Contexts.Participant.all, "rt/rosout",
+      RCL.DDS.Create (Writer.all, RCL.Process_Context.Participant.all, "rt/rosout",
                       ROSIDL.Typesupport.DDS_Type_Name (Support), RCL.QoS.Rosout,
                       User_Data => RCL.Graph.Endpoint_User_Data
                         (ROSIDL.Typesupport.DDS_Type_Name (Support)));

@@ -5,11 +5,13 @@ with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Static.Wire;
 with ROSIDL.Type_Hashes;
+with RCL.Client_Endpoints;
 with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Logging;
 with RCL.Pending_Calls;
 with RCL.Keyed_Caches;
+with RCL.Process_Context;
 
 package body RCL.Services.Typed is
 
@@ -57,12 +59,12 @@ package body RCL.Services.Typed is
       FQ : constant String := Node.Expand_Service (Name);
    begin
       Register_Hashes;
-      RCL.Clients.Open_Endpoints
+      RCL.Client_Endpoints.Open_Endpoints
         (Node, FQ, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS,
          This.Requests, This.Replies, This.Handle);
       This.Node := Node.Graph_Id;
       This.Name := To_Unbounded_String (FQ);
-      RCL.DDS.Create (This.Waiting, RCL.Contexts.Participant.all);
+      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
       This.Open := True;
    end Init;
@@ -206,7 +208,7 @@ package body RCL.Services.Typed is
    begin
       if This.Open then
          This.Open := False;
-         RCL.Clients.Close_Endpoints (This.Node, This.Requests, This.Replies);
+         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
       end if;
    exception
       when others =>

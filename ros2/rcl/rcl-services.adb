@@ -1,10 +1,10 @@
 with Ada.Calendar;
 with Ada.Exceptions;
 with Ada.Unchecked_Deallocation;
-with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Graph;
 with RCL.Logging;
+with RCL.Process_Context;
 
 package body RCL.Services is
 
@@ -217,11 +217,11 @@ package body RCL.Services is
    is
       FQ : constant String := Node.Expand_Service (Name);
       Id : constant String :=
-        "serviceid=" & RCL.DDS.Matching.New_Id (RCL.Contexts.Participant.all) & ";";
+        "serviceid=" & RCL.DDS.Matching.New_Id (RCL.Process_Context.Participant.all) & ";";
       S  : Server'Class renames Handler.all;
    begin
       S.Name := To_Unbounded_String (FQ);
-      RCL.DDS.Create (S.Replies, RCL.Contexts.Participant.all, Reply_Topic (FQ),
+      RCL.DDS.Create (S.Replies, RCL.Process_Context.Participant.all, Reply_Topic (FQ),
                       Response_Type, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
       RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));

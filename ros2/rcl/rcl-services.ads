@@ -66,7 +66,9 @@ package RCL.Services is
       Node : in out RCL.Nodes.Node'Class;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info);
-   --  Not for users: decodes the request and calls On_Request.
+   --  Decodes the request and calls On_Request; the executors call it (it
+   --  overrides RCL.Nodes.Handler's: Ada keeps it visible so that types
+   --  derived from Server outside this package inherit it).
 
    procedure On_Request
      (This    : in out Server;
@@ -93,38 +95,6 @@ package RCL.Services is
       Name    : String;
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default);
    --  Offers service Name answered by Handler, which the node then owns.
-
-   --  Not for users: servers that decode their own requests -----------
-   --  (RCL.Services.Typed: generated codecs straight out of and into the
-   --  DDS samples, no dynamic message).
-
-   procedure Open_Raw
-     (Node          : in out RCL.Nodes.Node'Class;
-      Request_Type  : String;
-      Response_Type : String;
-      Name          : String;
-      On_Request    : not null access procedure
-        (Server : in out Services.Server'Class;
-         Node   : in out RCL.Nodes.Node'Class;
-         Data   : RCL.DDS.Byte_Array;
-         Info   : ROSIDL.Message_Info);
-      QoS           : RCL.QoS.Profile := RCL.QoS.Services_Default);
-   --  Offers service Name with the DDS types given
-   --  ("example_interfaces::srv::dds_::AddTwoInts_Request_"); On_Request
-   --  gets every request's bytes (header included) and answers with
-   --  Respond_Filled. On_Request must stay callable as long as the node
-   --  exists. Support (the server) is not set: the type may be unknown to
-   --  the dynamic layer.
-
-   procedure Respond_Filled
-     (This      : in out Server'Class;
-      Requester : RCL.DDS.GUID;
-      Size      : Ada.Streams.Stream_Element_Count;
-      Fill      : not null access procedure
-        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset));
-   --  Writes the reply that Fill encodes (header included, as
-   --  RCL.DDS.Write_Filled) to the request of writer Requester, once its
-   --  client's reply reader is matched (see above).
 
    Reply_Match_Wait : constant Duration := 0.1;
    --  How long a reply waits for the requester's reply reader.
@@ -153,6 +123,38 @@ private
    private
       Set : GUID_Sets.Set;
    end GUID_Set;
+
+   --  Servers that decode their own requests (RCL.Services.Typed:
+   --  generated codecs straight out of and into the DDS samples, no
+   --  dynamic message).
+
+   procedure Open_Raw
+     (Node          : in out RCL.Nodes.Node'Class;
+      Request_Type  : String;
+      Response_Type : String;
+      Name          : String;
+      On_Request    : not null access procedure
+        (Server : in out Services.Server'Class;
+         Node   : in out RCL.Nodes.Node'Class;
+         Data   : RCL.DDS.Byte_Array;
+         Info   : ROSIDL.Message_Info);
+      QoS           : RCL.QoS.Profile := RCL.QoS.Services_Default);
+   --  Offers service Name with the DDS types given
+   --  ("example_interfaces::srv::dds_::AddTwoInts_Request_"); On_Request
+   --  gets every request's bytes (header included) and answers with
+   --  Respond_Filled. On_Request must stay callable as long as the node
+   --  exists. Support (the server) is not set: the type may be unknown to
+   --  the dynamic layer.
+
+   procedure Respond_Filled
+     (This      : in out Server'Class;
+      Requester : RCL.DDS.GUID;
+      Size      : Ada.Streams.Stream_Element_Count;
+      Fill      : not null access procedure
+        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset));
+   --  Writes the reply that Fill encodes (header included, as
+   --  RCL.DDS.Write_Filled) to the request of writer Requester, once its
+   --  client's reply reader is matched (see above).
 
    type Server is abstract new RCL.Nodes.Handler with record
       Support  : ROSIDL.Typesupport.Service_Support;

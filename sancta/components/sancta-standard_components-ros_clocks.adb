@@ -1,10 +1,7 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
-with ROSIDL.Dynamic;
-with ROSIDL.Typesupport;
 with RCL.Clocks;
 with RCL.Nodes;
-with RCL.QoS;
 with Sancta.Logging;
 
 package body Sancta.Standard_Components.ROS_Clocks is
@@ -24,29 +21,14 @@ package body Sancta.Standard_Components.ROS_Clocks is
       end loop;
    end Wait_Until;
 
-   procedure On_Clock
-     (Node : in out RCL.Nodes.Node'Class;
-      Msg  : in out ROSIDL.Dynamic.Message;
-      Info : ROSIDL.Message_Info)
-   is
-      pragma Unreferenced (Node, Info);
-      use type RCL.Clocks.Nanoseconds;
-   begin
-      RCL.Clocks.Set_Sim_Time
-        (RCL.Clocks.Nanoseconds (ROSIDL.Int32'(Msg ("clock") ("sec").As_Int32)) * 1_000_000_000
-         + RCL.Clocks.Nanoseconds (ROSIDL.UInt32'(Msg ("clock") ("nanosec").As_UInt32)));
-   end On_Clock;
-
    task body Spinner is
       Node : RCL.Nodes.Node := RCL.Nodes.Init (Ada.Strings.Unbounded.To_String (Owner.Name));
    begin
-      RCL.Clocks.Enable_Sim_Time (Node);
-      --  Enable_Sim_Time subscribes to /clock only on the first node that
-      --  enables it, which may be gone (another component, a test): this
-      --  node subscribes too, so ROS time follows /clock while it lives.
-      Node.Subscribe
-        (ROSIDL.Typesupport.Get_Message_Support ("rosgraph_msgs", "Clock"),
-         "/clock", On_Clock'Access, RCL.QoS.Clock);
+      RCL.Clocks.Follow_Clock (Node);
+      --  Not Enable_Sim_Time: that subscribes to /clock only on the first
+      --  node that enables it, which may be gone (another component, a
+      --  test); this node subscribes too, so ROS time follows /clock while
+      --  it lives.
       accept Ready;
       while not Owner.Stopping loop
          begin

@@ -28,7 +28,7 @@ package Sancta.Standard_Components.ROS_Clocks is
    Max_Wait : constant Duration := 0.1;
 
    procedure Follow_Clock_Topic (This : in out ROS_Clock; Node_Name : String := "sancta_clock");
-   --  Enables simulated time (RCL.Clocks.Enable_Sim_Time) on a node of its
+   --  Enables simulated time (RCL.Clocks.Follow_Clock) on a node of its
    --  own receiving /clock, spun by a task of its own until Stop. Returns
    --  once the subscription exists.
 

@@ -13,9 +13,58 @@ with AUnit;
 with AUnit.Reporter.Text;
 with AUnit.Run;
 with GNAT.OS_Lib;
+with Interfaces.C;
 with All_Suites;
 
 procedure Test_Driver is
+
+   --  A domain id in 1..200 that no other run on this machine holds: the
+   --  driver keeps an flock on $TMPDIR/rclada-domain-locks/<id>.lock until
+   --  it exits (scripts/env.sh and tests/interop/conftest.py take the same
+   --  locks). Falls back to one drawn from the pid if no lock can be taken.
+   function Free_Domain_Id return Positive is
+      function C_Flock (Fd : Interfaces.C.int; Operation : Interfaces.C.int)
+        return Interfaces.C.int with Import, Convention => C, External_Name => "flock";
+      Lock_Exclusive : constant := 2;
+      Lock_No_Wait   : constant := 4;
+      use type Interfaces.C.int;
+      use type GNAT.OS_Lib.File_Descriptor;
+      Temp    : constant String :=
+        (if Ada.Environment_Variables.Exists ("TMPDIR")
+         then Ada.Environment_Variables.Value ("TMPDIR") else "/tmp");
+      Folder  : constant String := Temp & "/rclada-domain-locks";
+      Start   : constant Natural :=
+        GNAT.OS_Lib.Pid_To_Integer (GNAT.OS_Lib.Current_Process_Id) mod 200;
+   begin
+      if not Ada.Directories.Exists (Folder) then
+         begin
+            Ada.Directories.Create_Directory (Folder);
+         exception
+            when others => null;  --  another run made it, or /tmp is read-only
+         end;
+      end if;
+      for Step in 0 .. 199 loop
+         declare
+            Domain : constant Positive := (Start + Step) mod 200 + 1;
+            Image  : constant String := Positive'Image (Domain);
+            Path   : constant String :=
+              Folder & "/" & Image (Image'First + 1 .. Image'Last) & ".lock";
+            Fd     : GNAT.OS_Lib.File_Descriptor :=
+              GNAT.OS_Lib.Open_Append (Path, GNAT.OS_Lib.Binary);
+         begin
+            if Fd = GNAT.OS_Lib.Invalid_FD then
+               Fd := GNAT.OS_Lib.Create_File (Path, GNAT.OS_Lib.Binary);
+            end if;
+            if Fd /= GNAT.OS_Lib.Invalid_FD then
+               if C_Flock (Interfaces.C.int (Fd), Lock_Exclusive + Lock_No_Wait) = 0 then
+                  return Domain;  --  the descriptor stays open: the lock lives with us
+               end if;
+               GNAT.OS_Lib.Close (Fd);
+            end if;
+         end;
+      end loop;
+      return Start + 1;
+   end Free_Domain_Id;
 
    procedure Keep_DDS_On_Loopback is
       package Env renames Ada.Environment_Variables;
@@ -34,9 +83,7 @@ procedure Test_Driver is
       end if;
       if not Env.Exists ("ROS_DOMAIN_ID") then
          declare
-            Id : constant String :=
-              Integer'Image (GNAT.OS_Lib.Pid_To_Integer
-                               (GNAT.OS_Lib.Current_Process_Id) mod 200 + 1);
+            Id : constant String := Integer'Image (Free_Domain_Id);
          begin
             Env.Set ("ROS_DOMAIN_ID", Id (Id'First + 1 .. Id'Last));
          end;

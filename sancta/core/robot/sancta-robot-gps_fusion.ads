@@ -56,6 +56,12 @@ private
       --  The fix where the current track starts.
       Travel    : Point;
       --  Odometry displacement (world frame) since the anchor.
-   end record;
+   end record
+     with Type_Invariant =>
+       Filter.Variance >= 0.0 and then Filter.Noise >= 0.0
+       and then Filter.Gain in 0.0 .. 1.0;
+   --  A variance is never negative: prediction adds Noise (>= 0) per metre,
+   --  correction scales it by 1 - K with the gain K = P / (P + sigma^2) in
+   --  0 .. 1; Heading_Gain is a share.
 
 end Sancta.Robot.GPS_Fusion;

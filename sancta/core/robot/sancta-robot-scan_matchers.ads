@@ -88,7 +88,17 @@ private
       Angle_Min : Real := 0.0;
       Increment : Real := 0.0;
       Beams     : Natural := 0;
-   end record;
+   end record
+     with Type_Invariant => Is_Indexed (Scan_Points);
+
+   function Is_Indexed (S : Scan_Points) return Boolean is
+     (Natural (S.By_Beam.Length) = S.Beams
+      and then (for all B in 1 .. S.Beams =>
+                  S.By_Beam (B) = 0
+                  or else (S.By_Beam (B) <= S.Points.Last_Index
+                           and then S.Points (S.By_Beam (B)).Beam = B)));
+   --  By_Beam has one entry per beam, and each entry other than 0 is the
+   --  index of that beam's point (Match finds a beam's neighbours by it).
 
    type Corrector is tagged record
       Started       : Boolean := False;

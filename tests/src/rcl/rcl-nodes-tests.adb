@@ -9,6 +9,7 @@ with RCL.Contexts;
 with RCL.Executors.Concurrent;
 with RCL.Executors.Sequential;
 with RCL.Names;
+with RCL.Process_Context;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with System;
@@ -483,7 +484,7 @@ package body RCL.Nodes.Tests is
          declare
             W : RCL.DDS.Writer;
          begin
-            RCL.DDS.Create (W, RCL.Contexts.Participant.all, "bad topic name!", Type_Name,
+            RCL.DDS.Create (W, RCL.Process_Context.Participant.all, "bad topic name!", Type_Name,
                             RCL.QoS.Default);
             return "";
          end;

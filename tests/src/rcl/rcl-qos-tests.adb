@@ -2,8 +2,8 @@ with Ada.Streams;
 with AUnit.Assertions; use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
-with RCL.Contexts;
 with RCL.DDS;
+with RCL.Process_Context;
 
 package body RCL.QoS.Tests is
 
@@ -41,9 +41,9 @@ package body RCL.QoS.Tests is
       use type Ada.Streams.Stream_Element_Array;
       Data : constant Ada.Streams.Stream_Element_Array := [0, 1, 0, 0, 7, 0, 0, 0];
    begin
-      RCL.DDS.Create (W, RCL.Contexts.Participant.all, "rt/qos_custom", "t::msg::dds_::T_",
+      RCL.DDS.Create (W, RCL.Process_Context.Participant.all, "rt/qos_custom", "t::msg::dds_::T_",
                       Custom);
-      RCL.DDS.Create (R, RCL.Contexts.Participant.all, "rt/qos_custom", "t::msg::dds_::T_",
+      RCL.DDS.Create (R, RCL.Process_Context.Participant.all, "rt/qos_custom", "t::msg::dds_::T_",
                       Custom);
       for I in 1 .. 200 loop
          exit when RCL.DDS.Matched_Readers (W) > 0;
@@ -52,7 +52,8 @@ package body RCL.QoS.Tests is
       Assert (RCL.DDS.Matched_Readers (W) = 1, "custom QoS endpoints match");
       RCL.DDS.Write (W, Data);
       --  A transient-local reader created after the write still gets it.
-      RCL.DDS.Create (Late, RCL.Contexts.Participant.all, "rt/qos_custom", "t::msg::dds_::T_",
+      RCL.DDS.Create (Late, RCL.Process_Context.Participant.all,
+                      "rt/qos_custom", "t::msg::dds_::T_",
                       Custom);
       for I in 1 .. 200 loop
          declare

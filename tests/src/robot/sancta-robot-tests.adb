@@ -7,11 +7,13 @@ with Sancta.Robot.Aligners;
 with Sancta.Robot.Controllers;
 with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.GPS_Fusion;
+with Sancta.Robot.GPS_Fusion.Contract_Tests;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Mappers;
 with Sancta.Robot.Navigators;
 with Sancta.Robot.Path_Costs;
 with Sancta.Robot.Scan_Matchers;
+with Sancta.Robot.Scan_Matchers.Contract_Tests;
 with Sancta.Robot.Sensors;
 with Sancta.Simulation.Demos;
 with Sancta.Simulation.Simulators;
@@ -523,6 +525,8 @@ package body Sancta.Robot.Tests is
       Add ("scan matching beats drifting odometry", Scan_Matching_Beats_Odometry'Access);
       Add ("aligner corrects heading from walls", Aligner_Corrects_Heading'Access);
       Add ("GPS fusion bounds odometry drift", GPS_Fusion_Bounds_Drift'Access);
+      Result.Add_Test (GPS_Fusion.Contract_Tests.Suite);
+      Result.Add_Test (Scan_Matchers.Contract_Tests.Suite);
       return Result;
    end Suite;
 
