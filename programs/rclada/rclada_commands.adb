@@ -423,17 +423,17 @@ package body Rclada_Commands is
    function Fully_Qualified (Name : String) return String is
      (if Name'Length > 0 and then Name (Name'First) = '/' then Name else "/" & Name);
 
-   function Checked_Name (Name : String) return String is
-      --  A topic or service name from the command line, fully qualified and
-      --  validated (an invalid name would be waited for forever).
-      Full    : constant String := Fully_Qualified (Name);
-      Problem : constant String := RCL.Names.Topic_Problem (Full);
-   begin
-      if Problem /= "" then
-         raise Command_Error with "invalid name '" & Name & "': " & Problem;
-      end if;
-      return Full;
-   end Checked_Name;
+   subtype Command_Line_Name is String
+     with Dynamic_Predicate =>
+       RCL.Names.Topic_Problem (Fully_Qualified (Command_Line_Name)) = ""
+       or else raise Command_Error with "invalid name '" & Command_Line_Name & "': "
+                 & RCL.Names.Topic_Problem (Fully_Qualified (Command_Line_Name));
+   --  A topic or service name from the command line: valid once fully
+   --  qualified (an invalid name would be waited for forever).
+
+   function Checked_Name (Name : Command_Line_Name) return RCL.Names.Topic_Name is
+     (Fully_Qualified (Name));
+   --  Name, fully qualified.
 
    function Message_From (Support : ROSIDL.Typesupport.Message_Support; Text : String)
       return ROSIDL.Dynamic.Message is

@@ -1,4 +1,5 @@
 with RCL.DDS.Matching;
+with RCL.Graph_Announcements;
 with RCL.Process_Context;
 with RCL.Services;
 
@@ -31,8 +32,8 @@ package body RCL.Client_Endpoints is
                       (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
                       User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
       Handle := RCL.DDS.Matching.Instance_Handle (Requests);
-      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Requests));
-      RCL.Graph.Add_Reader (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Replies));
+      RCL.Graph_Announcements.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Requests));
+      RCL.Graph_Announcements.Add_Reader (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Replies));
    end Open_Endpoints;
 
    procedure Close_Endpoints
@@ -40,8 +41,8 @@ package body RCL.Client_Endpoints is
       Requests : RCL.DDS.Writer;
       Replies  : RCL.DDS.Reader) is
    begin
-      RCL.Graph.Remove_Writer (Node, RCL.DDS.Endpoint_GUID (Requests));
-      RCL.Graph.Remove_Reader (Node, RCL.DDS.Endpoint_GUID (Replies));
+      RCL.Graph_Announcements.Remove_Writer (Node, RCL.DDS.Endpoint_GUID (Requests));
+      RCL.Graph_Announcements.Remove_Reader (Node, RCL.DDS.Endpoint_GUID (Replies));
    end Close_Endpoints;
 
 end RCL.Client_Endpoints;

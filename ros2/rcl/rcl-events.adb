@@ -1,35 +1,6 @@
-with Ada.Containers.Ordered_Maps;
-with Ada.Containers.Vectors;
-with Interfaces;
-with System;
-with RCL.DDS;
-with RCL.Logging;
-with ROSIDL.Mutexes;
+with RCL.Event_Watches;
 
 package body RCL.Events is
-
-   use type System.Address;
-   use type RCL.Graph.Node_Id;
-   use type Interfaces.Unsigned_32;
-
-   type Writer_Access is access constant RCL.DDS.Writer;
-
-   type Watched is record
-      Node      : RCL.Graph.Node_Id := RCL.Graph.No_Node;
-      Writer    : Writer_Access;
-      --  null for a subscription (found through its node).
-      Topic     : RCL.Nodes.Name_Access;
-      On_Event  : Callback;
-      Last      : RCL.DDS.QoS_Events;
-   end record;
-
-
-   package Watch_Maps is new Ada.Containers.Ordered_Maps (System.Address, Watched);
-
-   Lock : ROSIDL.Mutexes.Mutex;
-
-   Table : Watch_Maps.Map;
-   --  Guarded by Lock. Keys: a publisher's writer, a subscription record.
 
    function Policy_Name (Policy : Natural) return String is
      (case Policy is
@@ -42,40 +13,6 @@ package body RCL.Events is
          when 21     => "LIFESPAN_QOS_POLICY",
          when others => "UNKNOWN_QOS_POLICY");
 
-   procedure Register_Publisher (Pub : RCL.Publishers.Publisher; Node : RCL.Graph.Node_Id) is
-      W : constant Writer_Access := Pub.Writer.all'Unchecked_Access;
-   begin
-      Lock.Seize;
-      Table.Include (W.all'Address, (Node     => Node,
-                                     Writer   => W,
-                                     Topic    => new String'(Pub.Topic),
-                                     On_Event => null,
-                                     Last     => <>));
-      Lock.Release;
-   exception
-      when others =>
-         Lock.Release;
-         raise;
-   end Register_Publisher;
-
-   procedure Unregister_Publisher (Pub : RCL.Publishers.Publisher) is
-   begin
-      Lock.Seize;
-      Table.Exclude (Pub.Writer.all'Address);
-      Lock.Release;
-   end Unregister_Publisher;
-
-   procedure Set_Callback (Key : System.Address; Fresh : Watched; On_Event : Callback) is
-   begin
-      Lock.Seize;
-      if Table.Contains (Key) then
-         Table.Reference (Key).On_Event := On_Event;
-      else
-         Table.Insert (Key, (Fresh with delta On_Event => On_Event));
-      end if;
-      Lock.Release;
-   end Set_Callback;
-
    procedure Watch
      (Node     : in out RCL.Nodes.Node'Class;
       Pub      : RCL.Publishers.Publisher;
@@ -83,12 +20,8 @@ package body RCL.Events is
    is
       Stored : constant Callback with Import, Address => On_Event'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
-      W      : constant Writer_Access := Pub.Writer.all'Unchecked_Access;
    begin
-      Set_Callback (W.all'Address,
-                    (Node => Node.Graph_Id, Writer => W, Topic => new String'(Pub.Topic),
-                     On_Event => null, Last => <>),
-                    Stored);
+      RCL.Event_Watches.Watch_Publisher (Node.Graph_Id, Pub, Stored);
    end Watch;
 
    procedure Watch
@@ -104,10 +37,7 @@ package body RCL.Events is
             S : constant RCL.Nodes.Subscription_Access := Node.Get_Subscription (I);
          begin
             if S.Topic.all = FQ then
-               Set_Callback (S.all'Address,
-                             (Node => Node.Graph_Id, Writer => null, Topic => S.Topic,
-                              On_Event => null, Last => <>),
-                             Stored);
+               RCL.Event_Watches.Watch_Subscription (Node.Graph_Id, S, Stored);
                return;
             end if;
          end;
@@ -116,116 +46,5 @@ package body RCL.Events is
    end Watch;
 
    --  Polling ------------------------------------------------------------------
-
-   type Pending is record
-      On_Event : Callback;
-      E        : Event;
-   end record;
-
-   package Pending_Vectors is new Ada.Containers.Vectors (Positive, Pending);
-
-   function Grew (Now, Before : Interfaces.Unsigned_32) return Integer is
-     (Integer (Now) - Integer (Before));
-
-   --  The events between Before and Now of one endpoint: warnings logged,
-   --  callbacks queued.
-   procedure Compare
-     (Node    : RCL.Nodes.Node'Class;
-      Item    : Watched;
-      Now     : RCL.DDS.QoS_Events;
-      Is_Pub  : Boolean;
-      Queue   : in out Pending_Vectors.Vector)
-   is
-      B : RCL.DDS.QoS_Events renames Item.Last;
-      procedure Add (E : Event) is
-      begin
-         if Item.On_Event /= null then
-            Queue.Append (Pending'(Item.On_Event, E));
-         end if;
-      end Add;
-      Base : constant Event := (Kind => Matched, Topic => Item.Topic, Publisher => Is_Pub,
-                                others => <>);
-   begin
-      if Now.Incompatible_Total > B.Incompatible_Total then
-         RCL.Logging.Warn
-           ((if Is_Pub
-             then "New subscription discovered on topic '" & Item.Topic.all
-                  & "', requesting incompatible QoS. No messages will be sent to it. "
-             else "New publisher discovered on topic '" & Item.Topic.all
-                  & "', offering incompatible QoS. No messages will be received from it. ")
-            & "Last incompatible policy: " & Policy_Name (Natural (Now.Last_Policy)),
-            Logger => Node.Logger_Name);
-         Add ((Base with delta Kind => Incompatible_QoS,
-               Total => Natural (Now.Incompatible_Total),
-               Change => Grew (Now.Incompatible_Total, B.Incompatible_Total),
-               Policy => Natural (Now.Last_Policy)));
-      end if;
-      if Now.Deadline_Total > B.Deadline_Total then
-         Add ((Base with delta Kind => Deadline_Missed, Total => Natural (Now.Deadline_Total),
-               Change => Grew (Now.Deadline_Total, B.Deadline_Total)));
-      end if;
-      if Now.Liveliness_Lost_Total > B.Liveliness_Lost_Total then
-         Add ((Base with delta Kind => Liveliness_Lost,
-               Total => Natural (Now.Liveliness_Lost_Total),
-               Change => Grew (Now.Liveliness_Lost_Total, B.Liveliness_Lost_Total)));
-      end if;
-      if Now.Alive_Count /= B.Alive_Count or else Now.Not_Alive_Count /= B.Not_Alive_Count then
-         Add ((Base with delta Kind => Liveliness_Changed, Alive => Natural (Now.Alive_Count),
-               Not_Alive => Natural (Now.Not_Alive_Count)));
-      end if;
-      if Now.Lost_Total > B.Lost_Total then
-         Add ((Base with delta Kind => Message_Lost, Total => Natural (Now.Lost_Total),
-               Change => Grew (Now.Lost_Total, B.Lost_Total)));
-      end if;
-      if Now.Matched_Total /= B.Matched_Total or else Now.Matched_Current /= B.Matched_Current
-      then
-         Add ((Base with delta Kind => Matched, Total => Natural (Now.Matched_Total),
-               Change => Grew (Now.Matched_Total, B.Matched_Total),
-               Current => Natural (Now.Matched_Current),
-               Current_Change => Grew (Now.Matched_Current, B.Matched_Current)));
-      end if;
-   end Compare;
-
-   procedure Poll (Node : in out RCL.Nodes.Node'Class) is
-      Queue : Pending_Vectors.Vector;
-      Now   : RCL.DDS.QoS_Events;
-   begin
-      Lock.Seize;
-      begin
-         for I in 1 .. Node.Subscription_Count loop
-            declare
-               S : constant RCL.Nodes.Subscription_Access := Node.Get_Subscription (I);
-            begin
-               if not Table.Contains (S.all'Address) then
-                  Table.Insert (S.all'Address, (Node => Node.Graph_Id, Writer => null,
-                                                Topic => S.Topic, On_Event => null,
-                                                Last => <>));
-               end if;
-               RCL.DDS.Poll_Events (S.Reader, Now);
-               Compare (Node, Table (S.all'Address), Now, False, Queue);
-               Table.Reference (S.all'Address).Last := Now;
-            end;
-         end loop;
-         for C in Table.Iterate loop
-            declare
-               W : Watched renames Table.Reference (C);
-            begin
-               if W.Node = Node.Graph_Id and then W.Writer /= null then
-                  RCL.DDS.Poll_Events (W.Writer.all, Now);
-                  Compare (Node, W, Now, True, Queue);
-                  W.Last := Now;
-               end if;
-            end;
-         end loop;
-      exception
-         when others =>
-            Lock.Release;
-            raise;
-      end;
-      Lock.Release;
-      for P of Queue loop
-         P.On_Event (Node, P.E);
-      end loop;
-   end Poll;
 
 end RCL.Events;

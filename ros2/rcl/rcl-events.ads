@@ -27,7 +27,6 @@
 --  and runs the callbacks in its spinning task.
 with RCL.Nodes;
 with RCL.Publishers;
-with RCL.Graph;
 
 package RCL.Events is
 
@@ -80,14 +79,5 @@ package RCL.Events is
       On_Event : not null access procedure (Node : in out RCL.Nodes.Node'Class; E : Event));
    --  The node's (first) subscription on Topic; ROS_Exception when it has
    --  none.
-
-   --  Not for users ---------------------------------------------------------
-
-   procedure Register_Publisher (Pub : RCL.Publishers.Publisher; Node : RCL.Graph.Node_Id);
-   procedure Unregister_Publisher (Pub : RCL.Publishers.Publisher);
-   --  By RCL.Publishers: every publisher reports incompatible QoS.
-
-   procedure Poll (Node : in out RCL.Nodes.Node'Class);
-   --  By the executors, at most every Poll_Period per node.
 
 end RCL.Events;

@@ -3,6 +3,7 @@ with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with RCL.Allocators;
 with RCL.Contexts;
+with RCL.Event_Watches;
 with RCL.Events;
 with RCL.Logging;
 with RCL.Timers;
@@ -178,7 +179,7 @@ package body RCL.Executors is
             if Clock - Last_Events >= To_Time_Span (RCL.Events.Poll_Period) then
                Last_Events := Clock;
                for I in 1 .. This.N_Nodes loop
-                  RCL.Events.Poll (This.Nodes (I).all);
+                  RCL.Event_Watches.Poll (This.Nodes (I).all);
                end loop;
             end if;
             exit when Once and then Worked;

@@ -8,7 +8,6 @@
 --  bytes as in Jazzy: Set_Layout, or ROS_DISTRO (jazzy, kilted, rolling
 --  select 16; anything else 24), before the first node is created.
 with Ada.Strings.Unbounded;
-with RCL.DDS;
 with ROSIDL.Type_Hashes;
 
 package RCL.Graph is
@@ -71,22 +70,10 @@ package RCL.Graph is
    --  The "typehash=" value of an endpoint's USER_DATA; Zero_Type_Hash
    --  when absent (Humble peers), as Jazzy does.
 
-   --  Not for users: called by RCL.Nodes and RCL.Publishers.
-
    type Node_Id is new Natural;
    No_Node : constant Node_Id := 0;
-
-   procedure Add_Node (Namespace, Name : String; Id : out Node_Id);
-   procedure Remove_Node (Id : Node_Id);
-   procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
-   procedure Remove_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID);
-   procedure Add_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID);
-   procedure Remove_Reader (Id : Node_Id; Endpoint : RCL.DDS.GUID);
-   --  Each change republishes the participant's entities. Errors while
-   --  publishing are logged, never raised (graph presence is best effort).
-
-   function Announcement return RCL.DDS.Byte_Array;
-   --  The ParticipantEntitiesInfo sample last published (CDR), empty before
-   --  the first node (for tests and diagnostics).
+   --  A node as the graph announcements know it (RCL.Nodes.Graph_Id); the
+   --  announcements themselves are made by the library's own units
+   --  (RCL.Graph_Announcements, private).
 
 end RCL.Graph;

@@ -6,6 +6,7 @@ with RCL.Clients;
 with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
+with RCL.Graph_Announcements;
 with RCL.Logging;
 with RCL.Names;
 with RCL.Parameters;
@@ -114,7 +115,7 @@ package body RCL.Nodes is
             N.Namespace := To_Unbounded_String (NS);
             N.Remapped := Options.Use_Global_Arguments;
             N.Pool := Options.Pool;
-            RCL.Graph.Add_Node (NS, New_Name, N.Graph_Id);
+            RCL.Graph_Announcements.Add_Node (NS, New_Name, N.Graph_Id);
             if RCL.Arguments.Rosout_Enabled then
                RCL.Rosout.Enable;
             end if;
@@ -233,7 +234,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
                       Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Entities.Add (S);
-      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
+      RCL.Graph_Announcements.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
    exception
       when others =>
          Free (S);
@@ -258,7 +259,7 @@ package body RCL.Nodes is
       RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Type_Name, User_Data));
       This.Entities.Add (S);
-      RCL.Graph.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
+      RCL.Graph_Announcements.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
       Added := S;
    exception
       when others =>
@@ -655,7 +656,7 @@ package body RCL.Nodes is
    begin
       Free (This.Spin_Exec);
       --  Before the subscriptions: it detaches their readers.
-      RCL.Graph.Remove_Node (This.Graph_Id);
+      RCL.Graph_Announcements.Remove_Node (This.Graph_Id);
       This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop

@@ -1,7 +1,8 @@
 with Ada.Streams;
 with ROSIDL.CDR;
 with RCL.Contexts;
-with RCL.Events;
+with RCL.Event_Watches;
+with RCL.Graph_Announcements;
 with RCL.Process_Context;
 
 package body RCL.Publishers is
@@ -66,8 +67,8 @@ package body RCL.Publishers is
                       User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       This.Topic := To_Unbounded_String (Topic);
       This.Node := Node;
-      RCL.Graph.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
-      RCL.Events.Register_Publisher (This, Node);
+      RCL.Graph_Announcements.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
+      RCL.Event_Watches.Register_Publisher (This, Node);
    end Create;
 
    procedure Set_Support
@@ -80,8 +81,8 @@ package body RCL.Publishers is
    overriding procedure Finalize (This : in out Publisher) is
    begin
       if RCL.DDS.Is_Open (This.W) then
-         RCL.Events.Unregister_Publisher (This);
-         RCL.Graph.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.W));
+         RCL.Event_Watches.Unregister_Publisher (This);
+         RCL.Graph_Announcements.Remove_Writer (This.Node, RCL.DDS.Endpoint_GUID (This.W));
       end if;
       This.Node := RCL.Graph.No_Node;
    exception

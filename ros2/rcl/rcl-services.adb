@@ -3,6 +3,7 @@ with Ada.Exceptions;
 with Ada.Unchecked_Deallocation;
 with RCL.DDS.Matching;
 with RCL.Graph;
+with RCL.Graph_Announcements;
 with RCL.Logging;
 with RCL.Process_Context;
 
@@ -224,7 +225,7 @@ package body RCL.Services is
       RCL.DDS.Create (S.Replies, RCL.Process_Context.Participant.all, Reply_Topic (FQ),
                       Response_Type, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
-      RCL.Graph.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
+      RCL.Graph_Announcements.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
       Node.Add_Endpoint
         (Type_Name => Request_Type,
          DDS_Topic => Request_Topic (FQ),

@@ -411,9 +411,14 @@ package body Sancta.Commands.Plan is
       Proven := Outcome.Proven;
       Lower_Bound := Outcome.Lower;
       Note := To_Unbounded_String
-        ("branch and cut:" & Outcome.Nodes'Image & " nodes," & Outcome.Cuts'Image & " cuts,"
-         & Outcome.Edges'Image & " edges, " & Real_Img (Long_Float (Outcome.Elapsed), 2)
-         & " s after an anneal of " & Real_Img (Long_Float (Stats.Elapsed), 2) & " s");
+        ("branch and cut:" & Outcome.Nodes'Image & " nodes," & Outcome.Cuts'Image & " cuts ("
+         & Outcome.By_Class (Sancta.Allocation.Branch_And_Cut.Subtour)'Image & " subtour,"
+         & Outcome.By_Class (Sancta.Allocation.Branch_And_Cut.Blossom)'Image & " blossom,"
+         & Outcome.By_Class (Sancta.Allocation.Branch_And_Cut.Comb)'Image & " comb),"
+         & Outcome.Edges'Image & " edges, root bound "
+         & Real_Img (Outcome.Root_Bound, 1) & ", " & Real_Img (Long_Float (Outcome.Elapsed), 2)
+         & " s (CPU " & Real_Img (Long_Float (Outcome.CPU), 2) & " s) after an anneal of "
+         & Real_Img (Long_Float (Stats.Elapsed), 2) & " s");
    end Solve_By_Branch_And_Cut;
 
    procedure Run (First_Argument : Positive := 2) is

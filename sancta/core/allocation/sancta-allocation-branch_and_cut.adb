@@ -1,21 +1,20 @@
 with Ada.Containers.Vectors;
+with Ada.Execution_Time;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with Interfaces.C;
+with Sancta.Allocation.Branch_And_Cut.Separation;
 with Sancta.Allocation.GLPK;
 
 package body Sancta.Allocation.Branch_And_Cut is
 
    use Ada.Real_Time;
-   use type Interfaces.C.double;
    package LP renames Sancta.Allocation.GLPK;
 
    Forbidden : constant Cost := -1;
    --  An arc or edge that no cycle may use.
 
    Epsilon : constant := 1.0E-6;
-   Cut_Tolerance : constant := 1.0E-4;
-   --  A cut is violated when the LP's crossing weight is below 2 - this.
 
    function Symmetric_Cycle (P : Problem) return Boolean is
      (P.Symmetric and then not Has_Own_Costs (P, 1)
@@ -82,13 +81,7 @@ package body Sancta.Allocation.Branch_And_Cut is
    type Id_Matrix is array (Positive range <>, Positive range <>) of Natural;
    type Id_Matrix_Access is access Id_Matrix;
    procedure Free is new Ada.Unchecked_Deallocation (Id_Matrix, Id_Matrix_Access);
-   type Real_Matrix is array (Positive range <>, Positive range <>) of Long_Float;
-   type Real_Matrix_Access is access Real_Matrix;
-   procedure Free is new Ada.Unchecked_Deallocation (Real_Matrix, Real_Matrix_Access);
    type Real_Vector is array (Positive range <>) of Long_Float;
-   type Node_Set is array (Positive range <>) of Boolean;
-   type Node_Set_Access is access Node_Set;
-   procedure Free is new Ada.Unchecked_Deallocation (Node_Set, Node_Set_Access);
 
    type Edge is record
       U, V   : Positive;
@@ -96,19 +89,45 @@ package body Sancta.Allocation.Branch_And_Cut is
       Fixed_One : Boolean;  --  an in/out pair of the doubled graph
    end record;
    package Edge_Vectors is new Ada.Containers.Vectors (Positive, Edge);
-   package Cut_Vectors is new Ada.Containers.Vectors (Positive, Node_Set_Access);
    package Real_Vectors is new Ada.Containers.Vectors (Positive, Long_Float);
+   package Natural_Vectors is new Ada.Containers.Vectors (Positive, Natural);
+
+   type Fix is record
+      Column : Positive;
+      Value  : Natural range 0 .. 1;
+   end record;
+   package Fix_Vectors is new Ada.Containers.Vectors (Positive, Fix);
+
+   type Open_Node is record
+      Bound : Long_Float;
+      --  The parent's LP value (a lower bound below this node).
+      Fixes : Fix_Vectors.Vector;
+      --  Columns fixed on the path from the root (branching, reduced costs).
+   end record;
+   package Node_Vectors is new Ada.Containers.Vectors (Positive, Open_Node);
+
    type Cycle is array (Positive range <>) of Positive;
-   type Column_List is array (Positive range <>) of Positive;
-   No_Teeth : constant Column_List (1 .. 0) := [others => 1];
+
+   Purge_Age : constant := 3;
+   --  Rounds a cut stays slack before it leaves the LP.
+   Pool_Limit : constant := 20_000;
+   Strong_Iterations : constant := 50;
+   --  Dual simplex steps per strong-branching child.
+   Tailing_Rounds : constant := 4;
+   Tailing_Share : constant := 0.02;
+   --  A node stops cutting (and branches) when its last Tailing_Rounds
+   --  rounds closed less than this share of the gap to the upper bound.
 
    procedure Solve
      (P          : Problem;
       Start      : Assignment;
       Time_Limit : Duration;
-      Outcome    : out Result)
+      Outcome    : out Result;
+      Config     : Settings := Default_Settings)
    is
+      use Separation;
       Started  : constant Time := Clock;
+      CPU_Started : constant Ada.Execution_Time.CPU_Time := Ada.Execution_Time.Clock;
       Deadline : constant Time := Started + To_Time_Span (Time_Limit);
       Base     : constant Positive := P.Tasks + P.Robots;
       --  Nodes of the directed cycle.
@@ -120,24 +139,44 @@ package body Sancta.Allocation.Branch_And_Cut is
       Ids      : Id_Matrix_Access;
       --  The LP column of each edge (0: not in the LP).
       Edges    : Edge_Vectors.Vector;
-      Cuts     : Cut_Vectors.Vector;
-      --  Cut K is row N + K: the edges leaving the set at least twice.
+      Cuts     : Cut_Lists.Vector;
+      --  Cut K is row N + K.
+      Ages     : Natural_Vectors.Vector;
+      --  Rounds each cut has been slack.
+      Pool     : Cut_Lists.Vector;
       Model    : LP.Problem := LP.Create_Problem;
       X        : Real_Vectors.Vector;
       --  The LP solution of the last solve.
+      Root_Low, Root_High : Natural_Vectors.Vector;
+      --  Each column's bounds at the root (after the global fixing).
+      Touched  : Natural_Vectors.Vector;
+      --  Columns whose bounds differ from the root's in the LP now.
+      Fixed_Now : Natural_Vectors.Vector;
+      --  1: the column is fixed in the LP now (at the root or the node).
       Upper    : Cost;
       Best_Cycle : Cycle (1 .. Base);
       Timed_Out : Boolean := False;
-      Lower_At_Timeout : Long_Float := 0.0;
       Root_Done : Boolean := False;
-      Nodes    : Natural := 0;
-      Pending  : Real_Vectors.Vector;
-      --  Bounds of the second children not yet explored (depth first).
+      Open     : Node_Vectors.Vector;
+      Stats    : Result (P.Robots, P.Tasks);
+      --  The counters (Nodes, By_Class, ...).
+
+      function Time_Up return Boolean is
+        (if Config.CPU_Time_Limit
+         then Ada.Execution_Time."-" (Ada.Execution_Time.Clock, CPU_Started)
+              >= To_Time_Span (Time_Limit)
+         else Clock >= Deadline);
 
       function Ms_Left return Natural is
-        (Natural (Long_Float'Max (1.0, 1000.0 * Long_Float (To_Duration (Deadline - Clock)))));
+        (if Config.CPU_Time_Limit then 0
+         else Natural (Long_Float'Max (1.0, 1000.0 * Long_Float (To_Duration (Deadline - Clock)))));
 
-      function Crosses (S : Node_Set; E : Edge) return Boolean is (S (E.U) /= S (E.V));
+      function Column_Count return Natural is (Natural (Edges.Length));
+
+      procedure Set_Bounds (Column : Positive; Low, High : Natural) is
+      begin
+         LP.Set_Column_Bounds (Model, Column, Long_Float (Low), Long_Float (High));
+      end Set_Bounds;
 
       procedure Add_Edge (U, V : Positive) is
          E : constant Edge := (U => Positive'Min (U, V), V => Positive'Max (U, V),
@@ -146,9 +185,9 @@ package body Sancta.Allocation.Branch_And_Cut is
          Column : constant Positive := LP.Add_Columns (Model, 1);
          Count  : Natural := 2;
          Rows   : LP.Int_Array (1 .. 2 + Natural (Cuts.Length));
-         Values : constant LP.Real_Array (1 .. 2 + Natural (Cuts.Length)) := [others => 1.0];
+         Values : LP.Real_Array (1 .. 2 + Natural (Cuts.Length)) := [others => 1.0];
       begin
-         pragma Assert (Column = Natural (Edges.Length) + 1);
+         pragma Assert (Column = Column_Count + 1);
          Edges.Append (E);
          X.Append (0.0);
          Ids (E.U, E.V) := Column;
@@ -156,287 +195,162 @@ package body Sancta.Allocation.Branch_And_Cut is
          Rows (1) := Interfaces.C.int (E.U);
          Rows (2) := Interfaces.C.int (E.V);
          for K in 1 .. Natural (Cuts.Length) loop
-            if Crosses (Cuts (K).all, E) then
-               Count := Count + 1;
-               Rows (Count) := Interfaces.C.int (N + K);
-            end if;
+            declare
+               A : constant Integer := Coefficient (Cuts (K), E.U, E.V);
+            begin
+               if A /= 0 then
+                  Count := Count + 1;
+                  Rows (Count) := Interfaces.C.int (N + K);
+                  Values (Count) := Interfaces.C.double (A);
+               end if;
+            end;
          end loop;
          LP.Set_Column (Model, Column, Rows (1 .. Count), Values (1 .. Count));
          LP.Set_Objective (Model, Column, Long_Float (E.Weight));
-         if E.Fixed_One then
-            LP.Set_Column_Bounds (Model, Column, 1.0, 1.0);
-         else
-            LP.Set_Column_Bounds (Model, Column, 0.0, 1.0);
-         end if;
+         Root_Low.Append (if E.Fixed_One then 1 else 0);
+         Root_High.Append (1);
+         Fixed_Now.Append (Root_Low (Column));
+         Set_Bounds (Column, Root_Low (Column), 1);
       end Add_Edge;
 
-      --  A subtour cut x (delta (S)) >= 2, or with Teeth (an odd number of
-      --  disjoint edges of delta (S)) a blossom: x (delta (S) - Teeth) +
-      --  sum over Teeth of (1 - x) >= 1, i.e. x (delta (S)) - 2 x (Teeth)
-      --  >= 1 - |Teeth|. Edges added later are never teeth.
-      procedure Add_Cut (S : Node_Set; Teeth : Column_List := No_Teeth) is
+      procedure Add_Cut (C : Cut) is
          Row : constant Positive := LP.Add_Rows (Model, 1);
          Count : Natural := 0;
-         Columns : LP.Int_Array (1 .. Natural (Edges.Length));
-         Values  : LP.Real_Array (1 .. Natural (Edges.Length));
+         Columns : LP.Int_Array (1 .. Column_Count);
+         Values  : LP.Real_Array (1 .. Column_Count);
       begin
-         Cuts.Append (new Node_Set'(S));
+         Cuts.Append (C);
+         Ages.Append (0);
          pragma Assert (Row = N + Natural (Cuts.Length));
-         for J in 1 .. Natural (Edges.Length) loop
-            if Crosses (S, Edges (J)) then
-               Count := Count + 1;
-               Columns (Count) := Interfaces.C.int (J);
-               Values (Count) := (if (for some T of Teeth => T = J) then -1.0 else 1.0);
-            end if;
+         for J in 1 .. Column_Count loop
+            declare
+               A : constant Integer := Coefficient (C, Edges (J).U, Edges (J).V);
+            begin
+               if A /= 0 then
+                  Count := Count + 1;
+                  Columns (Count) := Interfaces.C.int (J);
+                  Values (Count) := Interfaces.C.double (A);
+               end if;
+            end;
          end loop;
          LP.Set_Row (Model, Row, Columns (1 .. Count), Values (1 .. Count));
-         LP.Set_Row_Lower
-           (Model, Row, (if Teeth'Length = 0 then 2.0 else 1.0 - Long_Float (Teeth'Length)));
+         LP.Set_Row_Lower (Model, Row, Right_Side (C));
+         Stats.Cuts := Stats.Cuts + 1;
       end Add_Cut;
-
-      --  Blossoms by the odd-component heuristic: each connected component H
-      --  of the fractional edges with an odd number (3 or more) of disjoint
-      --  edges at 1 leaving it violates its blossom by 1.
-      function Add_Blossoms return Natural is
-         Parent : array (1 .. N) of Positive;
-         Fractional : array (1 .. N) of Boolean := [others => False];
-         Added : Natural := 0;
-         function Root (V : Positive) return Positive is
-            R : Positive := V;
-         begin
-            while Parent (R) /= R loop
-               R := Parent (R);
-            end loop;
-            return R;
-         end Root;
-      begin
-         for V in 1 .. N loop
-            Parent (V) := V;
-         end loop;
-         for J in 1 .. Natural (Edges.Length) loop
-            if X (J) > Epsilon and then X (J) < 1.0 - Epsilon then
-               Fractional (Edges (J).U) := True;
-               Fractional (Edges (J).V) := True;
-               declare
-                  A : constant Positive := Root (Edges (J).U);
-                  B : constant Positive := Root (Edges (J).V);
-               begin
-                  if A /= B then
-                     Parent (A) := B;
-                  end if;
-               end;
-            end if;
-         end loop;
-         for R in 1 .. N loop
-            if Fractional (R) and then Root (R) = R then
-               declare
-                  H : constant Node_Set (1 .. N) :=
-                    [for V in 1 .. N => Fractional (V) and then Root (V) = R];
-                  Teeth : Column_List (1 .. N);
-                  Count : Natural := 0;
-                  Outside : Node_Set (1 .. N) := [others => False];
-                  Disjoint : Boolean := True;
-               begin
-                  for J in 1 .. Natural (Edges.Length) loop
-                     if X (J) >= 1.0 - Epsilon and then Crosses (H, Edges (J)) then
-                        declare
-                           W : constant Positive :=
-                             (if H (Edges (J).U) then Edges (J).V else Edges (J).U);
-                        begin
-                           Disjoint := Disjoint and then not Outside (W);
-                           Outside (W) := True;
-                           Count := Count + 1;
-                           Teeth (Count) := J;
-                        end;
-                     end if;
-                  end loop;
-                  if Disjoint and then Count >= 3 and then Count mod 2 = 1 then
-                     Add_Cut (H, Teeth (1 .. Count));
-                     Added := Added + 1;
-                  end if;
-               end;
-            end if;
-         end loop;
-         return Added;
-      end Add_Blossoms;
 
       procedure Read_Solution is
       begin
-         for J in 1 .. Natural (Edges.Length) loop
+         for J in 1 .. Column_Count loop
             X (J) := LP.Column_Value (Model, J);
          end loop;
       end Read_Solution;
 
-      --  Subtour cuts violated by X: the connected components of its
-      --  support if there are several; else, with the edges at 1
-      --  contracted (safe: a violated cut that separates the ends of such
-      --  an edge stays violated with both ends on one side), every cut of
-      --  the phase of Stoer-Wagner below 2; else blossoms. Returns how many
-      --  were added.
-      function Separate_Cuts return Natural is
-         Parent : array (1 .. N) of Positive;
-         Group  : array (1 .. N) of Natural := [others => 0];
-         M      : Natural := 0;
-         Added  : Natural := 0;
-
-         function Root (V : Positive) return Positive is
-            R : Positive := V;
-         begin
-            while Parent (R) /= R loop
-               Parent (R) := Parent (Parent (R));
-               R := Parent (R);
-            end loop;
-            return R;
-         end Root;
-
-         --  Groups the nodes joined by the edges with X above Threshold;
-         --  returns how many groups (numbered 1 .. in Group).
-         function Join_Above (Threshold : Long_Float) return Natural is
-            Count : Natural := 0;
-         begin
-            for V in 1 .. N loop
-               Parent (V) := V;
-            end loop;
-            for J in 1 .. Natural (Edges.Length) loop
-               if X (J) > Threshold then
-                  declare
-                     A : constant Positive := Root (Edges (J).U);
-                     B : constant Positive := Root (Edges (J).V);
-                  begin
-                     if A /= B then
-                        Parent (A) := B;
-                     end if;
-                  end;
-               end if;
-            end loop;
-            Group := [others => 0];
-            for V in 1 .. N loop
-               if Root (V) = V then
-                  Count := Count + 1;
-                  Group (V) := Count;
-               end if;
-            end loop;
-            for V in 1 .. N loop
-               Group (V) := Group (Root (V));
-            end loop;
-            return Count;
-         end Join_Above;
+      function Current_Support return Support is
+         Count : Natural := 0;
       begin
-         M := Join_Above (Epsilon);
-         if M > 1 then
-            for C in 1 .. M loop
-               Add_Cut ([for V in 1 .. N => Group (V) = C]);
+         for J in 1 .. Column_Count loop
+            if X (J) > Epsilon then
+               Count := Count + 1;
+            end if;
+         end loop;
+         return S : Support (1 .. Count) do
+            Count := 0;
+            for J in 1 .. Column_Count loop
+               if X (J) > Epsilon then
+                  Count := Count + 1;
+                  S (Count) := (Edges (J).U, Edges (J).V, X (J));
+               end if;
             end loop;
-            return M;
+         end return;
+      end Current_Support;
+
+      --  Cuts slack for Purge_Age rounds leave the LP (basic rows: the
+      --  basis stays valid) for the pool.
+      procedure Purge_Slack_Cuts is
+         Leaving : LP.Int_Array (1 .. Natural (Cuts.Length));
+         Count : Natural := 0;
+      begin
+         for K in 1 .. Natural (Cuts.Length) loop
+            if LP.Row_Is_Basic (Model, N + K) then
+               Ages (K) := Ages (K) + 1;
+               if Ages (K) >= Purge_Age then
+                  Count := Count + 1;
+                  Leaving (Count) := Interfaces.C.int (N + K);
+               end if;
+            else
+               Ages (K) := 0;
+            end if;
+         end loop;
+         if Count = 0 then
+            return;
          end if;
-         M := Join_Above (1.0 - Epsilon);
-         if M < 2 then
-            return 0;   --  one cycle of edges at 1
-         end if;
-         --  Stoer-Wagner on the contracted support: each phase orders the
-         --  active vertices by maximum adjacency; the last one's group
-         --  against the rest is a cut of weight Key (Last); then Last merges
-         --  into the one before it.
-         declare
-            W : Real_Matrix_Access := new Real_Matrix'(1 .. M => [1 .. M => 0.0]);
-            Active   : array (1 .. M) of Boolean := [others => True];
-            Next_Member, Last_Member : array (1 .. M) of Natural;
-            Key      : array (1 .. M) of Long_Float;
-            Added_To : array (1 .. M) of Boolean;
-            Active_Count : Natural := M;
+         LP.Delete_Rows (Model, Leaving (1 .. Count));
+         for I in reverse 1 .. Count loop
+            declare
+               K : constant Positive := Natural (Leaving (I)) - N;
+            begin
+               if Natural (Pool.Length) >= Pool_Limit then
+                  Pool.Delete_First;
+               end if;
+               Pool.Append (Cuts (K));
+               Cuts.Delete (K);
+               Ages.Delete (K);
+            end;
+         end loop;
+         Stats.Purged := Stats.Purged + Count;
+      end Purge_Slack_Cuts;
+
+      function Same (A, B : Cut) return Boolean is
+        (A.Kind = B.Kind and then A.Tooth_Edges = B.Tooth_Edges and then A.Teeth = B.Teeth
+         and then (A.Handle = B.Handle
+                   or else (for all V in A.Handle'Range => A.Handle (V) /= B.Handle (V)))
+         and then A.Tooth = B.Tooth and then A.Edges = B.Edges);
+
+      --  Cuts violated by X, from the pool first, then by each separator
+      --  in turn until one finds some; returns how many were added.
+      function Separate_Cuts return Natural is
+         S : constant Support := Current_Support;
+         Batch : Cut_Lists.Vector;
+         procedure Take (Found : Cut_Lists.Vector) is
          begin
-            for J in 1 .. Natural (Edges.Length) loop
-               declare
-                  A : constant Positive := Group (Edges (J).U);
-                  B : constant Positive := Group (Edges (J).V);
-               begin
-                  if X (J) > Epsilon and then A /= B then
-                     W (A, B) := W (A, B) + X (J);
-                     W (B, A) := W (A, B);
-                  end if;
-               end;
+            for C of Found loop
+               if not (for some B of Batch => Same (B, C)) then
+                  Batch.Append (C);
+                  Stats.By_Class (C.Kind) := Stats.By_Class (C.Kind) + 1;
+               end if;
             end loop;
-            for V in 1 .. M loop
-               Next_Member (V) := 0;
-               Last_Member (V) := V;
+         end Take;
+      begin
+         declare
+            K : Natural := 1;
+         begin
+            while K <= Natural (Pool.Length) loop
+               if Violation (Pool (K), S) > Tolerance then
+                  Batch.Append (Pool (K));
+                  Pool.Delete (K);
+               else
+                  K := K + 1;
+               end if;
             end loop;
-            while Active_Count > 1 loop
-               declare
-                  Previous, Last : Natural := 0;
-                  Last_Key : Long_Float := 0.0;
-               begin
-                  for V in 1 .. M loop
-                     Key (V) := 0.0;
-                     Added_To (V) := False;
-                  end loop;
-                  for Step in 1 .. Active_Count loop
-                     declare
-                        Pick : Natural := 0;
-                     begin
-                        for V in 1 .. M loop
-                           if Active (V) and then not Added_To (V)
-                             and then (Pick = 0 or else Key (V) > Key (Pick))
-                           then
-                              Pick := V;
-                           end if;
-                        end loop;
-                        Added_To (Pick) := True;
-                        Previous := Last;
-                        Last := Pick;
-                        Last_Key := Key (Pick);
-                        for V in 1 .. M loop
-                           if Active (V) and then not Added_To (V) then
-                              Key (V) := Key (V) + W (Pick, V);
-                           end if;
-                        end loop;
-                     end;
-                  end loop;
-                  if Last_Key < 2.0 - Cut_Tolerance then
-                     declare
-                        Inside : array (1 .. M) of Boolean := [others => False];
-                        G : Natural := Last;
-                     begin
-                        while G /= 0 loop
-                           Inside (G) := True;
-                           G := Next_Member (G);
-                        end loop;
-                        Add_Cut ([for V in 1 .. N => Inside (Group (V))]);
-                        Added := Added + 1;
-                     end;
-                  end if;
-                  --  Merge Last into Previous.
-                  for V in 1 .. M loop
-                     W (Previous, V) := W (Previous, V) + W (Last, V);
-                     W (V, Previous) := W (Previous, V);
-                  end loop;
-                  W (Previous, Previous) := 0.0;
-                  Next_Member (Last_Member (Previous)) := Last;
-                  Last_Member (Previous) := Last_Member (Last);
-                  Active (Last) := False;
-                  Active_Count := Active_Count - 1;
-               end;
-            end loop;
-            Free (W);
          end;
-         return (if Added > 0 then Added else Add_Blossoms);
+         Take (Subtours (N, S));
+         if Batch.Is_Empty and then Config.Heuristic_Blossoms then
+            Take (Blossoms_Heuristic (N, S));
+         end if;
+         if Batch.Is_Empty and then Config.Exact_Blossoms then
+            Take (Blossoms_Exact (N, S));
+         end if;
+         if Batch.Is_Empty and then Config.Combs then
+            Take (Combs (N, S));
+         end if;
+         for C of Batch loop
+            Add_Cut (C);
+         end loop;
+         return Natural (Batch.Length);
       end Separate_Cuts;
 
       function Node_Duals return Real_Vector is
         ([for I in 1 .. N => LP.Row_Dual (Model, I)]);
-
-      --  The reduced cost of edge U-V (in the LP or not) for the duals.
-      function Reduced (U, V : Positive; Degree : Real_Vector; Cut_Dual : Real_Vector)
-        return Long_Float
-      is
-         R : Long_Float := Long_Float (Costs (U, V)) - Degree (U) - Degree (V);
-      begin
-         for K in Cut_Dual'Range loop
-            if Cut_Dual (K) /= 0.0 and then Cuts (K) (U) /= Cuts (K) (V) then
-               R := R - Cut_Dual (K);
-            end if;
-         end loop;
-         return R;
-      end Reduced;
 
       function Cut_Duals return Real_Vector is
          Duals : Real_Vector (1 .. Natural (Cuts.Length));
@@ -449,6 +363,20 @@ package body Sancta.Allocation.Branch_And_Cut is
          end loop;
          return Duals;
       end Cut_Duals;
+
+      --  The reduced cost of edge U-V (in the LP or not) for the duals.
+      function Reduced (U, V : Positive; Degree : Real_Vector; Cut_Dual : Real_Vector)
+        return Long_Float
+      is
+         R : Long_Float := Long_Float (Costs (U, V)) - Degree (U) - Degree (V);
+      begin
+         for K in Cut_Dual'Range loop
+            if Cut_Dual (K) /= 0.0 then
+               R := R - Long_Float (Coefficient (Cuts (K), U, V)) * Cut_Dual (K);
+            end if;
+         end loop;
+         return R;
+      end Reduced;
 
       --  Edges not in the LP with a negative reduced cost (the most
       --  negative, up to 2 N) are added; returns how many.
@@ -548,7 +476,7 @@ package body Sancta.Allocation.Branch_And_Cut is
          Previous, Here : Positive;
          K : Natural := 0;
       begin
-         for J in 1 .. Natural (Edges.Length) loop
+         for J in 1 .. Column_Count loop
             if X (J) > 0.5 then
                declare
                   E : constant Edge := Edges (J);
@@ -582,22 +510,30 @@ package body Sancta.Allocation.Branch_And_Cut is
       end Solution_Cycle;
 
       function Integral return Boolean is
-        (for all J in 1 .. Natural (Edges.Length) =>
-           X (J) < Epsilon or else X (J) > 1.0 - Epsilon);
+        (for all J in 1 .. Column_Count => X (J) < Epsilon or else X (J) > 1.0 - Epsilon);
 
       function Fathomed (Bound : Long_Float) return Boolean is
         (Bound > Long_Float (Upper) - 1.0 + Epsilon);
       --  Integer costs: no tour better than Upper below this node.
 
-      --  Solves the node's LP with cuts until none is violated. Ok False
-      --  when the node is infeasible or cannot beat Upper.
-      procedure Solve_Node (Bound : out Long_Float; Ok : out Boolean; Dual : Boolean) is
+      type Node_Outcome is (Branch, Pruned, Stopped);
+      --  Branch: X is fractional with no cut found (or cutting tails off);
+      --  Pruned: infeasible, fathomed or integral; Stopped: time is up or
+      --  the simplex failed.
+
+      --  Solves the LP with cuts until none is violated or cutting tails
+      --  off (not at the root: Tail False).
+      procedure Cut_Loop
+        (Bound : out Long_Float; Outcome_Of : out Node_Outcome; Dual : Boolean;
+         Tail : Boolean)
+      is
          Use_Dual : Boolean := Dual;
+         History : Real_Vectors.Vector;
       begin
          loop
-            if Clock >= Deadline then
+            if Time_Up then
                Timed_Out := True;
-               Ok := False;
+               Outcome_Of := Stopped;
                Bound := 0.0;
                return;
             end if;
@@ -605,70 +541,35 @@ package body Sancta.Allocation.Branch_And_Cut is
                when LP.Optimal =>
                   null;
                when LP.Infeasible =>
-                  Ok := False;
+                  Outcome_Of := Pruned;
                   Bound := Long_Float'Last;
                   return;
-               when LP.Unbounded | LP.Failed =>
+               when LP.Unbounded | LP.Failed | LP.Limit_Reached | LP.Above_Limit =>
                   Timed_Out := True;
-                  Ok := False;
+                  Outcome_Of := Stopped;
                   Bound := 0.0;
                   return;
             end case;
             Bound := LP.Objective_Value (Model);
             if Root_Done and then Fathomed (Bound) then
-               Ok := False;
+               Outcome_Of := Pruned;
                return;
             end if;
             Read_Solution;
+            if Config.Purge then
+               Purge_Slack_Cuts;
+            end if;
+            History.Append (Bound);
+            if Tail and then Natural (History.Length) > Tailing_Rounds and then not Integral
+              and then Bound - History (Natural (History.Length) - Tailing_Rounds)
+                       < Tailing_Share * (Long_Float (Upper) - Bound)
+            then
+               Outcome_Of := Branch;
+               return;
+            end if;
             exit when Separate_Cuts = 0;
             Use_Dual := True;
          end loop;
-         Ok := True;
-      end Solve_Node;
-
-      --  The most fractional edge (ties: the dearest).
-      function Branch_Edge return Natural is
-         Pick : Natural := 0;
-         Best : Long_Float := 0.0;
-      begin
-         for J in 1 .. Natural (Edges.Length) loop
-            declare
-               F : constant Long_Float := Long_Float'Min (X (J), 1.0 - X (J));
-            begin
-               if F > Epsilon and then (F > Best + 1.0E-9
-                                        or else (abs (F - Best) <= 1.0E-9
-                                                 and then Edges (J).Weight > Edges (Pick).Weight))
-               then
-                  Pick := J;
-                  Best := F;
-               end if;
-            end;
-         end loop;
-         return Pick;
-      end Branch_Edge;
-
-      procedure Note_Timeout (Parent_Bound : Long_Float) is
-         Low : Long_Float := Parent_Bound;
-      begin
-         for B of Pending loop
-            Low := Long_Float'Min (Low, B);
-         end loop;
-         Lower_At_Timeout := Low;
-      end Note_Timeout;
-
-      procedure Explore (Parent_Bound : Long_Float) is
-         Bound : Long_Float;
-         Ok : Boolean;
-         J : Natural;
-      begin
-         Nodes := Nodes + 1;
-         Solve_Node (Bound, Ok, Dual => True);
-         if Timed_Out then
-            Note_Timeout (Parent_Bound);
-            return;
-         elsif not Ok then
-            return;
-         end if;
          if Integral then
             declare
                C : constant Cycle := Solution_Cycle;
@@ -679,37 +580,57 @@ package body Sancta.Allocation.Branch_And_Cut is
                   Best_Cycle := C;
                end if;
             end;
-            return;
+            Outcome_Of := Pruned;
+         else
+            Outcome_Of := Branch;
          end if;
-         J := Branch_Edge;
-         Pending.Append (Bound);
-         LP.Set_Column_Bounds (Model, J, 1.0, 1.0);
-         Explore (Bound);
-         LP.Set_Column_Bounds (Model, J, 0.0, 1.0);
-         Pending.Delete_Last;
-         if Timed_Out then
-            return;
-         end if;
-         LP.Set_Column_Bounds (Model, J, 0.0, 0.0);
-         Explore (Bound);
-         LP.Set_Column_Bounds (Model, J, 0.0, 1.0);
-      end Explore;
+      end Cut_Loop;
 
-      --  After the root: with the root duals, edges that cannot be in a
-      --  tour better than Upper are dropped (LP columns fixed at 0), the
-      --  others all join the LP, so that no pricing is needed below.
-      procedure Fix_By_Reduced_Cost (Root_Bound : Long_Float) is
+      --  Columns at 0 whose reduced cost exceeds the gap are fixed at 0,
+      --  columns at 1 whose reduced cost is below minus the gap at 1; the
+      --  fixes join Fixes (Global: the root bounds change instead).
+      procedure Fix_By_Reduced_Cost
+        (Bound : Long_Float; Fixes : in out Fix_Vectors.Vector; Global : Boolean)
+      is
+         Gap : constant Long_Float := Long_Float (Upper) - 1.0 + Epsilon - Bound;
+      begin
+         for J in 1 .. Column_Count loop
+            if not Edges (J).Fixed_One then
+               declare
+                  D : constant Long_Float := LP.Reduced_Cost (Model, J);
+                  Value : Integer := -1;
+               begin
+                  if X (J) < Epsilon and then D > Gap then
+                     Value := 0;
+                  elsif X (J) > 1.0 - Epsilon and then -D > Gap then
+                     Value := 1;
+                  end if;
+                  if Value >= 0 and then Fixed_Now (J) = 0 then
+                     Set_Bounds (J, Value, Value);
+                     Fixed_Now (J) := 1;
+                     Stats.Fixed := Stats.Fixed + 1;
+                     if Global then
+                        Root_Low (J) := Value;
+                        Root_High (J) := Value;
+                     else
+                        Fixes.Append (Fix'(J, Value));
+                        Touched.Append (J);
+                     end if;
+                  end if;
+               end;
+            end if;
+         end loop;
+      end Fix_By_Reduced_Cost;
+
+      --  After the root: with the root duals (dual feasible for every
+      --  edge once pricing has ended), edges that cannot be in a tour
+      --  better than Upper stay out, the others all join the LP, so that
+      --  no pricing is needed below.
+      procedure Add_Promising_Edges (Root_Bound : Long_Float) is
          Degree : constant Real_Vector := Node_Duals;
          Cut_Dual : constant Real_Vector := Cut_Duals;
          Gap : constant Long_Float := Long_Float (Upper) - 1.0 + Epsilon - Root_Bound;
       begin
-         for J in 1 .. Natural (Edges.Length) loop
-            if not Edges (J).Fixed_One and then X (J) < Epsilon
-              and then LP.Reduced_Cost (Model, J) > Gap
-            then
-               LP.Set_Column_Bounds (Model, J, 0.0, 0.0);
-            end if;
-         end loop;
          for U in 1 .. N loop
             for V in U + 1 .. N loop
                if Ids (U, V) = 0 and then Costs (U, V) /= Forbidden
@@ -719,21 +640,138 @@ package body Sancta.Allocation.Branch_And_Cut is
                end if;
             end loop;
          end loop;
-      end Fix_By_Reduced_Cost;
+      end Add_Promising_Edges;
+
+      --  The LP's column bounds become the root's and then Fixes.
+      procedure Enter (Fixes : Fix_Vectors.Vector) is
+      begin
+         for J of Touched loop
+            Set_Bounds (J, Root_Low (J), Root_High (J));
+            Fixed_Now (J) := (if Root_Low (J) = Root_High (J) then 1 else 0);
+         end loop;
+         Touched.Clear;
+         for F of Fixes loop
+            Set_Bounds (F.Column, F.Value, F.Value);
+            Fixed_Now (F.Column) := 1;
+            Touched.Append (F.Column);
+         end loop;
+      end Enter;
+
+      --  The LP value with column J fixed at Value, by a few dual simplex
+      --  steps (a lower bound on it); Long_Float'Last when that child is
+      --  infeasible or cannot beat Upper. The basis is restored.
+      function Trial (J : Positive; Value : Natural; Fallback : Long_Float) return Long_Float is
+         Saved : constant LP.Basis := LP.Current_Basis (Model);
+         Found : Long_Float;
+      begin
+         Set_Bounds (J, Value, Value);
+         case LP.Simplex (Model, True, Iteration_Limit => Strong_Iterations,
+                          Objective_Limit => Long_Float (Upper) - 1.0 + Epsilon)
+         is
+            when LP.Optimal | LP.Limit_Reached =>
+               Found := LP.Objective_Value (Model);
+               if Fathomed (Found) then
+                  Found := Long_Float'Last;
+               end if;
+            when LP.Infeasible | LP.Above_Limit =>
+               Found := Long_Float'Last;
+            when LP.Unbounded | LP.Failed =>
+               Found := Fallback;
+         end case;
+         --  J is fractional: not fixed, at its root bounds.
+         Set_Bounds (J, Root_Low (J), Root_High (J));
+         LP.Restore_Basis (Model, Saved);
+         return Found;
+      end Trial;
+
+      --  The column to branch on: among the Strong_Branching most
+      --  fractional, the one whose children's bounds rise most (product
+      --  score); a child found fathomed fixes its column the other way
+      --  (Fixed True: then re-solve instead of branching).
+      procedure Choose_Branch
+        (Bound : Long_Float; Fixes : in out Fix_Vectors.Vector; Column : out Natural;
+         Fixed : out Boolean; Dead : out Boolean)
+      is
+         K : constant Natural := Natural'Max (1, Config.Strong_Branching);
+         Picks : array (1 .. K) of Natural := [others => 0];
+         Closeness : array (1 .. K) of Long_Float := [others => 0.0];
+         Count : Natural := 0;
+         Best_Score : Long_Float := -1.0;
+      begin
+         Column := 0;
+         Fixed := False;
+         Dead := False;
+         for J in 1 .. Column_Count loop
+            declare
+               F : constant Long_Float := Long_Float'Min (X (J), 1.0 - X (J));
+               I : Natural;
+            begin
+               if F > Epsilon and then (Count < K or else F > Closeness (Count)) then
+                  if Count < K then
+                     Count := Count + 1;
+                  end if;
+                  I := Count;
+                  while I > 1 and then (Closeness (I - 1) < F
+                                        or else (Closeness (I - 1) = F
+                                                 and then Edges (Picks (I - 1)).Weight
+                                                          < Edges (J).Weight))
+                  loop
+                     Picks (I) := Picks (I - 1);
+                     Closeness (I) := Closeness (I - 1);
+                     I := I - 1;
+                  end loop;
+                  Picks (I) := J;
+                  Closeness (I) := F;
+               end if;
+            end;
+         end loop;
+         if Count = 0 then
+            return;
+         end if;
+         Column := Picks (1);
+         if Config.Strong_Branching = 0 then
+            return;
+         end if;
+         for I in 1 .. Count loop
+            declare
+               J : constant Positive := Picks (I);
+               Down : constant Long_Float := Trial (J, 0, Bound);
+               Up   : constant Long_Float := Trial (J, 1, Bound);
+            begin
+               if Down = Long_Float'Last and then Up = Long_Float'Last then
+                  Dead := True;
+                  return;
+               elsif Down = Long_Float'Last or else Up = Long_Float'Last then
+                  Set_Bounds (J, (if Down = Long_Float'Last then 1 else 0),
+                              (if Down = Long_Float'Last then 1 else 0));
+                  Fixes.Append (Fix'(J, (if Down = Long_Float'Last then 1 else 0)));
+                  Fixed_Now (J) := 1;
+                  Touched.Append (J);
+                  Fixed := True;
+               elsif not Fixed then
+                  declare
+                     Score : constant Long_Float :=
+                       Long_Float'Max (Down - Bound, 1.0E-6) * Long_Float'Max (Up - Bound, 1.0E-6);
+                  begin
+                     if Score > Best_Score then
+                        Best_Score := Score;
+                        Column := J;
+                     end if;
+                  end;
+               end if;
+            end;
+         end loop;
+      end Choose_Branch;
 
       procedure Cleanup is
       begin
          LP.Delete_Problem (Model);
-         for S of Cuts loop
-            declare
-               Z : Node_Set_Access := S;
-            begin
-               Free (Z);
-            end;
-         end loop;
          Free (Costs);
          Free (Ids);
       end Cleanup;
+
+      Lowest_Open : Long_Float := 0.0;
+      --  At a time-out: the least bound of the nodes left.
 
    begin
       for I in 1 .. Base loop
@@ -778,78 +816,167 @@ package body Sancta.Allocation.Branch_And_Cut is
       Best_Cycle := Start_Cycle;
       Upper := Tour_Cost (Best_Cycle);
       Add_Cycle_Edges (Best_Cycle);
-      --  Candidate edges: the 8 cheapest of each node.
-      for U in 1 .. N loop
-         declare
-            K : constant := 8;
-            Near : array (1 .. K) of Natural := [others => 0];
-            Count : Natural := 0;
-         begin
-            for V in 1 .. N loop
-               if Costs (U, V) /= Forbidden then
-                  declare
-                     I : Natural;
-                  begin
-                     if Count < K or else Costs (U, V) < Costs (U, Near (Count)) then
-                        if Count < K then
-                           Count := Count + 1;
+      if Config.Pricing then
+         --  Candidate edges: the 8 cheapest of each node.
+         for U in 1 .. N loop
+            declare
+               K : constant := 8;
+               Near : array (1 .. K) of Natural := [others => 0];
+               Count : Natural := 0;
+            begin
+               for V in 1 .. N loop
+                  if Costs (U, V) /= Forbidden then
+                     declare
+                        I : Natural;
+                     begin
+                        if Count < K or else Costs (U, V) < Costs (U, Near (Count)) then
+                           if Count < K then
+                              Count := Count + 1;
+                           end if;
+                           I := Count;
+                           while I > 1 and then Costs (U, Near (I - 1)) > Costs (U, V) loop
+                              Near (I) := Near (I - 1);
+                              I := I - 1;
+                           end loop;
+                           Near (I) := V;
                         end if;
-                        I := Count;
-                        while I > 1 and then Costs (U, Near (I - 1)) > Costs (U, V) loop
-                           Near (I) := Near (I - 1);
-                           I := I - 1;
-                        end loop;
-                        Near (I) := V;
-                     end if;
-                  end;
+                     end;
+                  end if;
+               end loop;
+               for I in 1 .. Count loop
+                  if Ids (U, Near (I)) = 0 then
+                     Add_Edge (U, Near (I));
+                  end if;
+               end loop;
+            end;
+         end loop;
+      else
+         for U in 1 .. N loop
+            for V in U + 1 .. N loop
+               if Ids (U, V) = 0 and then Costs (U, V) /= Forbidden then
+                  Add_Edge (U, V);
                end if;
             end loop;
-            for I in 1 .. Count loop
-               if Ids (U, Near (I)) = 0 then
-                  Add_Edge (U, Near (I));
-               end if;
-            end loop;
-         end;
-      end loop;
+         end loop;
+      end if;
 
       --  The root: cuts and pricing until neither adds anything.
       declare
          Bound : Long_Float := 0.0;
-         Ok : Boolean;
+         Status : Node_Outcome;
          Dual : Boolean := False;
+         Root_Fixes : Fix_Vectors.Vector;
       begin
          loop
-            Solve_Node (Bound, Ok, Dual);
-            exit when not Ok;
+            Cut_Loop (Bound, Status, Dual, Tail => False);
+            exit when Status /= Branch and then Status /= Pruned;
+            exit when Status = Pruned and then Bound = Long_Float'Last;
             exit when Price = 0;
             Dual := False;
          end loop;
-         if Ok then
-            Root_Done := True;
-            Nodes := 1;
-            if not Fathomed (Bound) then
-               Fix_By_Reduced_Cost (Bound);
-               Nodes := 0;
-               Explore (Bound);
-            end if;
-            if not Timed_Out then
-               Lower_At_Timeout := Long_Float (Upper);
-            end if;
-         elsif not Timed_Out then
+         if Status = Stopped then
+            null;
+         elsif Bound = Long_Float'Last then
             raise Program_Error with "branch and cut: the root LP is infeasible";
+         else
+            Root_Done := True;
+            Stats.Nodes := 1;
+            Stats.Root_Bound := Bound;
+            if Status = Branch and then not Fathomed (Bound) then
+               Fix_By_Reduced_Cost (Bound, Root_Fixes, Global => True);
+               Add_Promising_Edges (Bound);
+               Open.Append (Open_Node'(Bound => Bound, Fixes => <>));
+               Stats.Nodes := 0;
+            end if;
          end if;
       end;
+
+      --  Branch and bound: the open node of least bound (or the last).
+      while not Open.Is_Empty and then not Timed_Out loop
+         declare
+            Pick : Positive := Open.Last_Index;
+         begin
+            if Config.Best_Bound then
+               for I in 1 .. Open.Last_Index loop
+                  if Open (I).Bound < Open (Pick).Bound then
+                     Pick := I;
+                  end if;
+               end loop;
+            end if;
+            declare
+               Here : Open_Node := Open (Pick);
+               Bound : Long_Float;
+               Status : Node_Outcome;
+               Column : Natural;
+               Fixed, Dead : Boolean;
+            begin
+               Open.Delete (Pick);
+               if not Fathomed (Here.Bound) then
+                  Stats.Nodes := Stats.Nodes + 1;
+                  Enter (Here.Fixes);
+                  loop
+                     Cut_Loop (Bound, Status, Dual => True, Tail => True);
+                     if Status = Stopped then
+                        Open.Append (Here);
+                        exit;
+                     end if;
+                     exit when Status = Pruned;
+                     if Config.Node_Fixing then
+                        Fix_By_Reduced_Cost (Bound, Here.Fixes, Global => False);
+                     end if;
+                     Choose_Branch (Bound, Here.Fixes, Column, Fixed, Dead);
+                     exit when Dead;
+                     if not Fixed then
+                        if Column = 0 then
+                           raise Program_Error with "branch and cut: no column to branch on";
+                        end if;
+                        for Value in reverse 0 .. 1 loop
+                           declare
+                              Child : Open_Node := (Bound => Bound, Fixes => Here.Fixes);
+                           begin
+                              Child.Fixes.Append (Fix'(Column, Value));
+                              Open.Append (Child);
+                           end;
+                        end loop;
+                        exit;
+                     end if;
+                     if Time_Up then
+                        Here.Bound := Bound;
+                        Open.Append (Here);
+                        exit;
+                     end if;
+                  end loop;
+                  if Time_Up and then not Open.Is_Empty then
+                     Timed_Out := True;
+                  end if;
+               end if;
+            end;
+         end;
+      end loop;
+      if Timed_Out then
+         Lowest_Open := Long_Float'Last;
+         for Node of Open loop
+            Lowest_Open := Long_Float'Min (Lowest_Open, Node.Bound);
+         end loop;
+         if Open.Is_Empty then
+            Lowest_Open := Stats.Root_Bound;
+         end if;
+      end if;
 
       Outcome.Upper := Upper;
       Outcome.Proven := Root_Done and then not Timed_Out;
       Outcome.Lower :=
         (if Outcome.Proven then Upper
          elsif Root_Done then
-            Cost'Min (Upper, Cost (Long_Float'Ceiling (Lower_At_Timeout - Epsilon)))
+            Cost'Min (Upper, Cost (Long_Float'Ceiling (Lowest_Open - Epsilon)))
          else 0);
-      Outcome.Nodes := Nodes;
-      Outcome.Cuts := Natural (Cuts.Length);
-      Outcome.Edges := Natural (Edges.Length);
+      Outcome.Nodes := Stats.Nodes;
+      Outcome.Cuts := Stats.Cuts;
+      Outcome.By_Class := Stats.By_Class;
+      Outcome.Purged := Stats.Purged;
+      Outcome.Fixed := Stats.Fixed;
+      Outcome.Root_Bound := Stats.Root_Bound;
+      Outcome.Edges := Column_Count;
       declare
          A : Assignment (P.Robots, P.Tasks);
          R : Positive := 1;
@@ -865,6 +992,7 @@ package body Sancta.Allocation.Branch_And_Cut is
          Outcome.Best := A;
       end;
       Outcome.Elapsed := To_Duration (Clock - Started);
+      Outcome.CPU := To_Duration (Ada.Execution_Time."-" (Ada.Execution_Time.Clock, CPU_Started));
       Cleanup;
    exception
       when others =>

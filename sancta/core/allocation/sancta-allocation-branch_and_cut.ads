@@ -2,10 +2,11 @@
 --  original SANCTA): the LP relaxation of the symmetric TSP (degree
 --  equations, subtour-elimination cuts found by minimum-cut separation:
 --  connected components, then every cut of the phase of Stoer-Wagner below
---  2; then blossoms by the odd-component heuristic), solved by GLPK's
---  simplex on a sparse edge set priced against all edges, reduced-cost
---  fixing against the heuristic's tour, and depth-first branching on the
---  most fractional edge. It returns the best tour with a
+--  2; blossoms by the odd-component heuristic and by Padberg-Rao's exact
+--  minimum odd cut; combs from blocks), solved by GLPK's simplex on a
+--  sparse edge set priced against all edges, a pool of purged cuts,
+--  reduced-cost fixing against the heuristic's tour at every node, strong
+--  branching and best-bound node selection. It returns the best tour with a
 --  proof (lower bound = tour cost) or, at its time limit, the best tour
 --  and the lower bound reached (the gap).
 --
@@ -36,6 +37,35 @@ package Sancta.Allocation.Branch_And_Cut is
    function Supports (P : Problem) return String;
    --  "" when P can be solved here; else why not.
 
+   type Cut_Class is (Subtour, Blossom, Comb);
+   type Cut_Counts is array (Cut_Class) of Natural;
+
+   type Settings is record
+      Heuristic_Blossoms : Boolean := True;
+      --  Odd components of the fractional edges (Groetschel-Holland).
+      Exact_Blossoms     : Boolean := True;
+      --  Padberg-Rao minimum odd cuts, when the heuristic finds none.
+      Combs              : Boolean := True;
+      --  Combs from the blocks of the fractional support, when no blossom.
+      Pricing            : Boolean := True;
+      --  Start from the 8 cheapest edges of each node and the tour's, add
+      --  edges of negative reduced cost; False: every edge from the start.
+      Node_Fixing        : Boolean := True;
+      --  Reduced-cost fixing at every node (the root's, global, always).
+      Strong_Branching   : Natural := 8;
+      --  Candidates tried by a few dual simplex steps per child; 0 = the
+      --  most fractional edge.
+      Best_Bound         : Boolean := True;
+      --  The open node of least bound next; False: depth first.
+      Purge              : Boolean := True;
+      --  Cuts slack for 3 rounds leave the LP for a pool (checked first).
+      CPU_Time_Limit     : Boolean := False;
+      --  Time_Limit counts the calling task's CPU time (benchmarks on a
+      --  shared machine), not wall-clock time.
+   end record;
+
+   Default_Settings : constant Settings := (others => <>);
+
    type Result (Robots, Tasks : Positive) is record
       Best    : Assignment (Robots, Tasks);
       Upper   : Cost := 0;
@@ -47,17 +77,28 @@ package Sancta.Allocation.Branch_And_Cut is
       Nodes   : Natural := 0;
       --  Branch-and-bound nodes solved.
       Cuts    : Natural := 0;
-      --  Subtour cuts added.
+      --  Cuts added (every class; a pooled cut added again counts again).
+      By_Class : Cut_Counts := [others => 0];
+      --  Cuts found by each separator.
+      Purged  : Natural := 0;
+      --  Cuts moved from the LP to the pool.
+      Fixed   : Natural := 0;
+      --  Edges fixed by reduced cost (at the root and below).
       Edges   : Natural := 0;
       --  Edges in the LP at the end (after reduced-cost fixing).
+      Root_Bound : Long_Float := 0.0;
+      --  The root LP's value after its cutting (0: not reached).
       Elapsed : Duration := 0.0;
+      CPU     : Duration := 0.0;
+      --  Wall-clock and CPU time of the calling task.
    end record;
 
    procedure Solve
      (P          : Problem;
       Start      : Assignment;
       Time_Limit : Duration;
-      Outcome    : out Result)
+      Outcome    : out Result;
+      Config     : Settings := Default_Settings)
      with Pre => Supports (P) = "" and then Start.Robots = P.Robots
                  and then Start.Tasks = P.Tasks
                  and then Outcome.Robots = P.Robots and then Outcome.Tasks = P.Tasks;

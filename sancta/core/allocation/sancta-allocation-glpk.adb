@@ -13,6 +13,9 @@ package body Sancta.Allocation.GLPK is
    GLP_MSG_OFF : constant := 0;
    GLP_PRIMAL : constant := 1;
    GLP_DUALP  : constant := 2;
+   GLP_EOBJUL : constant := 16#07#;
+   GLP_EITLIM : constant := 16#08#;
+   GLP_ETMLIM : constant := 16#09#;
 
    type Double_Reserve is array (1 .. 33) of double with Convention => C;
    type Simplex_Parameters is record
@@ -55,6 +58,13 @@ package body Sancta.Allocation.GLPK is
    function glp_get_row_dual (LP : Problem; I : int) return double
      with Import, Convention => C;
    function glp_get_row_stat (LP : Problem; I : int) return int
+     with Import, Convention => C;
+   function glp_get_num_cols (LP : Problem) return int with Import, Convention => C;
+   function glp_get_col_stat (LP : Problem; J : int) return int
+     with Import, Convention => C;
+   procedure glp_set_row_stat (LP : Problem; I : int; Stat : int)
+     with Import, Convention => C;
+   procedure glp_set_col_stat (LP : Problem; J : int; Stat : int)
      with Import, Convention => C;
    function glp_term_out (Flag : int) return int with Import, Convention => C;
 
@@ -127,8 +137,12 @@ package body Sancta.Allocation.GLPK is
       glp_set_mat_col (LP, int (Column), int (Rows'Length), Padded (Rows), Padded (Values));
    end Set_Column;
 
-   function Simplex (LP : Problem; Dual : Boolean; Time_Limit_Ms : Natural := 0)
-     return Status
+   function Simplex
+     (LP              : Problem;
+      Dual            : Boolean;
+      Time_Limit_Ms   : Natural := 0;
+      Iteration_Limit : Natural := 0;
+      Objective_Limit : Long_Float := Long_Float'Last) return Status
    is
       Parm : Simplex_Parameters;
       Code : int;
@@ -139,10 +153,19 @@ package body Sancta.Allocation.GLPK is
       if Time_Limit_Ms > 0 then
          Parm.Tm_Lim := int (Time_Limit_Ms);
       end if;
-      Code := glp_simplex (LP, Parm);
-      if Code /= 0 then
-         return Failed;
+      if Iteration_Limit > 0 then
+         Parm.It_Lim := int (Iteration_Limit);
       end if;
+      if Objective_Limit < Long_Float'Last then
+         Parm.Obj_Ul := double (Objective_Limit);
+      end if;
+      Code := glp_simplex (LP, Parm);
+      case Code is
+         when 0 => null;
+         when GLP_EITLIM | GLP_ETMLIM => return Limit_Reached;
+         when GLP_EOBJUL => return Above_Limit;
+         when others => return Failed;
+      end case;
       case glp_get_status (LP) is
          when GLP_OPT => return Optimal;
          when GLP_NOFEAS => return Infeasible;
@@ -161,5 +184,32 @@ package body Sancta.Allocation.GLPK is
      (Long_Float (glp_get_row_dual (LP, int (Row))));
    function Row_Is_Basic (LP : Problem; Row : Positive) return Boolean is
      (glp_get_row_stat (LP, int (Row)) = GLP_BS);
+
+   function Column_Count (LP : Problem) return Natural is (Natural (glp_get_num_cols (LP)));
+
+   function Current_Basis (LP : Problem) return Basis is
+      Rows : constant Natural := Row_Count (LP);
+      Columns : constant Natural := Column_Count (LP);
+   begin
+      return B : Basis (1 .. Rows + Columns) do
+         for I in 1 .. Rows loop
+            B (I) := glp_get_row_stat (LP, int (I));
+         end loop;
+         for J in 1 .. Columns loop
+            B (Rows + J) := glp_get_col_stat (LP, int (J));
+         end loop;
+      end return;
+   end Current_Basis;
+
+   procedure Restore_Basis (LP : Problem; B : Basis) is
+      Rows : constant Natural := Row_Count (LP);
+   begin
+      for I in 1 .. Rows loop
+         glp_set_row_stat (LP, int (I), B (I));
+      end loop;
+      for J in Rows + 1 .. B'Last loop
+         glp_set_col_stat (LP, int (J - Rows), B (J));
+      end loop;
+   end Restore_Basis;
 
 end Sancta.Allocation.GLPK;

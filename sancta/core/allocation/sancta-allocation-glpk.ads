@@ -51,13 +51,30 @@ package Sancta.Allocation.GLPK is
                  and then Columns'Last = Values'Last;
    --  The coefficients of Row (all others 0).
 
-   type Status is (Optimal, Infeasible, Unbounded, Failed);
-   --  Failed: GLPK gave up (iteration or time limit, numerical trouble).
+   type Status is (Optimal, Infeasible, Unbounded, Limit_Reached, Above_Limit, Failed);
+   --  Limit_Reached: the iteration or time limit stopped it (the dual
+   --  simplex's objective is then a lower bound on the optimum).
+   --  Above_Limit: the dual simplex's objective passed Objective_Limit (the
+   --  optimum is above it). Failed: numerical trouble.
 
-   function Simplex (LP : Problem; Dual : Boolean; Time_Limit_Ms : Natural := 0)
-     return Status;
+   function Simplex
+     (LP              : Problem;
+      Dual            : Boolean;
+      Time_Limit_Ms   : Natural := 0;
+      Iteration_Limit : Natural := 0;
+      Objective_Limit : Long_Float := Long_Float'Last) return Status;
    --  Solves from the current basis (dual simplex after bound changes and
-   --  new cuts; primal at the start). 0 = no time limit.
+   --  new cuts; primal at the start). 0 = no time / iteration limit.
+
+   function Column_Count (LP : Problem) return Natural;
+
+   type Basis is array (Positive range <>) of Interfaces.C.int;
+   --  The status of every row, then of every column.
+
+   function Current_Basis (LP : Problem) return Basis;
+   procedure Restore_Basis (LP : Problem; B : Basis)
+     with Pre => B'First = 1 and then B'Length = Row_Count (LP) + Column_Count (LP);
+   --  The basis of an earlier Current_Basis (same rows and columns).
 
    function Objective_Value (LP : Problem) return Long_Float;
    function Column_Value (LP : Problem; Column : Positive) return Long_Float;

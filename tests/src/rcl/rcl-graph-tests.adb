@@ -8,6 +8,7 @@ with ROSIDL.Typesupport;
 with RCL.Clients;
 with RCL.DDS.Matching;
 with RCL.Graph.Queries;
+with RCL.Graph_Announcements;
 with RCL.Nodes;
 with RCL.Publishers;
 
@@ -61,7 +62,7 @@ package body RCL.Graph.Tests is
       function Count (Images : Unbounded_String) return Natural is
         (Ada.Strings.Unbounded.Count (Images, ","));
       Info : constant Queries.Participant_Info :=
-        Queries.Decode_Participant_Info (Announcement);
+        Queries.Decode_Participant_Info (RCL.Graph_Announcements.Announcement);
    begin
       for N of Info.Nodes loop
          if To_String (N.Id.Name) = Name then
