@@ -30,10 +30,11 @@ struct rclada_liveliness_tracker {
 };
 
 /* The GUID of a writer seen before (a deleted writer is no longer
-   matched when its last change is reported): 1 found, 0 not. Called in the
-   listener only (one call at a time per reader). */
-static int known_guid (struct rclada_liveliness_tracker *t, dds_instance_handle_t handle,
-                       unsigned char guid[16])
+   matched when its last change is reported): 1 found, 0 not. The caller
+   holds t->lock (the listener's thread and rclada_liveliness_attach both
+   use the table). */
+static int known_guid_locked (struct rclada_liveliness_tracker *t,
+                              dds_instance_handle_t handle, unsigned char guid[16])
 {
   unsigned i;
   for (i = 0; i < t->known_count; i++) {
@@ -45,21 +46,33 @@ static int known_guid (struct rclada_liveliness_tracker *t, dds_instance_handle_
   return 0;
 }
 
+static int known_guid (struct rclada_liveliness_tracker *t, dds_instance_handle_t handle,
+                       unsigned char guid[16])
+{
+  int found;
+  pthread_mutex_lock (&t->lock);
+  found = known_guid_locked (t, handle, guid);
+  pthread_mutex_unlock (&t->lock);
+  return found;
+}
+
 static void remember (struct rclada_liveliness_tracker *t, dds_instance_handle_t handle,
                       const unsigned char guid[16])
 {
   unsigned char unused[16];
   struct known_writer *k;
-  if (known_guid (t, handle, unused))
-    return;
-  if (t->known_count < RCLADA_LIVELINESS_KNOWN) {
-    k = &t->known[t->known_count++];
-  } else {
-    k = &t->known[t->known_next];
-    t->known_next = (t->known_next + 1) % RCLADA_LIVELINESS_KNOWN;
+  pthread_mutex_lock (&t->lock);
+  if (!known_guid_locked (t, handle, unused)) {
+    if (t->known_count < RCLADA_LIVELINESS_KNOWN) {
+      k = &t->known[t->known_count++];
+    } else {
+      k = &t->known[t->known_next];
+      t->known_next = (t->known_next + 1) % RCLADA_LIVELINESS_KNOWN;
+    }
+    k->handle = handle;
+    memcpy (k->guid, guid, 16);
   }
-  k->handle = handle;
-  memcpy (k->guid, guid, 16);
+  pthread_mutex_unlock (&t->lock);
 }
 
 static void push (struct rclada_liveliness_tracker *t, const unsigned char guid[16], int alive)
@@ -98,6 +111,36 @@ static void on_liveliness_changed (dds_entity_t reader,
   push (t, guid, status.alive_count_change > 0 ? 1 : 0);
 }
 
+/* The changes a reader's status accumulated before the listener was set
+   reach the listener only with the next change, summed with it: a writer
+   that died after three others had become alive unseen then came as
+   "alive_count_change = +2", read as alive (a team saw a killed robot lost
+   only when its participant's 10 s lease deleted the writer). So the
+   accumulated changes are discarded (reading the status resets them) and
+   every writer matched at that point is reported alive, with its GUID
+   remembered for its later changes. A change between the two steps is
+   either seen by the listener or covered by the enumeration (a writer
+   matched then is reported alive; one lost in that window is reported when
+   DDS deletes it). */
+static void seed_matched_writers (dds_entity_t reader, struct rclada_liveliness_tracker *t)
+{
+  dds_liveliness_changed_status_t discarded;
+  dds_instance_handle_t handles[RCLADA_LIVELINESS_KNOWN];
+  dds_return_t n, i;
+  (void) dds_get_liveliness_changed_status (reader, &discarded);
+  n = dds_get_matched_publications (reader, handles, RCLADA_LIVELINESS_KNOWN);
+  if (n > (dds_return_t) RCLADA_LIVELINESS_KNOWN)
+    n = RCLADA_LIVELINESS_KNOWN;
+  for (i = 0; i < n; i++) {
+    dds_builtintopic_endpoint_t *writer = dds_get_matched_publication_data (reader, handles[i]);
+    if (writer != NULL) {
+      remember (t, handles[i], writer->key.v);
+      push (t, writer->key.v, 1);
+      dds_builtintopic_free_endpoint (writer);
+    }
+  }
+}
+
 struct rclada_liveliness_tracker *rclada_liveliness_attach (dds_entity_t reader)
 {
   struct rclada_liveliness_tracker *t = calloc (1, sizeof *t);
@@ -117,6 +160,7 @@ struct rclada_liveliness_tracker *rclada_liveliness_attach (dds_entity_t reader)
     free (t);
     return NULL;
   }
+  seed_matched_writers (reader, t);
   return t;
 }
 

@@ -12,7 +12,9 @@
 struct rclada_liveliness_tracker;
 
 /* Installs a liveliness-changed listener on "reader" (replacing its
-   listener, if any). NULL when out of memory or on a DDS error. */
+   listener, if any) and queues an "alive" change for every writer the
+   reader matches already (changes from before the call are not reported
+   otherwise). NULL when out of memory or on a DDS error. */
 struct rclada_liveliness_tracker *rclada_liveliness_attach (dds_entity_t reader);
 
 /* Takes the oldest queued change: 1 taken (guid and alive written; alive 1

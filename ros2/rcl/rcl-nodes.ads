@@ -141,7 +141,8 @@ package RCL.Nodes is
    --  publisher whose QoS has a Lease (Liveliness Automatic) and that stops
    --  asserting itself -- its process died, its host is cut off -- is
    --  reported lost once the lease has passed, and alive again when heard
-   --  again. ROS_Exception when the node has no subscription on Topic.
+   --  again. The publishers matched already are reported alive first.
+   --  ROS_Exception when the node has no subscription on Topic.
 
    procedure Take_Liveliness_Change
      (This      : in out Node;

@@ -191,8 +191,9 @@ package RCL.DDS is
      with Pre => Is_Open (This) and then not Is_Tracking_Liveliness (This);
    --  From now on, queues every liveliness change of the writers This
    --  matches (their QoS lease expiring, a writer asserting itself again)
-   --  for Take_Liveliness_Change. Cyclone reports the changes in its own
-   --  thread; the queue holds 1024 of them.
+   --  for Take_Liveliness_Change, after an "alive" change for each writer
+   --  matched already. Cyclone reports the changes in its own thread; the
+   --  queue holds 1024 of them.
 
    function Is_Tracking_Liveliness (This : Reader) return Boolean;
 

@@ -200,6 +200,50 @@ package body RCL.Nodes.Tests is
       Assert (Raised, "no subscription on the topic: ROS_Exception naming it");
    end Publisher_Liveliness;
 
+   --  Tracking started after the publisher was matched (and had become
+   --  alive unseen): the publisher is reported alive at once, and lost when
+   --  it goes. Before the tracker discarded the changes accumulated ahead of
+   --  its listener, nothing was reported here (the deletion summed with the
+   --  unseen "alive" to no change) and a team saw a killed robot only when
+   --  DDS deleted its writer 10 s later.
+   procedure Liveliness_Tracked_Late (Unused : in out Fixture) is
+      Leased   : constant RCL.QoS.Profile := (RCL.QoS.Default with delta Lease => 0.5);
+      Watcher  : Node := Init ("late_liveliness_watcher");
+      Writer   : ROSIDL.GID := [others => 0];
+      G        : ROSIDL.GID;
+      Alive, Found : Boolean;
+      Came_Alive, Lost : Boolean := False;
+   begin
+      Watcher.Subscribe_Raw (Type_Name, "/leased_late", On_Data'Access, Leased);
+      declare
+         Other : Node := Init ("late_liveliness_publisher");
+         Pub   : constant RCL.Publishers.Publisher :=
+           Other.Publish_Raw (Type_Name, "/leased_late", Leased);
+      begin
+         Writer := ROSIDL.GID (Pub.GID);
+         Count := 0;
+         for I in 1 .. 100 loop
+            Pub.Publish_Raw (Payload (I));
+            Watcher.Spin (During => 0.05);
+            exit when Count > 0;
+         end loop;
+         Assert (Count > 0, "the watcher receives the publisher (matched, alive)");
+         Watcher.Track_Liveliness ("/leased_late");
+         Watcher.Take_Liveliness_Change ("/leased_late", G, Alive, Found);
+         Came_Alive := Found and then Alive and then G = Writer;
+      end;
+      for I in 1 .. 100 loop
+         Watcher.Take_Liveliness_Change ("/leased_late", G, Alive, Found);
+         if Found then
+            Lost := not Alive and then G = Writer;
+            exit;
+         end if;
+         delay 0.05;
+      end loop;
+      Assert (Came_Alive, "a publisher matched before the tracking is reported alive at once");
+      Assert (Lost, "and reported lost when it goes, with its GID");
+   end Liveliness_Tracked_Late;
+
    Ticks : Natural := 0 with Atomic;
 
    procedure Tick (Node : in out Nodes.Node'Class; Timer : in out RCL.Timers.Timer;
@@ -524,6 +568,8 @@ package body RCL.Nodes.Tests is
       Result.Add_Test (Caller.Create ("nodes: QoS mismatch", QoS_Mismatch'Access));
       Result.Add_Test (Caller.Create ("nodes: publisher liveliness (alive, lost)",
                                       Publisher_Liveliness'Access));
+      Result.Add_Test (Caller.Create ("nodes: liveliness tracked after matching",
+                                      Liveliness_Tracked_Late'Access));
       Result.Add_Test (Caller.Create ("nodes: timers", Timer_Spin'Access));
       Result.Add_Test (Caller.Create ("nodes: concurrent executor", Concurrent'Access));
       Result.Add_Test (Caller.Create ("nodes: callback groups in the concurrent executor",
