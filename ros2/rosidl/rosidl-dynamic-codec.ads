@@ -1,8 +1,8 @@
---  The CDR codec working on the storage of dynamic messages. Not for users:
---  the interface is ROSIDL.CDR.
+--  The CDR codec working on the storage of dynamic messages (a private
+--  child of ROSIDL.Dynamic; programs use ROSIDL.CDR).
 with Ada.Streams;
 
-package ROSIDL.Dynamic.Codec is
+private package ROSIDL.Dynamic.Codec is
 
    use Ada.Streams;
 

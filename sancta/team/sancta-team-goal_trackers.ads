@@ -54,7 +54,12 @@ private
       Current : State := Unknown;
       Sent    : Point := (0.0, 0.0);
       Task_Id : Ada.Strings.Unbounded.Unbounded_String;
-   end record;
+   end record
+     with Type_Invariant =>
+       Goal_Tracker.Current = Going
+       or else Ada.Strings.Unbounded.Length (Goal_Tracker.Task_Id) = 0;
+   --  Only a robot sent somewhere holds a task: going idle forgets it, so
+   --  that the same task given back after an idle spell is sent again.
 
    function Is_Idle (This : Goal_Tracker) return Boolean is (This.Current = Idle);
 

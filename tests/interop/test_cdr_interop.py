@@ -5,7 +5,7 @@ here with the ROS 2 DDS type names, final extensibility) as XCDR1; its bytes
 must equal the Ada encoder's (which adds the final padding to 4 that
 ``serialize()`` omits), in both byte orders, and each side must decode the
 other's bytes. The Ada side is driven through ``bin/cdr_tool`` whose samples
-(tests/src/rosidl/rosidl-cdr-samples.adb) hold the same values as SAMPLES.
+(tests/src/rosidl/rosidl-cdr_samples.adb) hold the same values as SAMPLES.
 """
 import os
 import subprocess

@@ -19,7 +19,7 @@ with RCL.Services.Tests;
 with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
-with ROSIDL.CDR.Tests;
+with ROSIDL.CDR_Tests;
 with ROSIDL.Static.Tests;
 with ROSIDL.Type_Hashes.Tests;
 with Sancta.Allocation.Branch_And_Cut.Tests;
@@ -53,7 +53,7 @@ package body All_Suites is
       Result.Add_Test (RCL.QoS.Tests.Suite);
       Result.Add_Test (RCL.Graph.Tests.Suite);
       Result.Add_Test (ROSIDL.Parser.Tests.Suite);
-      Result.Add_Test (ROSIDL.CDR.Tests.Suite);
+      Result.Add_Test (ROSIDL.CDR_Tests.Suite);
       Result.Add_Test (ROSIDL.Type_Hashes.Tests.Suite);
       Result.Add_Test (ROSIDL.Static.Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
@@ -67,7 +67,7 @@ package body All_Suites is
       Result.Add_Test (Sancta.Allocation.Replanning.Tests.Suite);
       Result.Add_Test (Sancta.Team.Tests.Suite);
       --  Each area adds its suite here, e.g.
-      --  Result.Add_Test (ROSIDL.CDR.Tests.Suite);
+      --  Result.Add_Test (ROSIDL.CDR_Tests.Suite);
       Result.Add_Test (Simulation_Suites.Suite);
       return Result'Access;
    end Suite;

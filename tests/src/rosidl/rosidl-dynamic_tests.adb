@@ -5,7 +5,7 @@ with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with ROSIDL.CDR;
-with ROSIDL.CDR.Samples;
+with ROSIDL.CDR_Samples;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 
@@ -29,7 +29,7 @@ package body ROSIDL.Dynamic_Tests is
 
    function Defaults return Message is
    begin
-      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      ROSIDL.CDR_Samples.Use_Test_Interfaces;
       return Init (Get_Message_Support ("cdr_test_msgs", "Defaults"));
    end Defaults;
 
@@ -111,7 +111,7 @@ package body ROSIDL.Dynamic_Tests is
             Assert (Contains (Text_Of (E), "not a finite number"), Text_Of (E));
       end Not_A_Number;
    begin
-      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      ROSIDL.CDR_Samples.Use_Test_Interfaces;
       M := Init (Get_Message_Support ("cdr_test_msgs", "NonFinite"));
       declare
          Text : constant String := Image (M);
@@ -142,7 +142,7 @@ package body ROSIDL.Dynamic_Tests is
       Smile   : constant Wide_Wide_Character := Wide_Wide_Character'Val (16#1F600#);
       M       : Message;
    begin
-      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      ROSIDL.CDR_Samples.Use_Test_Interfaces;
       M := Init (Get_Message_Support ("cdr_test_msgs", "Unicode"));
       Assert (M ("word").Get_WString = E_Acute & "t" & E_Acute,
               "wstring default decoded as UTF-8 (3 characters), got"
@@ -185,7 +185,7 @@ package body ROSIDL.Dynamic_Tests is
    end Nested_References;
 
    procedure Value_Semantics (Unused : in out Fixture) is
-      A : constant Message := ROSIDL.CDR.Samples.Make ("laser_scan");
+      A : constant Message := ROSIDL.CDR_Samples.Make ("laser_scan");
       B : Message := A;
    begin
       Assert (A = B, "copy equal");
@@ -214,7 +214,7 @@ package body ROSIDL.Dynamic_Tests is
    procedure Concurrent_Readers (Unused : in out Fixture) is
       --  Two tasks index the same message object while it shares its
       --  storage: each takes a private copy under a lock, once.
-      Original : constant Message := ROSIDL.CDR.Samples.Make ("laser_scan");
+      Original : constant Message := ROSIDL.CDR_Samples.Make ("laser_scan");
       Source   : constant Message :=
         ROSIDL.CDR.Decode (Support (Original), ROSIDL.CDR.Encode (Original));
       --  Never indexed: its storage stays shareable.
@@ -266,7 +266,7 @@ package body ROSIDL.Dynamic_Tests is
    end Concurrent_Readers;
 
    procedure Arrays_And_Limits (Unused : in out Fixture) is
-      M : constant Message := ROSIDL.CDR.Samples.Make ("arrays");
+      M : constant Message := ROSIDL.CDR_Samples.Make ("arrays");
       R : constant Array_Ref := M ("seq_i16").As_Array;
    begin
       Assert (R.Length = 5 and then R (3).As_Int16 = 300, "length / element");
@@ -481,7 +481,7 @@ package body ROSIDL.Dynamic_Tests is
    end Error_Texts;
 
    procedure Echo_Image (Unused : in out Fixture) is
-      S : constant Message := ROSIDL.CDR.Samples.Make ("string_hi");
+      S : constant Message := ROSIDL.CDR_Samples.Make ("string_hi");
       L : constant Message := Init (Get_Message_Support ("sensor_msgs", "LaserScan"));
       P : constant Message := Init (Get_Message_Support ("geometry_msgs", "PoseArray"));
    begin
@@ -513,7 +513,7 @@ package body ROSIDL.Dynamic_Tests is
               & "    z: 0.0" & LF & "  orientation:" & LF & "    x: 0.0" & LF
               & "    y: 0.0" & LF & "    z: 0.0" & LF & "    w: 1.0" & LF, Image (P));
       declare
-         E : constant Message := ROSIDL.CDR.Samples.Make ("everything");
+         E : constant Message := ROSIDL.CDR_Samples.Make ("everything");
       begin
          E ("s").Set_String ("true");
          --  byte 16#AB# is shown as the character U+00AB, in UTF-8.

@@ -8,7 +8,8 @@ with Ada.Strings.Unbounded;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
-with ROSIDL.CDR.Samples;
+with ROSIDL.CDR;
+with ROSIDL.CDR_Samples;
 with ROSIDL.Dynamic;
 with ROSIDL.Interfaces;
 with ROSIDL.Static.Bundled_Types;
@@ -45,7 +46,7 @@ package body ROSIDL.Static.Tests is
          then Ada.Environment_Variables.Value ("SANCTA_ROOT")
          else Ada.Directories.Current_Directory);
    begin
-      ROSIDL.CDR.Samples.Use_Test_Interfaces;
+      ROSIDL.CDR_Samples.Use_Test_Interfaces;
       if not User_Folder_Added then
          ROSIDL.Interfaces.Add_Folder (Root & "/tests/data/user_interfaces");
          User_Folder_Added := True;
@@ -87,7 +88,7 @@ package body ROSIDL.Static.Tests is
       Count : Natural := 0;
    begin
       Use_User_Interfaces;
-      for Support of ROSIDL.CDR.Samples.All_Types loop
+      for Support of ROSIDL.CDR_Samples.All_Types loop
          declare
             Name : constant String := ROSIDL.Typesupport.Full_Name (Support);
          begin
@@ -109,7 +110,7 @@ package body ROSIDL.Static.Tests is
                for Round in 1 .. 4 loop
                   declare
                      Msg : constant ROSIDL.Dynamic.Message :=
-                       ROSIDL.CDR.Samples.Random_Message (Support, Seed);
+                       ROSIDL.CDR_Samples.Random_Message (Support, Seed);
                      LE  : constant Stream_Element_Array := Encode (Msg, Little_Endian);
                      BE  : constant Stream_Element_Array := Encode (Msg, Big_Endian);
                   begin
@@ -174,9 +175,9 @@ package body ROSIDL.Static.Tests is
    procedure Records_As_Users_Write_Them (Unused : in out Fixture) is
       O : Odometry.Message;
    begin
-      --  The same values as the dynamic samples (ROSIDL.CDR.Samples).
+      --  The same values as the dynamic samples (ROSIDL.CDR_Samples).
       Assert (Scan.Encode (Sample_Scan, Little_Endian)
-              = ROSIDL.CDR.Samples.Encode_Sample ("laser_scan", Little_Endian),
+              = ROSIDL.CDR_Samples.Encode_Sample ("laser_scan", Little_Endian),
               "laser_scan differs from the dynamic sample");
       O.Header.Stamp := (Sec => 5, Nanosec => 6);
       O.Header.Frame_Id := Ada.Strings.Unbounded.To_Unbounded_String ("odom");
@@ -191,7 +192,7 @@ package body ROSIDL.Static.Tests is
       O.Twist.Twist.Linear.X := 0.5;
       O.Twist.Twist.Angular.Z := 0.25;
       Assert (Odometry.Encode (O, Big_Endian)
-              = ROSIDL.CDR.Samples.Encode_Sample ("odometry", Big_Endian),
+              = ROSIDL.CDR_Samples.Encode_Sample ("odometry", Big_Endian),
               "odometry differs from the dynamic sample");
       Assert (Odometry.Decode (Odometry.Encode (O)) = O, "odometry round trip");
 
@@ -301,14 +302,14 @@ package body ROSIDL.Static.Tests is
          Types : constant Entry_Maps.Map := Generated;
          Gen   : UInt64 := 77;
       begin
-         for Support of ROSIDL.CDR.Samples.All_Types loop
+         for Support of ROSIDL.CDR_Samples.All_Types loop
             if not Is_Generated_Package (Types, ROSIDL.Typesupport.Full_Name (Support)) then
                goto Next_Type;
             end if;
             declare
                T    : constant Type_Entry := Types (ROSIDL.Typesupport.Full_Name (Support));
                Data : Stream_Element_Array :=
-                 Encode (ROSIDL.CDR.Samples.Random_Message (Support, Gen), Little_Endian);
+                 Encode (ROSIDL.CDR_Samples.Random_Message (Support, Gen), Little_Endian);
             begin
                for Unused_Round in 1 .. 8 loop
                   declare

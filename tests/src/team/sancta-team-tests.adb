@@ -13,6 +13,7 @@ with Sancta.Team.Agents;
 with Sancta.Team.Replicated_Databases;
 with Sancta.Commands.Team_Demos;
 with Sancta.Team.Goal_Trackers;
+with Sancta.Team.Goal_Trackers.Contract_Tests;
 with Sancta.Team.Grid_Costs;
 with Sancta.Robot.Grids;
 with Sancta.Team.Missions;
@@ -672,6 +673,7 @@ package body Sancta.Team.Tests is
       Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
+      Result.Add_Test (Goal_Trackers.Contract_Tests.Suite);
       return Result;
    end Suite;
 

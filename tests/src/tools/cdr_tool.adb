@@ -20,7 +20,8 @@ with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
-with ROSIDL.CDR.Samples;
+with ROSIDL.CDR;
+with ROSIDL.CDR_Samples;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
@@ -29,6 +30,7 @@ procedure CDR_Tool is
    use Ada.Command_Line;
    use Ada.Text_IO;
    use ROSIDL.CDR;
+   package Samples renames ROSIDL.CDR_Samples;
 
    Bad_Argument : exception;
    --  Its message says which argument is wrong and why.

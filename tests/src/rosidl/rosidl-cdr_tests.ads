@@ -3,9 +3,9 @@
 --  and, through ROSIDL.Dynamic.Tests, of dynamic messages.
 with AUnit.Test_Suites;
 
-package ROSIDL.CDR.Tests is
+package ROSIDL.CDR_Tests is
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite;
    --  Includes ROSIDL.Dynamic.Tests.Suite.
 
-end ROSIDL.CDR.Tests;
+end ROSIDL.CDR_Tests;

@@ -3,14 +3,20 @@ with Ada.Strings.Fixed;
 with AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
-with ROSIDL.CDR.Samples;
-with ROSIDL.CDR.Vectors;
+with Ada.Streams;
+with ROSIDL.CDR; use ROSIDL.CDR;
+with ROSIDL.CDR_Samples;
+with ROSIDL.CDR_Vectors;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic_Tests;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 
-package body ROSIDL.CDR.Tests is
+package body ROSIDL.CDR_Tests is
+
+   use Ada.Streams;
+   package Samples renames ROSIDL.CDR_Samples;
+   package Vectors renames ROSIDL.CDR_Vectors;
 
    use AUnit.Assertions;
    use ROSIDL.Definitions;
@@ -452,4 +458,4 @@ package body ROSIDL.CDR.Tests is
       return Result;
    end Suite;
 
-end ROSIDL.CDR.Tests;
+end ROSIDL.CDR_Tests;

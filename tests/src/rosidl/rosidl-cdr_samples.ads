@@ -5,8 +5,10 @@ with Ada.Containers.Vectors;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with Ada.Streams; use Ada.Streams;
+with ROSIDL.CDR; use ROSIDL.CDR;
 
-package ROSIDL.CDR.Samples is
+package ROSIDL.CDR_Samples is
 
    Names : constant ROSIDL.Definitions.String_Vectors.Vector :=
      ["string_hi", "header", "laser_scan", "odometry", "occupancy_grid",
@@ -58,4 +60,4 @@ package ROSIDL.CDR.Samples is
    --  The inverse of Hex; spaces are ignored; Constraint_Error when
    --  malformed.
 
-end ROSIDL.CDR.Samples;
+end ROSIDL.CDR_Samples;

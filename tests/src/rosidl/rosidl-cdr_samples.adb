@@ -3,7 +3,7 @@ with Ada.Environment_Variables;
 with Ada.Strings.Unbounded;
 with ROSIDL.Interfaces;
 
-package body ROSIDL.CDR.Samples is
+package body ROSIDL.CDR_Samples is
 
    use Ada.Strings.Unbounded;
    use ROSIDL.Definitions;
@@ -489,4 +489,4 @@ package body ROSIDL.CDR.Samples is
       end return;
    end From_Hex;
 
-end ROSIDL.CDR.Samples;
+end ROSIDL.CDR_Samples;

@@ -1,9 +1,9 @@
 --  Byte-exact CDR test vectors (little-endian, with the final padding to 4)
---  of the samples of ROSIDL.CDR.Samples. Each one equals what the Python
+--  of the samples of ROSIDL.CDR_Samples. Each one equals what the Python
 --  cyclonedds package serializes for the same values (checked by
 --  tests/interop/test_cdr_interop.py; wstrings, which it lacks, was checked
---  by hand: see the comments in ROSIDL.CDR.Tests).
-package ROSIDL.CDR.Vectors is
+--  by hand: see the comments in ROSIDL.CDR_Tests).
+package ROSIDL.CDR_Vectors is
 
    type Vector_Text is access constant String;
 
@@ -141,4 +141,4 @@ package ROSIDL.CDR.Vectors is
       11 => (Floats_Name'Access, Floats'Access),
       12 => (Wstrings_Name'Access, Wstrings'Access)];
 
-end ROSIDL.CDR.Vectors;
+end ROSIDL.CDR_Vectors;

@@ -1,8 +1,6 @@
 with ROSIDL.Dynamic.Codec;
 
-package body ROSIDL.CDR is
-
-   package Codec renames ROSIDL.Dynamic.Codec;
+package body ROSIDL.Dynamic.CDR is
 
    function Encoded_Size
      (Msg : ROSIDL.Dynamic.Message; With_Request_Header : Boolean := False)
@@ -83,4 +81,4 @@ package body ROSIDL.CDR is
    function Byte_Order_Of (Data : Stream_Element_Array) return Byte_Order is
      (if Codec.Little_Endian_Header (Data) then Little_Endian else Big_Endian);
 
-end ROSIDL.CDR;
+end ROSIDL.Dynamic.CDR;
