@@ -12,8 +12,10 @@ with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+with Sancta.Allocation.Random;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
+with Sancta.Geometry;
 
 package body Sancta.Allocation.Tests is
 
