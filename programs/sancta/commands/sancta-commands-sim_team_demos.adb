@@ -722,6 +722,9 @@ package body Sancta.Commands.Sim_Team_Demos is
             then
                Kill (Choose_Victim);
             end if;
+            if Result.Replanned then
+               Team_Demos.Follow_Replan (Result, Monitor.Adopted);
+            end if;
             if Victim /= 0 and then not Result.Replanned then
                Check_Replanned;
             end if;

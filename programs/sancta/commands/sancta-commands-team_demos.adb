@@ -144,6 +144,15 @@ package body Sancta.Commands.Team_Demos is
       return Passed;
    end Check_Passed;
 
+   procedure Follow_Replan (Result : in out Demo_Result; Adopted : Plans.Plan) is
+   begin
+      if Adopted.Generation = Result.Round_After.Generation
+        and then Adopted.Value < Result.Plan_After.Value
+      then
+         Result.Plan_After := Adopted;
+      end if;
+   end Follow_Replan;
+
    procedure Resolve_Orphans (Result : in out Demo_Result) is
    begin
       for O of Result.Orphans loop
@@ -904,6 +913,9 @@ package body Sancta.Commands.Team_Demos is
                  and then Observer.Adopted.Generation > 0
                then
                   Kill (Choose_Victim);
+               end if;
+               if Result.Replanned then
+                  Follow_Replan (Result, Observer.Adopted);
                end if;
                if Victim /= 0 and then not Result.Replanned then
                   declare

@@ -139,6 +139,13 @@ package Sancta.Commands.Team_Demos is
       return Completion_Vectors.Vector;
    --  The tasks of Robot's tour in plan P of round S not done yet.
 
+   procedure Follow_Replan (Result : in out Demo_Result; Adopted : Plans.Plan)
+     with Pre => Result.Replanned;
+   --  Keeps as Plan_After the best plan adopted for the re-plan's round: the
+   --  round's first plan is the previous one carried over (the team's
+   --  anytime start), annealed ones follow. Replan_Wall stays the time to
+   --  that first plan.
+
    procedure Resolve_Orphans (Result : in out Demo_Result);
    --  Fills each orphan's Robot and Time from Result.Completions.
 
