@@ -10,7 +10,9 @@
  * padded to 4, in a kept buffer; decode = check + read into a kept sample.
  * What this leaves out of a C writer/reader: the serdata allocation and
  * reference counting around them (so C is favoured, if anything).
- *   typed_cdr_c SECONDS  prints "case,op,c,bytes,iterations,ns_per_msg" */
+ *   typed_cdr_c SECONDS [DUMP-FOLDER]
+ * prints "case,op,c,bytes,iterations,ns_per_msg"; with DUMP-FOLDER, writes
+ * each case's encoding there as <case>.cdr (compared with the Ada ones). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +31,7 @@ static double now (void)
 }
 
 static volatile unsigned char sink;
+static const char *dumps;  /* folder for the encodings, or NULL */
 
 /* Header + body + padding into buf (kept, large enough: bytes 4 .. of buf
  * are the ostream's buffer, which never grows, as in a serdata whose body
@@ -74,6 +77,14 @@ static void measure (const char *name, const dds_topic_descriptor_t *desc,
   uint32_t size = encode (out, capacity, sample, ops);
   memcpy (buf, out, size);
   if (!decode (buf, size, kept, ops)) { fprintf (stderr, "%s: own encoding rejected\n", name); exit (1); }
+  if (dumps != NULL) {
+    char path[4096];
+    snprintf (path, sizeof path, "%s/%s.cdr", dumps, name);
+    FILE *f = fopen (path, "wb");
+    if (f == NULL || fwrite (out, 1, size, f) != size || fclose (f) != 0) {
+      fprintf (stderr, "%s: cannot write %s\n", name, path); exit (1);
+    }
+  }
 
   long n = 0; double t0 = now (), dt;
   do {
@@ -99,6 +110,7 @@ static void measure (const char *name, const dds_topic_descriptor_t *desc,
 int main (int argc, char **argv)
 {
   double budget = argc > 1 ? atof (argv[1]) : 1.0;
+  dumps = argc > 2 ? argv[2] : NULL;
 
   sensor_msgs_msg_dds__LaserScan_ scan;
   memset (&scan, 0, sizeof scan);

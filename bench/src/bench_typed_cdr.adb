@@ -4,11 +4,14 @@
 --  nav_msgs/Odometry, nav_msgs/OccupancyGrid of 1000 x 1000 cells. Encode
 --  into a buffer kept across messages, decode into a message kept across
 --  messages (the steady state of a publisher and a subscription).
---     bench_typed_cdr [SECONDS] [CSV-FILE]
---  prints "case,op,impl,bytes,iterations,ns_per_msg" lines.
+--     bench_typed_cdr [SECONDS] [CSV-FILE] [DUMP-FOLDER]
+--  prints "case,op,impl,bytes,iterations,ns_per_msg" lines; with a
+--  DUMP-FOLDER, writes each case's typed encoding there as <case>.cdr (the
+--  bench script compares them with the C encodings byte for byte).
 with Ada.Command_Line;
 with Ada.Real_Time;
 with Ada.Streams;
+with Ada.Streams.Stream_IO;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with ROSIDL.CDR;
@@ -31,6 +34,8 @@ procedure Bench_Typed_CDR is
      (if Ada.Command_Line.Argument_Count >= 1
       then Duration'Value (Ada.Command_Line.Argument (1)) else 1.0);
    Has_CSV : constant Boolean := Ada.Command_Line.Argument_Count >= 2;
+   Dumps   : constant String :=
+     (if Ada.Command_Line.Argument_Count >= 3 then Ada.Command_Line.Argument (3) else "");
    CSV     : File_Type;
    Sink    : Stream_Element := 0 with Volatile;
 
@@ -95,6 +100,17 @@ procedure Bench_Typed_CDR is
       end if;
    end Report;
 
+   procedure Dump (Case_Name : String; Data : Stream_Element_Array) is
+      use Ada.Streams.Stream_IO;
+      File : Ada.Streams.Stream_IO.File_Type;
+   begin
+      if Dumps /= "" then
+         Create (File, Out_File, Dumps & "/" & Case_Name & ".cdr");
+         Write (File, Data);
+         Close (File);
+      end if;
+   end Dump;
+
    generic
       with package Handling is new ROSIDL.Static.Message_Support (<>);
    procedure Measure (Case_Name : String; Typed_Msg : Handling.Message);
@@ -153,6 +169,7 @@ procedure Bench_Typed_CDR is
       if ROSIDL.CDR.Encode (Dynamic) /= Data then
          raise Program_Error with Case_Name & ": typed and dynamic encodings differ";
       end if;
+      Dump (Case_Name, Data);
       Run ("encode", "typed", Typed_Encode'Access);
       Run ("encode", "dynamic", Dynamic_Encode'Access);
       Run ("decode", "typed", Typed_Decode'Access);

@@ -39,6 +39,30 @@ procedure Param_Command (Args : Arguments) is
          when Byte_Array_Type => "Byte",
          when Not_Set => "");
 
+   function Sorted_Names (Node_Name : String) return Argument_Vectors.Vector is
+      --  The node's parameter names (~/list_parameters), sorted.
+      procedure No_Fill (Request : ROSIDL.Dynamic.Message) is null;
+      Listed : constant ROSIDL.Dynamic.Message :=
+        Call (Node_Name, "list_parameters", "ListParameters", No_Fill'Access);
+      Names  : constant ROSIDL.Dynamic.Array_Ref := Listed ("result")("names").As_Array;
+      Sorted : Argument_Vectors.Vector;
+      package Sorting is new Argument_Vectors.Generic_Sorting;
+   begin
+      for I in 1 .. Names.Length loop
+         Sorted.Append (Names.Element (I).Get_String);
+      end loop;
+      Sorting.Sort (Sorted);
+      return Sorted;
+   end Sorted_Names;
+
+   procedure Ask_For_Named_Parameter (Request : ROSIDL.Dynamic.Message) is
+      --  The request's "names": the parameter named on the command line.
+      Names : constant ROSIDL.Dynamic.Array_Ref := Request ("names").As_Array;
+   begin
+      Names.Resize (1);
+      Names.Element (1).Set_String (Pos (3));
+   end Ask_For_Named_Parameter;
+
    procedure Need (Count : Positive; What : String) is
    begin
       if Natural (Pos.Length) /= Count then
@@ -51,33 +75,15 @@ begin
       raise Usage_Error with "missing sub-command (list, get, set, describe)";
    elsif Pos (1) = "list" then
       Need (2, "param list takes one node name");
-      declare
-         procedure Fill (Request : ROSIDL.Dynamic.Message) is null;
-         Response : constant ROSIDL.Dynamic.Message :=
-           Call (Fully_Qualified (Pos (2)), "list_parameters", "ListParameters", Fill'Access);
-         Names : constant ROSIDL.Dynamic.Array_Ref := Response ("result")("names").As_Array;
-         Sorted : Argument_Vectors.Vector;
-         package Sorting is new Argument_Vectors.Generic_Sorting;
-      begin
-         for I in 1 .. Names.Length loop
-            Sorted.Append (Names.Element (I).Get_String);
-         end loop;
-         Sorting.Sort (Sorted);
-         for N of Sorted loop
-            Put_Line ("  " & N);
-         end loop;
-      end;
+      for N of Sorted_Names (Fully_Qualified (Pos (2))) loop
+         Put_Line ("  " & N);
+      end loop;
    elsif Pos (1) = "get" then
       Need (3, "param get takes a node name and a parameter name");
       declare
-         procedure Fill (Request : ROSIDL.Dynamic.Message) is
-            Names : constant ROSIDL.Dynamic.Array_Ref := Request ("names").As_Array;
-         begin
-            Names.Resize (1);
-            Names.Element (1).Set_String (Pos (3));
-         end Fill;
          Response : constant ROSIDL.Dynamic.Message :=
-           Call (Fully_Qualified (Pos (2)), "get_parameters", "GetParameters", Fill'Access);
+           Call (Fully_Qualified (Pos (2)), "get_parameters", "GetParameters",
+                 Ask_For_Named_Parameter'Access);
          Values : constant ROSIDL.Dynamic.Array_Ref := Response ("values").As_Array;
       begin
          if Values.Length /= 1 then
@@ -224,17 +230,8 @@ begin
       Need (2, "param dump takes one node name");
       declare
          Node_Name : constant String := Fully_Qualified (Pos (2));
-         procedure No_Fill (Request : ROSIDL.Dynamic.Message) is null;
-         Listed : constant ROSIDL.Dynamic.Message :=
-           Call (Node_Name, "list_parameters", "ListParameters", No_Fill'Access);
-         Names  : constant ROSIDL.Dynamic.Array_Ref := Listed ("result")("names").As_Array;
-         Sorted : Argument_Vectors.Vector;
-         package Sorting is new Argument_Vectors.Generic_Sorting;
+         Sorted    : constant Argument_Vectors.Vector := Sorted_Names (Node_Name);
       begin
-         for I in 1 .. Names.Length loop
-            Sorted.Append (Names.Element (I).Get_String);
-         end loop;
-         Sorting.Sort (Sorted);
          declare
             procedure Fill (Request : ROSIDL.Dynamic.Message) is
                Asked : constant ROSIDL.Dynamic.Array_Ref := Request ("names").As_Array;
@@ -263,15 +260,9 @@ begin
    elsif Pos (1) = "describe" then
       Need (3, "param describe takes a node name and a parameter name");
       declare
-         procedure Fill (Request : ROSIDL.Dynamic.Message) is
-            Names : constant ROSIDL.Dynamic.Array_Ref := Request ("names").As_Array;
-         begin
-            Names.Resize (1);
-            Names.Element (1).Set_String (Pos (3));
-         end Fill;
          Response : constant ROSIDL.Dynamic.Message :=
            Call (Fully_Qualified (Pos (2)), "describe_parameters", "DescribeParameters",
-                 Fill'Access);
+                 Ask_For_Named_Parameter'Access);
          D : constant ROSIDL.Dynamic.Field_Ref := Response ("descriptors").As_Array (1);
          T : constant Natural := Natural (D.Field_Reference ("type").As_UInt8.Element.all);
       begin

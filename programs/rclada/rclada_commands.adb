@@ -190,27 +190,9 @@ package body Rclada_Commands is
       To_Unbounded_String ("--window"), To_Unbounded_String ("--timeout"),
       To_Unbounded_String ("--wait")];
 
-   function Positional (Args : Arguments) return Arguments is
-      --  The arguments that are neither options nor option values.
-      Result : Arguments;
-      Skip   : Boolean := False;
-   begin
-      for A of Args loop
-         if Skip then
-            Skip := False;
-         elsif A'Length > 1 and then A (A'First) = '-'
-           and then not (A (A'First + 1) in '0' .. '9' | '.')
-         then
-            Skip := (for some V of Valued_Options => To_String (V) = A);
-         else
-            Result.Append (A);
-         end if;
-      end loop;
-      return Result;
-   end Positional;
-
-   procedure Check_Options (Args : Arguments; Allowed : String) is
-      --  Allowed: space-separated option names.
+   procedure Split (Args : Arguments; Options, Operands : out Arguments) is
+      --  Options: the option names in Args (a valued option's value
+      --  skipped); Operands: the arguments that are neither.
       Skip : Boolean := False;
    begin
       for A of Args loop
@@ -219,10 +201,30 @@ package body Rclada_Commands is
          elsif A'Length > 1 and then A (A'First) = '-'
            and then not (A (A'First + 1) in '0' .. '9' | '.')
          then
-            if Ada.Strings.Fixed.Index (" " & Allowed & " ", " " & A & " ") = 0 then
-               raise Usage_Error with "unknown option " & A;
-            end if;
+            Options.Append (A);
             Skip := (for some V of Valued_Options => To_String (V) = A);
+         else
+            Operands.Append (A);
+         end if;
+      end loop;
+   end Split;
+
+   function Positional (Args : Arguments) return Arguments is
+      --  The arguments that are neither options nor option values.
+      Options, Result : Arguments;
+   begin
+      Split (Args, Options, Result);
+      return Result;
+   end Positional;
+
+   procedure Check_Options (Args : Arguments; Allowed : String) is
+      --  Allowed: space-separated option names.
+      Options, Operands : Arguments;
+   begin
+      Split (Args, Options, Operands);
+      for A of Options loop
+         if Ada.Strings.Fixed.Index (" " & Allowed & " ", " " & A & " ") = 0 then
+            raise Usage_Error with "unknown option " & A;
          end if;
       end loop;
    end Check_Options;
@@ -287,6 +289,14 @@ package body Rclada_Commands is
    function Part_Name (K : Kind_Part) return String is
      (case K is when Msg_Part => "msg", when Srv_Part => "srv", when Action_Part => "action");
 
+   function Type_Names (Package_Name : String; Kind : Kind_Part)
+     return ROSIDL.Definitions.String_Vectors.Vector
+   is (case Kind is
+          when Msg_Part => ROSIDL.Interfaces.Messages (Package_Name),
+          when Srv_Part => ROSIDL.Interfaces.Services (Package_Name),
+          when Action_Part => ROSIDL.Interfaces.Actions (Package_Name));
+   --  The names of the package's interfaces of that kind.
+
    procedure Split_Type
      (Name : String; Kind : Kind_Part; Pkg, Base : out Unbounded_String)
    is
@@ -312,28 +322,20 @@ package body Rclada_Commands is
       Best : array (1 .. 3) of Pick;
    begin
       for P of ROSIDL.Interfaces.Packages loop
-         declare
-            Names : constant ROSIDL.Definitions.String_Vectors.Vector :=
-              (case Kind is
-                  when Msg_Part => ROSIDL.Interfaces.Messages (P),
-                  when Srv_Part => ROSIDL.Interfaces.Services (P),
-                  when Action_Part => ROSIDL.Interfaces.Actions (P));
-         begin
-            for N of Names loop
-               declare
-                  Full : constant String := P & "/" & Part_Name (Kind) & "/" & N;
-                  D    : constant Natural := Distance (Name, Full);
-               begin
-                  for I in Best'Range loop
-                     if D < Best (I).Dist then
-                        Best (I + 1 .. Best'Last) := Best (I .. Best'Last - 1);
-                        Best (I) := (To_Unbounded_String (Full), D);
-                        exit;
-                     end if;
-                  end loop;
-               end;
-            end loop;
-         end;
+         for N of Type_Names (P, Kind) loop
+            declare
+               Full : constant String := P & "/" & Part_Name (Kind) & "/" & N;
+               D    : constant Natural := Distance (Name, Full);
+            begin
+               for I in Best'Range loop
+                  if D < Best (I).Dist then
+                     Best (I + 1 .. Best'Last) := Best (I .. Best'Last - 1);
+                     Best (I) := (To_Unbounded_String (Full), D);
+                     exit;
+                  end if;
+               end loop;
+            end;
+         end loop;
       end loop;
       declare
          R : Unbounded_String;
@@ -996,18 +998,10 @@ package body Rclada_Commands is
                for P of ROSIDL.Interfaces.Packages loop
                   if One = "" or else P = One then
                      Found := Found or P = One;
-                     declare
-                        Names : constant ROSIDL.Definitions.String_Vectors.Vector :=
-                          (case Kind is
-                              when Msg_Part => ROSIDL.Interfaces.Messages (P),
-                              when Srv_Part => ROSIDL.Interfaces.Services (P),
-                              when Action_Part => ROSIDL.Interfaces.Actions (P));
-                     begin
-                        for N of Names loop
-                           Put_Line ((if One = "" then "    " else "")
-                                     & P & "/" & Part_Name (Kind) & "/" & N);
-                        end loop;
-                     end;
+                     for N of Type_Names (P, Kind) loop
+                        Put_Line ((if One = "" then "    " else "")
+                                  & P & "/" & Part_Name (Kind) & "/" & N);
+                     end loop;
                   end if;
                end loop;
             end Show_Kind;

@@ -10,6 +10,7 @@ with Sancta.Simulation.Demos;
 with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Rendering;
+with Sancta.Simulation.Tool_Arguments;
 with Sancta.Simulation.Worlds;
 
 package body Sancta.Simulation.Render_Tool is
@@ -18,7 +19,7 @@ package body Sancta.Simulation.Render_Tool is
    use Ada.Strings.Unbounded;
    use Ada.Text_IO;
 
-   Usage_Error : exception;
+   use Tool_Arguments;
 
    procedure Usage is
    begin
@@ -37,18 +38,6 @@ package body Sancta.Simulation.Render_Tool is
       Put_Line ("  --rasterize BASE      write the world as BASE.pgm + BASE.yaml");
    end Usage;
 
-   function To_Real (Option, Text : String) return Real is
-   begin
-      if Ada.Strings.Fixed.Index (Text, ".") = 0 then
-         return Real'Value (Text & ".0");
-      else
-         return Real'Value (Text);
-      end if;
-   exception
-      when Constraint_Error =>
-         raise Usage_Error with Option & ": expected a number, found """ & Text & """";
-   end To_Real;
-
    function To_Natural (Option, Text : String) return Natural is
    begin
       return Natural'Value (Text);
@@ -64,88 +53,71 @@ package body Sancta.Simulation.Render_Tool is
       Demo        : Demos.Demo_Config;
       Demo_Robots : Natural := 0;
       Scene       : Rendering.Scene;
-      K           : Positive := 1;
 
-      function Value return String is
+      procedure Take (A : String; K : in out Positive) is
+         function Value return String is (Next_Value (K));
       begin
-         if K + 1 > Argument_Count then
-            raise Usage_Error with Argument (K) & ": missing value";
+         if A = "--svg" then
+            SVG := To_Unbounded_String (Value);
+         elsif A = "--png" then
+            PNG := To_Unbounded_String (Value);
+         elsif A = "--csv" then
+            CSV := To_Unbounded_String (Value);
+         elsif A = "--rasterize" then
+            Raster := To_Unbounded_String (Value);
+         elsif A = "--trajectories" then
+            Trajectories := To_Unbounded_String (Value);
+         elsif A = "--scale" then
+            Scale := To_Real (A, Value);
+            if Scale <= 0.0 or else Scale > 1000.0 then
+               raise Usage_Error with "--scale: expected 0 < PIXELS <= 1000";
+            end if;
+         elsif A = "--demo" then
+            Demo_Robots := To_Natural (A, Value);
+            if Demo_Robots not in 1 .. 200 then
+               raise Usage_Error with "--demo: expected 1 .. 200 robots";
+            end if;
+         elsif A = "--seconds" then
+            Demo.Seconds := To_Real (A, Value);
+            if Demo.Seconds not in 0.0 .. 36_000.0 then
+               raise Usage_Error with "--seconds: expected 0 .. 36000";
+            end if;
+         elsif A = "--goals" then
+            Demo.Goals_Per_Robot := Positive'Max (1, To_Natural (A, Value));
+         elsif A = "--seed" then
+            Demo.Seed := Interfaces.Unsigned_64 (To_Natural (A, Value));
+         elsif A = "--poi" then
+            declare
+               V  : constant String := Value;
+               C1 : constant Natural := Ada.Strings.Fixed.Index (V, ",");
+               C2 : constant Natural :=
+                 (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (V (C1 + 1 .. V'Last), ","));
+               Last_Y : constant Natural := (if C2 = 0 then V'Last else C2 - 1);
+            begin
+               if C1 = 0 then
+                  raise Usage_Error with "--poi: expected X,Y[,LABEL], found """ & V & """";
+               end if;
+               Scene.Markers.Append
+                 (Rendering.Marker'
+                    (Where => (To_Real (A, V (V'First .. C1 - 1)),
+                               To_Real (A, V (C1 + 1 .. Last_Y))),
+                     Label => To_Unbounded_String
+                       (if C2 = 0 then "" else V (C2 + 1 .. V'Last))));
+            end;
+         elsif A'Length > 0 and then A (A'First) = '-' then
+            raise Usage_Error with "unknown option " & A;
+         elsif Length (World_Name) = 0 then
+            World_Name := To_Unbounded_String (A);
+         else
+            raise Usage_Error with "more than one world: " & A;
          end if;
-         return Argument (K + 1);
-      end Value;
+      end Take;
+
+      function Parse is new Parse_Arguments (Usage, Take);
    begin
-      if Argument_Count = 0 then
-         Usage;
-         Set_Exit_Status (Failure);
+      if not Parse then
          return;
       end if;
-      while K <= Argument_Count loop
-         declare
-            A    : constant String := Argument (K);
-            Step : Positive := 2;
-            --  Options take a value; the world name does not.
-         begin
-            if A = "--help" or else A = "-h" then
-               Usage;
-               return;
-            elsif A = "--svg" then
-               SVG := To_Unbounded_String (Value);
-            elsif A = "--png" then
-               PNG := To_Unbounded_String (Value);
-            elsif A = "--csv" then
-               CSV := To_Unbounded_String (Value);
-            elsif A = "--rasterize" then
-               Raster := To_Unbounded_String (Value);
-            elsif A = "--trajectories" then
-               Trajectories := To_Unbounded_String (Value);
-            elsif A = "--scale" then
-               Scale := To_Real (A, Value);
-               if Scale <= 0.0 or else Scale > 1000.0 then
-                  raise Usage_Error with "--scale: expected 0 < PIXELS <= 1000";
-               end if;
-            elsif A = "--demo" then
-               Demo_Robots := To_Natural (A, Value);
-               if Demo_Robots not in 1 .. 200 then
-                  raise Usage_Error with "--demo: expected 1 .. 200 robots";
-               end if;
-            elsif A = "--seconds" then
-               Demo.Seconds := To_Real (A, Value);
-               if Demo.Seconds not in 0.0 .. 36_000.0 then
-                  raise Usage_Error with "--seconds: expected 0 .. 36000";
-               end if;
-            elsif A = "--goals" then
-               Demo.Goals_Per_Robot := Positive'Max (1, To_Natural (A, Value));
-            elsif A = "--seed" then
-               Demo.Seed := Interfaces.Unsigned_64 (To_Natural (A, Value));
-            elsif A = "--poi" then
-               declare
-                  V  : constant String := Value;
-                  C1 : constant Natural := Ada.Strings.Fixed.Index (V, ",");
-                  C2 : constant Natural :=
-                    (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (V (C1 + 1 .. V'Last), ","));
-                  Last_Y : constant Natural := (if C2 = 0 then V'Last else C2 - 1);
-               begin
-                  if C1 = 0 then
-                     raise Usage_Error with "--poi: expected X,Y[,LABEL], found """ & V & """";
-                  end if;
-                  Scene.Markers.Append
-                    (Rendering.Marker'
-                       (Where => (To_Real (A, V (V'First .. C1 - 1)),
-                                  To_Real (A, V (C1 + 1 .. Last_Y))),
-                        Label => To_Unbounded_String
-                          (if C2 = 0 then "" else V (C2 + 1 .. V'Last))));
-               end;
-            elsif A'Length > 0 and then A (A'First) = '-' then
-               raise Usage_Error with "unknown option " & A;
-            elsif Length (World_Name) = 0 then
-               World_Name := To_Unbounded_String (A);
-               Step := 1;
-            else
-               raise Usage_Error with "more than one world: " & A;
-            end if;
-            K := K + Step;
-         end;
-      end loop;
       if Length (World_Name) = 0 then
          raise Usage_Error with "no world given";
       end if;

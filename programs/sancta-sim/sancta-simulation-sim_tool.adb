@@ -3,7 +3,6 @@ with Ada.Containers.Vectors;
 with Ada.Exceptions;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
-with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Interfaces;
@@ -21,6 +20,7 @@ with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
 with Sancta.Standard_Components.Robot_Messages;
 with Sancta.Simulation.Map_Files;
+with Sancta.Simulation.Tool_Arguments;
 with Sancta.Simulation.Robot_Lists;
 with Sancta.Simulation.Simulators;
 with Sancta.Simulation.Worlds;
@@ -35,7 +35,7 @@ package body Sancta.Simulation.Sim_Tool is
    package Math renames Ada.Numerics.Long_Elementary_Functions;
    package Robot_Messages renames Sancta.Standard_Components.Robot_Messages;
 
-   Usage_Error : exception;
+   use Tool_Arguments;
 
    procedure Usage is
    begin
@@ -55,20 +55,6 @@ package body Sancta.Simulation.Sim_Tool is
       Put_Line ("                          cmd_vel (default 0: never)");
       Put_Line ("  --quiet                 do not print events");
    end Usage;
-
-   function To_Real (Option, Text : String) return Real is
-      Value : Real;
-   begin
-      Value := Real'Value
-        (if Ada.Strings.Fixed.Index (Text, ".") = 0 then Text & ".0" else Text);
-      if not Value'Valid then
-         raise Constraint_Error;
-      end if;
-      return Value;
-   exception
-      when Constraint_Error =>
-         raise Usage_Error with Option & ": expected a number, found """ & Text & """";
-   end To_Real;
 
    --  ROS 2 side of one robot --
 
@@ -648,94 +634,77 @@ package body Sancta.Simulation.Sim_Tool is
       Truth_Every : Real := 0.1;
       Cmd_Timeout : Real := 0.0;
       Quiet       : Boolean := False;
-      K           : Positive := 1;
 
-      function Value return String is
+      procedure Take (A : String; K : in out Positive) is
+         function Value return String is (Next_Value (K));
       begin
-         if K + 1 > Argument_Count then
-            raise Usage_Error with Argument (K) & ": missing value";
+         if A = "--robot" then
+            Robot_Lists.Parse_Line (Value, "--robot", 1, Robots);
+         elsif A = "--robots" then
+            Robot_Lists.Load (Value, Robots);
+         elsif A = "--rate" then
+            declare
+               V : constant String := Value;
+               T : constant String :=
+                 (if V'Length > 1 and then V (V'Last) = 'x'
+                  then V (V'First .. V'Last - 1) else V);
+            begin
+               Rate := To_Real ("--rate", T);
+               if Rate <= 0.0 or else Rate > 1.0E6 then
+                  raise Usage_Error with "--rate: expected a positive factor, found " & V;
+               end if;
+            end;
+         elsif A = "--as-fast-as-possible" then
+            As_Fast := True;
+         elsif A = "--seed" then
+            declare
+               V : constant String := Value;
+            begin
+               Seed := Interfaces.Unsigned_64'Value (V);
+            exception
+               when Constraint_Error =>
+                  raise Usage_Error with "--seed: expected a whole number, found """ & V & """";
+            end;
+         elsif A = "--duration" then
+            Duration_S := To_Real ("--duration", Value);
+            if Duration_S <= 0.0 then
+               raise Usage_Error with "--duration: expected a positive time";
+            end if;
+         elsif A = "--step" then
+            declare
+               V : constant String := Value;
+            begin
+               Step := To_Real ("--step", V);
+               if Step not in 0.001 .. 0.05 then
+                  raise Usage_Error with "--step: expected 0.001 .. 0.05 s, found " & V;
+               end if;
+            end;
+         elsif A = "--truth-period" then
+            Truth_Every := To_Real ("--truth-period", Value);
+            if Truth_Every <= 0.0 then
+               raise Usage_Error with "--truth-period: expected a positive time";
+            end if;
+         elsif A = "--cmd-timeout" then
+            Cmd_Timeout := To_Real ("--cmd-timeout", Value);
+            if Cmd_Timeout < 0.0 then
+               raise Usage_Error with "--cmd-timeout: expected a time >= 0";
+            end if;
+         elsif A = "--quiet" then
+            Quiet := True;
+         elsif A'Length > 0 and then A (A'First) = '-' then
+            raise Usage_Error with A & ": unknown option (see --help)";
+         elsif Length (World_Name) = 0 then
+            World_Name := To_Unbounded_String (A);
+         else
+            raise Usage_Error with A & ": only one world may be given";
          end if;
-         return Argument (K + 1);
-      end Value;
+      end Take;
+
+      function Parse is new Parse_Arguments (Usage, Take);
    begin
-      if Argument_Count = 0 then
-         Usage;
-         Set_Exit_Status (Failure);
+      if not Parse then
          return;
       end if;
-      while K <= Argument_Count loop
-         declare
-            A : constant String := Argument (K);
-         begin
-            if A = "--help" or else A = "-h" then
-               Usage;
-               return;
-            elsif A = "--robot" then
-               Robot_Lists.Parse_Line (Value, "--robot", 1, Robots);
-               K := K + 1;
-            elsif A = "--robots" then
-               Robot_Lists.Load (Value, Robots);
-               K := K + 1;
-            elsif A = "--rate" then
-               declare
-                  V : constant String := Value;
-                  T : constant String :=
-                    (if V'Length > 1 and then V (V'Last) = 'x'
-                     then V (V'First .. V'Last - 1) else V);
-               begin
-                  Rate := To_Real ("--rate", T);
-                  if Rate <= 0.0 or else Rate > 1.0E6 then
-                     raise Usage_Error with "--rate: expected a positive factor, found " & V;
-                  end if;
-               end;
-               K := K + 1;
-            elsif A = "--as-fast-as-possible" then
-               As_Fast := True;
-            elsif A = "--seed" then
-               begin
-                  Seed := Interfaces.Unsigned_64'Value (Value);
-               exception
-                  when Constraint_Error =>
-                     raise Usage_Error with "--seed: expected a whole number, found """
-                       & Value & """";
-               end;
-               K := K + 1;
-            elsif A = "--duration" then
-               Duration_S := To_Real ("--duration", Value);
-               if Duration_S <= 0.0 then
-                  raise Usage_Error with "--duration: expected a positive time";
-               end if;
-               K := K + 1;
-            elsif A = "--step" then
-               Step := To_Real ("--step", Value);
-               if Step not in 0.001 .. 0.05 then
-                  raise Usage_Error with "--step: expected 0.001 .. 0.05 s, found " & Value;
-               end if;
-               K := K + 1;
-            elsif A = "--truth-period" then
-               Truth_Every := To_Real ("--truth-period", Value);
-               if Truth_Every <= 0.0 then
-                  raise Usage_Error with "--truth-period: expected a positive time";
-               end if;
-               K := K + 1;
-            elsif A = "--cmd-timeout" then
-               Cmd_Timeout := To_Real ("--cmd-timeout", Value);
-               if Cmd_Timeout < 0.0 then
-                  raise Usage_Error with "--cmd-timeout: expected a time >= 0";
-               end if;
-               K := K + 1;
-            elsif A = "--quiet" then
-               Quiet := True;
-            elsif A'Length > 0 and then A (A'First) = '-' then
-               raise Usage_Error with A & ": unknown option (see --help)";
-            elsif Length (World_Name) = 0 then
-               World_Name := To_Unbounded_String (A);
-            else
-               raise Usage_Error with A & ": only one world may be given";
-            end if;
-         end;
-         K := K + 1;
-      end loop;
       if Length (World_Name) = 0 then
          raise Usage_Error with "no world given (a bundled name, a .yaml or a .walls file)";
       end if;

@@ -421,8 +421,8 @@ procedure Rosidl_Generate is
          when Primitive_Kind => Codec (T.Kind) & ".Put (B, C, " & Expr & ");",
          when String_Kind =>
            "ROSIDL.Static.Wire.Put_String (B, C, "
-           & (if T.String_Bound = 0 then "Ada.Strings.Unbounded" else Bounded_Text_Package (T))
-           & ".To_String (" & Expr & "));",
+           & (if T.String_Bound = 0 then Expr
+              else Bounded_Text_Package (T) & ".To_String (" & Expr & ")") & ");",
          when WString_Kind =>
            "ROSIDL.Static.Wire.Put_WString (B, C, "
            & (if T.String_Bound = 0 then "Ada.Strings.Wide_Wide_Unbounded"
@@ -478,7 +478,10 @@ procedure Rosidl_Generate is
             & ROSIDL.Type_Hashes.Hash (Def) & """;");
       Line (Spec, I + 3, "Is_Bounded : constant Standard.Boolean := "
             & (if Is_Bounded (Def) then "True" else "False") & ";");
-      Line (Spec, I + 3, "--  No unbounded string or sequence: a message needs no heap.");
+      Line (Spec, I + 3,
+            (if Is_Bounded (Def)
+             then "--  No unbounded string or sequence: a message needs no heap."
+             else "--  An unbounded string or sequence (maybe nested): a message allocates."));
       Line (Spec, I, "");
 
       --  Constants.
@@ -888,6 +891,7 @@ procedure Rosidl_Generate is
             Line (Spec, 6, "(new Standard.String'(" & P & ".Full_Name), new Standard.String'("
                   & P & ".DDS_Type_Name), new Standard.String'(" & P & ".Type_Hash), "
                   & P & ".Is_Bounded, " & P & ".Handling.Recode'Access, "
+                  & P & ".Handling.Recode_Into'Access, "
                   & P & ".Handling.Round_Trips'Access, "
                   & P & ".Handling.Encode_Default'Access)"
                   & (if I = Registered.Last_Index then "];" else ","));

@@ -85,15 +85,7 @@ package body Sancta.Standard_Components.GUI_Relay is
      (This : in out Relay; Data : String; Item : Values.Value'Class);
 
    function Node_Name (This : Relay'Class) return String is
-      Result : String := "sancta_" & This.Agent_Id & "_gui_relay";
-   begin
-      for C of Result loop
-         if C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then
-            C := '_';
-         end if;
-      end loop;
-      return Result;
-   end Node_Name;
+     (Name_Token ("sancta_" & This.Agent_Id & "_gui_relay"));
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
    begin
@@ -105,16 +97,7 @@ package body Sancta.Standard_Components.GUI_Relay is
                               return ROSIDL.Typesupport.Message_Support is
      (ROSIDL.Typesupport.Get_Message_Support (Package_Name, Name));
 
-   function Topic_Part (Id : String) return String is
-      Result : String := Id;
-   begin
-      for C of Result loop
-         if C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then
-            C := '_';
-         end if;
-      end loop;
-      return Result;
-   end Topic_Part;
+   function Topic_Part (Id : String) return String renames Name_Token;
    --  An agent id as a topic name token.
 
    --  Standard visualization messages (RViz, Foxglove) -------------------------

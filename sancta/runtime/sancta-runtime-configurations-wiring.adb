@@ -97,6 +97,24 @@ package body Sancta.Runtime.Configurations.Wiring is
       end loop;
    end Propagate_Types;
 
+   procedure For_Each_Binding
+     (A         : Agent;
+      Direction : Components.Port_Direction;
+      Process   : not null access procedure (I : Instance; B : Binding; Key : String)) is
+      --  Process for each binding of that direction of A's enabled
+      --  instances, in order, with the binding's database key.
+   begin
+      for I of A.Instances loop
+         if I.Enabled then
+            for B of I.Bindings loop
+               if B.Direction = Direction then
+                  Process (I, B, To_String (B.Key));
+               end if;
+            end loop;
+         end if;
+      end loop;
+   end For_Each_Binding;
+
    procedure Wire (Result : in out Configuration; A : Agent) is
       type Provider is record
          Instance_Name : Unbounded_String;
@@ -116,60 +134,46 @@ package body Sancta.Runtime.Configurations.Wiring is
          return Result;
       end Provided_Keys;
 
+      procedure Provide (I : Instance; B : Binding; Key : String) is
+      begin
+         if Providers.Contains (Key) then
+            Report (Result, Error, B.Where,
+                    "'" & Key & "' is provided twice in agent '" & To_String (A.Id)
+                    & "': by " & To_String (I.Name) & " and by "
+                    & To_String (Providers (Key).Instance_Name) & " (at "
+                    & Image (Providers (Key).Where) & ")");
+         else
+            Providers.Insert (Key, (I.Name, B.Type_Name, B.Where, False));
+         end if;
+      end Provide;
+
+      procedure Require (I : Instance; B : Binding; Key : String) is
+      begin
+         if not Providers.Contains (Key) then
+            Report (Result, (if B.Optional then Warning else Error), B.Where,
+                    (if B.Optional then "optional input '" else "input '")
+                    & To_String (B.Data) & "' of " & To_String (I.Name)
+                    & " requires '" & Key & "', which no enabled component of agent '"
+                    & To_String (A.Id) & "' provides"
+                    & Suggest (Key, Provided_Keys));
+         else
+            Providers (Key).Used := True;
+            if not Values.Compatible (To_String (Providers (Key).Type_Name),
+                                      To_String (B.Type_Name))
+            then
+               Report (Result, Error, B.Where,
+                       "type mismatch on '" & Key & "': " & To_String (I.Name)
+                       & " requires " & To_String (B.Type_Name) & " but "
+                       & To_String (Providers (Key).Instance_Name) & " provides "
+                       & To_String (Providers (Key).Type_Name) & " (at "
+                       & Image (Providers (Key).Where) & ")");
+            end if;
+         end if;
+      end Require;
+
    begin
-      for I of A.Instances loop
-         if I.Enabled then
-            for B of I.Bindings loop
-               if B.Direction = Components.Output then
-                  declare
-                     Key : constant String := To_String (B.Key);
-                  begin
-                     if Providers.Contains (Key) then
-                        Report (Result, Error, B.Where,
-                                "'" & Key & "' is provided twice in agent '" & To_String (A.Id)
-                                & "': by " & To_String (I.Name) & " and by "
-                                & To_String (Providers (Key).Instance_Name) & " (at "
-                                & Image (Providers (Key).Where) & ")");
-                     else
-                        Providers.Insert (Key, (I.Name, B.Type_Name, B.Where, False));
-                     end if;
-                  end;
-               end if;
-            end loop;
-         end if;
-      end loop;
-      for I of A.Instances loop
-         if I.Enabled then
-            for B of I.Bindings loop
-               if B.Direction = Components.Input then
-                  declare
-                     Key : constant String := To_String (B.Key);
-                  begin
-                     if not Providers.Contains (Key) then
-                        Report (Result, (if B.Optional then Warning else Error), B.Where,
-                                (if B.Optional then "optional input '" else "input '")
-                                & To_String (B.Data) & "' of " & To_String (I.Name)
-                                & " requires '" & Key & "', which no enabled component of agent '"
-                                & To_String (A.Id) & "' provides"
-                                & Suggest (Key, Provided_Keys));
-                     else
-                        Providers (Key).Used := True;
-                        if not Values.Compatible (To_String (Providers (Key).Type_Name),
-                                                  To_String (B.Type_Name))
-                        then
-                           Report (Result, Error, B.Where,
-                                   "type mismatch on '" & Key & "': " & To_String (I.Name)
-                                   & " requires " & To_String (B.Type_Name) & " but "
-                                   & To_String (Providers (Key).Instance_Name) & " provides "
-                                   & To_String (Providers (Key).Type_Name) & " (at "
-                                   & Image (Providers (Key).Where) & ")");
-                        end if;
-                     end if;
-                  end;
-               end if;
-            end loop;
-         end if;
-      end loop;
+      For_Each_Binding (A, Components.Output, Provide'Access);
+      For_Each_Binding (A, Components.Input, Require'Access);
       --  Forwarding loops: copy, merge and switch pass each input on at
       --  once, so a cycle of them would circulate a value forever.
       declare

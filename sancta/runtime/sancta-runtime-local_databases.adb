@@ -111,14 +111,22 @@ package body Sancta.Runtime.Local_Databases is
          return (if Entry_Maps.Has_Element (Position) then Map (Position).Revision else 0);
       end Revision;
 
-      procedure Store_Item (Key : String; Item : Value'Class;
-                            Observers : out Listener_Vectors.Vector) is
-         Position : Entry_Maps.Cursor := Map.Find (Key);
+      procedure Find_Or_Add (Key : String; Position : out Entry_Maps.Cursor) is
+         --  Key's entry; a new one (revision 0, no item, no observer) if
+         --  the key is not in the map yet.
          Inserted : Boolean;
       begin
+         Position := Map.Find (Key);
          if not Entry_Maps.Has_Element (Position) then
             Map.Insert (Key, (others => <>), Position, Inserted);
          end if;
+      end Find_Or_Add;
+
+      procedure Store_Item (Key : String; Item : Value'Class;
+                            Observers : out Listener_Vectors.Vector) is
+         Position : Entry_Maps.Cursor;
+      begin
+         Find_Or_Add (Key, Position);
          declare
             E : Entry_Record renames Map (Position);
          begin
@@ -151,13 +159,10 @@ package body Sancta.Runtime.Local_Databases is
       end Put_If;
 
       procedure Listen (Key : String; Observer : Listener_Access) is
-         Position : Entry_Maps.Cursor := Map.Find (Key);
-         Inserted : Boolean;
+         Position : Entry_Maps.Cursor;
       begin
-         if not Entry_Maps.Has_Element (Position) then
-            --  A key with listeners but no value yet: revision 0, empty item.
-            Map.Insert (Key, (others => <>), Position, Inserted);
-         end if;
+         --  A key with listeners but no value yet: revision 0, empty item.
+         Find_Or_Add (Key, Position);
          if not Map (Position).Observers.Contains (Observer) then
             Map (Position).Observers.Append (Observer);
          end if;

@@ -283,17 +283,38 @@ package body Sancta.Team.Networks is
          What & " of" & Text'Length'Image & " characters exceeds" & Max_Value_Length'Image
       else What & " " & Quoted (Text) & " has a non-printable character");
 
-   procedure On_Envelope
+   generic
+      with procedure Handle
+        (Net  : Network_Access;
+         Msg  : in out ROSIDL.Dynamic.Message;
+         Info : ROSIDL.Message_Info);
+   procedure Receive
+     (Node : in out RCL.Nodes.Node'Class;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info);
+   --  A subscription callback of the team topics: Handle for Node's
+   --  network unless there is none or it is cut off (Isolated) or stopping.
+
+   procedure Receive
      (Node : in out RCL.Nodes.Node'Class;
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info)
    is
-      pragma Unreferenced (Info);
       Net : constant Network_Access := Registry.Find (Node.Name);
    begin
-      if Net = null or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping then
-         return;
+      if Net /= null and then not Net.Status.Get.Isolated and then not Net.Status.Get.Stopping
+      then
+         Handle (Net, Msg, Info);
       end if;
+   end Receive;
+
+   procedure Handle_Envelope
+     (Net  : Network_Access;
+      Msg  : in out ROSIDL.Dynamic.Message;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+   begin
       declare
          Dest    : constant String := Msg ("destination").Get_String;
          Channel : constant String := Msg ("channel").Get_String;
@@ -331,18 +352,16 @@ package body Sancta.Team.Networks is
             end if;
          end loop;
       end;
-   end On_Envelope;
+   end Handle_Envelope;
 
-   procedure On_Presence
-     (Node : in out RCL.Nodes.Node'Class;
+   procedure On_Envelope is new Receive (Handle_Envelope);
+
+   procedure Handle_Presence
+     (Net  : Network_Access;
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info)
    is
-      Net : constant Network_Access := Registry.Find (Node.Name);
    begin
-      if Net = null or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping then
-         return;
-      end if;
       declare
          Lease_Ref : constant ROSIDL.Dynamic.Float64_Ref := Msg ("lease").As_Float64;
          --  Tested through the reference: copying a NaN raises under
@@ -360,19 +379,18 @@ package body Sancta.Team.Networks is
                    Image (Info.Publisher_GID));
          end if;
       end;
-   end On_Presence;
+   end Handle_Presence;
 
-   procedure On_State
-     (Node : in out RCL.Nodes.Node'Class;
+   procedure On_Presence is new Receive (Handle_Presence);
+
+   procedure Handle_State
+     (Net  : Network_Access;
       Msg  : in out ROSIDL.Dynamic.Message;
       Info : ROSIDL.Message_Info)
    is
       pragma Unreferenced (Info);
-      Net : constant Network_Access := Registry.Find (Node.Name);
    begin
-      if Net = null or else Net.States = null
-        or else Net.Status.Get.Isolated or else Net.Status.Get.Stopping
-      then
+      if Net.States = null then
          return;
       end if;
       declare
@@ -412,7 +430,9 @@ package body Sancta.Team.Networks is
    exception
       when E : others =>
          Log_Failure (Net.all, "state consumer", E);
-   end On_State;
+   end Handle_State;
+
+   procedure On_State is new Receive (Handle_State);
 
    --  The network ---------------------------------------------------------------
 
@@ -499,6 +519,22 @@ package body Sancta.Team.Networks is
       This.Status.Set_Stopping;
    end Stop;
 
+   procedure While_Sending
+     (This : in out Network'Class; Action : not null access procedure) is
+      --  Action under This.Send_Lock (one publication at a time); the lock
+      --  is released when Action raises.
+   begin
+      This.Send_Lock.Seize;
+      begin
+         Action.all;
+      exception
+         when others =>
+            This.Send_Lock.Release;
+            raise;
+      end;
+      This.Send_Lock.Release;
+   end While_Sending;
+
    procedure Send
      (This    : in out Network;
       To      : Destination;
@@ -506,6 +542,15 @@ package body Sancta.Team.Networks is
       Payload : String)
    is
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("Envelope"));
+
+      procedure Number_And_Publish is
+      begin
+         This.Counts.Bump_Sequence;
+         Msg ("sequence").As_UInt64.Element.all :=
+           ROSIDL.UInt64 (This.Counts.Next_Sequence - 1);
+         This.Messages.Publish (Msg);
+         This.Counts.Add_Sent;
+      end Number_And_Publish;
    begin
       if This.Status.Get.Isolated or else This.Status.Get.Stopping then
          return;
@@ -514,19 +559,7 @@ package body Sancta.Team.Networks is
       Msg ("destination").Set_String (To_String (To.Text));
       Msg ("channel").Set_String (Channel);
       Msg ("payload").Set_String (Payload);
-      This.Send_Lock.Seize;
-      begin
-         This.Counts.Bump_Sequence;
-         Msg ("sequence").As_UInt64.Element.all :=
-           ROSIDL.UInt64 (This.Counts.Next_Sequence - 1);
-         This.Messages.Publish (Msg);
-         This.Counts.Add_Sent;
-      exception
-         when others =>
-            This.Send_Lock.Release;
-            raise;
-      end;
-      This.Send_Lock.Release;
+      While_Sending (This, Number_And_Publish'Access);
    end Send;
 
    procedure Publish_State
@@ -538,16 +571,8 @@ package body Sancta.Team.Networks is
       Writer     : String)
    is
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("DbEntry"));
-   begin
-      if This.Status.Get.Isolated or else This.Status.Get.Stopping then
-         return;
-      end if;
-      Msg ("key").Set_String (Key);
-      Msg ("value_type").Set_String (Value_Type);
-      Msg ("value").Set_String (Value);
-      Msg ("revision").As_UInt64.Element.all := ROSIDL.UInt64 (Revision);
-      Msg ("writer").Set_String (Writer);
-      This.Send_Lock.Seize;
+
+      procedure Publish_Entry is
       begin
          if not Is_Task_Key (Key) then
             This.State.Publish (Msg);
@@ -571,16 +596,26 @@ package body Sancta.Team.Networks is
                This.Tasks.Publish (Msg);
             end if;
          end if;
-      exception
-         when others =>
-            This.Send_Lock.Release;
-            raise;
-      end;
-      This.Send_Lock.Release;
+      end Publish_Entry;
+   begin
+      if This.Status.Get.Isolated or else This.Status.Get.Stopping then
+         return;
+      end if;
+      Msg ("key").Set_String (Key);
+      Msg ("value_type").Set_String (Value_Type);
+      Msg ("value").Set_String (Value);
+      Msg ("revision").As_UInt64.Element.all := ROSIDL.UInt64 (Revision);
+      Msg ("writer").Set_String (Writer);
+      While_Sending (This, Publish_Entry'Access);
    end Publish_State;
 
    procedure Beat (This : in out Network'Class) is
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("Presence"));
+
+      procedure Publish_Presence is
+      begin
+         This.Presence.Publish (Msg);
+      end Publish_Presence;
    begin
       Heard (This, To_String (This.Id), This.Lease, "");
       if This.Status.Get.Isolated then
@@ -589,15 +624,7 @@ package body Sancta.Team.Networks is
       Msg ("node").Set_String (To_String (This.Id));
       Msg ("groups").Set_String (To_String (This.Groups));
       Msg ("lease").As_Float64.Element.all := ROSIDL.Float64 (This.Lease);
-      This.Send_Lock.Seize;
-      begin
-         This.Presence.Publish (Msg);
-      exception
-         when others =>
-            This.Send_Lock.Release;
-            raise;
-      end;
-      This.Send_Lock.Release;
+      While_Sending (This, Publish_Presence'Access);
    end Beat;
 
    procedure Isolate (This : in out Network; Cut : Boolean) is

@@ -192,31 +192,36 @@ package body Sancta.Team.Plans is
       return Result;
    end Tour_Cost;
 
+   function Combined_Tour_Costs
+     (S       : Snapshot;
+      P       : Plan;
+      Leg     : access function (From, To : Point) return Long_Float;
+      Combine : not null access function (Left, Right : Long_Float) return Long_Float)
+      return Long_Float
+   is
+      --  The robots' tour costs folded with Combine from 0.0, robot by robot.
+      Result : Long_Float := 0.0;
+   begin
+      for R in 1 .. Natural (P.Tours.Length) loop
+         Result := Combine (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg));
+      end loop;
+      return Result;
+   end Combined_Tour_Costs;
+
+   function Larger (Left, Right : Long_Float) return Long_Float is (Long_Float'Max (Left, Right));
+   function Sum (Left, Right : Long_Float) return Long_Float is (Left + Right);
+
    function Makespan
      (S   : Snapshot;
       P   : Plan;
       Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
-   is
-      Result : Long_Float := 0.0;
-   begin
-      for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Long_Float'Max (Result, Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg));
-      end loop;
-      return Result;
-   end Makespan;
+   is (Combined_Tour_Costs (S, P, Leg, Larger'Access));
 
    function Total
      (S   : Snapshot;
       P   : Plan;
       Leg : access function (From, To : Point) return Long_Float := null) return Long_Float
-   is
-      Result : Long_Float := 0.0;
-   begin
-      for R in 1 .. Natural (P.Tours.Length) loop
-         Result := Result + Tour_Cost (S, S.Robots (R).Where, P.Tours (R), Leg);
-      end loop;
-      return Result;
-   end Total;
+   is (Combined_Tour_Costs (S, P, Leg, Sum'Access));
 
    function Evaluate
      (S   : Snapshot;

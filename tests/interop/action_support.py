@@ -4,18 +4,20 @@ cancel_goal and get_result services (rmw_cyclonedds conventions, see
 service_support) and the feedback and status topics, with goal UUIDs.
 Used against the Ada action server and client both ways."""
 import os
-import threading
 import time
 from dataclasses import dataclass, field
 
 import pubsub_support as ps
-from service_support import new_id, service_qos
+from service_support import ServingThread, new_id, service_qos
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 from cyclonedds.idl.types import array, int8, int32, int64, sequence, uint8, uint32, uint64
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
+
+FIB = [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55, 89, 144, 233, 377, 610, 987]
+# The Fibonacci action's sequence: a goal of order N ends with FIB[:N + 1].
 
 STATUS = {0: "UNKNOWN", 1: "ACCEPTED", 2: "EXECUTING", 3: "CANCELING", 4: "SUCCEEDED",
           5: "CANCELED", 6: "ABORTED"}
@@ -209,7 +211,7 @@ class _Goal:
     waiting: list = field(default_factory=list)
 
 
-class ActionServer:
+class ActionServer(ServingThread):
     """rclpy's ActionServer protocol for Fibonacci `name`: accepts orders >= 0,
     one number per `step` seconds (feedback), accepts every cancel request.
     Runs in a thread of its own until stop()."""
@@ -222,13 +224,7 @@ class ActionServer:
         self.step = step
         self.goals = {}
         self.canceled = []
-        self._stop = False
-        self._thread = threading.Thread(target=self._run, daemon=True)
-        self._thread.start()
-
-    def stop(self):
-        self._stop = True
-        self._thread.join(5)
+        self._start_serving()
 
     def _publish_status(self):
         self.st.write(GoalStatusArray(status_list=[
@@ -299,3 +295,34 @@ class ActionServer:
                         gr_w.write(self._result(g, guid, seq))
                     g.waiting.clear()
             time.sleep(0.002)
+
+
+def check_goal_result(client, order):
+    """Sends the Fibonacci goal `order` through `client` (an ActionClient),
+    checks that it succeeds with FIB[:order + 1], then returns the goal's
+    hex id and the feedback received for it."""
+    hex_id, gid, resp = client.send_goal(order)
+    assert resp.accepted
+    res = client.get_result(gid)
+    assert res is not None, "no result"
+    assert STATUS[res.status] == "SUCCEEDED"
+    assert list(res.sequence) == FIB[:order + 1]
+    time.sleep(0.3)
+    client.poll()
+    return hex_id, client.feedbacks.get(hex_id, [])
+
+
+def check_cancel(client, after):
+    """Sends a long goal (order 60), cancels it `after` seconds later and
+    checks the cancel response and the canceled result (a prefix of the
+    sequence); returns the goal's id."""
+    hex_id, gid, resp = client.send_goal(60)
+    assert resp.accepted
+    time.sleep(after)
+    c = client.cancel(gid)
+    assert c is not None and c.return_code == 0
+    assert [bytes(g.goal_id.uuid).hex() for g in c.goals_canceling] == [hex_id]
+    res = client.get_result(gid)
+    assert res is not None and STATUS[res.status] == "CANCELED"
+    assert 2 <= len(res.sequence) < 61 and list(res.sequence) == FIB[:len(res.sequence)]
+    return gid

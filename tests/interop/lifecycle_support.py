@@ -4,12 +4,11 @@
 rclpy/rclcpp do on the wire: a client of a managed node, and a minimal
 managed node (server) for the rclada lifecycle verbs."""
 import os
-import threading
 import time
 from dataclasses import dataclass
 
 import pubsub_support as ps
-from service_support import new_id, service_qos
+from service_support import ServingThread, new_id, service_qos
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 from cyclonedds.idl.types import int64, sequence, uint8, uint64
@@ -153,7 +152,7 @@ class LifecycleClient:
                 for e in self.events.take(N=64) if isinstance(e, TransitionEvent)]
 
 
-class LifecycleServer:
+class LifecycleServer(ServingThread):
     """A minimal managed node `node` (no callbacks: every transition succeeds),
     serving in a thread of its own until stop()."""
 
@@ -177,13 +176,7 @@ class LifecycleServer:
                 DataReader(dp, Topic(dp, f"rq{node}/{srv}Request", req), qos=qos),
                 DataWriter(dp, Topic(dp, f"rr{node}/{srv}Reply", resp), qos=qos))
         self.state = "unconfigured"
-        self._stop = False
-        self._thread = threading.Thread(target=self._run, daemon=True)
-        self._thread.start()
-
-    def stop(self):
-        self._stop = True
-        self._thread.join(5)
+        self._start_serving()
 
     def _available(self):
         return [TransitionDescription(

@@ -101,3 +101,15 @@ def finish(proc, timeout=20.0):
         out, _ = proc.communicate()
         raise AssertionError(f"{proc.args} did not finish; output:\n{out}")
     return out
+
+
+def stop(proc, grace=3.0):
+    """Ends a long-running program (SIGTERM, then SIGKILL after `grace`
+    seconds) and returns its output."""
+    proc.terminate()
+    try:
+        out, _ = proc.communicate(timeout=grace)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    return out

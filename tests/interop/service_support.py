@@ -6,7 +6,7 @@ import os
 import time
 from dataclasses import dataclass
 
-import pubsub_support as ps  # noqa: F401  (sets the loopback environment)
+import pubsub_support as ps  # (also sets the loopback environment)
 from cyclonedds.core import Policy, Qos
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
@@ -97,14 +97,64 @@ class Server:
             self.answered += 1
 
 
-def stop(proc, grace=3.0):
-    """Ends a long-running Ada program (SIGTERM, then SIGKILL after `grace`
-    seconds) and returns its output."""
-    import subprocess
-    proc.terminate()
+stop = ps.stop  # SIGTERM, then SIGKILL; returns the output
+
+
+class ServingThread:
+    """A Python peer serving in a daemon thread of its own: a subclass calls
+    _start_serving() at the end of __init__; its _run() loops while
+    self._stop is false; stop() ends it."""
+
+    def _start_serving(self):
+        import threading
+        self._stop = False
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def stop(self):
+        self._stop = True
+        self._thread.join(5)
+
+
+def check_python_client_against(program):
+    """Starts the Ada service `program` (the example_interfaces AddTwoInts
+    service "add_two_ints"), calls it from a Python client following
+    rmw_cyclonedds's conventions and checks each reply (sum, echoed request
+    header) and the server's log line."""
+    ada = ps.start(program)
     try:
-        out, _ = proc.communicate(timeout=grace)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        out, _ = proc.communicate()
-    return out
+        dp = ps.participant()
+        cl = Client(dp)
+        assert cl.wait_for_service(), f"the {program} service endpoints were not discovered"
+        time.sleep(0.3)  # let the Ada side match our reply reader
+        for a, b in [(2, 3), (-7, 100), (2**40, 2**40)]:
+            r = cl.call(a, b)
+            assert r is not None, f"no reply from {program}"
+            assert r.sum == a + b
+            assert r.guid == cl.guid and r.seq == cl.seq  # header echoed
+    finally:
+        out = stop(ada)
+    assert "Incoming request a: 2 b: 3" in out, out
+
+
+def run_client_against(serve_some, program, *args):
+    """Runs the Ada client `program` with `args` while a thread calls
+    `serve_some()` (answers whatever requests have come) every millisecond;
+    returns the finished process and its output."""
+    import threading
+    stop_serving = threading.Event()
+
+    def serve():
+        while not stop_serving.is_set():
+            serve_some()
+            time.sleep(0.001)
+
+    t = threading.Thread(target=serve)
+    t.start()
+    try:
+        ada = ps.start(program, *args)
+        out = ps.finish(ada)
+    finally:
+        stop_serving.set()
+        t.join()
+    return ada, out

@@ -4,14 +4,12 @@ implementing rclpy's action client protocol, and the Ada action client
 (rclada action send_goal, RCL.Actions.Clients) against a Python peer
 implementing rclpy's action server protocol; the rclada action verbs."""
 import subprocess
-import time
 
 import pytest
 
 import pubsub_support as ps
-from action_support import ActionClient, ActionServer, STATUS
-
-FIB = [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55, 89, 144, 233, 377, 610, 987]
+from action_support import (FIB, STATUS, ActionClient, ActionServer, check_cancel,
+                            check_goal_result)
 
 
 def rclada(*args, timeout=30):
@@ -40,15 +38,7 @@ def client(ada_server):
 
 
 def test_goal_feedback_result(client):
-    hex_id, gid, resp = client.send_goal(6)
-    assert resp.accepted
-    res = client.get_result(gid)
-    assert res is not None, "no result"
-    assert STATUS[res.status] == "SUCCEEDED"
-    assert list(res.sequence) == FIB[:7]
-    time.sleep(0.3)
-    client.poll()
-    feedback = client.feedbacks.get(hex_id, [])
+    hex_id, feedback = check_goal_result(client, 6)
     assert len(feedback) >= 3 and feedback[-1] == FIB[:7], feedback
     assert any((hex_id, 4) in s for s in client.statuses), client.statuses[-3:]
 
@@ -72,15 +62,7 @@ def test_rejected_goal(client):
 
 
 def test_cancel(client):
-    hex_id, gid, resp = client.send_goal(60)
-    assert resp.accepted
-    time.sleep(0.4)
-    c = client.cancel(gid)
-    assert c is not None and c.return_code == 0
-    assert [bytes(g.goal_id.uuid).hex() for g in c.goals_canceling] == [hex_id]
-    res = client.get_result(gid)
-    assert res is not None and STATUS[res.status] == "CANCELED"
-    assert 2 <= len(res.sequence) < 61 and list(res.sequence) == FIB[:len(res.sequence)]
+    gid = check_cancel(client, after=0.4)
     again = client.cancel(gid)
     assert again.return_code == 3  # ERROR_GOAL_TERMINATED
     unknown = client.cancel(type(gid)(uuid=[7] * 16))

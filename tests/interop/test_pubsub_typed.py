@@ -93,6 +93,29 @@ def test_ada_to_python(name):
         assert sample == ada_values(name, n), (sample, ada_values(name, n))
 
 
+def check_echoes(ada, wr, rd, message, who, count=3):
+    """Writes message(1), message(2), ... on `wr` every 0.1 s until the Ada
+    echo peer `ada` exits (at most 15 s), taking what it echoes on `rd`; at
+    least `count` echoes must come back, each one of the messages sent."""
+    sent = []
+    echoed = []
+    deadline = time.monotonic() + 15
+    n = 0
+    while ada.poll() is None and time.monotonic() < deadline:
+        n += 1
+        msg = message(n)
+        wr.write(msg)
+        sent.append(msg)
+        time.sleep(0.1)
+        echoed.extend(ps.take(rd))
+    out = ps.finish(ada)
+    if len(echoed) < count:
+        echoed.extend(ps.take_until(rd, count - len(echoed), timeout=2))
+    assert len(echoed) >= count, f"no echo from {who}; it said:\n{out}"
+    for e in echoed:
+        assert e in sent, (e, sent)
+
+
 @pytest.mark.parametrize("name", list(TYPES))
 def test_python_to_ada_echo(name):
     pkg, cls, best = TYPES[name]
@@ -103,22 +126,7 @@ def test_python_to_ada_echo(name):
     ada = ps.start("pubsub_peer", "echo", pkg, name, topic, topic + "_echo", 3,
                    *(["best_effort"] if best else []))
     assert ps.wait_matched(wr) and ps.wait_matched(rd), "Ada endpoints not discovered"
-    sent = []
-    echoed = []
-    deadline = time.monotonic() + 15
-    n = 0
-    while ada.poll() is None and time.monotonic() < deadline:
-        n += 1
-        msg = python_values(name, n)
-        wr.write(msg)
-        sent.append(msg)
-        time.sleep(0.1)
-        echoed.extend(ps.take(rd))
-    out = ps.finish(ada)
-    echoed.extend(ps.take_until(rd, 3 - len(echoed), timeout=2) if len(echoed) < 3 else [])
-    assert len(echoed) >= 3, f"no echo from Ada; Ada said:\n{out}"
-    for e in echoed:
-        assert e in sent, (e, sent)
+    check_echoes(ada, wr, rd, lambda n: python_values(name, n), "Ada")
 
 
 def test_qos_mismatch_no_delivery():
@@ -181,22 +189,11 @@ def test_typed_python_to_ada_echo(name):
     rd = ps.reader(dp, "rt" + topic + "_echo", TYPED[name])
     ada = ps.start("typed_peer", "echo", name, topic, topic + "_echo", 3)
     assert ps.wait_matched(wr) and ps.wait_matched(rd), "typed Ada endpoints not discovered"
-    sent = []
-    echoed = []
-    deadline = time.monotonic() + 15
-    n = 0
-    while ada.poll() is None and time.monotonic() < deadline:
-        n += 1
-        msg = (python_values(name, n) if name != "OccupancyGrid"
-               else OccupancyGrid_(header=Header_(Time_(n, 1), "map"),
-                                   info=MapMetaData_(width=3, height=2),
-                                   data=[n, -n, 0, 127, -128, 5]))
-        wr.write(msg)
-        sent.append(msg)
-        time.sleep(0.1)
-        echoed.extend(ps.take(rd))
-    out = ps.finish(ada)
-    echoed.extend(ps.take_until(rd, 3 - len(echoed), timeout=2) if len(echoed) < 3 else [])
-    assert len(echoed) >= 3, f"no echo from the typed Ada peer; it said:\n{out}"
-    for e in echoed:
-        assert e in sent, (e, sent)
+
+    def message(n):
+        return (python_values(name, n) if name != "OccupancyGrid"
+                else OccupancyGrid_(header=Header_(Time_(n, 1), "map"),
+                                    info=MapMetaData_(width=3, height=2),
+                                    data=[n, -n, 0, 127, -128, 5]))
+
+    check_echoes(ada, wr, rd, message, "the typed Ada peer")

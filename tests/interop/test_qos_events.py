@@ -5,7 +5,6 @@ liveliness changed (a publisher appearing and going), liveliness lost (a
 manual-by-topic publisher that stops asserting), matched, message lost (a
 sample stamped earlier than the last one, to a subscription ordered by
 source timestamp: the only way Cyclone DDS 0.10 loses a sample it received)."""
-import subprocess
 import time
 
 import pubsub_support as ps
@@ -17,17 +16,11 @@ from ros_types import String_
 
 
 def start(*args):
-    return subprocess.Popen([str(ps.BIN / "qos_events_demo"), *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True)
+    return ps.start("qos_events_demo", *args)
 
 
 def stop(proc):
-    proc.terminate()
-    try:
-        return proc.communicate(timeout=5)[0]
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        return proc.communicate()[0]
+    return ps.stop(proc, grace=5)
 
 
 def qos(reliable=True, deadline=None, lease=None, by_source=False):

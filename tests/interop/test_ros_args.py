@@ -20,25 +20,15 @@ def rclada(*args, timeout=30):
                           timeout=timeout)
 
 
-def start(*args):
-    return subprocess.Popen([str(ps.BIN / args[0]), *args[1:]], stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True)
-
-
 def stop(proc):
-    proc.terminate()
-    try:
-        return proc.communicate(timeout=5)[0]
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        return proc.communicate()[0]
+    return ps.stop(proc, grace=5)
 
 
 def test_remapping_seen_from_a_peer():
     dp = ps.participant()
     news = ps.reader(dp, "rt/robot1/news", String_)
     parts = BuiltinDataReader(dp, BuiltinTopicDcpsParticipant)
-    proc = start("talker", "--ros-args", "-r", "/chatter:=news", "-r", "__ns:=/robot1",
+    proc = ps.start("talker", "--ros-args", "-r", "/chatter:=news", "-r", "__ns:=/robot1",
                  "-r", "__node:=speaker", "-e", "/robot1")
     try:
         deadline = time.monotonic() + 10
@@ -63,7 +53,7 @@ def test_node_specific_rules():
     dp = ps.participant()
     mine = ps.reader(dp, "rt/mine", String_)
     other = ps.reader(dp, "rt/not_mine", String_)
-    proc = start("talker", "--ros-args", "-r", "someone_else:/chatter:=/not_mine",
+    proc = ps.start("talker", "--ros-args", "-r", "someone_else:/chatter:=/not_mine",
                  "-r", "talker:/chatter:=/mine")
     try:
         deadline = time.monotonic() + 10
@@ -93,10 +83,10 @@ def test_bad_ros_args_are_rejected(args, named):
 
 
 def test_log_level():
-    proc = start("parameters_demo", "--ros-args", "--log-level", "warn")
+    proc = ps.start("parameters_demo", "--ros-args", "--log-level", "warn")
     time.sleep(2.0)
     assert "parameters ready" not in stop(proc)
-    proc = start("parameters_demo", "--ros-args", "--log-level", "parameters_demo:=error",
+    proc = ps.start("parameters_demo", "--ros-args", "--log-level", "parameters_demo:=error",
                  "--log-level", "info")
     time.sleep(2.0)
     assert "parameters ready" not in stop(proc), "the logger's own level must win"
@@ -105,7 +95,7 @@ def test_log_level():
 def test_timers_follow_sim_time():
     dp = ps.participant()
     clock = ps.writer(dp, "rt/clock", Clock_, reliable=False, depth=1)
-    proc = start("timer_demo", "1.0", "--ros-args", "-p", "use_sim_time:=true")
+    proc = ps.start("timer_demo", "1.0", "--ros-args", "-p", "use_sim_time:=true")
     try:
         assert ps.wait_matched(clock, 10)
         time.sleep(0.5)

@@ -1,6 +1,5 @@
 """Services and clients: the Ada examples `server` and `client` against a
 Python cyclonedds peer that follows rmw_cyclonedds's conventions."""
-import threading
 import time
 
 import pubsub_support as ps
@@ -8,40 +7,12 @@ import service_support as ss
 
 
 def test_python_client_calls_ada_service():
-    ada = ps.start("server")
-    try:
-        dp = ps.participant()
-        cl = ss.Client(dp)
-        assert cl.wait_for_service(), "the Ada service endpoints were not discovered"
-        time.sleep(0.3)  # let the Ada side match our reply reader
-        for a, b in [(2, 3), (-7, 100), (2**40, 2**40)]:
-            r = cl.call(a, b)
-            assert r is not None, "no reply from the Ada server"
-            assert r.sum == a + b
-            assert r.guid == cl.guid and r.seq == cl.seq  # header echoed
-    finally:
-        out = ss.stop(ada)
-    assert "Incoming request a: 2 b: 3" in out, out
+    ss.check_python_client_against("server")
 
 
 def test_ada_client_calls_python_service():
-    dp = ps.participant()
-    srv = ss.Server(dp)
-    stop = threading.Event()
-
-    def serve():
-        while not stop.is_set():
-            srv.serve_some()
-            time.sleep(0.001)
-
-    t = threading.Thread(target=serve)
-    t.start()
-    try:
-        ada = ps.start("client", 20, 22, 10)
-        out = ps.finish(ada)
-    finally:
-        stop.set()
-        t.join()
+    srv = ss.Server(ps.participant())
+    ada, out = ss.run_client_against(srv.serve_some, "client", 20, 22, 10)
     assert ada.returncode == 0, out
     assert "Got answer: 42" in out, out
     assert srv.answered == 1

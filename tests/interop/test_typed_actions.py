@@ -5,14 +5,12 @@ Python peer implementing rclpy's action client, and the typed Ada client
 (typed_fibonacci client) against a Python peer implementing rclpy's action
 server."""
 import subprocess
-import time
 
 import pytest
 
 import pubsub_support as ps
-from action_support import ActionClient, ActionServer, STATUS
-
-FIB = [0, 1, 1, 2, 3, 5, 8, 13, 21, 34, 55, 89, 144, 233, 377, 610, 987]
+from action_support import (FIB, STATUS, ActionClient, ActionServer, check_cancel,
+                            check_goal_result)
 
 
 @pytest.fixture(scope="module")
@@ -34,15 +32,7 @@ def client():
 
 
 def test_typed_server_goal_feedback_result(client):
-    hex_id, gid, resp = client.send_goal(7)
-    assert resp.accepted
-    res = client.get_result(gid)
-    assert res is not None, "no result"
-    assert STATUS[res.status] == "SUCCEEDED"
-    assert list(res.sequence) == FIB[:8]
-    time.sleep(0.3)
-    client.poll()
-    feedback = client.feedbacks.get(hex_id, [])
+    _, feedback = check_goal_result(client, 7)
     # One number more per step: [0, 1, 1], [0, 1, 1, 2], ... up to the result.
     assert feedback and feedback[0] == FIB[:3] and feedback[-1] == FIB[:8], feedback
 
@@ -59,15 +49,7 @@ def test_typed_server_two_goals_and_rejection(client):
 
 
 def test_typed_server_cancel(client):
-    hex_id, gid, resp = client.send_goal(60)
-    assert resp.accepted
-    time.sleep(0.3)
-    c = client.cancel(gid)
-    assert c is not None and c.return_code == 0
-    assert [bytes(g.goal_id.uuid).hex() for g in c.goals_canceling] == [hex_id]
-    res = client.get_result(gid)
-    assert res is not None and STATUS[res.status] == "CANCELED"
-    assert 2 <= len(res.sequence) < 61 and list(res.sequence) == FIB[:len(res.sequence)]
+    check_cancel(client, after=0.3)
 
 
 def test_typed_client_against_python_server():

@@ -4,7 +4,6 @@ example_interfaces/srv/AddTwoInts records): the examples `typed_server` and
 conventions, and against the dynamic `server` and `client`. The typed path
 encodes and decodes with the generated codecs straight in the DDS samples (no
 dynamic message)."""
-import threading
 import time
 from dataclasses import dataclass
 
@@ -20,40 +19,12 @@ import service_support as ss
 
 
 def test_python_client_calls_typed_ada_service():
-    ada = ps.start("typed_server")
-    try:
-        dp = ps.participant()
-        cl = ss.Client(dp)
-        assert cl.wait_for_service(), "the typed Ada service endpoints were not discovered"
-        time.sleep(0.3)
-        for a, b in [(2, 3), (-7, 100), (2**40, 2**40)]:
-            r = cl.call(a, b)
-            assert r is not None, "no reply from the typed Ada server"
-            assert r.sum == a + b
-            assert r.guid == cl.guid and r.seq == cl.seq
-    finally:
-        out = ss.stop(ada)
-    assert "Incoming request a: 2 b: 3" in out, out
+    ss.check_python_client_against("typed_server")
 
 
 def test_typed_ada_client_calls_python_service():
-    dp = ps.participant()
-    srv = ss.Server(dp)
-    stop = threading.Event()
-
-    def serve():
-        while not stop.is_set():
-            srv.serve_some()
-            time.sleep(0.001)
-
-    t = threading.Thread(target=serve)
-    t.start()
-    try:
-        ada = ps.start("typed_client", 20, 22, 10)
-        out = ps.finish(ada)
-    finally:
-        stop.set()
-        t.join()
+    srv = ss.Server(ps.participant())
+    ada, out = ss.run_client_against(srv.serve_some, "typed_client", 20, 22, 10)
     assert ada.returncode == 0, out
     assert "Got answer: 42" in out, out
     assert srv.answered == 1

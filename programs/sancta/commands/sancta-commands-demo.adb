@@ -34,70 +34,48 @@ package body Sancta.Commands.Demo is
 
    procedure Run is
       Config : Sancta.Commands.Sim_Team_Demos.Sim_Demo_Config;
-      Check  : Boolean := False;
-      I      : Positive := 2;
       Result : Sancta.Commands.Team_Demos.Demo_Result;
 
-      function Value return String is (Options.Next_Value (I));
-      function Number (Text : String; Name : String) return Long_Float is
-        (Options.Number (Name, Text));
+      procedure Take (A : String; I : in out Positive) is
+      begin
+         if Team_Demos.Take_Run_Option (A, I, Config.Run) then
+            null;
+         elsif A = "--set" then
+            Options.Parse_Set (Options.Next_Value (I), Config.Overrides);
+         elsif A = "--rate" then
+            Config.Rate := Options.Number_Value (I);
+            if Config.Rate <= 0.0 or else Config.Rate > 100.0 then
+               raise Constraint_Error with "option --rate: expected a value in ]0, 100]";
+            end if;
+         elsif A = "--wall-clock" then
+            Config.Sim_Time := False;
+         elsif A = "--max-wall" then
+            Config.Max_Wall := Duration (Options.Number_Value (I));
+         elsif A = "--secure" then
+            Config.Secure := True;
+         elsif A = "--view" then
+            Config.View := True;
+         elsif A = "--no-record" then
+            Config.Record_Bag := False;
+         elsif A'Length > 0 and then A (A'First) = '-' then
+            raise Constraint_Error with "unknown option " & A;
+         else
+            Config.Config_File := To_Unbounded_String (A);
+         end if;
+      end Take;
+
+      function Parse is new Options.Parse_Arguments (Usage, Take);
    begin
       Config.Config_File := To_Unbounded_String (Default_Config);
-      while I <= Argument_Count loop
-         declare
-            A : constant String := Argument (I);
-         begin
-            if A = "--help" or else A = "-h" then
-               Usage;
-               return;
-            elsif A = "--set" then
-               Options.Parse_Set (Value, Config.Overrides);
-            elsif A = "--rate" then
-               Config.Rate := Number (Value, A);
-               if Config.Rate <= 0.0 or else Config.Rate > 100.0 then
-                  raise Constraint_Error with "option --rate: expected a value in ]0, 100]";
-               end if;
-            elsif A = "--wall-clock" then
-               Config.Sim_Time := False;
-            elsif A = "--kill" then
-               Config.Kill_Robot := To_Unbounded_String (Value);
-            elsif A = "--no-kill" then
-               Config.Kill := False;
-            elsif A = "--kill-at" then
-               Config.Kill_Fraction := Number (Value, A);
-               if Config.Kill_Fraction not in 0.0 .. 1.0 then
-                  raise Constraint_Error with "option --kill-at: expected a fraction in [0, 1]";
-               end if;
-            elsif A = "--max" then
-               Config.Max_Seconds := Number (Value, A);
-            elsif A = "--max-wall" then
-               Config.Max_Wall := Duration (Number (Value, A));
-            elsif A = "--out" then
-               Config.Out_Dir := To_Unbounded_String (Value);
-            elsif A = "--quiet" then
-               Config.Verbose := False;
-            elsif A = "--check" then
-               Check := True;
-            elsif A = "--secure" then
-               Config.Secure := True;
-            elsif A = "--view" then
-               Config.View := True;
-            elsif A = "--no-record" then
-               Config.Record_Bag := False;
-            elsif A'Length > 0 and then A (A'First) = '-' then
-               raise Constraint_Error with "unknown option " & A;
-            else
-               Config.Config_File := To_Unbounded_String (A);
-            end if;
-         end;
-         I := I + 1;
-      end loop;
+      if not Parse then
+         return;
+      end if;
       if not Ada.Directories.Exists (To_String (Config.Config_File)) then
          raise Constraint_Error with To_String (Config.Config_File) & ": no such file";
       end if;
       Sancta.Commands.Sim_Team_Demos.Run (Config, Result);
       Sancta.Commands.Team_Demos.Print_Summary (Result);
-      if Check then
+      if Config.Run.Check then
          if Sancta.Commands.Team_Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once"
                       & (if Result.Killed = Null_Unbounded_String then ")"

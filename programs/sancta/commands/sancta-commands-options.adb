@@ -33,6 +33,27 @@ package body Sancta.Commands.Options is
          raise Usage_Error with "option " & Option & ": """ & Text & """ is not a number";
    end Number;
 
+   function Number_Value (Index : in out Positive) return Long_Float is
+      Option : constant String := Ada.Command_Line.Argument (Index);
+   begin
+      return Number (Option, Next_Value (Index));
+   end Number_Value;
+
+   function Parse_Arguments return Boolean is
+      use Ada.Command_Line;
+      I : Positive := 2;
+   begin
+      while I <= Argument_Count loop
+         if Argument (I) in "--help" | "-h" then
+            Usage;
+            return False;
+         end if;
+         Take (Argument (I), I);
+         I := I + 1;
+      end loop;
+      return True;
+   end Parse_Arguments;
+
    procedure Load_Reporting
      (File      : String;
       Result    : out Sancta.Runtime.Configurations.Configuration;

@@ -19,6 +19,19 @@ private package Sancta.Commands.Options is
    function Number (Option, Text : String) return Long_Float;
    --  Text as a number; Usage_Error "option X: "T" is not a number".
 
+   function Number_Value (Index : in out Positive) return Long_Float;
+   --  Number (Argument (Index), Next_Value (Index)): the number following
+   --  the option at Index.
+
+   generic
+      with procedure Usage;
+      with procedure Take (Option : String; Index : in out Positive);
+   function Parse_Arguments return Boolean;
+   --  Take (Argument (I), I) for each command-line argument from the second
+   --  on (the first names the command); Take reads an option's value with
+   --  Next_Value (I). "--help" or "-h": Usage, and False (the command then
+   --  does nothing more); True when every argument has been taken.
+
    procedure Load_Reporting
      (File      : String;
       Result    : out Sancta.Runtime.Configurations.Configuration;

@@ -46,14 +46,7 @@ package body Sancta.Commands.Sim_Team_Demos is
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
-   function F1 (X : Long_Float) return String is
-      Scaled : constant Long_Long_Integer := Long_Long_Integer (X * 10.0);
-      Whole  : constant String :=
-        Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Scaled / 10), Ada.Strings.Left);
-   begin
-      return (if Scaled < 0 then "-" else "") & Whole & "."
-        & Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Scaled mod 10), Ada.Strings.Left);
-   end F1;
+   function F1 (X : Long_Float) return String renames Team_Demos.F1;
 
    function Img (X : Real) return String is (Runtime.Values.Real_Image (Long_Float (X)));
 
@@ -291,7 +284,7 @@ package body Sancta.Commands.Sim_Team_Demos is
       View     : constant Team_View := Read_Team (Config);
       M        : Missions.Mission renames View.Mission;
       N        : constant Positive := Natural (View.Robots.Length);
-      Dir      : constant String := To_String (Config.Out_Dir);
+      Dir      : constant String := To_String (Config.Run.Out_Dir);
       Log_Dir  : constant String := (if Dir = "" then "out/demo" else Dir);
       World_F  : constant String :=
         Sancta.Simulation.Map_Files.World_File (To_String (View.World));
@@ -438,10 +431,10 @@ package body Sancta.Commands.Sim_Team_Demos is
    begin
       Result := (others => <>);
       Result.Tasks_Total := Natural (M.Tasks.Length);
-      if Config.Kill and then Config.Kill_Robot /= Null_Unbounded_String
-        and then (for all R of View.Robots => R.Id /= Config.Kill_Robot)
+      if Config.Run.Kill and then Config.Run.Kill_Robot /= Null_Unbounded_String
+        and then (for all R of View.Robots => R.Id /= Config.Run.Kill_Robot)
       then
-         raise Constraint_Error with "--kill " & To_String (Config.Kill_Robot)
+         raise Constraint_Error with "--kill " & To_String (Config.Run.Kill_Robot)
            & ": no such robot agent in " & To_String (Config.Config_File);
       end if;
       Start_Processes;
@@ -569,7 +562,7 @@ package body Sancta.Commands.Sim_Team_Demos is
                         if R > 0 then
                            Result.Robots (R).Tasks := Result.Robots (R).Tasks + 1;
                         end if;
-                        if Config.Verbose then
+                        if Config.Run.Verbose then
                            Put_Line (Stamp & Who & " did " & Id & "  ("
                                      & Trim (Natural (Result.Completions.Length)) & "/"
                                      & Trim (Result.Tasks_Total) & ")");
@@ -586,12 +579,12 @@ package body Sancta.Commands.Sim_Team_Demos is
             P    : constant Plans.Plan := Monitor.Adopted;
             S    : constant Plans.Snapshot := Monitor.Round;
          begin
-            if Config.Kill_Robot /= Null_Unbounded_String then
-               if Index_Of (To_String (Config.Kill_Robot)) = 0 then
-                  raise Constraint_Error with "--kill " & To_String (Config.Kill_Robot)
+            if Config.Run.Kill_Robot /= Null_Unbounded_String then
+               if Index_Of (To_String (Config.Run.Kill_Robot)) = 0 then
+                  raise Constraint_Error with "--kill " & To_String (Config.Run.Kill_Robot)
                     & ": no such robot agent in " & To_String (Config.Config_File);
                end if;
-               return Index_Of (To_String (Config.Kill_Robot));
+               return Index_Of (To_String (Config.Run.Kill_Robot));
             end if;
             for K in 1 .. Natural'Min (Natural (P.Tours.Length), Natural (S.Robots.Length)) loop
                declare
@@ -722,9 +715,9 @@ package body Sancta.Commands.Sim_Team_Demos is
                          & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
                          & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
             end if;
-            if Config.Kill and then Victim = 0 and then Result.Planned_Total > 0.0
+            if Config.Run.Kill and then Victim = 0 and then Result.Planned_Total > 0.0
               and then Long_Float (Result.Completions.Length)
-                >= Config.Kill_Fraction * Long_Float (Result.Tasks_Total)
+                >= Config.Run.Kill_Fraction * Long_Float (Result.Tasks_Total)
               and then Monitor.Adopted.Generation = Monitor.Round.Generation
             then
                Kill (Choose_Victim);
@@ -732,7 +725,7 @@ package body Sancta.Commands.Sim_Team_Demos is
             if Victim /= 0 and then not Result.Replanned then
                Check_Replanned;
             end if;
-            if Config.Verbose and then Sim_Clock >= Next_Print then
+            if Config.Run.Verbose and then Sim_Clock >= Next_Print then
                Next_Print := Sim_Clock + 20.0;
                Print_Progress;
             end if;
@@ -741,7 +734,7 @@ package body Sancta.Commands.Sim_Team_Demos is
                Stop_Why := To_Unbounded_String ("every task is done");
             elsif RCL.Contexts.Is_Shutdown then
                Stop_Why := To_Unbounded_String ("interrupted");
-            elsif Sim_Clock > Config.Max_Seconds then
+            elsif Sim_Clock > Config.Run.Max_Seconds then
                Stop_Why := To_Unbounded_String ("simulated time limit reached");
             elsif Ada.Real_Time.Clock - Start_Wall
               > Ada.Real_Time.To_Time_Span (Config.Max_Wall)
@@ -760,7 +753,7 @@ package body Sancta.Commands.Sim_Team_Demos is
          end loop;
          Result.Makespan := Sim_Clock;
          Put_Line (Stamp & "stopping: " & To_String (Stop_Why));
-         if Config.Verbose then
+         if Config.Run.Verbose then
             Print_Progress;
          end if;
          Result.Tasks_Done := Natural (Result.Completions.Length);

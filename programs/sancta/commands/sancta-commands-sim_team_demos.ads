@@ -44,19 +44,14 @@ package Sancta.Commands.Sim_Team_Demos is
       --  Simulated seconds per wall second (sancta-sim --rate).
       Sim_Time      : Boolean := True;
       --  The agents run on /clock (sancta run --sim-time).
-      Kill          : Boolean := True;
-      Kill_Robot    : Unbounded_String;
-      --  Empty: the robot with the most tasks left at the kill.
-      Kill_Fraction : Long_Float := 0.25;
-      Max_Seconds   : Long_Float := 1200.0;
-      --  Simulated time limit.
+      Run           : Team_Demos.Run_Options := (Kill_Fraction => 0.25, others => <>);
+      --  Kill, Kill_Robot, Kill_Fraction, Max_Seconds (simulated time
+      --  limit), Out_Dir, Verbose.
       Max_Wall      : Duration := 900.0;
       --  Wall-clock limit.
-      Out_Dir       : Unbounded_String := To_Unbounded_String ("out/demo");
       Bin_Dir       : Unbounded_String;
       --  Where sancta and sancta-sim are; empty: next to this program,
       --  else on PATH.
-      Verbose       : Boolean := True;
       Secure        : Boolean := False;
       --  DDS-Security (Sancta.Team.Security): a keystore in Out_Dir/keystore,
       --  an enclave per process; only the non-robot agents (the operator)

@@ -43,57 +43,49 @@ package body Sancta.Commands.Team_Agent is
       Rate     : Real := 10.0;
       Run_For  : Duration := 120.0;
       Linger   : Duration := 0.0;
-      I        : Positive := 2;
 
-      function Value return String is (Options.Next_Value (I));
-
-      function Number return Real is
-         Name : constant String := Argument (I);
+      procedure Take (A : String; I : in out Positive) is
+         function Value return String is (Options.Next_Value (I));
+         function Number return Real is (Real (Options.Number_Value (I)));
       begin
-         return Real (Options.Number (Name, Value));
-      end Number;
+         if A = "--id" then
+            Config.Id := To_Unbounded_String (Value);
+         elsif A = "--operator" then
+            Mission := To_Unbounded_String (Value);
+            Config.Id := To_Unbounded_String ("operator");
+            Config.Is_Robot := False;
+         elsif A = "--x" then
+            X := Number;
+         elsif A = "--y" then
+            Y := Number;
+         elsif A = "--speed" then
+            Speed := Number;
+         elsif A = "--rate" then
+            Rate := Number;
+         elsif A = "--team" then
+            Config.Team := To_Unbounded_String (Value);
+         elsif A = "--method" then
+            Config.How := Agents.Parse_Method (Value);
+         elsif A = "--lease" then
+            Config.Lease := Duration (Number);
+         elsif A = "--for" then
+            Run_For := Duration (Number);
+         elsif A = "--linger" then
+            Linger := Duration (Number);
+            if Linger not in 0.0 .. 3600.0 then
+               raise Constraint_Error with "--linger: expected 0 .. 3600 seconds";
+            end if;
+         else
+            raise Constraint_Error with "unknown option " & A;
+         end if;
+      end Take;
+
+      function Parse is new Options.Parse_Arguments (Usage, Take);
    begin
       Config.Verbose := True;
-      while I <= Argument_Count loop
-         declare
-            A : constant String := Argument (I);
-         begin
-            if A = "--help" or else A = "-h" then
-               Usage;
-               return;
-            elsif A = "--id" then
-               Config.Id := To_Unbounded_String (Value);
-            elsif A = "--operator" then
-               Mission := To_Unbounded_String (Value);
-               Config.Id := To_Unbounded_String ("operator");
-               Config.Is_Robot := False;
-            elsif A = "--x" then
-               X := Number;
-            elsif A = "--y" then
-               Y := Number;
-            elsif A = "--speed" then
-               Speed := Number;
-            elsif A = "--rate" then
-               Rate := Number;
-            elsif A = "--team" then
-               Config.Team := To_Unbounded_String (Value);
-            elsif A = "--method" then
-               Config.How := Agents.Parse_Method (Value);
-            elsif A = "--lease" then
-               Config.Lease := Duration (Number);
-            elsif A = "--for" then
-               Run_For := Duration (Number);
-            elsif A = "--linger" then
-               Linger := Duration (Number);
-               if Linger not in 0.0 .. 3600.0 then
-                  raise Constraint_Error with "--linger: expected 0 .. 3600 seconds";
-               end if;
-            else
-               raise Constraint_Error with "unknown option " & A;
-            end if;
-         end;
-         I := I + 1;
-      end loop;
+      if not Parse then
+         return;
+      end if;
       if Config.Id = Null_Unbounded_String then
          raise Constraint_Error with "--id or --operator is required";
       elsif Speed <= 0.0 or else Rate <= 0.0 or else Config.Lease < 0.1 then

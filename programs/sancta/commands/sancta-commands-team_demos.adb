@@ -6,6 +6,7 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with RCL.Contexts;
+with Sancta.Commands.Options;
 with Sancta.Robot.Navigators;
 with Sancta.Runtime.Values;
 with Sancta.Simulation.Glyphs;
@@ -32,6 +33,34 @@ package body Sancta.Commands.Team_Demos is
       return (if Scaled < 0 then "-" else "") & Whole & "."
         & Ada.Strings.Fixed.Trim (Long_Long_Integer'Image (abs Scaled mod 10), Ada.Strings.Left);
    end F1;
+
+   function Take_Run_Option
+     (Option : String; Index : in out Positive; Into : in out Run_Options) return Boolean
+   is
+      function Value return String is (Options.Next_Value (Index));
+   begin
+      if Option = "--kill" then
+         Into.Kill_Robot := To_Unbounded_String (Value);
+      elsif Option = "--no-kill" then
+         Into.Kill := False;
+      elsif Option = "--kill-at" then
+         Into.Kill_Fraction := Options.Number (Option, Value);
+         if Into.Kill_Fraction not in 0.0 .. 1.0 then
+            raise Constraint_Error with "option --kill-at: expected a fraction in [0, 1]";
+         end if;
+      elsif Option = "--max" then
+         Into.Max_Seconds := Options.Number (Option, Value);
+      elsif Option = "--out" then
+         Into.Out_Dir := To_Unbounded_String (Value);
+      elsif Option = "--quiet" then
+         Into.Verbose := False;
+      elsif Option = "--check" then
+         Into.Check := True;
+      else
+         return False;
+      end if;
+      return True;
+   end Take_Run_Option;
 
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
@@ -583,7 +612,7 @@ package body Sancta.Commands.Team_Demos is
                   Count (T) := Count (T) + 1;
                end if;
             end loop;
-            if Config.Verbose then
+            if Config.Run.Verbose then
                Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  " & To_String (M.Robots (R).Id)
                          & " did " & To_String (Task_Id) & "  ("
                          & Trim (Natural (Result.Completions.Length)) & "/"
@@ -759,12 +788,12 @@ package body Sancta.Commands.Team_Demos is
             P      : constant Plans.Plan := Observer.Adopted;
             S      : constant Plans.Snapshot := Observer.Round;
          begin
-            if Config.Kill_Robot /= Null_Unbounded_String then
-               if Robot_Of (Config.Kill_Robot) = 0 then
-                  raise Constraint_Error with "--kill " & To_String (Config.Kill_Robot)
+            if Config.Run.Kill_Robot /= Null_Unbounded_String then
+               if Robot_Of (Config.Run.Kill_Robot) = 0 then
+                  raise Constraint_Error with "--kill " & To_String (Config.Run.Kill_Robot)
                     & ": no such robot in the mission";
                end if;
-               return Robot_Of (Config.Kill_Robot);
+               return Robot_Of (Config.Run.Kill_Robot);
             end if;
             for K in 1 .. Natural (P.Tours.Length) loop
                declare
@@ -798,7 +827,7 @@ package body Sancta.Commands.Team_Demos is
             Result.Robots.Append (Robot_Summary'(Id => M.Robots (R).Id, others => <>));
             Agent_List (R) := Agents.Create
               ((Id => M.Robots (R).Id, Team => Config.Team, Is_Robot => True,
-                Lease => Config.Lease, Verbose => Config.Verbose,
+                Lease => Config.Lease, Verbose => Config.Run.Verbose,
                 How => Config.How, Seed => Interfaces.Unsigned_64 (R), others => <>));
             Agent_List (R).Set_Pose (Position (M.Robots (R).Start));
          end loop;
@@ -809,7 +838,7 @@ package body Sancta.Commands.Team_Demos is
          Operator.Publish_Mission (M);
          Sim.Step (0.1);
          begin
-            while Long_Float (Sim.Clock) < Config.Max_Seconds and then not Operator.All_Done
+            while Long_Float (Sim.Clock) < Config.Run.Max_Seconds and then not Operator.All_Done
               and then not RCL.Contexts.Is_Shutdown
             loop
                for R in 1 .. N loop
@@ -869,9 +898,9 @@ package body Sancta.Commands.Team_Demos is
                             & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
                             & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
                end if;
-               if Config.Kill and then Victim = 0
+               if Config.Run.Kill and then Victim = 0
                  and then Long_Float (Operator.Done_Tasks)
-                   >= Config.Kill_Fraction * Long_Float (Result.Tasks_Total)
+                   >= Config.Run.Kill_Fraction * Long_Float (Result.Tasks_Total)
                  and then Observer.Adopted.Generation > 0
                then
                   Kill (Choose_Victim);
@@ -897,7 +926,7 @@ package body Sancta.Commands.Team_Demos is
                      end if;
                   end;
                end if;
-               if Config.Verbose and then Long_Float (Sim.Clock) >= Next_Print then
+               if Config.Run.Verbose and then Long_Float (Sim.Clock) >= Next_Print then
                   Next_Print := Next_Print + 20.0;
                   Put ("t=" & F1 (Long_Float (Sim.Clock)) & " s  progress "
                        & Trim (Operator.Done_Tasks) & "/" & Trim (Result.Tasks_Total)
@@ -963,8 +992,8 @@ package body Sancta.Commands.Team_Demos is
          end loop;
          Stop_All;
          Resolve_Orphans (Result);
-         if Config.Out_Dir /= Null_Unbounded_String then
-            Write_Report (Result, World, Scene, To_String (Config.Out_Dir));
+         if Config.Run.Out_Dir /= Null_Unbounded_String then
+            Write_Report (Result, World, Scene, To_String (Config.Run.Out_Dir));
          end if;
       end;
    end Run;

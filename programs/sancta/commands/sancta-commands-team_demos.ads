@@ -23,13 +23,7 @@ package Sancta.Commands.Team_Demos is
 
    use Ada.Strings.Unbounded;
 
-   type Demo_Config is record
-      Mission_File  : Unbounded_String;
-      World_File    : Unbounded_String;
-      --  Empty: the mission's world.
-      How           : Agents.Method := Agents.Annealing;
-      Rate          : Long_Float := 25.0;
-      --  Simulated seconds per wall-clock second.
+   type Run_Options is record
       Kill          : Boolean := True;
       Kill_Robot    : Unbounded_String;
       --  Empty: the robot with the most tasks left when the kill happens.
@@ -37,9 +31,35 @@ package Sancta.Commands.Team_Demos is
       --  Kill when this fraction of the tasks is done.
       Max_Seconds   : Long_Float := 1200.0;
       --  Simulated time limit.
-      Lease         : Duration := 0.5;
       Out_Dir       : Unbounded_String := To_Unbounded_String ("out/demo");
       Verbose       : Boolean := True;
+      Check         : Boolean := False;
+      --  The command checks the result (every task done exactly once).
+   end record;
+   --  What the two team demos (this one, in one process, and the processes'
+   --  Sim_Team_Demos) set alike from their command lines.
+
+   function Take_Run_Option
+     (Option : String; Index : in out Positive; Into : in out Run_Options) return Boolean;
+   --  When Option (the command-line argument at Index) is one of --kill ID,
+   --  --no-kill, --kill-at FRACTION, --max SECONDS, --out DIR, --quiet, --check: sets
+   --  Into from it (Index then on the option's value, if any) and returns
+   --  True; else False. Bad values raise Constraint_Error or
+   --  Options.Usage_Error with a message naming the option.
+   --  Example: if Take_Run_Option ("--no-kill", I, Config.Run) then ...
+
+   function F1 (X : Long_Float) return String;
+   --  X with one decimal ("-0.5", "12.0").
+
+   type Demo_Config is record
+      Mission_File  : Unbounded_String;
+      World_File    : Unbounded_String;
+      --  Empty: the mission's world.
+      How           : Agents.Method := Agents.Annealing;
+      Rate          : Long_Float := 25.0;
+      --  Simulated seconds per wall-clock second.
+      Run           : Run_Options;
+      Lease         : Duration := 0.5;
       Team          : Unbounded_String := To_Unbounded_String ("team");
       --  The team's topics (/sancta/<team>/...).
       Cut_For       : Duration := 0.0;

@@ -2,6 +2,10 @@ pragma Validity_Checks (Off);
 --  Floats may be NaN or infinite (ROS 2 data, definitions).
 package body ROSIDL.Static.Codecs is
 
+   pragma Unsuppress (Index_Check);
+   pragma Unsuppress (Length_Check);
+   --  Writing relies on them (see ROSIDL.Static.Wire).
+
    use type Ada.Streams.Stream_Element_Offset;
    use type Ada.Streams.Stream_Element;
 

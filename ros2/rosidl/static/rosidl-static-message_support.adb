@@ -2,6 +2,10 @@ pragma Validity_Checks (Off);
 --  Floats may be NaN or infinite (ROS 2 data, definitions).
 package body ROSIDL.Static.Message_Support is
 
+   pragma Unsuppress (Index_Check);
+   pragma Unsuppress (Length_Check);
+   --  Write relies on them (as ROSIDL.Static.Wire does).
+
    Header_Size : constant := ROSIDL.CDR.Request_Header_Size;
 
    function Encoded_Size
@@ -19,6 +23,11 @@ package body ROSIDL.Static.Message_Support is
         [0, (if Order = Little_Endian then 1 else 0), 0, 0];
    end Put_Header;
 
+   --  One pass: no size pass first. Every byte the write pass stores is
+   --  index-checked (ROSIDL.Static.Wire keeps the checks on), so a buffer
+   --  too small stops it with Constraint_Error at its end, never past it;
+   --  only then is the size computed, to turn that into Encode_Error (an
+   --  error of another origin, the buffer being large enough, propagates).
    procedure Write
      (Msg         : Message;
       With_Header : Boolean;
@@ -27,13 +36,8 @@ package body ROSIDL.Static.Message_Support is
       Last        : out Stream_Element_Offset;
       Order       : Byte_Order)
    is
-      Size : constant Stream_Element_Count := Encoded_Size (Msg, With_Header);
-      C    : ROSIDL.Static.Wire.Cursor;
+      C : ROSIDL.Static.Wire.Cursor;
    begin
-      if Buffer'Length < Size then
-         raise Encode_Error with Full_Name & ": buffer of" & Buffer'Length'Image
-           & " bytes, the encoding needs" & Size'Image;
-      end if;
       Put_Header (Buffer, Order);
       C := (Pos    => Buffer'First + Encapsulation_Size,
             Origin => Buffer'First + Encapsulation_Size,
@@ -44,6 +48,17 @@ package body ROSIDL.Static.Message_Support is
       Write_Body (Msg, Buffer, C);
       ROSIDL.Static.Wire.Pad (Buffer, C, 4);
       Last := C.Pos - 1;
+   exception
+      when Constraint_Error =>
+         declare
+            Size : constant Stream_Element_Count := Encoded_Size (Msg, With_Header);
+         begin
+            if Buffer'Length < Size then
+               raise Encode_Error with Full_Name & ": buffer of" & Buffer'Length'Image
+                 & " bytes, the encoding needs" & Size'Image;
+            end if;
+         end;
+         raise;
    end Write;
 
    procedure Encode
@@ -118,6 +133,15 @@ package body ROSIDL.Static.Message_Support is
    function Recode (Data : Stream_Element_Array; Order : Byte_Order)
       return Stream_Element_Array is
      (Encode (Decode (Data), Order));
+
+   procedure Recode_Into
+     (Data   : Stream_Element_Array;
+      Buffer : out Stream_Element_Array;
+      Last   : out Stream_Element_Offset;
+      Order  : Byte_Order) is
+   begin
+      Encode (Decode (Data), Buffer, Last, Order);
+   end Recode_Into;
 
    function Round_Trips (Data : Stream_Element_Array) return Boolean is
       X : constant Message := Decode (Data);

@@ -52,7 +52,10 @@ package ROSIDL.Static.Message_Support is
       Buffer : out Stream_Element_Array;
       Last   : out Stream_Element_Offset;
       Order  : Byte_Order := Native_Order);
-   --  Into Buffer (Buffer'First .. Last); Encode_Error when too small.
+   --  Into Buffer (Buffer'First .. Last), in one pass (no size pass): a
+   --  publisher that sized its buffer with Encoded_Size pays for that
+   --  pass once. Encode_Error when Buffer is too small, after writing at
+   --  most up to Buffer'Last.
 
    procedure Encode
      (Msg    : Message;
@@ -81,6 +84,12 @@ package ROSIDL.Static.Message_Support is
    function Recode (Data : Stream_Element_Array; Order : Byte_Order)
       return Stream_Element_Array;
    --  Encode (Decode (Data), Order).
+   procedure Recode_Into
+     (Data   : Stream_Element_Array;
+      Buffer : out Stream_Element_Array;
+      Last   : out Stream_Element_Offset;
+      Order  : Byte_Order);
+   --  Encode (Decode (Data), Buffer, Last, Order).
    function Round_Trips (Data : Stream_Element_Array) return Boolean;
    --  Decode (Encode (X)) = X for X = Decode (Data), in both byte orders.
    function Encode_Default return Stream_Element_Array;

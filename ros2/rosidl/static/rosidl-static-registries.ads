@@ -14,6 +14,11 @@ package ROSIDL.Static.Registries is
    type Recode_Access is access function
      (Data : Ada.Streams.Stream_Element_Array; Order : ROSIDL.CDR.Byte_Order)
       return Ada.Streams.Stream_Element_Array;
+   type Recode_Into_Access is access procedure
+     (Data   : Ada.Streams.Stream_Element_Array;
+      Buffer : out Ada.Streams.Stream_Element_Array;
+      Last   : out Ada.Streams.Stream_Element_Offset;
+      Order  : ROSIDL.CDR.Byte_Order);
    type Check_Access is access function (Data : Ada.Streams.Stream_Element_Array) return Boolean;
    type Default_Access is access function return Ada.Streams.Stream_Element_Array;
 
@@ -22,6 +27,9 @@ package ROSIDL.Static.Registries is
       Is_Bounded  : Boolean;
       Recode      : Recode_Access;
       --  Handling.Recode: Encode (Decode (Data), Order).
+      Recode_Into : Recode_Into_Access;
+      --  Handling.Recode_Into: the same into Buffer (Encode_Error when
+      --  Buffer is too small).
       Round_Trips : Check_Access;
       --  Handling.Round_Trips.
       Default     : Default_Access;

@@ -3,6 +3,10 @@ with Ada.Unchecked_Conversion;
 
 package body ROSIDL.Static.Wire.Primitives is
 
+   pragma Unsuppress (Index_Check);
+   pragma Unsuppress (Length_Check);
+   --  Writing relies on them (see ROSIDL.Static.Wire).
+
    subtype Raw is Stream_Element_Array (1 .. Size);
    function To_Raw is new Ada.Unchecked_Conversion (T, Raw);
    function From_Raw is new Ada.Unchecked_Conversion (Raw, T);

@@ -1,9 +1,22 @@
 pragma Validity_Checks (Off);
 with Ada.Unchecked_Conversion;
+pragma Warnings (Off, "*internal GNAT unit*");
+pragma Warnings (Off, "*non-portable and version-dependent*");
+with Ada.Strings.Unbounded.Aux;
+--  Get_String: the characters of an Unbounded_String in place (GNAT's
+--  documented access for layered utilities; To_String would copy them to
+--  the secondary stack on every message).
+pragma Warnings (On, "*internal GNAT unit*");
+pragma Warnings (On, "*non-portable and version-dependent*");
 with Interfaces;
 with System;
 
 package body ROSIDL.Static.Wire is
+
+   pragma Unsuppress (Index_Check);
+   pragma Unsuppress (Length_Check);
+   --  The writing procedures rely on them: a buffer too small stops the
+   --  write pass at its end (Constraint_Error), never past it.
 
    use Interfaces;
    use type System.Bit_Order;
@@ -44,15 +57,20 @@ package body ROSIDL.Static.Wire is
       C.Pos := C.Pos + N;
    end Pad;
 
-   procedure Put_U32 (B : in out Stream_Element_Array; C : in out Cursor; V : Unsigned_32) is
-      Wire_Little : constant Boolean := Little /= C.Swap;
+   function Byte_Swap (V : Unsigned_32) return Unsigned_32 is
+     (Shift_Left (V, 24) or Shift_Left (V and 16#FF00#, 8)
+      or Shift_Right (V and 16#FF_0000#, 8) or Shift_Right (V, 24))
+     with Inline;
+
+   subtype Raw_U32 is Stream_Element_Array (1 .. 4);
+   function To_Raw is new Ada.Unchecked_Conversion (Unsigned_32, Raw_U32);
+
+   procedure Put_U32 (B : in out Stream_Element_Array; C : in out Cursor; V : Unsigned_32)
+     with Inline
+   is
    begin
       Pad (B, C, 4);
-      for I in 0 .. 3 loop
-         B (C.Pos + (if Wire_Little then Stream_Element_Offset (I)
-                     else Stream_Element_Offset (3 - I))) :=
-           Stream_Element (Shift_Right (V, 8 * I) and 16#FF#);
-      end loop;
+      B (C.Pos .. C.Pos + 3) := To_Raw (if C.Swap then Byte_Swap (V) else V);
       C.Pos := C.Pos + 4;
    end Put_U32;
 
@@ -61,7 +79,8 @@ package body ROSIDL.Static.Wire is
       Put_U32 (B, C, Unsigned_32 (Count));
    end Put_Count;
 
-   procedure Put_String (B : in out Stream_Element_Array; C : in out Cursor; Text : String) is
+   procedure Put_Characters
+     (B : in out Stream_Element_Array; C : in out Cursor; Text : String) with Inline is
       N : constant Stream_Element_Offset := Text'Length;
    begin
       Put_U32 (B, C, Unsigned_32 (Text'Length + 1));
@@ -74,6 +93,23 @@ package body ROSIDL.Static.Wire is
       end if;
       B (C.Pos + N) := 0;
       C.Pos := C.Pos + N + 1;
+   end Put_Characters;
+
+   procedure Put_String (B : in out Stream_Element_Array; C : in out Cursor; Text : String) is
+   begin
+      Put_Characters (B, C, Text);
+   end Put_String;
+
+   procedure Put_String
+     (B    : in out Stream_Element_Array;
+      C    : in out Cursor;
+      Text : Ada.Strings.Unbounded.Unbounded_String)
+   is
+      Chars  : Ada.Strings.Unbounded.Aux.Big_String_Access;
+      Length : Natural;
+   begin
+      Ada.Strings.Unbounded.Aux.Get_String (Text, Chars, Length);
+      Put_Characters (B, C, Chars (1 .. Length));
    end Put_String;
 
    procedure Put_WString

@@ -1,10 +1,13 @@
 --  Not for users: the XCDR1 primitives the generated codecs call (the
 --  rules of ROSIDL.CDR: each primitive aligned to its size relative to the
 --  end of the encapsulation header, strings as a uint32 length counting a
---  NUL, sequences with a uint32 count). Writing assumes a buffer checked
---  large enough beforehand (the size pass); reading checks every length
+--  NUL, sequences with a uint32 count). Reading checks every length
 --  and count against the bytes that remain and raises ROSIDL.Decode_Error
 --  naming the field and the byte offset, never reading outside the buffer.
+--  Writing makes no size pass: every store is index-checked (the checks
+--  are kept on in the bodies), so a buffer too small raises
+--  Constraint_Error at its end, never writes past it (Message_Support
+--  reports it as Encode_Error).
 with Ada.Streams;
 with Ada.Strings.Unbounded;
 with Ada.Strings.Wide_Wide_Unbounded;
@@ -39,6 +42,11 @@ package ROSIDL.Static.Wire is
 
    procedure Put_Count (B : in out Stream_Element_Array; C : in out Cursor; Count : Natural);
    procedure Put_String (B : in out Stream_Element_Array; C : in out Cursor; Text : String);
+   procedure Put_String
+     (B    : in out Stream_Element_Array;
+      C    : in out Cursor;
+      Text : Ada.Strings.Unbounded.Unbounded_String);
+   --  The same without copying Text to a String first.
    procedure Put_WString
      (B : in out Stream_Element_Array; C : in out Cursor; Text : Wide_Wide_String);
 

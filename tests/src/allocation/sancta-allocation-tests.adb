@@ -12,9 +12,8 @@ with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
-with Sancta.Allocation.Random;
+with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
-with Sancta.Geometry;
 
 package body Sancta.Allocation.Tests is
 
@@ -24,85 +23,6 @@ package body Sancta.Allocation.Tests is
    package Caller is new AUnit.Test_Caller (Fixture);
 
    Data : constant String := "share/tsplib/";
-
-   type Variant is record
-      Closed       : Boolean := True;
-      Asymmetric   : Boolean := False;
-      Heterogeneous : Boolean := False;
-      Infeasible   : Boolean := False;
-      Alternatives : Boolean := False;
-      Frozen       : Boolean := False;
-      Min_Tasks    : Natural := 0;
-      End_Depot    : Boolean := False;
-   end record;
-
-   --  A random problem: robots start at their own locations, tasks at
-   --  random points (optionally with a second alternative location).
-   function Random_Problem
-     (Tasks, Robots : Positive; V : Variant; Seed : Interfaces.Unsigned_64)
-      return Problem_Access
-   is
-      G : Random.Generator := Random.Seeded (Seed);
-      N_Alt : constant Positive := (if V.Alternatives then 2 * Tasks else Tasks);
-      L : constant Positive := Robots + N_Alt;
-      P : constant Problem_Access := Create (L, Tasks, Robots, N_Alt);
-      Pts : Point_Array (1 .. L);
-   begin
-      for I in Pts'Range loop
-         Pts (I) := (Sancta.Geometry.Real (Random.Below (G, 1000)),
-                     Sancta.Geometry.Real (Random.Below (G, 1000)));
-      end loop;
-      Set_Euclidean (P.all, Pts, 1.0);
-      if V.Asymmetric then
-         for A in 1 .. L loop
-            for B in 1 .. L loop
-               if A /= B then
-                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 300)));
-               end if;
-            end loop;
-         end loop;
-         Update_Symmetry (P.all);
-      end if;
-      for R in 1 .. Robots loop
-         Set_Robot (P.all, R, R, V.Closed,
-                    Multiplier => (if V.Heterogeneous then 1 + (R - 1) mod 3 else 1));
-      end loop;
-      for T in 1 .. Tasks loop
-         if V.Alternatives and then T mod 2 = 0 then
-            Set_Task_Alternatives (P.all, T, [Robots + 2 * T - 1, Robots + 2 * T]);
-         elsif V.Alternatives then
-            Set_Task_Alternatives (P.all, T, [1 => Robots + 2 * T - 1]);
-         else
-            Set_Task (P.all, T, Robots + T);
-         end if;
-      end loop;
-      if V.Infeasible then
-         for T in 1 .. Tasks loop
-            if T mod 3 = 0 then
-               Forbid (P.all, 1 + T mod Robots, T);
-            end if;
-         end loop;
-      end if;
-      if V.Frozen then
-         Freeze (P.all, 1, [1 => 1]);
-         if Robots > 1 and then Tasks > 3 then
-            Freeze (P.all, 2, [2, 4]);
-         end if;
-      end if;
-      if V.End_Depot then
-         --  Each robot ends at the next robot's start (the last one: open).
-         for R in 1 .. Robots loop
-            Set_Robot_End (P.all, R, (if R = Robots then Nowhere else R + 1));
-         end loop;
-      end if;
-      P.Min_Tasks := V.Min_Tasks;
-      return P;
-   end Random_Problem;
-
-   function Img (X : Long_Float) return String is (X'Image);
-
-   type Criterion_Array is array (Positive range <>) of Criterion;
-   Pure_Criteria : constant Criterion_Array := [Min_Sum, Min_Max, Min_Ave];
 
    ---------------------------------------------------------------------------
 
@@ -116,9 +36,9 @@ package body Sancta.Allocation.Tests is
          (Heterogeneous => True, Closed => False, others => <>),
          (Infeasible => True, others => <>),
          (Alternatives => True, others => <>),
-         (Frozen => True, Min_Tasks => 1, others => <>),
+         (Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
-          Alternatives => True, Frozen => True, Min_Tasks => 1, End_Depot => False)];
+          Alternatives => True, Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>)];
       Seed : Interfaces.Unsigned_64 := 100;
    begin
       for V of Variants loop
@@ -139,82 +59,11 @@ package body Sancta.Allocation.Tests is
                Assert (S.Accepted > 1_000, "too few moves applied:" & S.Accepted'Image);
                Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
                --  Then a real annealing run, still checked.
-               O.Start_Temperature := 0.0;
-               O.End_Temperature := 0.0;
-               O.Polish := True;
-               Annealers.Solve (P.all, O, A, S);
-               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
-               Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6,
-                       "reported best" & Img (S.Best) & " /= recomputed"
-                       & Img (Evaluate (P.all, A, C).Value));
+               Anneal_Checked (P.all, O, A, S);
             end;
          end loop;
       end loop;
    end Incremental_Equals_Recomputed;
-
-   ---------------------------------------------------------------------------
-   --  Brute force: every order of the tasks cut into robot tours, every
-   --  choice of alternatives.
-
-   function Brute_Force (P : Problem; C : Criterion) return Long_Float is
-      N : constant Positive := P.Tasks;
-      Perm : Location_Array (1 .. N);
-      Used : Boolean_Array (1 .. N) := [others => False];
-      Best : Long_Float := Long_Float'Last;
-      A : Assignment (P.Robots, P.Tasks);
-
-      procedure Try_Cuts (Robot : Positive; From : Positive) is
-      begin
-         if Robot = P.Robots then
-            A.Length (Robot) := 0;
-            for K in From .. N loop
-               Append (A, Robot, Perm (K));
-            end loop;
-            if Validate (P, A) = "" then
-               Best := Long_Float'Min (Best, Evaluate (P, A, C).Value);
-            end if;
-            return;
-         end if;
-         for Last in From - 1 .. N loop
-            A.Length (Robot) := 0;
-            for K in From .. Last loop
-               Append (A, Robot, Perm (K));
-            end loop;
-            Try_Cuts (Robot + 1, Last + 1);
-         end loop;
-      end Try_Cuts;
-
-      procedure Try_Choices (T : Positive) is
-      begin
-         if T > N then
-            Try_Cuts (1, 1);
-            return;
-         end if;
-         for Ch in 1 .. P.Alt_Count (T) loop
-            A.Choice (T) := Ch;
-            Try_Choices (T + 1);
-         end loop;
-      end Try_Choices;
-
-      procedure Permute (K : Positive) is
-      begin
-         if K > N then
-            Try_Choices (1);
-            return;
-         end if;
-         for T in 1 .. N loop
-            if not Used (T) then
-               Used (T) := True;
-               Perm (K) := T;
-               Permute (K + 1);
-               Used (T) := False;
-            end if;
-         end loop;
-      end Permute;
-   begin
-      Permute (1);
-      return Best;
-   end Brute_Force;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
       Variants : constant array (1 .. 5) of Variant :=
@@ -241,60 +90,19 @@ package body Sancta.Allocation.Tests is
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
-      Variants : constant array (1 .. 5) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (Closed => False, Heterogeneous => True, others => <>),
          (End_Depot => True, Infeasible => True, others => <>),
          (Asymmetric => True, Infeasible => True, Min_Tasks => 1, others => <>),
-         (Alternatives => True, Frozen => True, others => <>)];
-      Seed : Interfaces.Unsigned_64 := 900;
+         (Alternatives => True, Frozen => Robots_1_And_2, others => <>)];
    begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Random_Problem (9, 3, V, Seed);
-               E : constant Assignment := Exact.Solve (P.all, C);
-               Opt : constant Long_Float := Evaluate (P.all, E, C).Value;
-               A : Assignment (P.Robots, P.Tasks);
-               S : Annealers.Progress;
-            begin
-               Annealers.Solve (P.all, (Criterion => C, Seed => Seed, Time_Limit => 0.0,
-                                        Iterations => 40_000, others => <>), A, S);
-               Assert (Validate (P.all, A) = "", "annealer invalid: " & Validate (P.all, A));
-               if Evaluate (P.all, A, C).Value /= Opt then
-                  for R in 1 .. P.Robots loop
-                     Ada.Text_IO.Put ("mismatch: robot" & R'Image & " A:");
-                     for K in 1 .. A.Length (R) loop
-                        Ada.Text_IO.Put (A.Tour (R, K)'Image);
-                     end loop;
-                     Ada.Text_IO.Put (" cost" & Tour_Cost (P.all, A, R)'Image & "  E:");
-                     for K in 1 .. E.Length (R) loop
-                        Ada.Text_IO.Put (E.Tour (R, K)'Image);
-                     end loop;
-                     Ada.Text_IO.Put_Line (" cost" & Tour_Cost (P.all, E, R)'Image);
-                  end loop;
-               end if;
-               Assert (Evaluate (P.all, A, C).Value = Opt,
-                       "annealer" & Img (Evaluate (P.all, A, C).Value) & " /= optimum"
-                       & Img (Opt) & " (seed" & Seed'Image & ")");
-               for M in Baselines.Method loop
-                  declare
-                     B : constant Assignment := Baselines.Solve (P.all, M, C);
-                  begin
-                     Assert (Validate (P.all, B) = "", M'Image & " invalid: "
-                             & Validate (P.all, B));
-                     Assert (Evaluate (P.all, B, C).Value >= Opt,
-                             M'Image & " better than the optimum");
-                  end;
-               end loop;
-            end;
-         end loop;
-      end loop;
+      Check_Annealer_Reaches_Optimum
+        (Variants, Tasks => 9, Robots => 3, First_Seed => 900, Iterations => 40_000);
    end Annealer_Reaches_Optimum;
 
    procedure Baselines_Valid_On_Larger (Unused : in out Fixture) is
       P : constant Problem_Access :=
-        Random_Problem (60, 5, (Infeasible => True, Frozen => True, Min_Tasks => 2,
+        Random_Problem (60, 5, (Infeasible => True, Frozen => Robots_1_And_2, Min_Tasks => 2,
                                 Closed => False, others => <>), 77);
    begin
       for M in Baselines.Method loop
@@ -398,16 +206,6 @@ package body Sancta.Allocation.Tests is
       end;
    end Optimal_Tours;
 
-   procedure Write (Name, Text : String) is
-      F : Ada.Text_IO.File_Type;
-   begin
-      Ada.Text_IO.Create (F, Ada.Text_IO.Out_File, Name);
-      Ada.Text_IO.Put (F, Text);
-      Ada.Text_IO.Close (F);
-   end Write;
-
-   NL : constant String := [ASCII.LF];
-
    procedure Explicit_Formats (Unused : in out Fixture) is
       --  The symmetric matrix d(i,j) = 10 i + 10 j for i /= j, 4 nodes.
       function Header (F : String) return String is
@@ -472,21 +270,8 @@ package body Sancta.Allocation.Tests is
       end;
    end Pseudo_Euclidean_And_Geo;
 
-   procedure Expect_Error (File, Text, Expect : String) is
-   begin
-      Write (File, Text);
-      declare
-         P : constant Problem_Access := TSPLIB.Read (File);
-         pragma Unreferenced (P);
-      begin
-         Assert (False, "no error for " & Expect);
-      end;
-   exception
-      when E : Format_Error =>
-         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
-                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
-                 & Expect & "'");
-   end Expect_Error;
+   function Read_TSPLIB (File : String) return Problem_Access is (TSPLIB.Read (File));
+   procedure Expect_Error is new Expect_Read_Error (Read_TSPLIB);
 
    procedure Bad_Files (Unused : in out Fixture) is
       F : constant String := "obj/alloc-test-bad.tsp";
@@ -525,17 +310,19 @@ package body Sancta.Allocation.Tests is
    procedure Mission_File (Unused : in out Fixture) is
       F : constant String := "obj/alloc-test-mission.xml";
    begin
-      Write (F, "<?xml version=""1.0""?>" & NL
-             & "<mission scale=""10"">" & NL
-             & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL
-             & "  <robot id=""ben"" x=""10"" y=""0"" return=""false"" cost=""2""/>" & NL
-             & "  <task id=""t1"" x=""1"" y=""0""/>" & NL
-             & "  <task id=""t2"" x=""9"" y=""0"" robots=""ben""/>" & NL
-             & "  <or id=""door""><at x=""100"" y=""100""/><at x=""2"" y=""0""/></or>" & NL
-             & "  <done robot=""ari"" tasks=""t1""/>" & NL
-             & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Problem_Files.Read (F);
+         P : constant Problem_Access :=
+           Mission_From (F, "<?xml version=""1.0""?>" & NL
+                         & "<mission scale=""10"">" & NL
+                         & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL
+                         & "  <robot id=""ben"" x=""10"" y=""0"" return=""false"" cost=""2""/>"
+                         & NL
+                         & "  <task id=""t1"" x=""1"" y=""0""/>" & NL
+                         & "  <task id=""t2"" x=""9"" y=""0"" robots=""ben""/>" & NL
+                         & "  <or id=""door""><at x=""100"" y=""100""/><at x=""2"" y=""0""/></or>"
+                         & NL
+                         & "  <done robot=""ari"" tasks=""t1""/>" & NL
+                         & "</mission>" & NL);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -550,20 +337,9 @@ package body Sancta.Allocation.Tests is
                  "annealer not optimal on the mission");
          Assert (A.Choice (3) = 2, "the near door alternative must be chosen");
       end;
-      Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0""/>" & NL & "</mission>" & NL);
-      begin
-         declare
-            P : constant Problem_Access := Problem_Files.Read (F);
-            pragma Unreferenced (P);
-         begin
-            Assert (False, "missing attribute not reported");
-         end;
-      exception
-         when E : Format_Error =>
-            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
-                    F & ":2: <robot> needs attribute 'y'") > 0,
-                    "message: " & Ada.Exceptions.Exception_Message (E));
-      end;
+      Expect_Mission_Error (F, "<mission>" & NL & "  <robot id=""a"" x=""0""/>" & NL
+                            & "</mission>" & NL,
+                            F & ":2: <robot> needs attribute 'y'");
       Write (F, "<mission>" & NL & "  <robot id=""a"" x=""0"" y=""0"">" & NL & "</mission>" & NL);
       begin
          declare
@@ -580,41 +356,26 @@ package body Sancta.Allocation.Tests is
       Ada.Directories.Delete_File (F);
    end Mission_File;
 
-   procedure Expect_Mission_Error (F, Text, Expect : String) is
-   begin
-      Write (F, Text);
-      declare
-         P : constant Problem_Access := Problem_Files.Read (F);
-         pragma Unreferenced (P);
-      begin
-         Assert (False, "no error, expected '" & Expect & "'");
-      end;
-   exception
-      when E : Format_Error =>
-         Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E), Expect) > 0,
-                 "message '" & Ada.Exceptions.Exception_Message (E) & "' lacks '"
-                 & Expect & "'");
-   end Expect_Mission_Error;
-
    procedure Nested_Plans (Unused : in out Fixture) is
       F : constant String := "obj/alloc-test-plan.xml";
       Head : constant String := "<mission scale=""10"">" & NL
         & "  <robot id=""ari"" x=""0"" y=""0""/>" & NL;
    begin
-      Write (F, Head
-             & "  <plan>" & NL
-             & "    <task id=""t1"" x=""1"" y=""0""/>" & NL
-             & "    <and>" & NL
-             & "      <or id=""door"" robots=""ari"">" & NL
-             & "        <or><at x=""100"" y=""100""/><task x=""50"" y=""50""/></or>" & NL
-             & "        <and><task x=""2"" y=""0""/></and>" & NL
-             & "      </or>" & NL
-             & "      <and><task id=""t3"" x=""5"" y=""0""/></and>" & NL
-             & "    </and>" & NL
-             & "  </plan>" & NL
-             & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Problem_Files.Read (F);
+         P : constant Problem_Access :=
+           Mission_From (F, Head
+                         & "  <plan>" & NL
+                         & "    <task id=""t1"" x=""1"" y=""0""/>" & NL
+                         & "    <and>" & NL
+                         & "      <or id=""door"" robots=""ari"">" & NL
+                         & "        <or><at x=""100"" y=""100""/><task x=""50"" y=""50""/></or>"
+                         & NL
+                         & "        <and><task x=""2"" y=""0""/></and>" & NL
+                         & "      </or>" & NL
+                         & "      <and><task id=""t3"" x=""5"" y=""0""/></and>" & NL
+                         & "    </and>" & NL
+                         & "  </plan>" & NL
+                         & "</mission>" & NL);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
@@ -629,12 +390,12 @@ package body Sancta.Allocation.Tests is
                  "annealer not optimal on the nested plan");
          Assert (A.Choice (2) = 3 and then E.Choice (2) = 3, "the near door must be chosen");
       end;
-      Write (F, Head
-             & "  <robot id=""bo"" x=""0"" y=""0"" end_x=""10"" end_y=""0""/>" & NL
-             & "  <task id=""t"" x=""0"" y=""5"" robots=""bo""/>" & NL
-             & "</mission>" & NL);
       declare
-         P : constant Problem_Access := Problem_Files.Read (F);
+         P : constant Problem_Access :=
+           Mission_From (F, Head
+                         & "  <robot id=""bo"" x=""0"" y=""0"" end_x=""10"" end_y=""0""/>" & NL
+                         & "  <task id=""t"" x=""0"" y=""5"" robots=""bo""/>" & NL
+                         & "</mission>" & NL);
          E : constant Assignment := Exact.Solve (P.all, Min_Sum);
       begin
          --  bo: (0, 0) -> (0, 5) -> its end depot (10, 0): 50 + nint (111.8).
@@ -701,10 +462,10 @@ package body Sancta.Allocation.Tests is
       Variants : constant array (1 .. 5) of Variant :=
         [Variant'(others => <>),
          (Asymmetric => True, Closed => False, others => <>),
-         (Frozen => True, Min_Tasks => 1, Infeasible => True, others => <>),
+         (Frozen => Robots_1_And_2, Min_Tasks => 1, Infeasible => True, others => <>),
          (End_Depot => True, Heterogeneous => True, Alternatives => True, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
-          Alternatives => True, Frozen => True, Min_Tasks => 1, End_Depot => False)];
+          Alternatives => True, Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>)];
       Kinds : constant array (1 .. 6) of Move_Kind :=
         [Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Log_Auction, Ruin_Recreate];
       Seed : Interfaces.Unsigned_64 := 3_000;

@@ -34,6 +34,8 @@ package body ROSIDL.Static.Tests is
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
 
+   type Stream_Element_Offset_Array is array (Positive range <>) of Stream_Element_Offset;
+
    package Caller is new AUnit.Test_Caller (Fixture);
 
    package Entry_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Type_Entry);
@@ -335,6 +337,79 @@ package body ROSIDL.Static.Tests is
       end;
    end Malformed_Input;
 
+   ------------------------------------------------------------------------
+
+   --  The encoder makes no size pass before writing: a buffer too small
+   --  must still give Encode_Error naming the type and the size needed,
+   --  after writing nothing past the buffer's end (guard bytes checked).
+   --  Every buffer size for LaserScan and the two Everything test types
+   --  (every kind of field), a few sizes for every other type (an exception costs
+   --  ~0.1 ms with tracebacks on).
+   procedure Too_Small_Buffers (Unused : in out Fixture) is
+      Types   : constant Entry_Maps.Map := Generated;
+      Gen     : UInt64 := 16#5A11#;
+      Guard   : constant Stream_Element := 16#A5#;
+      Checked : Natural := 0;
+
+      procedure Check
+        (Name : String; T : Type_Entry; Data : Stream_Element_Array; Order : Byte_Order;
+         Cut  : Stream_Element_Offset)
+      is
+         Size  : constant Stream_Element_Offset := Data'Length;
+         Space : Stream_Element_Array (1 .. Cut + 16) := [others => Guard];
+         Last  : Stream_Element_Offset;
+      begin
+         T.Recode_Into (Data, Space (1 .. Cut), Last, Order);
+         Assert (Cut >= Size, Name & ": encoded into" & Cut'Image & " of"
+                 & Size'Image & " bytes needed");
+         Assert (Last = Size and then Space (1 .. Last) = Data,
+                 Name & ": encoding into a buffer of" & Cut'Image & " bytes differs");
+      exception
+         when E : ROSIDL.Encode_Error =>
+            Assert (Cut < Size, Name & ": Encode_Error with" & Cut'Image & " of"
+                    & Size'Image & " bytes: " & Message_Of (E));
+            Assert (Ada.Strings.Fixed.Index (Message_Of (E), Name & ":") = 1
+                    and then Ada.Strings.Fixed.Index (Message_Of (E), "needs" & Size'Image) > 0,
+                    Name & ": error message: " & Message_Of (E));
+            Assert (Space (Cut + 1 .. Space'Last) = [1 .. 16 => Guard],
+                    Name & ": wrote past a buffer of" & Cut'Image & " bytes");
+      end Check;
+
+   begin
+      Use_User_Interfaces;
+      for Support of ROSIDL.CDR_Samples.All_Types loop
+         if not Is_Generated_Package (Types, ROSIDL.Typesupport.Full_Name (Support)) then
+            goto Next_Type;
+         end if;
+         declare
+            Name  : constant String := ROSIDL.Typesupport.Full_Name (Support);
+            T     : constant Type_Entry := Types (Name);
+            Order : constant Byte_Order :=
+              (if Checked mod 2 = 0 then Little_Endian else Big_Endian);
+            Data  : constant Stream_Element_Array :=
+              Encode (ROSIDL.CDR_Samples.Random_Message (Support, Gen), Order);
+            Size  : constant Stream_Element_Offset := Data'Length;
+         begin
+            if Name in "sensor_msgs/msg/LaserScan" | "sancta_test_msgs/msg/Everything"
+              | "cdr_test_msgs/msg/Everything"
+            then
+               for Cut in 0 .. Size + 8 loop
+                  Check (Name, T, Data, Order, Cut);
+               end loop;
+            else
+               for Cut of Stream_Element_Offset_Array'[0, 3, Size / 2, Size - 1, Size, Size + 5]
+               loop
+                  Check (Name, T, Data, Order, Cut);
+               end loop;
+            end if;
+            Checked := Checked + 1;
+         end;
+         <<Next_Type>>
+      end loop;
+      Assert (Checked = Natural (Types.Length),
+              "checked" & Checked'Image & " of the" & Types.Length'Image & " generated types");
+   end Too_Small_Buffers;
+
    procedure Bounded_Types_Are_Known (Unused : in out Fixture) is
       Bounded : Natural := 0;
    begin
@@ -363,6 +438,8 @@ package body ROSIDL.Static.Tests is
                                       Records_As_Users_Write_Them'Access));
       Result.Add_Test (Caller.Create ("Static: malformed input raises Decode_Error with offset",
                                       Malformed_Input'Access));
+      Result.Add_Test (Caller.Create ("Static: a too small buffer is Encode_Error, never overrun",
+                                      Too_Small_Buffers'Access));
       Result.Add_Test (Caller.Create ("Static: bounded types", Bounded_Types_Are_Known'Access));
       return Result'Access;
    end Suite;

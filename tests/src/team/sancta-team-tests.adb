@@ -613,9 +613,9 @@ package body Sancta.Team.Tests is
       Config.Mission_File := To_Unbounded_String ("share/missions/office-team.xml");
       Config.How := How;
       Config.Rate := 40.0;
-      Config.Verbose := False;
+      Config.Run.Verbose := False;
       Config.Team := To_Unbounded_String (Team);
-      Config.Out_Dir := To_Unbounded_String ("out/test-" & Team);
+      Config.Run.Out_Dir := To_Unbounded_String ("out/test-" & Team);
       Commands.Team_Demos.Run (Config, Result);
       Assert (Result.Killed /= Null_Unbounded_String, "no robot was killed");
       Assert (Result.Replanned, "the survivors did not re-plan");
