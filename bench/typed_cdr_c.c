@@ -117,7 +117,8 @@ int main (int argc, char **argv)
   scan.header.stamp.sec = 1700000000;
   scan.header.frame_id = "base_scan";
   scan.angle_min = -3.14159f; scan.angle_max = 3.14159f;
-  scan.angle_increment = 2.0f * 3.14159f / 720.0f; scan.range_max = 30.0f;
+  scan.angle_increment = 0.0087266389f;  /* the same literal as the Ada side */
+  scan.range_max = 30.0f;
   float ranges[720];
   for (int i = 0; i < 720; i++) ranges[i] = 0.5f + (float) ((i + 1) % 97) * 0.25f;
   scan.ranges._buffer = ranges; scan.ranges._length = scan.ranges._maximum = 720;
@@ -138,6 +139,7 @@ int main (int argc, char **argv)
   memset (&grid, 0, sizeof grid);
   grid.header.frame_id = "map"; grid.info.resolution = 0.05f;
   grid.info.width = 1000; grid.info.height = 1000;
+  grid.info.origin.orientation.w = 1.0;  /* the definition's default (the Ada record has it) */
   int8_t *cells = malloc (1000000);
   for (int i = 0; i < 1000000; i++) cells[i] = (int8_t) (((i + 1) % 3) * 50 - 1);
   grid.data._buffer = cells; grid.data._length = grid.data._maximum = 1000000;
