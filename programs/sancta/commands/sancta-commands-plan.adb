@@ -1,5 +1,7 @@
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Ada.Execution_Time;
+with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
@@ -9,6 +11,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Branch_And_Cut;
+with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
@@ -24,6 +27,15 @@ package body Sancta.Commands.Plan is
 
    Usage_Error : exception;
 
+   --  CPU seconds used so far by the main task (set-up and search; runs of
+   --  --restarts work in tasks of their own).
+   function CPU_Seconds return Long_Float is
+      use type Ada.Execution_Time.CPU_Time;
+   begin
+      return Long_Float (Ada.Real_Time.To_Duration
+                           (Ada.Execution_Time.Clock - Ada.Execution_Time.Time_Of (0)));
+   end CPU_Seconds;
+
    procedure Help is
    begin
       Put_Line ("usage: sancta plan FILE [options]");
@@ -33,7 +45,10 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --robots N           number of robots for TSPLIB files (default 1)");
       Put_Line ("  --objective NAME     minmax | minsum | minave | minmix | mintim, or");
       Put_Line ("                       weights MAX,SUM,AVE (default minsum)");
-      Put_Line ("  --time T             wall-clock budget: 10s, 500ms, 2.5 (s); default 10s");
+      Put_Line ("  --time T             time budget: 10s, 500ms, 2.5 (s); default 10s");
+      Put_Line ("  --clock K            what --time counts: wall (default) or cpu, the CPU");
+      Put_Line ("                       time of the search's task (the same work on a busy");
+      Put_Line ("                       machine; branch and cut (--solver exact) stays wall)");
       Put_Line ("  --iterations N       move budget (with --time 0: deterministic)");
       Put_Line ("  --converge N         stop after N moves without a new best");
       Put_Line ("  --seed N             random seed (default 1)");
@@ -476,6 +491,18 @@ package body Sancta.Commands.Plan is
                if Opts.Time_Limit < 0.0 then
                   raise Usage_Error with "--time: must not be negative";
                end if;
+            elsif A = "--clock" then
+               declare
+                  K : constant String := Value_Of (A);
+               begin
+                  if K = "cpu" then
+                     Opts.Budget_Clock := Budget_Clocks.CPU_Time;
+                  elsif K = "wall" then
+                     Opts.Budget_Clock := Budget_Clocks.Wall_Time;
+                  else
+                     raise Usage_Error with "--clock: '" & K & "' is not wall or cpu";
+                  end if;
+               end;
             elsif A = "--iterations" then
                Opts.Iterations := Parse_Natural (A, Value_Of (A));
                if not Time_Set then
@@ -808,6 +835,9 @@ package body Sancta.Commands.Plan is
                           & ", ""proven"": " & (if Proven then "true" else "false")
                           & ", ""lower_bound"": "
                           & (if Lower_Bound > 0 then Cost_Img (Lower_Bound) else "null")
+                          & ", ""clock"": """ & Budget_Clocks.Image (Opts.Budget_Clock) & """"
+                          & ", ""time_limit"": " & Real_Img (Long_Float (Opts.Time_Limit), 3)
+                          & ", ""cpu_time"": " & Real_Img (CPU_Seconds, 3)
                           & ", ""time_used"": " & Real_Img (Long_Float (Stats.Elapsed), 3)
                           & ", ""time_to_best"": " & Real_Img (Long_Float (Stats.Time_To_Best), 3)
                           & ", ""moves"": " & Img (Stats.Moves)

@@ -6,28 +6,67 @@ package body Sancta.Allocation.Annealers.Construction is
       Best_Value : Long_Float := Long_Float'Last;
       Found : Boolean := False;
       L : constant Natural := Location_Of (P, T, S.Choice (T));
-   begin
-      for R in 1 .. S.Robots loop
-         if (Only = 0 or else R = Only) and then P.Can_Do (R, T) then
-            for After in P.Frozen_Length (R) .. S.Length (R) loop
-               declare
-                  Mv : Move;
-                  Ok : Boolean;
-               begin
-                  Mv.A.Robot := R;
-                  Add (Mv.A, R, 1, After);
-                  Add_Single (Mv.A, T, L);
-                  Add (Mv.A, R, After + 1, S.Length (R));
-                  Evaluate_Move (P, S, W, Mv, Ok);
-                  if Mv.Value < Best_Value then
-                     Best_Value := Mv.Value;
-                     Best := Mv;
-                     Found := True;
-                  end if;
-               end;
-            end loop;
+
+      --  T after position After of robot R's tour.
+      procedure Try (R : Positive; After : Natural) is
+         Mv : Move;
+         Ok : Boolean;
+      begin
+         Mv.A.Robot := R;
+         Add (Mv.A, R, 1, After);
+         Add_Single (Mv.A, T, L);
+         Add (Mv.A, R, After + 1, S.Length (R));
+         Evaluate_Move (P, S, W, Mv, Ok);
+         if Mv.Value < Best_Value then
+            Best_Value := Mv.Value;
+            Best := Mv;
+            Found := True;
          end if;
-      end loop;
+      end Try;
+
+      function Allowed (R : Positive) return Boolean is
+        ((Only = 0 or else R = Only) and then P.Can_Do (R, T));
+
+      function Near_Placed return Boolean is
+        (for some K in 1 .. S.Near_Count (T) =>
+           S.Owner (S.Near (T, K)) /= 0 and then Allowed (S.Owner (S.Near (T, K))));
+   begin
+      if S.Tasks > Candidate_Insertion_Above and then Near_Placed then
+         --  Each robot's first and last free place, and both sides of each
+         --  of T's nearest tasks already in a tour.
+         for R in 1 .. S.Robots loop
+            if Allowed (R) then
+               Try (R, P.Frozen_Length (R));
+               if S.Length (R) > P.Frozen_Length (R) then
+                  Try (R, S.Length (R));
+               end if;
+            end if;
+         end loop;
+         for K in 1 .. S.Near_Count (T) loop
+            declare
+               U : constant Positive := S.Near (T, K);
+               R : constant Natural := S.Owner (U);
+            begin
+               if R /= 0 and then Allowed (R) then
+                  if S.Position (U) - 1 > P.Frozen_Length (R) then
+                     Try (R, S.Position (U) - 1);
+                  end if;
+                  if S.Position (U) > P.Frozen_Length (R) and then S.Position (U) < S.Length (R)
+                  then
+                     Try (R, S.Position (U));
+                  end if;
+               end if;
+            end;
+         end loop;
+      else
+         for R in 1 .. S.Robots loop
+            if Allowed (R) then
+               for After in P.Frozen_Length (R) .. S.Length (R) loop
+                  Try (R, After);
+               end loop;
+            end if;
+         end loop;
+      end if;
       if not Found then
          raise Program_Error with "no robot can do task" & T'Image;
       end if;
@@ -47,6 +86,10 @@ package body Sancta.Allocation.Annealers.Construction is
                First (R) := S.Position (T);
             end if;
          end;
+      end loop;
+      for T of List loop
+         S.Owner (T) := 0;
+         S.Position (T) := 0;
       end loop;
       for R in 1 .. S.Robots loop
          if First (R) /= 0 then
@@ -96,9 +139,9 @@ package body Sancta.Allocation.Annealers.Construction is
                      T : constant Positive := Order (K);
                   begin
                      if not Done (T) and then P.Can_Do (R, T)
-                       and then P.Distance (P.Start (R), Location_Of (P, T)) < Best_Distance
+                       and then Distance (P, P.Start (R), Location_Of (P, T)) < Best_Distance
                      then
-                        Best_Distance := P.Distance (P.Start (R), Location_Of (P, T));
+                        Best_Distance := Distance (P, P.Start (R), Location_Of (P, T));
                         Best := T;
                      end if;
                   end;

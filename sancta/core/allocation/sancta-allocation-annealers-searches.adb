@@ -9,6 +9,9 @@ package body Sancta.Allocation.Annealers.Searches is
    use Ada.Numerics.Long_Elementary_Functions;
    use Ada.Real_Time;
 
+   --  The budget's clock (wall or CPU time, Options.Budget_Clock).
+   function Now (This : Search) return Time is (Budget_Clocks.Clock (This.Opts.Budget_Clock));
+
    Initial_Weights : constant Kind_Reals :=
      [Or_Opt_Near => 3.0, Two_Opt_Near => 3.0, Or3_Near => 2.0, Cross_Near => 1.5,
       Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
@@ -56,7 +59,7 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Best_Value := Value;
       This.Best_Saved := False;
       This.Last_Best_Move := This.Moves;
-      This.Best_Time := To_Duration (Clock - This.Started);
+      This.Best_Time := To_Duration (Now (This) - This.Started);
       This.Kinds (Kind).New_Best := This.Kinds (Kind).New_Best + 1;
       if This.Opts.Target > 0.0 and then True_Value (This) <= This.Opts.Target then
          This.Stop := True;
@@ -569,7 +572,7 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
       This.Tours := New_State (P, This.Neighbours);
       This.Generator := Random.Seeded (Opts.Seed);
-      This.Started := Clock;
+      This.Started := Now (This);
       This.Next_Report := This.Started + To_Time_Span (Opts.Report_Every);
       This.Runs := (if Opts.Runs > 0 then Opts.Runs else 1);
       This.Runs_Decided := Opts.Runs > 0 or else Opts.Schedule /= Geometric
@@ -622,11 +625,11 @@ package body Sancta.Allocation.Annealers.Searches is
 
    --  The share of the budget used (0 .. 1; may exceed 1), setting Stop
    --  when it is spent.
-   function Budget_Used (This : in out Search; Now : Time) return Long_Float is
+   function Budget_Used (This : in out Search; Reading : Time) return Long_Float is
       O : Options renames This.Opts;
       X : Long_Float := 0.0;
    begin
-      This.Elapsed := To_Duration (Now - This.Started);
+      This.Elapsed := To_Duration (Reading - This.Started);
       if O.Time_Limit > 0.0 then
          X := Long_Float (This.Elapsed) / Long_Float (O.Time_Limit);
          This.Stop := This.Stop
@@ -737,8 +740,8 @@ package body Sancta.Allocation.Annealers.Searches is
    --  Everything done every 128 moves: budget, balance decay, temperature,
    --  reports, move weights.
    procedure Checkpoint (This : in out Search; P : Problem) is
-      Now : constant Time := Clock;
-      X   : Long_Float := Budget_Used (This, Now);
+      Reading : constant Time := Now (This);
+      X   : Long_Float := Budget_Used (This, Reading);
    begin
       if This.Stop then
          return;
@@ -754,8 +757,8 @@ package body Sancta.Allocation.Annealers.Searches is
          when Cyclic    => Cyclic_Step (This, P, X);
          when Reheat    => Reheat_Step (This);
       end case;
-      if Now >= This.Next_Report then
-         This.Next_Report := Now + To_Time_Span (This.Opts.Report_Every);
+      if Reading >= This.Next_Report then
+         This.Next_Report := Reading + To_Time_Span (This.Opts.Report_Every);
          Send_Report (This);
       end if;
       if This.Opts.Adaptive and then This.Moves mod 8192 = 0 and then This.Moves > 0 then
@@ -802,7 +805,7 @@ package body Sancta.Allocation.Annealers.Searches is
          Rounds := Rounds + 1;
          for T in 1 .. P.Tasks loop
             if This.Opts.Time_Limit > 0.0 and then T mod 16 = 0
-              and then To_Duration (Clock - This.Started) > This.Opts.Time_Limit * 1.02
+              and then To_Duration (Now (This) - This.Started) > This.Opts.Time_Limit * 1.02
             then
                return;
             end if;
@@ -849,12 +852,12 @@ package body Sancta.Allocation.Annealers.Searches is
          This.Polish_Gain := Long_Float'Max (0.0, This.Best_Value - This.Current);
          if This.Current < This.Best_Value then
             This.Best_Value := This.Current;
-            This.Best_Time := To_Duration (Clock - This.Started);
+            This.Best_Time := To_Duration (Now (This) - This.Started);
             Store (This.Tours.all, This.Best);
          end if;
       end if;
       Load (P, This.Tours.all, This.Best);
-      This.Elapsed := To_Duration (Clock - This.Started);
+      This.Elapsed := To_Duration (Now (This) - This.Started);
       This.Best_Value := True_Value (This);
       This.Current := This.Best_Value;
       Send_Report (This);

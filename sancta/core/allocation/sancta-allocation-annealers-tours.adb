@@ -109,7 +109,7 @@ package body Sancta.Allocation.Annealers.Tours is
                   declare
                      LU : constant Natural := Location_Of (P, U);
                      D  : constant Cost :=
-                       Cost'Min (P.Distance (LT, LU), P.Distance (LU, LT));
+                       Cost'Min (Distance (P, LT, LU), Distance (P, LU, LT));
                      I  : Natural;
                   begin
                      if N < K or else D < Dist (N) then

@@ -47,7 +47,8 @@ package body Sancta.Allocation.Annealers is
       Before : constant Duration := Stats.Elapsed;
    begin
       Local_Search.Improve (P, Best, Duration'Max (0.0, Opts.Time_Limit - Before), Opts.Seed,
-                            Search, Neighbours => Opts.Neighbours, Check => Opts.Check);
+                            Search, Neighbours => Opts.Neighbours, Check => Opts.Check,
+                            Budget_Clock => Opts.Budget_Clock);
       Stats.Elapsed := Before + Search.Elapsed;
       if Search.After < Search.Before then
          Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
@@ -71,7 +72,7 @@ package body Sancta.Allocation.Annealers is
    begin
       Local_Search.Polish_Routes (P, Best, Budget, Opts.Seed, Search,
                                   Neighbours => Opts.Neighbours, Check => Opts.Check,
-                                  Kicks => Kicks);
+                                  Kicks => Kicks, Budget_Clock => Opts.Budget_Clock);
       Stats.Elapsed := Before + Search.Elapsed;
       if Search.After < Search.Before then
          declare
@@ -116,14 +117,15 @@ package body Sancta.Allocation.Annealers is
       if Share > 0.0 and then Single_Tour and then P.Tasks > Local_Search.Direct_Size then
          --  A large single tour: the search alone, from a nearest-neighbour tour.
          declare
-            Started : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+            Started : constant Ada.Real_Time.Time := Budget_Clocks.Clock (Opts.Budget_Clock);
             use type Ada.Real_Time.Time;
          begin
             Best := Local_Search.Nearest_Neighbour_Tour (P);
             Stats := (others => <>);
             Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
             Stats.Current := Stats.Best;
-            Stats.Elapsed := Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started);
+            Stats.Elapsed := Ada.Real_Time.To_Duration
+              (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
             Improve_Tour (P, Opts, Best, Stats);
             return;
          end;

@@ -35,6 +35,7 @@
 --     Solve (P.all, O, Best, Stats);
 with Interfaces;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 
 package Sancta.Allocation.Annealers is
@@ -79,7 +80,10 @@ package Sancta.Allocation.Annealers is
       Criterion    : Allocation.Criterion := Min_Sum;
       Seed         : Interfaces.Unsigned_64 := 1;
       Time_Limit   : Duration := 1.0;
-      --  Wall-clock budget; 0.0 = none (then Iterations must be set).
+      --  Time budget on Budget_Clock; 0.0 = none (then Iterations must be set).
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
+      --  CPU_Time: Time_Limit is CPU time of the calling task (the search
+      --  runs in it), for figures that do not depend on the machine's load.
       Iterations   : Long_Long_Integer := 0;
       --  Move budget; 0 = none. With only this budget, runs are deterministic.
       Convergence  : Long_Long_Integer := 0;

@@ -35,7 +35,8 @@ package body Sancta.Allocation.Local_Search is
       Stats          : in out Statistics;
       Neighbours     : Positive;
       Check          : Boolean;
-      Kicks          : Boolean := True)
+      Kicks          : Boolean := True;
+      Budget_Clock   : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
    is
       M : constant Natural := Route'Length;
       Route_In : constant Count_Array (1 .. M) := Route;
@@ -61,7 +62,7 @@ package body Sancta.Allocation.Local_Search is
       Head, Count : Natural := 0;
       Length, Saved_Length : Cost := 0;
       G : Random.Generator := Random.Seeded (Seed);
-      Started  : constant Time := Clock;
+      Started  : constant Time := Budget_Clocks.Clock (Budget_Clock);
       Deadline : constant Time := Started + To_Time_Span (Time_Limit);
 
       function Forced (U, V : Node) return Boolean is
@@ -349,7 +350,8 @@ package body Sancta.Allocation.Local_Search is
       begin
          while Count > 0 loop
             Pops := Pops + 1;
-            exit when Time_Limit > 0.0 and then Pops mod 128 = 0 and then Clock >= Deadline;
+            exit when Time_Limit > 0.0 and then Pops mod 128 = 0
+              and then Budget_Clocks.Clock (Budget_Clock) >= Deadline;
             declare
                V : constant Node := Queue (Head);
             begin
@@ -473,14 +475,16 @@ package body Sancta.Allocation.Local_Search is
       Stats.Before := Stats.Before + Length + (if Has_End then Bound else 0);
       Descend;
       if Length < Started_Length then
-         Stats.Time_To_Best := To_Duration (Clock - Started);
+         Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
       end if;
       if Time_Limit > 0.0 and then Kicks then
          Saved_Order := Order;
          Saved_Position := Position;
          Saved_Length := Length;
          for Kick_Number in Long_Long_Integer range 0 .. Long_Long_Integer'Last loop
-            if Kick_Number mod 16 = 0 and then Clock >= Deadline then
+            if Kick_Number mod 16 = 0
+              and then Budget_Clocks.Clock (Budget_Clock) >= Deadline
+            then
                exit;
             end if;
             Stats.Kicks := Stats.Kicks + 1;
@@ -488,7 +492,7 @@ package body Sancta.Allocation.Local_Search is
             Descend;
             if Length < Saved_Length then
                Stats.Improving := Stats.Improving + 1;
-               Stats.Time_To_Best := To_Duration (Clock - Started);
+               Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
             end if;
             if Length <= Saved_Length then
                Saved_Order := Order;
@@ -523,19 +527,21 @@ package body Sancta.Allocation.Local_Search is
       Seed       : Interfaces.Unsigned_64;
       Stats      : out Statistics;
       Neighbours : Positive := 8;
-      Check      : Boolean := False)
+      Check      : Boolean := False;
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
    is
-      Started : constant Time := Clock;
+      Started : constant Time := Budget_Clocks.Clock (Budget_Clock);
       Route : Count_Array (1 .. P.Tasks) := [for I in 1 .. P.Tasks => A.Tour (1, I)];
    begin
       Stats := (others => <>);
       Search_Route (P, 1, P.Start (1), False, 0, Route,
                     [for I in 1 .. P.Tasks => Location_Of (P, Route (I))],
-                    Time_Limit, Seed, Stats, Neighbours, Check);
+                    Time_Limit, Seed, Stats, Neighbours, Check,
+                    Budget_Clock => Budget_Clock);
       for I in Route'Range loop
          A.Tour (1, I) := Route (I);
       end loop;
-      Stats.Elapsed := To_Duration (Clock - Started);
+      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
    end Improve;
 
    function Nearest_Neighbour_Tour (P : Problem) return Assignment is
@@ -549,9 +555,11 @@ package body Sancta.Allocation.Local_Search is
                Best_Cost : Cost := Cost'Last;
             begin
                for T in 1 .. P.Tasks loop
-                  if not Visited (T) and then P.Distance (Here, Location_Of (P, T)) < Best_Cost then
+                  if not Visited (T)
+                    and then Distance (P, Here, Location_Of (P, T)) < Best_Cost
+                  then
                      Best := T;
-                     Best_Cost := P.Distance (Here, Location_Of (P, T));
+                     Best_Cost := Distance (P, Here, Location_Of (P, T));
                   end if;
                end loop;
                Visited (Best) := True;
@@ -592,10 +600,11 @@ package body Sancta.Allocation.Local_Search is
       Stats      : out Statistics;
       Neighbours : Positive := 8;
       Check      : Boolean := False;
-      Kicks      : Boolean := True)
+      Kicks      : Boolean := True;
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
    is
       use type Interfaces.Unsigned_64;
-      Started : constant Time := Clock;
+      Started : constant Time := Budget_Clocks.Clock (Budget_Clock);
       Free_Tasks : Natural := 0;
    begin
       Stats := (others => <>);
@@ -623,7 +632,7 @@ package body Sancta.Allocation.Local_Search is
                     (P, R, Depot, not Closed_At_Depot, P.Finish (R), Route,
                      [for I in 1 .. Free => Location_Of (P, Route (I), A.Choice (Route (I)))],
                      Share, Seed + Interfaces.Unsigned_64 (R), Stats, Neighbours, Check,
-                     Kicks);
+                     Kicks, Budget_Clock);
                   for I in 1 .. Free loop
                      A.Tour (R, F + I) := Route (I);
                   end loop;
@@ -631,7 +640,7 @@ package body Sancta.Allocation.Local_Search is
             end if;
          end;
       end loop;
-      Stats.Elapsed := To_Duration (Clock - Started);
+      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
    end Polish_Routes;
 
 end Sancta.Allocation.Local_Search;

@@ -18,6 +18,7 @@
 --  (not for the mean completion time, which depends on the order).
 with Interfaces;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
+with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 
 package Sancta.Allocation.Local_Search is
@@ -44,11 +45,12 @@ package Sancta.Allocation.Local_Search is
       Seed       : Interfaces.Unsigned_64;
       Stats      : out Statistics;
       Neighbours : Positive := 8;
-      Check      : Boolean := False)
+      Check      : Boolean := False;
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
      with Pre => Applies (P) and then A.Robots = 1 and then A.Tasks = P.Tasks
                  and then A.Length (1) = P.Tasks;
-   --  A's tour improved for Time_Limit (0.0: one descent, no kicks), the
-   --  descents included.
+   --  A's tour improved for Time_Limit on Budget_Clock (0.0: one descent,
+   --  no kicks), the descents included.
    --  Check: after every move the tour length is recomputed and compared
    --  with the incremental one (Program_Error on a difference).
 
@@ -70,7 +72,8 @@ package Sancta.Allocation.Local_Search is
       Stats      : out Statistics;
       Neighbours : Positive := 8;
       Check      : Boolean := False;
-      Kicks      : Boolean := True)
+      Kicks      : Boolean := True;
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
      with Pre => A.Robots = P.Robots and then A.Tasks = P.Tasks;
    --  Each route of A with at least 5 free tasks and symmetric distances
    --  for its robot (the shared matrix, or its own on the route's

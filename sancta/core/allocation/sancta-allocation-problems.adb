@@ -19,17 +19,41 @@ package body Sancta.Allocation.Problems is
       return P;
    end Create;
 
+   --  The matrix, allocated with the current distances if there is none.
+   procedure Need_Matrix (This : in out Problem) is
+   begin
+      if This.Rule = From_Matrix and then This.Matrix /= null then
+         return;
+      end if;
+      declare
+         M : constant Cost_Matrix_Access :=
+           new Cost_Matrix (0 .. This.Locations, 0 .. This.Locations);
+      begin
+         for A in M'Range (1) loop
+            for B in M'Range (2) loop
+               M (A, B) := Distance (This, A, B);
+            end loop;
+         end loop;
+         This.Matrix := M;
+         This.Rule := From_Matrix;
+      end;
+   end Need_Matrix;
+
    procedure Set_Distance (This : in out Problem; From, To : Positive; D : Cost) is
    begin
-      This.Distance (From, To) := D;
+      Need_Matrix (This);
+      This.Matrix (From, To) := D;
    end Set_Distance;
 
    procedure Update_Symmetry (This : in out Problem) is
    begin
       This.Symmetric := True;
+      if This.Rule /= From_Matrix or else This.Matrix = null then
+         return;
+      end if;
       for A in 1 .. This.Locations loop
          for B in A + 1 .. This.Locations loop
-            if This.Distance (A, B) /= This.Distance (B, A) then
+            if This.Matrix (A, B) /= This.Matrix (B, A) then
                This.Symmetric := False;
                return;
             end if;
@@ -39,33 +63,35 @@ package body Sancta.Allocation.Problems is
 
    procedure Set_Symmetric_Distance (This : in out Problem; A, B : Positive; D : Cost) is
    begin
-      This.Distance (A, B) := D;
-      This.Distance (B, A) := D;
+      Set_Distance (This, A, B, D);
+      This.Matrix (B, A) := D;
    end Set_Symmetric_Distance;
 
    procedure Set_Euclidean
      (This : in out Problem; Points : Point_Array; Scale : Long_Float := 1.0;
-      Round : Boolean := True)
-   is
-      use Sancta.Geometry;
+      Round : Boolean := True; Rule : Distance_Rule := Euclidean_Nearest;
+      Keep_Matrix_Up_To : Natural := Matrix_Limit) is
    begin
       This.Coordinates := Points;
       This.Has_Coordinates := True;
       This.Scale := Scale;
       This.Symmetric := True;
-      for A in Points'Range loop
-         for B in Points'Range loop
-            declare
-               D : constant Long_Float :=
-                 Long_Float (Distance (Points (A), Points (B))) * Scale;
-            begin
-               This.Distance (A, B) :=
-                 (if Round then Cost (Long_Float'Floor (D + 0.5))
-                  else Cost (Long_Float'Floor (D)));
-            end;
-         end loop;
-      end loop;
+      This.Rule := (if Round then Rule else Euclidean_Floor);
+      This.Matrix := null;
+      if This.Locations <= Keep_Matrix_Up_To then
+         Need_Matrix (This);
+      end if;
    end Set_Euclidean;
+
+   procedure Copy_Distances (From : Problem; To : in out Problem) is
+   begin
+      To.Rule := From.Rule;
+      To.Matrix := (if From.Matrix = null then null else new Cost_Matrix'(From.Matrix.all));
+      To.Symmetric := From.Symmetric;
+      To.Coordinates := From.Coordinates;
+      To.Has_Coordinates := From.Has_Coordinates;
+      To.Scale := From.Scale;
+   end Copy_Distances;
 
    procedure Set_From (This : in out Problem; F : not null Cost_Function) is
    begin
@@ -133,11 +159,23 @@ package body Sancta.Allocation.Problems is
       end loop;
    end Freeze;
 
+   --  Robot R's own matrix, from its current distances if it has none.
    procedure Own_Matrix (This : in out Problem; R : Positive) is
    begin
       if This.Own (R) = null then
-         This.Own (R) := new Cost_Matrix'(This.Distance);
+         declare
+            M : constant Cost_Matrix_Access :=
+              new Cost_Matrix (0 .. This.Locations, 0 .. This.Locations);
+         begin
+            for A in M'Range (1) loop
+               for B in M'Range (2) loop
+                  M (A, B) := Robot_Distance (This, R, A, B);
+               end loop;
+            end loop;
+            This.Own (R) := M;
+         end;
       end if;
+      This.Own_Factor (R) := 0.0;
    end Own_Matrix;
 
    procedure Set_Robot_Distance
@@ -161,14 +199,8 @@ package body Sancta.Allocation.Problems is
 
    procedure Set_Robot_Factor (This : in out Problem; R : Positive; Factor : Long_Float) is
    begin
-      Own_Matrix (This, R);
-      for A in 1 .. This.Locations loop
-         for B in 1 .. This.Locations loop
-            This.Own (R) (A, B) := Cost'Min
-              (Infinity, Cost (Long_Float'Floor (Factor * Long_Float (This.Distance (A, B))
-                                                 + 0.5)));
-         end loop;
-      end loop;
+      This.Own (R) := null;
+      This.Own_Factor (R) := Factor;
    end Set_Robot_Factor;
 
    procedure Link (This : in out Problem; Parent : Natural; Child : in out Plan_Node;

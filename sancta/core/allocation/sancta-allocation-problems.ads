@@ -18,8 +18,14 @@
 --     Add_Plan_Task (P.all, O, 1);  Add_Plan_Task (P.all, O, 2);
 --
 --  Tasks outside the plan tree are always active (the root is an implicit
---  AND). Problems are built once and read-only afterwards; they live on the
---  heap because their matrix can be large (1000 locations: 8 MB).
+--  AND). Problems are built once and read-only afterwards.
+--
+--  Distances: read them with Distance (P, From, To) (Robot_Distance for a
+--  robot's own costs). They come from an n x n matrix (8 bytes per pair:
+--  1000 locations 8 MB, 5000 locations 200 MB) or, for Euclidean problems
+--  (Set_Euclidean, TSPLIB EUC_2D / CEIL_2D) of more than Matrix_Limit
+--  locations, are computed from the coordinates with the same rounding
+--  (memory O(n)). Set_Distance on a computed problem turns it into a matrix.
 --
 --  Known limits: compound tasks with distinct entry and exit points are
 --  modelled as their entry location plus an inner length folded into the
@@ -27,6 +33,7 @@
 --  when it sits in an alternative never chosen; at most Tasks OR nodes.
 with Ada.Containers.Indefinite_Vectors;
 with Ada.Containers.Vectors;
+with Ada.Numerics.Long_Elementary_Functions;
 with Sancta.Geometry;
 
 package Sancta.Allocation.Problems is
@@ -40,6 +47,17 @@ package Sancta.Allocation.Problems is
    type Task_Matrix is array (Positive range <>, Positive range <>) of Natural;
    type Cost_Matrix_Access is access Cost_Matrix;
    type Robot_Matrices is array (Positive range <>) of Cost_Matrix_Access;
+   type Factor_Array is array (Positive range <>) of Long_Float;
+
+   type Distance_Rule is (From_Matrix, Euclidean_Nearest, Euclidean_Floor, Euclidean_Ceiling);
+   --  Where distances come from: the matrix, or Scale x the Euclidean
+   --  distance of the coordinates rounded to the nearest integer (TSPLIB
+   --  nint), down or up (TSPLIB CEIL_2D).
+
+   Matrix_Limit : constant := 1000;
+   --  Euclidean problems of more locations have no matrix (computed
+   --  distances; a matrix of 1000 locations is 8 MB and is read from memory
+   --  at about the cost of a square root).
 
    type Node_Kind is (Task_Node, And_Node, Or_Node);
    type Plan_Node is record
@@ -68,10 +86,11 @@ package Sancta.Allocation.Problems is
       Robots       : Positive;
       Alternatives : Positive)
    is limited record
-      Distance       : Cost_Matrix (0 .. Locations, 0 .. Locations) :=
-        [others => [others => 0]];
-      --  Base distance; location 0 is "nowhere", at distance 0 from
-      --  everything: the end of an open tour.
+      Rule           : Distance_Rule := From_Matrix;
+      Matrix         : Cost_Matrix_Access;
+      --  From_Matrix: the base distances, (0 .. Locations, 0 .. Locations)
+      --  (null: all 0); location 0 is "nowhere", at distance 0 from
+      --  everything: the end of an open tour. Read through Distance.
       Symmetric      : Boolean := True;
       Coordinates    : Point_Array (1 .. Locations) := [others => (0.0, 0.0)];
       Has_Coordinates : Boolean := False;
@@ -96,7 +115,9 @@ package Sancta.Allocation.Problems is
       --  Every robot must do at least this many tasks (mTSP: 1).
       Name           : String (1 .. 32) := [others => ' '];
       Own            : Robot_Matrices (1 .. Robots) := [others => null];
-      --  A robot's own base distances (null: the shared Distance).
+      --  A robot's own base distances (null: the shared ones, times
+      --  Own_Factor when that is > 0).
+      Own_Factor     : Factor_Array (1 .. Robots) := [others => 0.0];
       Plan           : Node_Vectors.Vector;
       Or_Nodes       : Natural_Vectors.Vector;
       --  The node of each OR ordinal.
@@ -120,9 +141,46 @@ package Sancta.Allocation.Problems is
 
    Nowhere : constant := 0;
 
+   function Euclidean_Length (A, B : Sancta.Geometry.Point) return Long_Float
+   is (Ada.Numerics.Long_Elementary_Functions.Sqrt
+         ((Long_Float (A.X) - Long_Float (B.X)) * (Long_Float (A.X) - Long_Float (B.X))
+          + (Long_Float (A.Y) - Long_Float (B.Y)) * (Long_Float (A.Y) - Long_Float (B.Y))));
+   --  Example: Euclidean_Length ((0.0, 0.0), (3.0, 4.0)) = 5.0.
+
+   function Rounded (Rule : Distance_Rule; D : Long_Float) return Cost
+   is (case Rule is
+          when Euclidean_Floor   => Cost (Long_Float'Floor (D)),
+          when Euclidean_Ceiling => Cost (Long_Float'Ceiling (D)),
+          when others            => Cost (Long_Float'Floor (D + 0.5)))
+     with Inline;
+   --  D rounded as Rule says (nearest for From_Matrix).
+
+   function Computed_Distance (This : Problem; From, To : Natural) return Cost
+   is (if From = Nowhere or else To = Nowhere then 0
+       else Rounded (This.Rule, This.Scale * Euclidean_Length
+                       (This.Coordinates (From), This.Coordinates (To))))
+     with Inline;
+   --  The distance a Euclidean rule gives (0 to and from Nowhere).
+
+   function Distance (This : Problem; From, To : Natural) return Cost
+   is (if This.Rule /= From_Matrix then Computed_Distance (This, From, To)
+       elsif This.Matrix = null then 0
+       else This.Matrix (From, To))
+     with Inline, Pre => From <= This.Locations and then To <= This.Locations;
+   --  Base distance from From to To (shared by the robots without costs of
+   --  their own; before a robot's multiplier).
+   --  Example: Distance (P.all, 1, 2) = 10 after Set_Distance (P.all, 1, 2, 10).
+
+   function Has_Matrix (This : Problem) return Boolean
+   is (This.Rule = From_Matrix and then This.Matrix /= null);
+   --  The distances are held in an n x n matrix (False when computed).
+
    procedure Set_Distance (This : in out Problem; From, To : Positive; D : Cost)
      with Pre => From <= This.Locations and then To <= This.Locations
-                 and then D >= 0 and then D < Infinity;
+                 and then D >= 0 and then D < Infinity,
+          Post => This.Rule = From_Matrix;
+   --  Allocates the matrix on first use (from the computed distances when
+   --  there are some).
 
    procedure Update_Symmetry (This : in out Problem);
    --  Sets This.Symmetric from the matrix (call after Set_Distance).
@@ -131,8 +189,17 @@ package Sancta.Allocation.Problems is
 
    procedure Set_Euclidean
      (This : in out Problem; Points : Point_Array; Scale : Long_Float := 1.0;
-      Round : Boolean := True);
-   --  Coordinates and distances from them: nint (Scale * distance).
+      Round : Boolean := True; Rule : Distance_Rule := Euclidean_Nearest;
+      Keep_Matrix_Up_To : Natural := Matrix_Limit)
+     with Pre => Rule /= From_Matrix and then Points'Length = This.Locations;
+   --  Coordinates and distances from them: nint (Scale * distance) (Rule,
+   --  or floor when not Round). A matrix of them is kept when there are at
+   --  most Keep_Matrix_Up_To locations, else they are computed on each read.
+
+   procedure Copy_Distances (From : Problem; To : in out Problem)
+     with Pre => From.Locations = To.Locations;
+   --  To gets From's distances, coordinates, scale and symmetry (a matrix
+   --  is copied).
 
    type Cost_Function is access function (From, To : Positive) return Cost;
    procedure Set_From (This : in out Problem; F : not null Cost_Function);
@@ -191,10 +258,15 @@ package Sancta.Allocation.Problems is
    --  robot on the whole map, unlike Multiplier which is an integer).
 
    function Has_Own_Costs (This : Problem; R : Positive) return Boolean
-   is (This.Own (R) /= null);
+   is (This.Own (R) /= null or else This.Own_Factor (R) > 0.0);
 
    function Robot_Distance (This : Problem; R : Positive; From, To : Natural) return Cost
-   is (if This.Own (R) = null then This.Distance (From, To) else This.Own (R) (From, To));
+   is (if This.Own (R) /= null then This.Own (R) (From, To)
+       elsif This.Own_Factor (R) > 0.0
+       then Cost'Min (Infinity, Cost (Long_Float'Floor
+                        (This.Own_Factor (R) * Long_Float (Distance (This, From, To)) + 0.5)))
+       else Distance (This, From, To))
+     with Inline;
    --  Base distance for robot R (before its multiplier).
 
    ---------------------------------------------------------------------------

@@ -1,4 +1,5 @@
 with Ada.Real_Time;
+with Sancta.Allocation.Budget_Clocks;
 
 package body Sancta.Allocation.Replanning is
 
@@ -55,11 +56,7 @@ package body Sancta.Allocation.Replanning is
       return Q : constant Problem_Access :=
         Create (P.Locations, Kept'Length, P.Robots - 1, Extra)
       do
-         Q.Distance := P.Distance;
-         Q.Symmetric := P.Symmetric;
-         Q.Coordinates := P.Coordinates;
-         Q.Has_Coordinates := P.Has_Coordinates;
-         Q.Scale := P.Scale;
+         Copy_Distances (P, Q.all);
          Q.Min_Tasks := P.Min_Tasks;
          Q.Name := P.Name;
          for I in Kept'Range loop
@@ -83,6 +80,7 @@ package body Sancta.Allocation.Replanning is
                           Multiplier => P.Multiplier (From));
                Set_Robot_End (Q.all, R, P.Finish (From));
                Q.Own (R) := P.Own (From);
+               Q.Own_Factor (R) := P.Own_Factor (From);
                for I in Kept'Range loop
                   if not P.Can_Do (From, Kept (I)) then
                      Forbid (Q.all, R, I - Kept'First + 1);
@@ -230,7 +228,7 @@ package body Sancta.Allocation.Replanning is
       Last    : out Natural)
    is
       use Ada.Real_Time;
-      Started : constant Time := Clock;
+      Started : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
       O : Annealers.Options := Opts;
       Stats : Annealers.Progress;
       Box : aliased Annealers.Best_Box (Q.Robots, Q.Tasks);
@@ -245,7 +243,7 @@ package body Sancta.Allocation.Replanning is
       Recorder.Add ((0.0, Evaluate (Q, Plan, Opts.Criterion).Value));
       O.Initial := True;
       O.Report_Every := Duration'Min (Opts.Report_Every, Opts.Time_Limit / 10);
-      Offset := To_Duration (Clock - Started);
+      Offset := To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
       O.Time_Limit := Duration'Max (0.01, Opts.Time_Limit - Offset);
       begin
          Annealers.Solve (Q, O, Plan, Stats, Record_Progress'Access);
@@ -254,7 +252,8 @@ package body Sancta.Allocation.Replanning is
             Recorder.Release;
             raise;
       end;
-      Recorder.Add ((To_Duration (Clock - Started), Evaluate (Q, Plan, Opts.Criterion).Value));
+      Recorder.Add ((To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started),
+                     Evaluate (Q, Plan, Opts.Criterion).Value));
       Last := Natural'Min (Recorder.Count, Trace'Length);
       for I in 1 .. Last loop
          Trace (Trace'First + I - 1) := Recorder.Get (I);

@@ -170,7 +170,10 @@ package body Sancta.Allocation.TSPLIB is
       return Pi_TSPLIB * (Deg + 5.0 * Min / 3.0) / 180.0;
    end Geo_Radians;
 
-   function Read (File : String; Scale : Long_Float := 0.0) return Problem_Access is
+   function Read
+     (File : String; Scale : Long_Float := 0.0;
+      Keep_Matrix_Up_To : Natural := Matrix_Limit) return Problem_Access
+   is
       S          : Scanner := Load (File);
       Dimension  : Natural := 0;
       Kind       : Text_Access := new String'("");
@@ -187,9 +190,6 @@ package body Sancta.Allocation.TSPLIB is
          end if;
          if P = null then
             P := Create (Dimension, Dimension, 1);
-            for L in 1 .. Dimension loop
-               P.Distance (L, L) := 0;
-            end loop;
          end if;
       end Need_Dimension;
 
@@ -216,23 +216,28 @@ package body Sancta.Allocation.TSPLIB is
          declare
             WT : constant String := Weight_Type.all;
          begin
-            if WT = "EUC_2D" or else WT = "CEIL_2D" then
-               if Scale > 0.0 then
-                  Set_Euclidean (P.all, Points, Scale, Round => True);
-               else
-                  for A in 1 .. Dimension loop
-                     for B in 1 .. Dimension loop
-                        declare
-                           DX : constant Long_Float := Long_Float (Points (A).X - Points (B).X);
-                           DY : constant Long_Float := Long_Float (Points (A).Y - Points (B).Y);
-                           D  : constant Long_Float := Sqrt (DX * DX + DY * DY);
-                        begin
-                           P.Distance (A, B) :=
-                             (if WT = "CEIL_2D" then Cost (Long_Float'Ceiling (D)) else Nint (D));
-                        end;
-                     end loop;
+            if (WT = "EUC_2D" or else WT = "CEIL_2D")
+              and then (Scale > 0.0 or else Dimension > Keep_Matrix_Up_To)
+            then
+               Set_Euclidean
+                 (P.all, Points, (if Scale > 0.0 then Scale else 1.0),
+                  Rule => (if WT = "CEIL_2D" and then Scale <= 0.0 then Euclidean_Ceiling
+                           else Euclidean_Nearest),
+                  Keep_Matrix_Up_To => Keep_Matrix_Up_To);
+            elsif WT = "EUC_2D" or else WT = "CEIL_2D" then
+               for A in 1 .. Dimension loop
+                  for B in 1 .. Dimension loop
+                     declare
+                        DX : constant Long_Float := Long_Float (Points (A).X - Points (B).X);
+                        DY : constant Long_Float := Long_Float (Points (A).Y - Points (B).Y);
+                        D  : constant Long_Float := Sqrt (DX * DX + DY * DY);
+                     begin
+                        Set_Distance
+                          (P.all, A, B,
+                           (if WT = "CEIL_2D" then Cost (Long_Float'Ceiling (D)) else Nint (D)));
+                     end;
                   end loop;
-               end if;
+               end loop;
             elsif WT = "ATT" then
                for A in 1 .. Dimension loop
                   for B in 1 .. Dimension loop
@@ -242,7 +247,7 @@ package body Sancta.Allocation.TSPLIB is
                         R  : constant Long_Float := Sqrt ((DX * DX + DY * DY) / 10.0);
                         T  : constant Cost := Nint (R);
                      begin
-                        P.Distance (A, B) := (if Long_Float (T) < R then T + 1 else T);
+                        Set_Distance (P.all, A, B, (if Long_Float (T) < R then T + 1 else T));
                      end;
                   end loop;
                end loop;
@@ -263,8 +268,8 @@ package body Sancta.Allocation.TSPLIB is
                              Long_Float'Max (-1.0, Long_Float'Min
                                (1.0, 0.5 * ((1.0 + Q1) * Q2 - (1.0 - Q1) * Q3)));
                         begin
-                           P.Distance (A, B) :=
-                             Cost (Long_Float'Truncation (RRR * Arccos (Arg) + 1.0));
+                           Set_Distance
+                             (P.all, A, B, Cost (Long_Float'Truncation (RRR * Arccos (Arg) + 1.0)));
                         end;
                      end if;
                   end loop;
@@ -289,14 +294,14 @@ package body Sancta.Allocation.TSPLIB is
                Fail (S, "edge weight" & W'Image & " out of range");
             end if;
             if A /= B then
-               P.Distance (A, B) := W;
+               Set_Distance (P.all, A, B, W);
             end if;
          end Put;
 
          procedure Put_Symmetric (A, B : Positive) is
          begin
             Put (A, B);
-            P.Distance (B, A) := P.Distance (A, B);
+            Set_Distance (P.all, B, A, Distance (P.all, A, B));
          end Put_Symmetric;
       begin
          if Weight_Type.all /= "EXPLICIT" then
@@ -420,15 +425,7 @@ package body Sancta.Allocation.TSPLIB is
       P : constant Problem_Access := Create (N, N - 1, Robots);
       T : Natural := 0;
    begin
-      for A in 1 .. N loop
-         for B in 1 .. N loop
-            P.Distance (A, B) := Instance.Distance (A, B);
-         end loop;
-      end loop;
-      P.Symmetric := Instance.Symmetric;
-      P.Coordinates := Instance.Coordinates;
-      P.Has_Coordinates := Instance.Has_Coordinates;
-      P.Scale := Instance.Scale;
+      Copy_Distances (Instance, P.all);
       P.Name := Instance.Name;
       for L in 1 .. N loop
          if L /= Depot then
@@ -505,8 +502,8 @@ package body Sancta.Allocation.TSPLIB is
       L : Cost := 0;
    begin
       for K in Tour'Range loop
-         L := L + Instance.Distance
-           (Tour (K), Tour (if K = Tour'Last then Tour'First else K + 1));
+         L := L + Distance
+           (Instance, Tour (K), Tour (if K = Tour'Last then Tour'First else K + 1));
       end loop;
       return L;
    end Tour_Length;

@@ -14,14 +14,20 @@ with Sancta.Allocation.Problems; use Sancta.Allocation.Problems;
 package Sancta.Allocation.TSPLIB is
 
    Max_Dimension : constant := 5_000;
-   --  Larger instances are refused (the full matrix would exceed 200 MB).
+   --  Larger instances are refused (an explicit, ATT or GEO matrix would
+   --  exceed 200 MB; EUC_2D / CEIL_2D distances above Matrix_Limit cities
+   --  are computed, but the search is not built for more).
 
    Max_File_Size : constant := 256 * 1024 * 1024;
    --  Bytes: larger files are refused before they are read.
 
-   function Read (File : String; Scale : Long_Float := 0.0) return Problem_Access;
+   function Read
+     (File : String; Scale : Long_Float := 0.0;
+      Keep_Matrix_Up_To : Natural := Matrix_Limit) return Problem_Access;
    --  The instance as a problem of DIMENSION locations (one task per
-   --  location, one robot). Use To_MTSP for the classic mTSP.
+   --  location, one robot). Use To_MTSP for the classic mTSP. EUC_2D and
+   --  CEIL_2D instances (and any with Scale > 0) of more than
+   --  Keep_Matrix_Up_To cities have computed distances (no matrix).
 
    function To_MTSP
      (Instance : Problem; Robots : Positive; Depot : Positive := 1;

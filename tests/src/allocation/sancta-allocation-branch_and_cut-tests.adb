@@ -37,7 +37,7 @@ package body Sancta.Allocation.Branch_And_Cut.Tests is
          for A in 1 .. Places loop
             for B in 1 .. Places loop
                if A /= B then
-                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 200)));
+                  Set_Distance (P.all, A, B, Distance (P.all, A, B) + Cost (Random.Below (G, 200)));
                end if;
             end loop;
          end loop;

@@ -185,7 +185,7 @@ package body Sancta.Allocation.Plan_Tests is
               "the fast robot does both:" & Evaluate (P.all, A, Min_Sum).Sum'Image);
       --  Robot 1 cannot reach task 1's location (3): robot 2 must take it.
       Set_Robot_Costs (P.all, 1, Blocked'Access);
-      Assert (Robot_Distance (P.all, 1, 1, 3) = Infinity and then P.Distance (1, 3) = 10,
+      Assert (Robot_Distance (P.all, 1, 1, 3) = Infinity and then Distance (P.all, 1, 3) = 10,
               "callback costs are robot 1's only");
       for C of Pure_Criteria loop
          Annealers.Solve (P.all, (Criterion => C, Time_Limit => 0.0, Iterations => 2_000,

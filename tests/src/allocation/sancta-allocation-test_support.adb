@@ -64,7 +64,7 @@ package body Sancta.Allocation.Test_Support is
          for A in 1 .. L loop
             for B in 1 .. L loop
                if A /= B then
-                  Set_Distance (P.all, A, B, P.Distance (A, B) + Cost (Random.Below (G, 300)));
+                  Set_Distance (P.all, A, B, Distance (P.all, A, B) + Cost (Random.Below (G, 300)));
                end if;
             end loop;
          end loop;
@@ -91,7 +91,7 @@ package body Sancta.Allocation.Test_Support is
             for B in 1 .. L loop
                if A /= B then
                   Set_Robot_Distance (P.all, 2, A, B,
-                                      P.Distance (A, B) / 2 + Cost (Random.Below (G, 400)));
+                                      Distance (P.all, A, B) / 2 + Cost (Random.Below (G, 400)));
                end if;
             end loop;
          end loop;

@@ -12,8 +12,10 @@ with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
+with Sancta.Allocation.Random;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
+with Sancta.Geometry;
 
 package body Sancta.Allocation.Tests is
 
@@ -202,7 +204,7 @@ package body Sancta.Allocation.Tests is
          P : constant Problem_Access := TSPLIB.Read (Data & "br17.atsp");
       begin
          Assert (P.Locations = 17, "br17 dimension");
-         Assert (P.Distance (1, 2) = 3 and then P.Distance (4, 1) = 48, "br17 matrix");
+         Assert (Distance (P.all, 1, 2) = 3 and then Distance (P.all, 4, 1) = 48, "br17 matrix");
       end;
    end Optimal_Tours;
 
@@ -235,9 +237,9 @@ package body Sancta.Allocation.Tests is
             begin
                for I in 1 .. 4 loop
                   for J in 1 .. 4 loop
-                     Assert (P.Distance (I, J) = (if I = J then 0 else Cost (10 * (I + J))),
+                     Assert (Distance (P.all, I, J) = (if I = J then 0 else Cost (10 * (I + J))),
                              F & ": d (" & I'Image & "," & J'Image & ") ="
-                             & P.Distance (I, J)'Image);
+                             & Distance (P.all, I, J)'Image);
                   end loop;
                end loop;
             end;
@@ -255,8 +257,9 @@ package body Sancta.Allocation.Tests is
       declare
          P : constant Problem_Access := TSPLIB.Read (File);
       begin
-         Assert (P.Distance (1, 2) = 4, "ATT sqrt (10) -> 4:" & P.Distance (1, 2)'Image);
-         Assert (P.Distance (1, 3) = 13, "ATT sqrt (160) -> 13:" & P.Distance (1, 3)'Image);
+         Assert (Distance (P.all, 1, 2) = 4, "ATT sqrt (10) -> 4:" & Distance (P.all, 1, 2)'Image);
+         Assert (Distance (P.all, 1, 3) = 13,
+                 "ATT sqrt (160) -> 13:" & Distance (P.all, 1, 3)'Image);
       end;
       --  GEO: DDD.MM coordinates; one degree of latitude along a meridian
       --  is 111.3 km on TSPLIB's sphere (int (6378.388 * pi / 180 + 1) = 112).
@@ -266,7 +269,7 @@ package body Sancta.Allocation.Tests is
       declare
          P : constant Problem_Access := TSPLIB.Read (File);
       begin
-         Assert (P.Distance (1, 2) = 112, "GEO one degree:" & P.Distance (1, 2)'Image);
+         Assert (Distance (P.all, 1, 2) = 112, "GEO one degree:" & Distance (P.all, 1, 2)'Image);
       end;
    end Pseudo_Euclidean_And_Geo;
 
@@ -330,7 +333,7 @@ package body Sancta.Allocation.Tests is
          Assert (P.Robots = 2 and then P.Tasks = 3, "sizes");
          Assert (P.Alt_Count (3) = 2 and then not P.Can_Do (1, 2), "OR node / restriction");
          Assert (P.Frozen_Length (1) = 1 and then P.Frozen (1, 1) = 1, "frozen prefix");
-         Assert (P.Distance (1, 3) = 10, "scaled distance:" & P.Distance (1, 3)'Image);
+         Assert (Distance (P.all, 1, 3) = 10, "scaled distance:" & Distance (P.all, 1, 3)'Image);
          Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
                                   Iterations => 5_000, Check => True, others => <>), A, S);
          Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
@@ -383,7 +386,8 @@ package body Sancta.Allocation.Tests is
          Assert (P.Robots = 1 and then P.Tasks = 3, "sizes:" & P.Tasks'Image);
          Assert (P.Alt_Count (1) = 1 and then P.Alt_Count (2) = 3
                  and then P.Alt_Count (3) = 1, "nested OR alternatives flattened");
-         Assert (P.Distance (1, Location_Of (P.all, 2, 3)) = 20, "third alternative at (2, 0)");
+         Assert (Distance (P.all, 1, Location_Of (P.all, 2, 3)) = 20,
+                 "third alternative at (2, 0)");
          Annealers.Solve (P.all, (Criterion => Min_Sum, Time_Limit => 0.0,
                                   Iterations => 5_000, Check => True, others => <>), A, S);
          Assert (Evaluate (P.all, A, Min_Sum).Value = Evaluate (P.all, E, Min_Sum).Value,
@@ -512,6 +516,123 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Each_Move_Kind_Checked;
 
+   --  Computed Euclidean distances (no matrix) equal the matrix ones on
+   --  every bundled TSPLIB file (EUC_2D, ATSP / explicit keep a matrix), on
+   --  scaled and floored random points, with robot factors and own costs,
+   --  and the annealer gives the same plan either way.
+   procedure Computed_Distances_Equal_Matrix (F : in out Fixture) is
+      pragma Unreferenced (F);
+      use Ada.Directories;
+
+      procedure Compare (Name : String; M, C : Problem; Step : Positive := 1) is
+         A : Natural := 0;
+      begin
+         Assert (Has_Matrix (M), Name & ": no matrix kept");
+         while A <= M.Locations loop
+            for B in 0 .. M.Locations loop
+               if Distance (M, A, B) /= Distance (C, A, B) then
+                  Assert (False, Name & ":" & A'Image & B'Image & " matrix"
+                          & Distance (M, A, B)'Image & " computed" & Distance (C, A, B)'Image);
+               end if;
+            end loop;
+            A := A + Step;
+         end loop;
+      end Compare;
+
+      procedure Each_File (Pattern : String) is
+         Search : Search_Type;
+         Item   : Directory_Entry_Type;
+      begin
+         Start_Search (Search, Data, Pattern);
+         while More_Entries (Search) loop
+            Get_Next_Entry (Search, Item);
+            declare
+               File : constant String := Full_Name (Item);
+               M : constant Problem_Access := TSPLIB.Read (File, Keep_Matrix_Up_To => 10_000);
+               C : constant Problem_Access := TSPLIB.Read (File, Keep_Matrix_Up_To => 0);
+            begin
+               Assert (Has_Matrix (C.all) = (Pattern = "*.atsp"),
+                       Simple_Name (Item) & ": computed /= (not ATSP)");
+               Assert (Has_Matrix (TSPLIB.Read (File).all) = (M.Locations <= Matrix_Limit
+                                                              or else Pattern = "*.atsp"),
+                       Simple_Name (Item) & ": matrix above the limit");
+               Compare (Simple_Name (Item), M.all, C.all,
+                        Step => (if M.Locations > 300 then 23 else 1));
+            end;
+         end loop;
+         End_Search (Search);
+      end Each_File;
+
+      N : constant := 60;
+
+      --  Per-robot costs on top: factors, then an own distance.
+      procedure Robot_Costs (P : in out Problem) is
+      begin
+         Set_Robot_Factor (P, 2, 1.5);
+         Set_Robot_Factor (P, 3, 0.7);
+         Set_Robot_Distance (P, 3, 4, 5, 77);
+         for T in 1 .. N - 3 loop
+            Set_Task (P, T, T + 3);
+         end loop;
+         for R in 1 .. 3 loop
+            Set_Robot (P, R, Start => R, Closed => True);
+         end loop;
+      end Robot_Costs;
+
+      G : Random.Generator := Random.Seeded (5);
+      Points : Point_Array (1 .. N);
+   begin
+      Each_File ("*.tsp");
+      Each_File ("*.atsp");
+      for I in Points'Range loop
+         Points (I) := (Sancta.Geometry.Real (1000.0 * Random.Uniform (G)),
+                        Sancta.Geometry.Real (1000.0 * Random.Uniform (G)));
+      end loop;
+      for Round in Boolean loop
+         declare
+            M : constant Problem_Access := Create (N, N - 3, 3);
+            C : constant Problem_Access := Create (N, N - 3, 3);
+         begin
+            Set_Euclidean (M.all, Points, 100.0, Round, Keep_Matrix_Up_To => N);
+            Set_Euclidean (C.all, Points, 100.0, Round, Keep_Matrix_Up_To => N - 1);
+            Assert (not Has_Matrix (C.all), "computed random points");
+            Compare ("random, round " & Round'Image, M.all, C.all);
+            --  Per-robot costs on top: a factor, then own distances.
+            Robot_Costs (M.all);
+            Robot_Costs (C.all);
+            Assert (not Has_Matrix (C.all), "robot costs made a shared matrix");
+            for R in 1 .. 3 loop
+               for A in 0 .. N loop
+                  for B in 0 .. N loop
+                     Assert (Robot_Distance (M.all, R, A, B) = Robot_Distance (C.all, R, A, B),
+                             "robot" & R'Image & A'Image & B'Image);
+                  end loop;
+               end loop;
+            end loop;
+            Assert (Robot_Distance (C.all, 3, 4, 5) = 77 and then Robot_Distance (C.all, 3, 5, 4)
+                      = Cost (Long_Float'Floor (0.7 * Long_Float (Distance (C.all, 5, 4)) + 0.5)),
+                    "own distance over a factor");
+            declare
+               AM : Assignment (3, N - 3);
+               AC : Assignment (3, N - 3);
+               S  : Annealers.Progress;
+               O  : constant Annealers.Options :=
+                 (Criterion => Min_Max, Time_Limit => 0.0, Iterations => 30_000, others => <>);
+            begin
+               Annealers.Solve (M.all, O, AM, S);
+               Annealers.Solve (C.all, O, AC, S);
+               Assert (AM = AC, "the annealer's plans differ");
+            end;
+            --  Set_Distance turns computed distances into a matrix.
+            Set_Distance (C.all, 1, 2, 5);
+            Assert (Has_Matrix (C.all) and then Distance (C.all, 1, 2) = 5
+                    and then Distance (C.all, 2, 1) = Distance (M.all, 2, 1)
+                    and then Distance (C.all, 7, 9) = Distance (M.all, 7, 9),
+                    "matrix from computed distances");
+         end;
+      end loop;
+   end Computed_Distances_Equal_Matrix;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -530,6 +651,7 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB optimal tours give the optimal lengths", Optimal_Tours'Access);
       Add ("TSPLIB explicit matrix formats", Explicit_Formats'Access);
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
+      Add ("computed distances equal the matrix", Computed_Distances_Equal_Matrix'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
       Add ("robots ending at their own depots", End_Depots'Access);
