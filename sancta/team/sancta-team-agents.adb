@@ -268,6 +268,9 @@ package body Sancta.Team.Agents is
          if not Tasks_Known (This, Text) then
             return;  --  the round's task entries are still on their way
          end if;
+         if V.Adopted.Generation /= 0 and then V.Adopted.Generation = V.Round.Generation then
+            This.Previous := V;
+         end if;
          V.Round := Read_Round (This);
          This.Last_Round_Text := To_Unbounded_String (Text);
          This.Improved_Rounds := 0;
@@ -413,28 +416,52 @@ package body Sancta.Team.Agents is
    end Propose;
 
    procedure Propose_In_Slot (This : in out Agent'Class; V : View) is
-      S : Plans.Snapshot renames V.Round;
+      S     : Plans.Snapshot renames V.Round;
+      Seed  : constant Interfaces.Unsigned_64 :=
+        This.Config.Seed * 1_000_003 + Interfaces.Unsigned_64 (S.Generation) * 7919
+        + Interfaces.Unsigned_64 (This.Improved_Rounds);
+      T0    : constant Time := Clock;
+      function Leg (From, To : Point) return Long_Float is
+        (This.Config.Costs.Leg (From, To));
+      --  A re-plan starts from the plan the team follows (a lost robot's
+      --  tasks inserted where they cost least), published at once: the team
+      --  has a plan for the new round before any annealing.
+      Carried : constant Plans.Plan :=
+        (if This.Improved_Rounds > 0 then (others => <>)
+         elsif This.Config.Costs = null
+         then Plans.Carried_Over (This.Previous.Round, This.Previous.Adopted, S,
+                                  To_String (This.Config.Id))
+         else Plans.Carried_Over (This.Previous.Round, This.Previous.Adopted, S,
+                                  To_String (This.Config.Id), Leg'Access));
+      Start : constant Plans.Plan :=
+        (if This.Improved_Rounds = 0 then Carried else V.Adopted);
+      Published : Long_Float := Long_Float'Last;
+      --  The value of this agent's proposal for round S so far.
    begin
+      if not Carried.Tours.Is_Empty
+        and then (V.Adopted.Generation /= S.Generation
+                  or else Carried.Value < V.Adopted.Value - 1.0E-6)
+      then
+         Published := Carried.Value;
+         This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Carried, S));
+         Log (This, "round" & S.Generation'Image & " starts from the current plan in"
+              & Duration'Image (To_Duration (Clock - T0)) & " s: "
+              & Runtime.Values.Real_Image (Carried.Value));
+      end if;
       declare
-         Seed  : constant Interfaces.Unsigned_64 :=
-           This.Config.Seed * 1_000_003 + Interfaces.Unsigned_64 (S.Generation) * 7919
-           + Interfaces.Unsigned_64 (This.Improved_Rounds);
-         Start : constant Plans.Plan :=
-           (if This.Improved_Rounds = 0 then (others => <>) else V.Adopted);
-         T0    : constant Time := Clock;
-         function Leg (From, To : Point) return Long_Float is
-           (This.Config.Costs.Leg (From, To));
-         Mine  : constant Plans.Plan :=
+         T1   : constant Time := Clock;
+         Mine : constant Plans.Plan :=
            (if This.Config.Costs = null
             then Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id))
             else Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id),
                                Leg => Leg'Access));
       begin
          Log (This, "annealed round" & S.Generation'Image & " in"
-              & Duration'Image (To_Duration (Clock - T0)) & " s: "
+              & Duration'Image (To_Duration (Clock - T1)) & " s: "
               & Runtime.Values.Real_Image (Mine.Value));
          This.Improved_Rounds := This.Improved_Rounds + 1;
-         if V.Adopted.Generation /= S.Generation or else Mine.Value < V.Adopted.Value - 1.0E-6
+         if (V.Adopted.Generation /= S.Generation or else Mine.Value < V.Adopted.Value - 1.0E-6)
+           and then Mine.Value < Published - 1.0E-6
          then
             This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Mine, S));
          end if;

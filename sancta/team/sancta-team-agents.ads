@@ -240,6 +240,9 @@ private
       Mismatch_Since : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
       Last_Round_Text : Unbounded_String;
       Improved_Rounds : Natural := 0;
+      Previous        : View;
+      --  The last round with its adopted plan, kept when a new round opens:
+      --  a re-plan starts from that plan (Plans.Carried_Over).
       Started_At : Ada.Real_Time.Time := Ada.Real_Time.Time_First;
       Proposals : Proposal_Maps.Map;
       --  Decoded proposals by key (the agent task's cache).

@@ -367,6 +367,99 @@ package body Sancta.Team.Plans is
       return Result;
    end Auction;
 
+   function Carried_Over
+     (Previous_Round : Snapshot;
+      Previous       : Plan;
+      S              : Snapshot;
+      Proposer       : String;
+      Leg            : access function (From, To : Point) return Long_Float := null)
+      return Plan
+   is
+      Result : Plan := (Generation => S.Generation,
+                        Proposer   => To_Unbounded_String (Proposer),
+                        others     => <>);
+      Placed : array (1 .. Natural (S.Tasks.Length)) of Boolean := [others => False];
+
+      function Task_Index (Id : Unbounded_String) return Natural is
+      begin
+         for T in 1 .. Natural (S.Tasks.Length) loop
+            if S.Tasks (T).Id = Id then
+               return T;
+            end if;
+         end loop;
+         return 0;
+      end Task_Index;
+
+      function Previous_Index (Robot : Unbounded_String) return Natural is
+      begin
+         for R in 1 .. Natural (Previous_Round.Robots.Length) loop
+            if Previous_Round.Robots (R).Id = Robot then
+               return R;
+            end if;
+         end loop;
+         return 0;
+      end Previous_Index;
+
+      Dummy : Long_Float;
+   begin
+      if S.Robots.Is_Empty or else Previous.Generation = 0
+        or else Previous.Generation /= Previous_Round.Generation
+        or else Natural (Previous.Tours.Length) /= Natural (Previous_Round.Robots.Length)
+      then
+         return (others => <>);
+      end if;
+      for Robot of S.Robots loop
+         declare
+            Old  : constant Natural := Previous_Index (Robot.Id);
+            Tour : Step_Vectors.Vector;
+         begin
+            if Old > 0 then
+               for St of Previous.Tours (Old) loop
+                  declare
+                     T : constant Natural := Task_Index (St.Task_Id);
+                  begin
+                     if T > 0 and then not Placed (T)
+                       and then St.Choice <= Missions.Alternatives (S.Tasks (T))
+                     then
+                        Placed (T) := True;
+                        Tour.Append (St);
+                     end if;
+                  end;
+               end loop;
+            end if;
+            Result.Tours.Append (Tour);
+         end;
+      end loop;
+      for T in Placed'Range loop
+         if not Placed (T) then
+            declare
+               Id        : constant String := To_String (S.Tasks (T).Id);
+               Best_Cost : Long_Float := Long_Float'Last;
+               Best_R    : Positive := 1;
+               Best_Pos  : Positive := 1;
+               Best_Ch   : Positive := 1;
+               Cost      : Long_Float;
+               Pos, Ch   : Positive;
+            begin
+               for R in 1 .. Natural (S.Robots.Length) loop
+                  Best_Insertion (S, S.Robots (R).Where, Result.Tours (R), Id,
+                                  Cost, Pos, Ch, Leg);
+                  if Cost < Best_Cost then
+                     Best_Cost := Cost;
+                     Best_R := R;
+                     Best_Pos := Pos;
+                     Best_Ch := Ch;
+                  end if;
+               end loop;
+               Result.Tours (Best_R).Insert (Best_Pos, Step'(S.Tasks (T).Id, Best_Ch));
+               Placed (T) := True;
+            end;
+         end if;
+      end loop;
+      Dummy := Evaluate (S, Result, Leg);
+      return Result;
+   end Carried_Over;
+
    function Anneal
      (S          : Snapshot;
       Seed       : Interfaces.Unsigned_64;

@@ -122,6 +122,26 @@ package Sancta.Team.Plans is
    --  else from its own greedy start. Leg: the cost of the legs between
    --  points (null: straight lines), computed once per pair of points.
 
+   function Carried_Over
+     (Previous_Round : Snapshot;
+      Previous       : Plan;
+      S              : Snapshot;
+      Proposer       : String;
+      Leg            : access function (From, To : Sancta.Geometry.Point) return Long_Float
+        := null)
+      return Plan;
+   --  The anytime start of a re-plan: Previous (the plan adopted for
+   --  Previous_Round) brought to round S. Each robot of S keeps, in order,
+   --  the tasks of its previous tour that S still holds (done ones are gone
+   --  from S); each other task of S (a lost robot's, a new one) goes, in
+   --  S's order, where the tour it joins costs least afterwards (best
+   --  insertion, legs as for Tour_Cost). Value set. A plan without tours
+   --  (Anneal then starts from its own greedy start) when Previous is not
+   --  Previous_Round's adopted plan.
+   --
+   --     Start : constant Plan := Carried_Over (Old.Round, Old.Adopted, S, "r1");
+   --     Mine  : constant Plan := Anneal (S, Seed, 0.25, Start, "r1");
+
    function Greedy (S : Snapshot; Proposer : String) return Plan
      with Pre => not S.Robots.Is_Empty;
    --  Best-insertion greedy (the min-makespan baseline): tasks in mission

@@ -466,6 +466,79 @@ package body Sancta.Team.Tests is
       end;
    end Test_Plans;
 
+
+   --  A re-plan's start: the previous plan carried over to the new round.
+   procedure Test_Carried_Over (T : in out Fixture) is
+      pragma Unreferenced (T);
+      function Point_Task (Id : String; X, Y : Sancta.Geometry.Real) return Missions.Mission_Task is
+         Result : Missions.Mission_Task;
+      begin
+         Result.Id := To_Unbounded_String (Id);
+         Result.Points.Append (Missions.Point'(X, Y));
+         return Result;
+      end Point_Task;
+      function Ids (Tour : Plans.Step_Vectors.Vector) return String is
+         Text : Unbounded_String;
+      begin
+         for St of Tour loop
+            Append (Text, St.Task_Id & " ");
+         end loop;
+         return To_String (Text);
+      end Ids;
+      Old, Now : Plans.Snapshot;
+      Adopted  : Plans.Plan;
+      Dummy    : Long_Float;
+   begin
+      --  Round 1: a at x=0 does t1 t2, b at x=10 does t3 t4, c at x=20 does t5 t6.
+      Old.Generation := 1;
+      Old.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("a"), (0.0, 0.0)));
+      Old.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("b"), (10.0, 0.0)));
+      Old.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("c"), (20.0, 0.0)));
+      for I in 1 .. 6 loop
+         Old.Tasks.Append (Point_Task ("t" & Character'Val (Character'Pos ('0') + I),
+                                       Sancta.Geometry.Real (((I - 1) / 2) * 10),
+                                       Sancta.Geometry.Real (I)));
+      end loop;
+      Adopted.Generation := 1;
+      for R in 1 .. 3 loop
+         Adopted.Tours.Append (Plans.Step_Vectors.Empty_Vector);
+         Adopted.Tours (R).Append (Plans.Step'(Old.Tasks (2 * R - 1).Id, 1));
+         Adopted.Tours (R).Append (Plans.Step'(Old.Tasks (2 * R).Id, 1));
+      end loop;
+      Dummy := Plans.Evaluate (Old, Adopted);
+      --  Round 2: b lost; t1 done; c now listed before a.
+      Now.Generation := 2;
+      Now.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("c"), (20.0, 5.0)));
+      Now.Robots.Append (Plans.Robot_Position'(To_Unbounded_String ("a"), (0.0, 1.0)));
+      for I in 2 .. 6 loop
+         Now.Tasks.Append (Old.Tasks (I));
+      end loop;
+      declare
+         C : constant Plans.Plan := Plans.Carried_Over (Old, Adopted, Now, "a");
+         N : Natural := 0;
+      begin
+         Assert (C.Generation = 2 and then Natural (C.Tours.Length) = 2, "one tour per robot");
+         for Tour of C.Tours loop
+            N := N + Natural (Tour.Length);
+         end loop;
+         Assert (N = 5, "every task of the round once:" & N'Image);
+         --  The survivors keep their remaining tasks in order, first.
+         Assert (Ids (C.Tours (1)) (1 .. 6) = "t5 t6 ", "c keeps t5 t6: " & Ids (C.Tours (1)));
+         Assert (Ids (C.Tours (2)) (1 .. 3) = "t2 ", "a keeps t2: " & Ids (C.Tours (2)));
+         --  b's tasks (x = 10) go where the tour they join costs least.
+         Assert (Ids (C.Tours (1)) & Ids (C.Tours (2)) /= "t5 t6 t2 ",
+                 "the lost robot's tasks placed");
+         Assert (abs (C.Value - Plans.Evaluate (Now, C'Unrestricted_Access.all)) < 1.0E-9,
+                 "value set");
+         Assert (Plans.Anneal (Now, 3, 0.2, C, "a").Value <= C.Value + 1.0E-6,
+                 "annealing from the carried-over plan keeps or improves it");
+      end;
+      --  Not the adopted plan of its round: no tours.
+      Adopted.Generation := 5;
+      Assert (Plans.Carried_Over (Old, Adopted, Now, "a").Tours.Is_Empty,
+              "a plan of another round is not carried over");
+   end Test_Carried_Over;
+
    --  A robot joining gets tasks; tasks done stay done ---------------------------------
 
    procedure Test_Join (T : in out Fixture) is
@@ -493,6 +566,22 @@ package body Sancta.Team.Tests is
       function Joined return Boolean is
         (R3.Adopted.Generation > 0 and then R3.Adopted.Generation = R3.Round.Generation
          and then R3.Round.Robots.Length = 3);
+      function New_Robot_Has_Tasks return Boolean is
+         S : constant Plans.Snapshot := R3.Round;
+         P : constant Plans.Plan := R3.Adopted;
+      begin
+         if P.Generation = 0 or else P.Generation /= S.Generation then
+            return False;
+         end if;
+         for K in 1 .. Natural (S.Robots.Length) loop
+            if To_String (S.Robots (K).Id) = "r3" and then K <= Natural (P.Tours.Length)
+              and then not P.Tours (K).Is_Empty
+            then
+               return True;
+            end if;
+         end loop;
+         return False;
+      end New_Robot_Has_Tasks;
    begin
       for K in 1 .. 9 loop
          declare
@@ -519,6 +608,9 @@ package body Sancta.Team.Tests is
       end;
       R3 := Robot ("r3", 20.0);
       Assert (Wait_Until (Joined'Access), "no round with the new robot");
+      --  The round's first plan is the previous one carried over (r3 has
+      --  nothing yet); annealing gives r3 its share.
+      Assert (Wait_Until (New_Robot_Has_Tasks'Access), "the new robot got no task");
       declare
          S : constant Plans.Snapshot := R3.Round;
          P : constant Plans.Plan := R3.Adopted;
@@ -668,6 +760,8 @@ package body Sancta.Team.Tests is
            Test_Republish_Rule'Access);
       Add ("mission files", Test_Mission_Errors'Access);
       Add ("plans: greedy, annealer, text", Test_Plans'Access);
+      Add ("plans: a re-plan starts from the previous plan carried over",
+           Test_Carried_Over'Access);
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
       Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
       Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
