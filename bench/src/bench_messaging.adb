@@ -86,6 +86,23 @@ procedure Bench_Messaging is
       return R;
    end Raw_Offset;
 
+   procedure Send
+     (Pub       : in out RCL.Publishers.Publisher;
+      Bytes     : Stream_Element_Array;
+      Typed_Msg : Arrays.Message;
+      Msg       : ROSIDL.Dynamic.Message) is
+      --  One message, in the form the command line chose: the raw CDR
+      --  Bytes (--raw), the typed Typed_Msg (--typed) or the dynamic Msg.
+   begin
+      if Raw then
+         Pub.Publish_Raw (Bytes);
+      elsif Typed then
+         Publish (Pub, Typed_Msg);
+      else
+         Pub.Publish (Msg);
+      end if;
+   end Send;
+
    procedure Wait_Match (Pub : RCL.Publishers.Publisher) is
    begin
       for I in 1 .. 2000 loop
@@ -204,13 +221,7 @@ begin
                T0 : constant Time := Clock;
             begin
                Got := False;
-               if Raw then
-                  Pub.Publish_Raw (Bytes);
-               elsif Typed then
-                  Publish (Pub, Typed_Msg);
-               else
-                  Pub.Publish (Msg);
-               end if;
+               Send (Pub, Bytes, Typed_Msg, Msg);
                while not Got loop
                   Node.Spin (Once => True, During => 10.0);
                end loop;
@@ -241,13 +252,7 @@ begin
          Wait_Match (Pub);
          Stop_At := Clock + To_Time_Span (Seconds);
          while Clock < Stop_At loop
-            if Raw then
-               Pub.Publish_Raw (Bytes);
-            elsif Typed then
-               Publish (Pub, Typed_Msg);
-            else
-               Pub.Publish (Msg);
-            end if;
+            Send (Pub, Bytes, Typed_Msg, Msg);
             Sent := Sent + 1;
          end loop;
          Pub.Publish (Make (0, Stop_Mark));

@@ -104,22 +104,17 @@ package body Sancta.Simulation.Render_Tool is
                      Label => To_Unbounded_String
                        (if C2 = 0 then "" else V (C2 + 1 .. V'Last))));
             end;
-         elsif A'Length > 0 and then A (A'First) = '-' then
-            raise Usage_Error with "unknown option " & A;
-         elsif Length (World_Name) = 0 then
-            World_Name := To_Unbounded_String (A);
          else
-            raise Usage_Error with "more than one world: " & A;
+            raise Usage_Error with "unknown option " & A;
          end if;
       end Take;
 
-      function Parse is new Parse_Arguments (Usage, Take);
+      function Second_World (A : String) return String is ("more than one world: " & A);
+      function Parse is new Parse_Arguments
+        (Usage, Take, Second_World, No_World => "no world given");
    begin
-      if not Parse then
+      if not Parse (World_Name) then
          return;
-      end if;
-      if Length (World_Name) = 0 then
-         raise Usage_Error with "no world given";
       end if;
       declare
          World : constant Worlds.World := Map_Files.Load_World (To_String (World_Name));

@@ -691,22 +691,18 @@ package body Sancta.Simulation.Sim_Tool is
             end if;
          elsif A = "--quiet" then
             Quiet := True;
-         elsif A'Length > 0 and then A (A'First) = '-' then
-            raise Usage_Error with A & ": unknown option (see --help)";
-         elsif Length (World_Name) = 0 then
-            World_Name := To_Unbounded_String (A);
          else
-            raise Usage_Error with A & ": only one world may be given";
+            raise Usage_Error with A & ": unknown option (see --help)";
          end if;
       end Take;
 
-      function Parse is new Parse_Arguments (Usage, Take);
+      function Second_World (A : String) return String is (A & ": only one world may be given");
+      function Parse is new Parse_Arguments
+        (Usage, Take, Second_World,
+         No_World => "no world given (a bundled name, a .yaml or a .walls file)");
    begin
-      if not Parse then
+      if not Parse (World_Name) then
          return;
-      end if;
-      if Length (World_Name) = 0 then
-         raise Usage_Error with "no world given (a bundled name, a .yaml or a .walls file)";
       end if;
       declare
          File : constant String := Map_Files.World_File (To_String (World_Name));

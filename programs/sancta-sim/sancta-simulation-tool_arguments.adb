@@ -29,22 +29,38 @@ package body Sancta.Simulation.Tool_Arguments is
          raise Usage_Error with Option & ": expected a number, found """ & Text & """";
    end To_Real;
 
-   function Parse_Arguments return Boolean is
+   function Parse_Arguments (World : out Ada.Strings.Unbounded.Unbounded_String)
+     return Boolean
+   is
+      use Ada.Strings.Unbounded;
       K : Positive := 1;
    begin
+      World := Null_Unbounded_String;
       if Argument_Count = 0 then
          Usage;
          Set_Exit_Status (Failure);
          return False;
       end if;
       while K <= Argument_Count loop
-         if Argument (K) in "--help" | "-h" then
-            Usage;
-            return False;
-         end if;
-         Take (Argument (K), K);
+         declare
+            A : constant String := Argument (K);
+         begin
+            if A in "--help" | "-h" then
+               Usage;
+               return False;
+            elsif A'Length > 0 and then A (A'First) = '-' then
+               Take (A, K);
+            elsif Length (World) = 0 then
+               World := To_Unbounded_String (A);
+            else
+               raise Usage_Error with Second_World (A);
+            end if;
+         end;
          K := K + 1;
       end loop;
+      if Length (World) = 0 then
+         raise Usage_Error with No_World;
+      end if;
       return True;
    end Parse_Arguments;
 

@@ -1,6 +1,7 @@
 --  Command-line reading shared by the simulator's two programs, sancta-sim
 --  (Sim_Tool) and sancta-render (Render_Tool). Each program keeps its own
 --  options and messages; this package walks the arguments.
+with Ada.Strings.Unbounded;
 with Sancta.Geometry;
 
 package Sancta.Simulation.Tool_Arguments is
@@ -18,11 +19,19 @@ package Sancta.Simulation.Tool_Arguments is
 
    generic
       with procedure Usage;
-      with procedure Take (Argument : String; Index : in out Positive);
-   function Parse_Arguments return Boolean;
-   --  Take (Argument (I), I) for each command-line argument in turn (Take
-   --  reads an option's value with Next_Value (I)). No argument at all:
-   --  Usage, a failure exit status and False; "--help" or "-h": Usage and
-   --  False (the program then stops); True when every argument is taken.
+      with procedure Take (Option : String; Index : in out Positive);
+      --  An argument starting with '-'; reads its value with Next_Value.
+      with function Second_World (Argument : String) return String;
+      --  The message when Argument is a second world.
+      No_World : String;
+      --  The message when no world is given.
+   function Parse_Arguments (World : out Ada.Strings.Unbounded.Unbounded_String)
+     return Boolean;
+   --  The command line: one world (an argument not starting with '-') and
+   --  options, each given to Take (Argument (I), I) in turn. No argument at
+   --  all: Usage, a failure exit status and False; "--help" or "-h": Usage
+   --  and False (the program then stops); True when every argument is
+   --  taken. Usage_Error No_World or Second_World (A) unless exactly one
+   --  world is given.
 
 end Sancta.Simulation.Tool_Arguments;

@@ -6,6 +6,7 @@
 --                      = "/ns/chatter");
 --     pragma Assert (Expand_Topic_Name ("~/status", "talker", "/ns") = "/ns/talker/status");
 --     pragma Assert (DDS_Topic_Name ("/ns/chatter") = "rt/ns/chatter");
+--     pragma Assert (Name_Token ("robot-1.base") = "robot_1_base");
 package RCL.Names is
 
    Name_Error : exception;
@@ -27,6 +28,12 @@ package RCL.Names is
 
    function Topic_Problem (Name : String) return String;
    --  "" when Name is a valid fully qualified topic name.
+
+   function Name_Token (Text : String) return String is
+     [for I in Text'Range =>
+        (if Text (I) in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then Text (I) else '_')];
+   --  Text with every character other than a letter, a digit or '_'
+   --  replaced by '_', as a token of a node or topic name: "r-1.b" -> "r_1_b".
 
    subtype Node_Name is String
      with Dynamic_Predicate => Node_Name_Problem (Node_Name) = ""

@@ -1,16 +1,13 @@
 with Ada.Command_Line;
 with Ada.Directories;
+with RCL.Names;
 
 package body RCL.Utils is
 
    function Command_Name return String is
-      Name : String := Ada.Directories.Simple_Name (Ada.Command_Line.Command_Name);
+      Name : constant String :=
+        RCL.Names.Name_Token (Ada.Directories.Simple_Name (Ada.Command_Line.Command_Name));
    begin
-      for C of Name loop
-         if C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then
-            C := '_';
-         end if;
-      end loop;
       if Name'Length = 0 then
          return "ada_node";
       elsif Name (Name'First) in '0' .. '9' then

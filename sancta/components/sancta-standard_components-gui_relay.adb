@@ -6,6 +6,7 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
+with RCL.Names;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
@@ -85,7 +86,7 @@ package body Sancta.Standard_Components.GUI_Relay is
      (This : in out Relay; Data : String; Item : Values.Value'Class);
 
    function Node_Name (This : Relay'Class) return String is
-     (Name_Token ("sancta_" & This.Agent_Id & "_gui_relay"));
+     (RCL.Names.Name_Token ("sancta_" & This.Agent_Id & "_gui_relay"));
 
    function Support (Name : String) return ROSIDL.Typesupport.Message_Support is
    begin
@@ -97,7 +98,7 @@ package body Sancta.Standard_Components.GUI_Relay is
                               return ROSIDL.Typesupport.Message_Support is
      (ROSIDL.Typesupport.Get_Message_Support (Package_Name, Name));
 
-   function Topic_Part (Id : String) return String renames Name_Token;
+   function Topic_Part (Id : String) return String renames RCL.Names.Name_Token;
    --  An agent id as a topic name token.
 
    --  Standard visualization messages (RViz, Foxglove) -------------------------

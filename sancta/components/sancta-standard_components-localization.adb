@@ -272,6 +272,13 @@ package body Sancta.Standard_Components.Localization is
    function Opt (Name : String; Default : String; Check : Option_Check := Positive_Check'Access)
      return Option_Spec is (Make_Option (Name, Real_Option, Default, Check => Check));
 
+   function ICP_Options return Option_Vectors.Vector is
+     (Option_Vectors.Empty_Vector
+        & Opt ("keyframe_distance", "0.4")
+        & Opt ("keyframe_angle", "0.3")
+        & Make_Option ("max_iterations", Integer_Option, "50", Check => Size_Check'Access));
+   --  The options of the ICP matcher, in both components that run it.
+
 begin
    Factory.Register
      ((Name    => To_Unbounded_String ("scan_matcher"),
@@ -281,11 +288,7 @@ begin
                     & In_Port ("scan", RM.Scan_Type)
                     & Out_Port ("pose", "types.pose")
                     & Out_Port ("error", "types.real"),
-       Options => Option_Vectors.Empty_Vector
-                    & Opt ("keyframe_distance", "0.4")
-                    & Opt ("keyframe_angle", "0.3")
-                    & Make_Option ("max_iterations", Integer_Option, "50",
-                                   Check => Size_Check'Access),
+       Options => ICP_Options,
        others  => <>),
       Create_Scan_Matcher'Access);
    Factory.Register
@@ -297,11 +300,7 @@ begin
                     & In_Port ("scan", RM.Scan_Type, Optional => True)
                     & Out_Port ("pose", "types.pose")
                     & Out_Port ("error", "types.real"),
-       Options => Option_Vectors.Empty_Vector
-                    & Opt ("keyframe_distance", "0.4")
-                    & Opt ("keyframe_angle", "0.3")
-                    & Make_Option ("max_iterations", Integer_Option, "50",
-                                   Check => Size_Check'Access)
+       Options => ICP_Options
                     & Make_Option ("dx", Real_Option, "0.0")
                     & Make_Option ("dy", Real_Option, "0.0")
                     & Make_Option ("dyaw", Real_Option, "0.0"),

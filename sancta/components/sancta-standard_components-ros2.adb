@@ -308,7 +308,7 @@ package body Sancta.Standard_Components.ROS2 is
         & Make_Option ("depth", Integer_Option, "10", Check => Check_Depth'Access));
 
    function Node_Name (This : Component'Class) return String is
-     (Name_Token ("sancta_" & This.Agent_Id & "_" & This.Name));
+     (RCL.Names.Name_Token ("sancta_" & This.Agent_Id & "_" & This.Name));
 
    function Profile_Of (This : Component'Class) return RCL.QoS.Profile is
      ((Depth       => Positive (Long_Long_Integer'(This.Option_Integer ("depth"))),

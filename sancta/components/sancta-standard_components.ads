@@ -9,11 +9,4 @@
 --  A program gets them all with "with Sancta.Standard_Components.All_Standard;".
 package Sancta.Standard_Components is
    pragma Pure;
-
-   function Name_Token (Text : String) return String is
-     [for I in Text'Range =>
-        (if Text (I) in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then Text (I) else '_')];
-   --  Text with every character other than a letter, a digit or '_'
-   --  replaced by '_': a token of a ROS 2 node or topic name.
-   --  Example: Name_Token ("r-1.b") = "r_1_b"
 end Sancta.Standard_Components;

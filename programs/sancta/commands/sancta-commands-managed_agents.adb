@@ -4,6 +4,7 @@ with Ada.Strings.Unbounded;
 with Ada.Unchecked_Deallocation;
 with RCL.Executors.Sequential;
 with RCL.Lifecycle;
+with RCL.Names;
 with RCL.Nodes;
 with Sancta.Logging;
 with Sancta.Runtime.Component_Hosts;
@@ -43,15 +44,7 @@ package body Sancta.Commands.Managed_Agents is
    The_Agents : Agent_Array_Access;
 
    function Node_Name (Agent_Id : String) return String is
-      Name : String := "sancta_" & Agent_Id;
-   begin
-      for C of Name loop
-         if C not in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_' then
-            C := '_';
-         end if;
-      end loop;
-      return Name;
-   end Node_Name;
+     (RCL.Names.Name_Token ("sancta_" & Agent_Id));
 
    function Agent_Of (Node : RCL.Nodes.Node'Class) return Agent_Access is
    begin

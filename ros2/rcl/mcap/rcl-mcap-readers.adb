@@ -7,16 +7,6 @@ package body RCL.MCAP.Readers is
    use Ada.Streams;
    use Interfaces;
 
-   Op_Header         : constant := 16#01#;
-   Op_Footer         : constant := 16#02#;
-   Op_Schema         : constant := 16#03#;
-   Op_Channel        : constant := 16#04#;
-   Op_Message        : constant := 16#05#;
-   Op_Chunk          : constant := 16#06#;
-   Op_Chunk_Index    : constant := 16#08#;
-   Op_Statistics     : constant := 16#0B#;
-   Op_Data_End       : constant := 16#0F#;
-
    Record_Head   : constant := 9;   --  opcode + length
    Footer_Length : constant := Record_Head + 20;
    Largest_Chunk : constant := 2 ** 30;

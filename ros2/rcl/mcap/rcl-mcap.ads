@@ -73,4 +73,20 @@ package RCL.MCAP is
    --  The CRC-32 MCAP uses (zlib's, ISO-HDLC), continuing Previous:
    --  CRC32 (B, CRC32 (A)) = CRC32 (A & B).
 
+private
+
+   --  The record opcodes of the MCAP format (version 0), for the reader
+   --  and the writer.
+   Op_Header         : constant := 16#01#;
+   Op_Footer         : constant := 16#02#;
+   Op_Schema         : constant := 16#03#;
+   Op_Channel        : constant := 16#04#;
+   Op_Message        : constant := 16#05#;
+   Op_Chunk          : constant := 16#06#;
+   Op_Message_Index  : constant := 16#07#;
+   Op_Chunk_Index    : constant := 16#08#;
+   Op_Statistics     : constant := 16#0B#;
+   Op_Summary_Offset : constant := 16#0E#;
+   Op_Data_End       : constant := 16#0F#;
+
 end RCL.MCAP;

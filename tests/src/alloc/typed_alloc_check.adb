@@ -45,6 +45,19 @@ procedure Typed_Alloc_Check is
       return Raw;
    end Me;
 
+   procedure Count_Allocations
+     (Round : not null access procedure (N : Positive); Own, All_Tasks : out Natural) is
+      --  Round (1) .. Round (Count) with the heap counters on: Own, the
+      --  allocations of this task; All_Tasks, those of every task.
+   begin
+      Heap_Counters.Start (Me);
+      for N in 1 .. Count loop
+         Round (N);
+      end loop;
+      Own := Heap_Counters.Task_Allocations;
+      All_Tasks := Heap_Counters.All_Allocations;
+   end Count_Allocations;
+
    generic
       with package Handling is new ROSIDL.Static.Message_Support (<>);
       Topic : String;
@@ -85,14 +98,10 @@ procedure Typed_Alloc_Check is
       end loop;
       Node.Spin (During => 0.2);
       Received := 0;
-      Heap_Counters.Start (Me);
-      for N in 1 .. Count loop
-         Round (N);
-      end loop;
       declare
-         Own : constant Natural := Heap_Counters.Task_Allocations;
-         All_Tasks : constant Natural := Heap_Counters.All_Allocations;
+         Own, All_Tasks : Natural;
       begin
+         Count_Allocations (Round'Access, Own, All_Tasks);
          Put_Line (Topics.Full_Name & (if Topics.Is_Bounded then " (bounded)" else "")
                    & ": published" & Count'Image & ", received" & Received'Image
                    & ", Ada heap allocations in the publishing/receiving task:" & Own'Image
@@ -180,14 +189,10 @@ procedure Typed_Alloc_Check is
       for N in 1 .. Warmup loop
          Round (N);
       end loop;
-      Heap_Counters.Start (Me);
-      for N in 1 .. Count loop
-         Round (N);
-      end loop;
       declare
-         Own : constant Natural := Heap_Counters.Task_Allocations;
-         All_Tasks : constant Natural := Heap_Counters.All_Allocations;
+         Own, All_Tasks : Natural;
       begin
+         Count_Allocations (Round'Access, Own, All_Tasks);
          Stop := True;
          Put_Line (Add.Full_Name & " (bounded): called" & Count'Image & ", wrong sums"
                    & Wrong'Image

@@ -33,6 +33,27 @@ package body RCL.Services.Tests is
    function Sum_Of (Response : ROSIDL.Dynamic.Message) return ROSIDL.Int64 is
      (Response ("sum").As_Int64);
 
+   function Request (A, B : ROSIDL.Int64) return ROSIDL.Dynamic.Message is
+      R : constant ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Add_Support));
+   begin
+      R ("a").As_Int64 := A;
+      R ("b").As_Int64 := B;
+      return R;
+   end Request;
+   --  An AddTwoInts request a + b.
+
+   procedure Adder
+     (Node     : in out RCL.Nodes.Node'Class;
+      Request  : ROSIDL.Dynamic.Message;
+      Response : in out ROSIDL.Dynamic.Message)
+   is
+      pragma Unreferenced (Node);
+   begin
+      Response ("sum").As_Int64 := Request ("a").As_Int64 + Request ("b").As_Int64;
+   end Adder;
+   --  The AddTwoInts service's callback.
+
    --  Pairing ---------------------------------------------------------------
 
    Callback_Sum : ROSIDL.Int64 := 0;
@@ -151,16 +172,6 @@ package body RCL.Services.Tests is
       Client_Node : constant RCL.Nodes.Node := RCL.Nodes.Init ("svc_test_client", "/svc_tests");
       Stop        : Boolean := False with Atomic;
 
-      procedure Adder
-        (Node     : in out RCL.Nodes.Node'Class;
-         Request  : ROSIDL.Dynamic.Message;
-         Response : in out ROSIDL.Dynamic.Message)
-      is
-         pragma Unreferenced (Node);
-      begin
-         Response ("sum").As_Int64 := Request ("a").As_Int64 + Request ("b").As_Int64;
-      end Adder;
-
       task Spinner;
       task body Spinner is
       begin
@@ -172,15 +183,6 @@ package body RCL.Services.Tests is
       Client : RCL.Clients.Client;
       Failures : Natural := 0 with Atomic;
       Done : Natural := 0 with Atomic;
-
-      function Request (A, B : ROSIDL.Int64) return ROSIDL.Dynamic.Message is
-         R : constant ROSIDL.Dynamic.Message :=
-           ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Add_Support));
-      begin
-         R ("a").As_Int64 := A;
-         R ("b").As_Int64 := B;
-         return R;
-      end Request;
 
       protected Count_Lock is
          procedure Fail;
@@ -327,27 +329,17 @@ package body RCL.Services.Tests is
       Client : RCL.Clients.Client;
       Served : Natural := 0;
 
-      procedure Adder
+      procedure Counting_Adder
         (Node     : in out RCL.Nodes.Node'Class;
          Request  : ROSIDL.Dynamic.Message;
-         Response : in out ROSIDL.Dynamic.Message)
-      is
-         pragma Unreferenced (Node);
+         Response : in out ROSIDL.Dynamic.Message) is
       begin
          Served := Served + 1;
-         Response ("sum").As_Int64 := Request ("a").As_Int64 + Request ("b").As_Int64;
-      end Adder;
+         Adder (Node, Request, Response);
+      end Counting_Adder;
 
-      function Request (A, B : ROSIDL.Int64) return ROSIDL.Dynamic.Message is
-         R : constant ROSIDL.Dynamic.Message :=
-           ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Request_Support (Add_Support));
-      begin
-         R ("a").As_Int64 := A;
-         R ("b").As_Int64 := B;
-         return R;
-      end Request;
    begin
-      Node.Serve (Add_Support, "future_adder", Adder'Access);
+      Node.Serve (Add_Support, "future_adder", Counting_Adder'Access);
       Client.Init (Node, Add_Support, "future_adder");
       Assert (Client.Wait_For_Service (10.0), "service available");
       declare

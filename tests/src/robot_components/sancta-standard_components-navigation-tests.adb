@@ -86,6 +86,21 @@ package body Sancta.Standard_Components.Navigation.Tests is
       end if;
    end Load_Checked;
 
+   procedure Start_Host
+     (N      : in out Component_Hosts.Component_Host;
+      File   : String;
+      Config : out Configurations.Configuration;
+      Clock  : not null Clocks.Clock_Access) is
+      --  N runs the configuration File (its agent 1, with the test feed),
+      --  driven by hand (no scheduler task), console logging off.
+   begin
+      Register_Feed;
+      Load_Checked (File, Config);
+      N.Create (Config, 1, Clock);
+      Logging.Set_Console (False);
+      N.Start (Run_Scheduler_Task => False);
+   end Start_Host;
+
    function Pose_At (N : in out Component_Hosts.Component_Host; Key : String) return Pose is
      (Values.Pose_Value (N.Database.Get (Key)).Data);
 
@@ -201,11 +216,7 @@ package body Sancta.Standard_Components.Navigation.Tests is
       Clock  : aliased Clocks.Manual_Clock;
       N      : Component_Hosts.Component_Host;
    begin
-      Register_Feed;
-      Load_Checked ("tests/data/config/robot-closed-loop.xml", Config);
-      N.Create (Config, 1, Clock'Unchecked_Access);
-      Logging.Set_Console (False);
-      N.Start (Run_Scheduler_Task => False);
+      Start_Host (N, "tests/data/config/robot-closed-loop.xml", Config, Clock'Unchecked_Access);
       N.Database.Put ("odometric_pose", Values.Pose_Value'(Data => (0.0, 0.0, 0.0)));
       Assert (Pose_At (N, "pose") = (2.0, 10.0, 0.0), "transformer: start pose");
       Assert (Position (Pose_At (N, "goal")) = (8.0, 10.0), "first goal");
@@ -235,11 +246,7 @@ package body Sancta.Standard_Components.Navigation.Tests is
       N      : Component_Hosts.Component_Host;
       Raised : Boolean := False;
    begin
-      Register_Feed;
-      Load_Checked ("tests/data/config/robot-closed-loop.xml", Config);
-      N.Create (Config, 1, Clock'Unchecked_Access);
-      Logging.Set_Console (False);
-      N.Start (Run_Scheduler_Task => False);
+      Start_Host (N, "tests/data/config/robot-closed-loop.xml", Config, Clock'Unchecked_Access);
       declare
          Straight : constant Real := Cost_Of ("Loop", (2.0, 10.0), (8.0, 10.0));
          Office   : constant Real := Cost_Of ("Loop", (2.0, 10.0), (7.0, 4.0));
@@ -277,11 +284,7 @@ package body Sancta.Standard_Components.Navigation.Tests is
       Clock  : aliased Clocks.Manual_Clock;
       N      : Component_Hosts.Component_Host;
    begin
-      Register_Feed;
-      Load_Checked ("tests/data/config/scan-matching-fixed.xml", Config);
-      N.Create (Config, 1, Clock'Unchecked_Access);
-      Logging.Set_Console (False);
-      N.Start (Run_Scheduler_Task => False);
+      Start_Host (N, "tests/data/config/scan-matching-fixed.xml", Config, Clock'Unchecked_Access);
       N.Database.Put ("odometric_pose", Values.Pose_Value'(Data => (2.0, 0.0, 0.5)));
       declare
          P : constant Pose := Pose_At (N, "corrected_pose");

@@ -187,6 +187,13 @@ package body Sancta.Simulation.Map_Files.Tests is
    end Wall_Worlds;
 
    procedure Bad_Files (Unused : in out Fixture) is
+      procedure Assert_Says (E : Ada.Exceptions.Exception_Occurrence; File, Pattern : String) is
+      begin
+         Assert (Contains (Ada.Exceptions.Exception_Message (E), Pattern),
+                 File & ": message """ & Ada.Exceptions.Exception_Message (E)
+                 & """ lacks """ & Pattern & """");
+      end Assert_Says;
+
       procedure Check (File, Pattern : String) is
       begin
          declare
@@ -196,9 +203,7 @@ package body Sancta.Simulation.Map_Files.Tests is
          end;
       exception
          when E : Format_Error =>
-            Assert (Contains (Ada.Exceptions.Exception_Message (E), Pattern),
-                    File & ": message """ & Ada.Exceptions.Exception_Message (E)
-                    & """ lacks """ & Pattern & """");
+            Assert_Says (E, File, Pattern);
       end Check;
 
       procedure Check_Image (File, Pattern : String) is
@@ -210,9 +215,7 @@ package body Sancta.Simulation.Map_Files.Tests is
          end;
       exception
          when E : Format_Error =>
-            Assert (Contains (Ada.Exceptions.Exception_Message (E), Pattern),
-                    File & ": message """ & Ada.Exceptions.Exception_Message (E)
-                    & """ lacks """ & Pattern & """");
+            Assert_Says (E, File, Pattern);
       end Check_Image;
    begin
       Check ("bad_resolution.yaml", "bad_resolution.yaml:3: expected resolution");
