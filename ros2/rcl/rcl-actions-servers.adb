@@ -104,9 +104,12 @@ package body RCL.Actions.Servers is
 
    --  The three services ---------------------------------------------------
 
-   type Send_Goal_Server is new RCL.Services.Server with record
+   type Action_Service is abstract new RCL.Services.Server with record
       State : State_Access;
    end record;
+   --  Each of the three answers from the action's shared state.
+
+   type Send_Goal_Server is new Action_Service with null record;
 
    overriding procedure On_Request
      (This    : in out Send_Goal_Server;
@@ -114,9 +117,7 @@ package body RCL.Actions.Servers is
       Request : Message;
       Id      : RCL.Services.Request_Id);
 
-   type Cancel_Server is new RCL.Services.Server with record
-      State : State_Access;
-   end record;
+   type Cancel_Server is new Action_Service with null record;
 
    overriding procedure On_Request
      (This    : in out Cancel_Server;
@@ -124,9 +125,7 @@ package body RCL.Actions.Servers is
       Request : Message;
       Id      : RCL.Services.Request_Id);
 
-   type Result_Server is new RCL.Services.Server with record
-      State : State_Access;
-   end record;
+   type Result_Server is new Action_Service with null record;
 
    overriding procedure On_Request
      (This    : in out Result_Server;

@@ -440,41 +440,21 @@ package body RCL.Clients is
 
    type Client_Access is access Client;
 
-   procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
-
-   package Client_Caches is new RCL.Keyed_Caches (Client_Access, null);
-   use Client_Caches;
+   package Client_Caches is new RCL.Keyed_Caches (Client, Client_Access);
 
    function Client_For
      (Node    : RCL.Nodes.Node'Class;
       Support : ROSIDL.Typesupport.Service_Support;
       Name    : String) return Client_Access
    is
-      --  The client is made outside the protected object: making it
-      --  announces endpoints (RCL.Graph), which may block.
-      Key    : constant String :=
-        Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name) & " "
-        & ROSIDL.Typesupport.Full_Name (Support);
-      Result : Client_Access := Cache.Find (Key);
-      Mine   : Client_Access;
-      Kept   : Boolean;
+      procedure Init (Made : in out Client) is
+      begin
+         Made.Init (Node, Support, Name);
+      end Init;
    begin
-      if Result = null then
-         Mine := new Client;
-         begin
-            Mine.Init (Node, Support, Name);
-         exception
-            when others =>
-               Free (Mine);
-               raise;
-         end;
-         Result := Mine;
-         Cache.Insert (Key, Result, Kept);
-         if not Kept then
-            Free (Mine);
-         end if;
-      end if;
-      return Result;
+      return Client_Caches.Find_Or_Make
+        (Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name) & " "
+         & ROSIDL.Typesupport.Full_Name (Support), Init'Access);
    end Client_For;
 
    function Call

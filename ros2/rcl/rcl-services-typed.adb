@@ -1,7 +1,6 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Streams;
-with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Static.Wire;
 with ROSIDL.Type_Hashes;
@@ -221,10 +220,7 @@ package body RCL.Services.Typed is
 
    type Client_Access is access Client;
 
-   procedure Free is new Ada.Unchecked_Deallocation (Client, Client_Access);
-
-   package Client_Caches is new RCL.Keyed_Caches (Client_Access, null);
-   use Client_Caches;
+   package Client_Caches is new RCL.Keyed_Caches (Client, Client_Access);
 
    function Call
      (Node    : RCL.Nodes.Node'Class;
@@ -232,30 +228,14 @@ package body RCL.Services.Typed is
       Req     : Request;
       Timeout : Duration := Forever) return Response
    is
-      --  The client is made outside the protected object: making it
-      --  announces endpoints (RCL.Graph), which may block.
-      Key    : constant String :=
-        Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name);
-      Found  : Client_Access := Cache.Find (Key);
-      Mine   : Client_Access;
-      Kept   : Boolean;
+      procedure Init (Made : in out Client) is
+      begin
+         Made.Init (Node, Name);
+      end Init;
    begin
-      if Found = null then
-         Mine := new Client;
-         begin
-            Mine.Init (Node, Name);
-         exception
-            when others =>
-               Free (Mine);
-               raise;
-         end;
-         Found := Mine;
-         Cache.Insert (Key, Found, Kept);
-         if not Kept then
-            Free (Mine);
-         end if;
-      end if;
-      return Found.Call (Req, Timeout);
+      return Client_Caches.Find_Or_Make
+        (Node.Fully_Qualified_Name & " " & Node.Expand_Service (Name), Init'Access).Call
+           (Req, Timeout);
    end Call;
 
    ------------

@@ -107,6 +107,19 @@ package body ROSIDL.Dynamic.Codec is
 
    procedure Size_Node (N : Node_Access; S : in out State);
 
+   procedure Check_String_Bound
+     (S : in out State; Kind : String; Bound : Natural; Index : Positive; Length : Natural)
+   --  Encode_Error at element Index when a Kind ("string", "wstring") of
+   --  Length characters exceeds a Bound (0: unbounded).
+   is
+   begin
+      if Bound > 0 and then Length > Bound then
+         Set_Index (S, Index);
+         Encode_Failure
+           (S, Kind & " of" & Length'Image & " characters exceeds its bound" & Bound'Image);
+      end if;
+   end Check_String_Bound;
+
    procedure Size_Cell (Cell : Field_Cell; S : in out State) is
       T : constant Field_Type := Cell_Type (Cell);
    begin
@@ -138,12 +151,7 @@ package body ROSIDL.Dynamic.Codec is
                declare
                   L : constant Natural := Length (Cell.Extra.Texts (I));
                begin
-                  if T.String_Bound > 0 and then L > T.String_Bound then
-                     Set_Index (S, I);
-                     Encode_Failure
-                       (S, "string of" & L'Image & " characters exceeds its bound"
-                        & T.String_Bound'Image);
-                  end if;
+                  Check_String_Bound (S, "string", T.String_Bound, I, L);
                   S.Pos := Aligned (S.Pos, 4) + 4 + Stream_Element_Offset (L + 1);
                end;
             end loop;
@@ -152,12 +160,7 @@ package body ROSIDL.Dynamic.Codec is
                declare
                   L : constant Natural := Length (Cell.Extra.WTexts (I));
                begin
-                  if T.String_Bound > 0 and then L > T.String_Bound then
-                     Set_Index (S, I);
-                     Encode_Failure
-                       (S, "wstring of" & L'Image & " characters exceeds its bound"
-                        & T.String_Bound'Image);
-                  end if;
+                  Check_String_Bound (S, "wstring", T.String_Bound, I, L);
                   S.Pos := Aligned (S.Pos, 4) + 4 + Stream_Element_Offset (4 * L);
                end;
             end loop;

@@ -393,57 +393,68 @@ package body ROSIDL.Interfaces is
       end;
    end Load_Message;
 
-   function Load_Service (Package_Name, Name : String) return Service_Access is
-      Key    : constant String := Package_Name & "/srv/" & Name;
-      Cached : constant Service_Access := Registry.Find_Service (Key);
-   begin
-      if Cached /= null then
-         return Cached;
-      end if;
-      declare
-         Path   : constant String := Interface_File (Package_Name, "srv", Name);
-         Result : Service_Access;
-      begin
-         if Path = "" then
-            return null;
-         end if;
-         Result := ROSIDL.Parser.Parse_Service
-           (Package_Name, Name, Read_File (Path), Path, Locked_Resolver'Access);
-         Registry.Insert_Message (Key & "_Request", Result.Request);
-         Registry.Insert_Message (Key & "_Response", Result.Response);
-         Registry.Insert_Service (Key, Result);
-         return Result;
-      end;
-   end Load_Service;
+   generic
+      type Definition (<>) is limited private;
+      type Definition_Access is access constant Definition;
+      Folder : String;
+      --  "srv" or "action".
+      with function Find (Key : String) return Definition_Access;
+      with function Parse
+        (Package_Name, Name, Text : String;
+         File    : String;
+         Resolve : not null ROSIDL.Parser.Resolver) return Definition_Access;
+      with procedure Register (Package_Name, Key : String; Parsed : Definition_Access);
+      --  Caches Parsed under Key, and its messages.
+   function Load_Parsed (Package_Name, Name : String) return Definition_Access;
+   --  The cached definition, else the parsed file (null when there is none).
 
-   function Load_Action (Package_Name, Name : String) return Action_Access is
-      Key    : constant String := Package_Name & "/action/" & Name;
-      Cached : constant Action_Access := Registry.Find_Action (Key);
+   function Load_Parsed (Package_Name, Name : String) return Definition_Access is
+      Key    : constant String := Package_Name & "/" & Folder & "/" & Name;
+      Cached : constant Definition_Access := Find (Key);
    begin
       if Cached /= null then
          return Cached;
       end if;
       declare
-         Path   : constant String := Interface_File (Package_Name, "action", Name);
-         Result : Action_Access;
+         Path   : constant String := Interface_File (Package_Name, Folder, Name);
+         Result : Definition_Access;
       begin
          if Path = "" then
             return null;
          end if;
-         Result := ROSIDL.Parser.Parse_Action
-           (Package_Name, Name, Read_File (Path), Path, Locked_Resolver'Access);
-         for M of Message_Access_Array'
-           [Result.Goal, Result.Result, Result.Feedback, Result.Feedback_Message,
-            Result.Send_Goal.Request, Result.Send_Goal.Response,
-            Result.Get_Result.Request, Result.Get_Result.Response]
-         loop
-            Registry.Insert_Message
-              (Package_Name & "/action/" & To_String (M.Name), M);
-         end loop;
-         Registry.Insert_Action (Key, Result);
+         Result := Parse (Package_Name, Name, Read_File (Path), Path, Locked_Resolver'Access);
+         Register (Package_Name, Key, Result);
          return Result;
       end;
-   end Load_Action;
+   end Load_Parsed;
+
+   procedure Register_Service (Package_Name, Key : String; Parsed : Service_Access) is
+      pragma Unreferenced (Package_Name);
+   begin
+      Registry.Insert_Message (Key & "_Request", Parsed.Request);
+      Registry.Insert_Message (Key & "_Response", Parsed.Response);
+      Registry.Insert_Service (Key, Parsed);
+   end Register_Service;
+
+   procedure Register_Action (Package_Name, Key : String; Parsed : Action_Access) is
+   begin
+      for M of Message_Access_Array'
+        [Parsed.Goal, Parsed.Result, Parsed.Feedback, Parsed.Feedback_Message,
+         Parsed.Send_Goal.Request, Parsed.Send_Goal.Response,
+         Parsed.Get_Result.Request, Parsed.Get_Result.Response]
+      loop
+         Registry.Insert_Message (Package_Name & "/action/" & To_String (M.Name), M);
+      end loop;
+      Registry.Insert_Action (Key, Parsed);
+   end Register_Action;
+
+   function Load_Service is new Load_Parsed
+     (Service_Definition, Service_Access, "srv", Registry.Find_Service,
+      ROSIDL.Parser.Parse_Service, Register_Service);
+
+   function Load_Action is new Load_Parsed
+     (Action_Definition, Action_Access, "action", Registry.Find_Action,
+      ROSIDL.Parser.Parse_Action, Register_Action);
 
    ---------------------------------------------------------------------------
    --  Look-ups

@@ -9,6 +9,20 @@ package body RCL.Bags.Recorders is
 
    package Queries renames RCL.Graph.Queries;
 
+   procedure Guarded (S : in out State; Action : not null access procedure) is
+   --  Action with S.Guard held (released when Action raises too).
+   begin
+      S.Guard.Seize;
+      begin
+         Action.all;
+      exception
+         when others =>
+            S.Guard.Release;
+            raise;
+      end;
+      S.Guard.Release;
+   end Guarded;
+
    --  A subscription's handler: writes each sample to the bag.
    type Topic_Handler is new RCL.Nodes.Handler with record
       Shared : State_Access;
@@ -91,6 +105,12 @@ package body RCL.Bags.Recorders is
                   All_Local : Boolean := Pubs'Length > 0;
                   Index : Topic_Index;
                   DDS_Type : Unbounded_String;
+
+                  procedure Add_Topic is
+                  begin
+                     Index := This.Shared.Bag.Add_Topic
+                       (Name, Type_Name, Offered_QoS_Text (Offer));
+                  end Add_Topic;
                begin
                   if Pubs'Length > 0 then
                      for I in Pubs'Range loop
@@ -106,16 +126,7 @@ package body RCL.Bags.Recorders is
                      if All_Local then
                         QoS.Durability := RCL.QoS.Transient_Local;
                      end if;
-                     This.Shared.Guard.Seize;
-                     begin
-                        Index := This.Shared.Bag.Add_Topic
-                          (Name, Type_Name, Offered_QoS_Text (Offer));
-                     exception
-                        when others =>
-                           This.Shared.Guard.Release;
-                           raise;
-                     end;
-                     This.Shared.Guard.Release;
+                     Guarded (This.Shared.all, Add_Topic'Access);
                      Node.Add_Subscription
                        (To_String (DDS_Type), Name,
                         new Topic_Handler'(Shared => This.Shared, Topic => Index), QoS);
@@ -135,18 +146,14 @@ package body RCL.Bags.Recorders is
      (if This.Shared = null then 0 else This.Shared.Count);
 
    procedure Stop (This : in out Recorder) is
+      procedure Close is
+      begin
+         This.Shared.Recording := False;
+         This.Shared.Bag.Close;
+      end Close;
    begin
       if This.Shared /= null and then This.Shared.Recording then
-         This.Shared.Guard.Seize;
-         This.Shared.Recording := False;
-         begin
-            This.Shared.Bag.Close;
-         exception
-            when others =>
-               This.Shared.Guard.Release;
-               raise;
-         end;
-         This.Shared.Guard.Release;
+         Guarded (This.Shared.all, Close'Access);
       end if;
    end Stop;
 

@@ -330,6 +330,23 @@ package body RCL.DDS is
    -- Topics --
    ------------
 
+   procedure Check_Created
+     (Result     : C.int;
+      What       : String;
+      Topic_Name : String;
+      Profile    : RCL.QoS.Profile;
+      Topic      : in out Entity_Id)
+   --  When creating a What ("writer", "reader") on Topic failed (Result < 0):
+   --  deletes the Topic made for it and raises ROS_Exception (as Check).
+   is
+   begin
+      if Result < 0 then
+         Delete (Topic);
+         Check (Integer (Result), "creating a " & What & " on """ & Topic_Name & """ with QoS "
+                & RCL.QoS.Image (Profile));
+      end if;
+   end Check_Created;
+
    procedure Create_Topic
      (Owner              : Participant'Class;
       Topic_Name, Type_Name : String;
@@ -368,11 +385,7 @@ package body RCL.DDS is
       Result := Thin.Create_Writer
         (C.int (Owner.Handle), C.int (This.Topic), Q, System.Null_Address);
       Thin.Delete_Qos (Q);
-      if Result < 0 then
-         Delete (This.Topic);
-         Check (Integer (Result), "creating a writer on """ & Topic_Name & """ with QoS "
-                & RCL.QoS.Image (Profile));
-      end if;
+      Check_Created (Result, "writer", Topic_Name, Profile, This.Topic);
       This.Handle := Entity_Id (Result);
       This.Topic_Name := new String'(Topic_Name);
       This.Type_Name := new String'(Type_Name);
@@ -427,12 +440,15 @@ package body RCL.DDS is
              "publishing on """ & This.Topic_Name.all & """");
    end Write_Filled;
 
-   function Endpoint_GUID (This : Writer) return GUID is
+   function Entity_GUID (Entity : C.int; What : String) return GUID is
       G : Thin.Guid_Bytes;
    begin
-      Check (Integer (Thin.Entity_Guid (C.int (This.Handle), G)), "getting a writer GUID");
+      Check (Integer (Thin.Entity_Guid (Entity, G)), "getting a " & What & " GUID");
       return GUID (G);
-   end Endpoint_GUID;
+   end Entity_GUID;
+
+   function Endpoint_GUID (This : Writer) return GUID is
+     (Entity_GUID (C.int (This.Handle), "writer"));
 
    function Matched_Readers (This : Writer) return Natural is
       S : Thin.Matched_Status;
@@ -500,11 +516,7 @@ package body RCL.DDS is
       Result := Thin.Create_Reader
         (C.int (Owner.Handle), C.int (This.Topic), Q, System.Null_Address);
       Thin.Delete_Qos (Q);
-      if Result < 0 then
-         Delete (This.Topic);
-         Check (Integer (Result), "creating a reader on """ & Topic_Name & """ with QoS "
-                & RCL.QoS.Image (Profile));
-      end if;
+      Check_Created (Result, "reader", Topic_Name, Profile, This.Topic);
       This.Handle := Entity_Id (Result);
       Result := Thin.Create_Readcondition (C.int (This.Handle), Thin.DDS_Any_State);
       Check (Integer (Result), "creating a read condition on """ & Topic_Name & """");
@@ -640,11 +652,7 @@ package body RCL.DDS is
    end Take;
 
    function Endpoint_GUID (This : Reader) return GUID is
-      G : Thin.Guid_Bytes;
-   begin
-      Check (Integer (Thin.Entity_Guid (C.int (This.Handle), G)), "getting a reader GUID");
-      return GUID (G);
-   end Endpoint_GUID;
+     (Entity_GUID (C.int (This.Handle), "reader"));
 
    function Matched_Writers (This : Reader) return Natural is
       S : Thin.Matched_Status;

@@ -150,6 +150,28 @@ package body RCL.MCAP.Readers is
       return Get_U64 (Data, C.Pos - 8);
    end U64;
 
+   procedure Next_Record
+     (This   : Reader;
+      Data   : Byte_Array;
+      Outer  : in out Cursor;
+      What   : String;
+      Opcode : out Unsigned_8;
+      Inner  : out Cursor)
+   --  The record at Outer.Pos: its opcode, and Inner spanning its content,
+   --  checked to fit in Outer (errors name "<What> opcode", "<What> length",
+   --  What). Outer.Pos moves past the record.
+   is
+      Length : Unsigned_64;
+   begin
+      Opcode := U8 (This, Data, Outer, What & " opcode");
+      Length := U64 (This, Data, Outer, What & " length");
+      if Length > Unsigned_64 (Outer.Last - Outer.Pos + 1) then
+         Need (This, Outer, Stream_Element_Offset'Last / 2, What);
+      end if;
+      Inner := (Outer with delta Last => Outer.Pos + Stream_Element_Offset (Length) - 1);
+      Outer.Pos := Inner.Last + 1;
+   end Next_Record;
+
    function Str (This : Reader; Data : Byte_Array; C : in out Cursor; What : String)
                  return String is
       Length : constant Unsigned_32 := U32 (This, Data, C, What & "'s length");
@@ -366,16 +388,12 @@ package body RCL.MCAP.Readers is
          begin
             while P.Pos <= P.Last loop
                declare
-                  Inner_Op  : constant Unsigned_8 := U8 (This, Plain.all, P, "record opcode");
-                  Inner_Len : constant Unsigned_64 := U64 (This, Plain.all, P, "record length");
-                  Body_At   : constant Stream_Element_Offset := P.Pos;
+                  Inner_Op : Unsigned_8;
+                  R        : Cursor;
                begin
-                  if Inner_Len > Unsigned_64 (P.Last - P.Pos + 1) then
-                     Need (This, P, Stream_Element_Offset'Last / 2, "record");
-                  end if;
+                  Next_Record (This, Plain.all, P, "record", Inner_Op, R);
                   declare
-                     R : Cursor :=
-                       (P with delta Last => Body_At + Stream_Element_Offset (Inner_Len) - 1);
+                     Body_At : constant Stream_Element_Offset := R.Pos;
                   begin
                      case Inner_Op is
                         when Op_Schema => Add_Schema (This, Plain.all, R);
@@ -400,7 +418,6 @@ package body RCL.MCAP.Readers is
                         when others => null;
                      end case;
                   end;
-                  P.Pos := Body_At + Stream_Element_Offset (Inner_Len);
                end;
             end loop;
             if not Position_Sorting.Is_Sorted (Positions) then
@@ -540,68 +557,60 @@ package body RCL.MCAP.Readers is
    begin
       while C.Pos <= C.Last loop
          declare
-            Opcode : constant Unsigned_8 := U8 (This, Content.all, C, "summary record opcode");
-            Length : constant Unsigned_64 := U64 (This, Content.all, C, "summary record length");
-            Start  : constant Stream_Element_Offset := C.Pos;
+            Opcode : Unsigned_8;
+            R      : Cursor;
          begin
-            if Length > Unsigned_64 (C.Last - C.Pos + 1) then
-               Need (This, C, Stream_Element_Offset'Last / 2, "summary record");
-            end if;
-            declare
-               R : Cursor := (C with delta Last => Start + Stream_Element_Offset (Length) - 1);
-            begin
-               case Opcode is
-                  when Op_Schema => Add_Schema (This, Content.all, R);
-                  when Op_Channel => Add_Channel (This, Content.all, R);
-                  when Op_Statistics =>
-                     This.Message_Total := U64 (This, Content.all, R, "message count");
-                     R.Pos := R.Pos + 2 + 4 + 4 + 4 + 4;
-                     This.First_Time := U64 (This, Content.all, R, "message start time");
-                     This.Last_Time := U64 (This, Content.all, R, "message end time");
-                     declare
-                        Length : constant Unsigned_32 :=
-                          U32 (This, Content.all, R, "channel counts");
-                        Stop   : constant Stream_Element_Offset :=
-                          R.Pos + Stream_Element_Offset (Length);
-                     begin
-                        while R.Pos < Stop loop
-                           declare
-                              Id : constant Unsigned_16 := U16 (This, Content.all, R, "channel id");
-                           begin
-                              This.Counts.Append
-                                (Count_Entry'(Id, U64 (This, Content.all, R, "count")));
-                           end;
-                        end loop;
-                     end;
-                  when Op_Chunk_Index =>
-                     declare
-                        Index_At   : constant Unsigned_64 := Where (R);
-                        Start_Time : constant Unsigned_64 := U64 (This, Content.all, R, "start");
-                        End_Time   : constant Unsigned_64 := U64 (This, Content.all, R, "end");
-                        Offset     : constant Unsigned_64 := U64 (This, Content.all, R, "offset");
-                        Length     : constant Unsigned_64 := U64 (This, Content.all, R, "length");
-                        Offsets_Length : constant Unsigned_32 :=
-                          U32 (This, Content.all, R, "message index offsets");
-                        Ignored    : constant Boolean := Skip (This, R, Offsets_Length);
-                        Ignored_Length : constant Unsigned_64 :=
-                          U64 (This, Content.all, R, "message index length");
-                        Kind : constant String := Str (This, Content.all, R, "compression");
-                     begin
-                        if Offset > From or else Length > From - Offset then
-                           Fail (This, Index_At, "chunk index points to bytes " & Image (Offset)
-                                 & " .. " & Image (Offset + Length) & ", past the data section "
-                                 & "(ends at " & Image (From) & "): corrupt");
-                        end if;
-                        if This.Data.Is_Empty then
-                           This.Compression := To_Unbounded_String (Kind);
-                        end if;
-                        This.Data.Append (Data_Record'(Offset, Start_Time, End_Time));
-                     end;
-                  when others =>
-                     null;
-               end case;
-            end;
-            C.Pos := Start + Stream_Element_Offset (Length);
+            Next_Record (This, Content.all, C, "summary record", Opcode, R);
+            case Opcode is
+               when Op_Schema => Add_Schema (This, Content.all, R);
+               when Op_Channel => Add_Channel (This, Content.all, R);
+               when Op_Statistics =>
+                  This.Message_Total := U64 (This, Content.all, R, "message count");
+                  R.Pos := R.Pos + 2 + 4 + 4 + 4 + 4;
+                  This.First_Time := U64 (This, Content.all, R, "message start time");
+                  This.Last_Time := U64 (This, Content.all, R, "message end time");
+                  declare
+                     Length : constant Unsigned_32 :=
+                       U32 (This, Content.all, R, "channel counts");
+                     Stop   : constant Stream_Element_Offset :=
+                       R.Pos + Stream_Element_Offset (Length);
+                  begin
+                     while R.Pos < Stop loop
+                        declare
+                           Id : constant Unsigned_16 := U16 (This, Content.all, R, "channel id");
+                        begin
+                           This.Counts.Append
+                             (Count_Entry'(Id, U64 (This, Content.all, R, "count")));
+                        end;
+                     end loop;
+                  end;
+               when Op_Chunk_Index =>
+                  declare
+                     Index_At   : constant Unsigned_64 := Where (R);
+                     Start_Time : constant Unsigned_64 := U64 (This, Content.all, R, "start");
+                     End_Time   : constant Unsigned_64 := U64 (This, Content.all, R, "end");
+                     Offset     : constant Unsigned_64 := U64 (This, Content.all, R, "offset");
+                     Length     : constant Unsigned_64 := U64 (This, Content.all, R, "length");
+                     Offsets_Length : constant Unsigned_32 :=
+                       U32 (This, Content.all, R, "message index offsets");
+                     Ignored    : constant Boolean := Skip (This, R, Offsets_Length);
+                     Ignored_Length : constant Unsigned_64 :=
+                       U64 (This, Content.all, R, "message index length");
+                     Kind : constant String := Str (This, Content.all, R, "compression");
+                  begin
+                     if Offset > From or else Length > From - Offset then
+                        Fail (This, Index_At, "chunk index points to bytes " & Image (Offset)
+                              & " .. " & Image (Offset + Length) & ", past the data section "
+                              & "(ends at " & Image (From) & "): corrupt");
+                     end if;
+                     if This.Data.Is_Empty then
+                        This.Compression := To_Unbounded_String (Kind);
+                     end if;
+                     This.Data.Append (Data_Record'(Offset, Start_Time, End_Time));
+                  end;
+               when others =>
+                  null;
+            end case;
          end;
       end loop;
       Free (Content);
