@@ -100,6 +100,29 @@ package body Sancta.Team.Plans is
 
    --  Plans ---------------------------------------------------------------------
 
+   function Task_Index (S : Snapshot; Id : Unbounded_String) return Natural is
+   begin
+      for T in 1 .. Natural (S.Tasks.Length) loop
+         if S.Tasks (T).Id = Id then
+            return T;
+         end if;
+      end loop;
+      return 0;
+   end Task_Index;
+   --  The position of task Id in S.Tasks; 0 when S does not hold it.
+
+   function Robot_Index (S : Snapshot; Id : Unbounded_String) return Natural is
+   begin
+      for R in 1 .. Natural (S.Robots.Length) loop
+         if S.Robots (R).Id = Id then
+            return R;
+         end if;
+      end loop;
+      return 0;
+   end Robot_Index;
+   --  The position of robot Id in S.Robots; 0 when S does not hold it.
+
+
    function Encode (P : Plan; S : Snapshot) return String is
       Result : Unbounded_String := To_Unbounded_String
         (Trim (P.Generation) & "|" & Img (P.Value) & "|" & To_String (P.Proposer) & "|");
@@ -380,26 +403,6 @@ package body Sancta.Team.Plans is
                         others     => <>);
       Placed : array (1 .. Natural (S.Tasks.Length)) of Boolean := [others => False];
 
-      function Task_Index (Id : Unbounded_String) return Natural is
-      begin
-         for T in 1 .. Natural (S.Tasks.Length) loop
-            if S.Tasks (T).Id = Id then
-               return T;
-            end if;
-         end loop;
-         return 0;
-      end Task_Index;
-
-      function Previous_Index (Robot : Unbounded_String) return Natural is
-      begin
-         for R in 1 .. Natural (Previous_Round.Robots.Length) loop
-            if Previous_Round.Robots (R).Id = Robot then
-               return R;
-            end if;
-         end loop;
-         return 0;
-      end Previous_Index;
-
       Dummy : Long_Float;
    begin
       if S.Robots.Is_Empty or else Previous.Generation = 0
@@ -410,13 +413,13 @@ package body Sancta.Team.Plans is
       end if;
       for Robot of S.Robots loop
          declare
-            Old  : constant Natural := Previous_Index (Robot.Id);
+            Old  : constant Natural := Robot_Index (Previous_Round, Robot.Id);
             Tour : Step_Vectors.Vector;
          begin
             if Old > 0 then
                for St of Previous.Tours (Old) loop
                   declare
-                     T : constant Natural := Task_Index (St.Task_Id);
+                     T : constant Natural := Task_Index (S, St.Task_Id);
                   begin
                      if T > 0 and then not Placed (T)
                        and then St.Choice <= Missions.Alternatives (S.Tasks (T))
@@ -546,16 +549,6 @@ package body Sancta.Team.Plans is
                  (Criterion => Min_Tim, Seed => Seed, Time_Limit => Budget,
                   Iterations => Iterations, Report_Every => 1000.0, others => <>);
                Stats : Annealers.Progress;
-
-               function Index_Of (Id : Unbounded_String) return Natural is
-               begin
-                  for T in 1 .. NT loop
-                     if S.Tasks (T).Id = Id then
-                        return T;
-                     end if;
-                  end loop;
-                  return 0;
-               end Index_Of;
             begin
                if Natural (Start_From.Tours.Length) = NR then
                   declare
@@ -565,7 +558,7 @@ package body Sancta.Team.Plans is
                      for R in 1 .. NR loop
                         for St of Start_From.Tours (R) loop
                            declare
-                              T : constant Natural := Index_Of (St.Task_Id);
+                              T : constant Natural := Task_Index (S, St.Task_Id);
                            begin
                               if T = 0 or else Seen (T)
                                 or else St.Choice > Missions.Alternatives (S.Tasks (T))
