@@ -9,6 +9,7 @@
 with Ada.Command_Line;
 with Ada.Directories;
 with Ada.Environment_Variables;
+with Ada.Text_IO;
 with AUnit;
 with AUnit.Reporter.Text;
 with AUnit.Run;
@@ -95,7 +96,14 @@ procedure Test_Driver is
    use type AUnit.Status;
 begin
    Keep_DDS_On_Loopback;
-   if Run (Reporter) /= AUnit.Success then
-      Ada.Command_Line.Set_Exit_Status (Ada.Command_Line.Failure);
-   end if;
+   declare
+      Passed : constant Boolean := Run (Reporter) = AUnit.Success;
+   begin
+      --  Ends the process here: a test that failed before stopping the
+      --  tasks it started (team agents, executors) would otherwise keep the
+      --  driver alive after its report, until CI's timeout.
+      Ada.Text_IO.Flush (Ada.Text_IO.Standard_Output);
+      Ada.Text_IO.Flush (Ada.Text_IO.Standard_Error);
+      GNAT.OS_Lib.OS_Exit (if Passed then 0 else 1);
+   end;
 end Test_Driver;
