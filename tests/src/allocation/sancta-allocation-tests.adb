@@ -177,6 +177,35 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Route_Search_In_Anneal;
 
+   --  The hybrid schedule (geometric, then reheats from the best) under the
+   --  expensive check, for the makespan and the total: valid, the reported
+   --  best is the allocation's value, deterministic for a seed; it is not
+   --  the geometric run (same seed and moves) from the start (its own cooling).
+   procedure Hybrid_Schedule (Unused : in out Fixture) is
+      P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil76.tsp").all, 3);
+      use Annealers;
+   begin
+      for C of Criterion_Array'[Min_Max, Min_Sum] loop
+         declare
+            O : constant Options :=
+              (Criterion => C, Seed => 11, Time_Limit => 0.0, Iterations => 60_000,
+               Schedule => Hybrid, Geometric_Share => 0.3, Check => True, others => <>);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            Plain : Options := O;
+         begin
+            Solve (P.all, O, A, S);
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            Plain.Schedule := Geometric;
+            Solve (P.all, Plain, B, T);
+            Assert (A /= B, "the hybrid run equals the geometric one");
+         end;
+      end loop;
+   end Hybrid_Schedule;
+
    ---------------------------------------------------------------------------
 
    procedure Optimal_Tours (Unused : in out Fixture) is
@@ -681,6 +710,7 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("computed distances equal the matrix", Computed_Distances_Equal_Matrix'Access);
       Add ("fast floor / ceiling / nearest rounding", Fast_Rounding'Access);
+      Add ("hybrid schedule, checked", Hybrid_Schedule'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
       Add ("robots ending at their own depots", End_Depots'Access);
