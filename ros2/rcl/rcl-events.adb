@@ -1,4 +1,5 @@
 with RCL.Event_Watches;
+with RCL.Node_Entities;
 
 package body RCL.Events is
 
@@ -21,7 +22,7 @@ package body RCL.Events is
       Stored : constant Callback with Import, Address => On_Event'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
    begin
-      RCL.Event_Watches.Watch_Publisher (Node.Graph_Id, Pub, Stored);
+      RCL.Event_Watches.Watch_Publisher (RCL.Node_Entities.Graph_Id (Node), Pub, Stored);
    end Watch;
 
    procedure Watch
@@ -29,20 +30,16 @@ package body RCL.Events is
       Topic    : String;
       On_Event : not null access procedure (Node : in out RCL.Nodes.Node'Class; E : Event))
    is
+      use type RCL.Node_Entities.Subscription_Access;
       Stored : constant Callback with Import, Address => On_Event'Address;
       FQ     : constant String := Node.Expand (Topic);
+      S      : constant RCL.Node_Entities.Subscription_Access :=
+        RCL.Node_Entities.Find_Subscription (Node, FQ);
    begin
-      for I in 1 .. Node.Subscription_Count loop
-         declare
-            S : constant RCL.Nodes.Subscription_Access := Node.Get_Subscription (I);
-         begin
-            if S.Topic.all = FQ then
-               RCL.Event_Watches.Watch_Subscription (Node.Graph_Id, S, Stored);
-               return;
-            end if;
-         end;
-      end loop;
-      raise ROS_Exception with "node " & Node.Name & " has no subscription on " & FQ;
+      if S = null then
+         raise ROS_Exception with "node " & Node.Name & " has no subscription on " & FQ;
+      end if;
+      RCL.Event_Watches.Watch_Subscription (RCL.Node_Entities.Graph_Id (Node), S, Stored);
    end Watch;
 
    --  Polling ------------------------------------------------------------------
