@@ -171,7 +171,7 @@ procedure Rosidl_Generate is
                            when others => Prim_Name (K)));
 
    function Codec (K : Primitive_Kind) return String is
-     ("ROSIDL.Static.Codecs." & Prim_Name (K) & "_Codec");
+     ("ROSIDL.Static.Impl.Codecs." & Prim_Name (K) & "_Codec");
 
    function Zero (K : Primitive_Kind) return String is
      (case K is
@@ -403,14 +403,14 @@ procedure Rosidl_Generate is
    function Size_Element (T : Field_Type; Expr : String) return String is
      (case T.Kind is
          when Primitive_Kind =>
-           "ROSIDL.Static.Wire.Add (Pos, " & Trim (Primitive_Size (T.Kind)) & ", "
+           "ROSIDL.Static.Impl.Wire.Add (Pos, " & Trim (Primitive_Size (T.Kind)) & ", "
            & Trim (Primitive_Size (T.Kind)) & ");",
          when String_Kind =>
-           "ROSIDL.Static.Wire.Add_String (Pos, "
+           "ROSIDL.Static.Impl.Wire.Add_String (Pos, "
            & (if T.String_Bound = 0 then "Ada.Strings.Unbounded" else Bounded_Text_Package (T))
            & ".Length (" & Expr & "));",
          when WString_Kind =>
-           "ROSIDL.Static.Wire.Add_WString (Pos, "
+           "ROSIDL.Static.Impl.Wire.Add_WString (Pos, "
            & (if T.String_Bound = 0 then "Ada.Strings.Wide_Wide_Unbounded"
               else Bounded_Text_Package (T))
            & ".Length (" & Expr & "));",
@@ -420,11 +420,11 @@ procedure Rosidl_Generate is
      (case T.Kind is
          when Primitive_Kind => Codec (T.Kind) & ".Put (B, C, " & Expr & ");",
          when String_Kind =>
-           "ROSIDL.Static.Wire.Put_String (B, C, "
+           "ROSIDL.Static.Impl.Wire.Put_String (B, C, "
            & (if T.String_Bound = 0 then Expr
               else Bounded_Text_Package (T) & ".To_String (" & Expr & ")") & ");",
          when WString_Kind =>
-           "ROSIDL.Static.Wire.Put_WString (B, C, "
+           "ROSIDL.Static.Impl.Wire.Put_WString (B, C, "
            & (if T.String_Bound = 0 then "Ada.Strings.Wide_Wide_Unbounded"
               else Bounded_Text_Package (T))
            & ".To_Wide_Wide_String (" & Expr & "));",
@@ -435,17 +435,17 @@ procedure Rosidl_Generate is
          when Primitive_Kind => Codec (T.Kind) & ".Get (B, C, " & Expr & ", " & What & ");",
          when String_Kind =>
            (if T.String_Bound = 0
-            then "ROSIDL.Static.Wire.Get_String (B, C, 0, " & Expr & ", " & What & ");"
+            then "ROSIDL.Static.Impl.Wire.Get_String (B, C, 0, " & Expr & ", " & What & ");"
             else "declare First : Ada.Streams.Stream_Element_Offset; Length : Natural; begin "
-                 & "ROSIDL.Static.Wire.Get_String_Span (B, C, " & Trim (T.String_Bound)
+                 & "ROSIDL.Static.Impl.Wire.Get_String_Span (B, C, " & Trim (T.String_Bound)
                  & ", First, Length, " & What & "); " & Expr & " := "
                  & Bounded_Text_Package (T)
-                 & ".To_Bounded_String (ROSIDL.Static.Wire.Text (B, First, Length)); end;"),
+                 & ".To_Bounded_String (ROSIDL.Static.Impl.Wire.Text (B, First, Length)); end;"),
          when WString_Kind =>
            (if T.String_Bound = 0
-            then "ROSIDL.Static.Wire.Get_WString (B, C, 0, " & Expr & ", " & What & ");"
+            then "ROSIDL.Static.Impl.Wire.Get_WString (B, C, 0, " & Expr & ", " & What & ");"
             else Expr & " := " & Bounded_Text_Package (T)
-                 & ".To_Bounded_Wide_Wide_String (ROSIDL.Static.Wire.Get_WString (B, C, "
+                 & ".To_Bounded_Wide_Wide_String (ROSIDL.Static.Impl.Wire.Get_WString (B, C, "
                  & Trim (T.String_Bound) & ", " & What & "));"),
          when Message_Kind => Path_Of (T.Nested.all) & ".Read_Body (B, C, " & Expr & ");");
 
@@ -565,14 +565,15 @@ procedure Rosidl_Generate is
       Line (Spec, I + 3, "package Sequences is new ROSIDL.Static.Unbounded_Sequences "
             & "(Message, Message_Array, Default_Message);");
       Line (Spec, I, "");
-      Line (Spec, I + 3, "--  Not for users: the body codec (see ROSIDL.Static.Message_Support).");
+      Line (Spec, I + 3, "--  For generated code (ROSIDL.Static.Impl): the body codec, "
+            & "the actuals of Handling.");
       Line (Spec, I + 3, "procedure Size_Body (Msg : Message; "
             & "Pos : in out Ada.Streams.Stream_Element_Offset);");
       Line (Spec, I + 3, "procedure Write_Body (Msg : Message; "
             & "B : in out Ada.Streams.Stream_Element_Array; "
-            & "C : in out ROSIDL.Static.Wire.Cursor);");
+            & "C : in out ROSIDL.Static.Impl.Wire.Cursor);");
       Line (Spec, I + 3, "procedure Read_Body (B : Ada.Streams.Stream_Element_Array; "
-            & "C : in out ROSIDL.Static.Wire.Cursor; Msg : in out Message);");
+            & "C : in out ROSIDL.Static.Impl.Wire.Cursor; Msg : in out Message);");
       Line (Spec, I, "");
       Line (Spec, I + 3, "package Handling is new ROSIDL.Static.Message_Support");
       Line (Spec, I + 5, "(Message, Full_Name, DDS_Type_Name, Type_Hash, Is_Bounded,");
@@ -610,17 +611,18 @@ procedure Rosidl_Generate is
                   Line (Impl, I + 6, Size_Element (T, X));
                when Fixed_Array =>
                   if T.Kind in Primitive_Kind then
-                     Line (Impl, I + 6, "ROSIDL.Static.Wire.Add (Pos, " & Sz & ", "
+                     Line (Impl, I + 6, "ROSIDL.Static.Impl.Wire.Add (Pos, " & Sz & ", "
                            & Trim (T.Size * Primitive_Size (T.Kind)) & ");");
                   else
                      Line (Impl, I + 6, "for E of " & X & " loop "
                            & Size_Element (T, "E") & " end loop;");
                   end if;
                when Unbounded_Sequence | Bounded_Sequence =>
-                  Line (Impl, I + 6, "ROSIDL.Static.Wire.Add (Pos, 4, 4);");
+                  Line (Impl, I + 6, "ROSIDL.Static.Impl.Wire.Add (Pos, 4, 4);");
                   if T.Kind in Primitive_Kind then
-                     Line (Impl, I + 6, "if " & X & ".Length > 0 then ROSIDL.Static.Wire.Add (Pos, "
-                           & Sz & ", Ada.Streams.Stream_Element_Offset (" & X & ".Length) * "
+                     Line (Impl, I + 6, "if " & X & ".Length > 0 then "
+                           & "ROSIDL.Static.Impl.Wire.Add (Pos, " & Sz
+                           & ", Ada.Streams.Stream_Element_Offset (" & X & ".Length) * "
                            & Sz & "); end if;");
                   elsif T.Collection = Unbounded_Sequence then
                      Line (Impl, I + 6, "if " & X & ".Length > 0 then for E of " & X
@@ -639,7 +641,7 @@ procedure Rosidl_Generate is
       --  Write pass.
       Line (Impl, I + 3, "procedure Write_Body (Msg : Message; "
             & "B : in out Ada.Streams.Stream_Element_Array; "
-            & "C : in out ROSIDL.Static.Wire.Cursor) is");
+            & "C : in out ROSIDL.Static.Impl.Wire.Cursor) is");
       Line (Impl, I + 3, "begin");
       for F of Def.Fields loop
          declare
@@ -653,7 +655,7 @@ procedure Rosidl_Generate is
             Guard : constant Boolean := T.Collection = Unbounded_Sequence;
          begin
             if T.Collection in Unbounded_Sequence | Bounded_Sequence then
-               Line (Impl, I + 6, "ROSIDL.Static.Wire.Put_Count (B, C, " & X & ".Length);");
+               Line (Impl, I + 6, "ROSIDL.Static.Impl.Wire.Put_Count (B, C, " & X & ".Length);");
             end if;
             if T.Collection = Single then
                Line (Impl, I + 6, Write_Element (T, X));
@@ -673,7 +675,7 @@ procedure Rosidl_Generate is
 
       --  Read pass.
       Line (Impl, I + 3, "procedure Read_Body (B : Ada.Streams.Stream_Element_Array; "
-            & "C : in out ROSIDL.Static.Wire.Cursor; Msg : in out Message) is");
+            & "C : in out ROSIDL.Static.Impl.Wire.Cursor; Msg : in out Message) is");
       Line (Impl, I + 3, "begin");
       for F of Def.Fields loop
          declare
@@ -701,7 +703,7 @@ procedure Rosidl_Generate is
                      Line (Impl, I + 6, "declare");
                      Line (Impl, I + 9, "Count : Natural;");
                      Line (Impl, I + 6, "begin");
-                     Line (Impl, I + 9, "ROSIDL.Static.Wire.Get_Count (B, C, Count, "
+                     Line (Impl, I + 9, "ROSIDL.Static.Impl.Wire.Get_Count (B, C, Count, "
                            & Trim (Min_Element_Size (T)) & ", "
                            & (if T.Collection = Bounded_Sequence then Trim (T.Size) else "0")
                            & ", " & What & ");");
@@ -743,7 +745,7 @@ procedure Rosidl_Generate is
      & "pragma Warnings (Off);" & NL
      & "pragma Validity_Checks (Off);" & NL
      & "with Ada.Streams;" & NL
-     & "with ROSIDL.Static.Codecs;" & NL
+     & "with ROSIDL.Static.Impl.Codecs;" & NL
      & "use type Ada.Streams.Stream_Element_Offset;" & NL;
 
    Spec_Withs : constant String :=
@@ -762,7 +764,7 @@ procedure Rosidl_Generate is
      & "with ROSIDL.Static.Sequences;" & NL
      & "with ROSIDL.Static.Service_Support;" & NL
      & "with ROSIDL.Static.Unbounded_Sequences;" & NL
-     & "with ROSIDL.Static.Wire;" & NL;
+     & "with ROSIDL.Static.Impl.Wire;" & NL;
 
    procedure Store (File, Text : String) is
    begin

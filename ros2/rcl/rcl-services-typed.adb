@@ -2,7 +2,7 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Streams;
 with ROSIDL.CDR;
-with ROSIDL.Static.Wire;
+with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
 with RCL.Client_Endpoints;
 with RCL.Contexts;
@@ -120,14 +120,14 @@ package body RCL.Services.Typed is
          pragma Unreferenced (Info);
          Start    : constant Ada.Streams.Stream_Element_Offset :=
            Data'First + ROSIDL.CDR.Encapsulation_Size;
-         C        : ROSIDL.Static.Wire.Cursor :=
+         C        : ROSIDL.Static.Impl.Wire.Cursor :=
            (Pos => Start, Origin => Start,
             Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
          GUID     : ROSIDL.UInt64;
          Seq      : ROSIDL.Int64;
          Header   : ROSIDL.CDR.Request_Header;
       begin
-         ROSIDL.Static.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
+         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
          if GUID = This.Handle and then Seq = Sequence then
             Responses.Decode (Data, Resp, Header);
             Done := True;

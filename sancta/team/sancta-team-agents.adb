@@ -135,11 +135,6 @@ package body Sancta.Team.Agents is
    end Alive_Robots;
 
    function Has_Quorum (This : Agent'Class) return Boolean is
-      --  The partition rule: the voters are the robots of the current round
-      --  and the operator (the writer of "mission"); a node may open rounds
-      --  and start tasks only while it hears a strict majority of them,
-      --  itself included. A side cut off from the majority finishes what
-      --  it has under way and starts nothing new until the link heals.
       Round    : constant Plans.Snapshot := This.Views.Get.Round;
       Operator : constant String := This.Db.Writer ("mission");
       Voters   : Name_Sets.Set;

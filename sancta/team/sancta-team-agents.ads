@@ -139,6 +139,14 @@ package Sancta.Team.Agents is
    function All_Done (This : Agent) return Boolean;
    --  The mission is known and every task is done.
 
+   function Has_Quorum (This : Agent'Class) return Boolean;
+   --  The partition rule: the voters are the robots of the current round
+   --  and the operator (the writer of "mission"); a node opens rounds and
+   --  starts tasks only while it hears a strict majority of them, itself
+   --  included. A side cut off from the majority finishes the task under
+   --  way and starts nothing new until the link heals. True before the
+   --  first round.
+
 private
 
    package Name_Sets is new Ada.Containers.Indefinite_Ordered_Sets (String);

@@ -115,6 +115,7 @@ package body Sancta.Commands.Team_Agent is
          end Finish;
          Last_Gen  : Natural := 0;
          Last_Done : Natural := 0;
+         Heard_Majority : Boolean := True;
          Beat   : Natural := 0;
       begin
          if not Config.Is_Robot then
@@ -149,6 +150,16 @@ package body Sancta.Commands.Team_Agent is
                      Flush;
                   end if;
                   Beat := Beat + 1;
+                  if Agent.Has_Quorum /= Heard_Majority then
+                     --  The partition rule's state, for a reader of the log
+                     --  (tests/netns/team-netns.sh checks that nothing new
+                     --  is started between these two lines).
+                     Heard_Majority := not Heard_Majority;
+                     Put_Line (To_String (Config.Id)
+                               & (if Heard_Majority then ": hears the majority again"
+                                  else ": cut off from the majority"));
+                     Flush;
+                  end if;
                   Agent.Current_Goal (Found, Goal, Tid);
                   if Found then
                      if Distance (Here, Goal) <= Step then

@@ -4,7 +4,7 @@ package body ROSIDL.Static.Message_Support is
 
    pragma Unsuppress (Index_Check);
    pragma Unsuppress (Length_Check);
-   --  Write relies on them (as ROSIDL.Static.Wire does).
+   --  Write relies on them (as ROSIDL.Static.Impl.Wire does).
 
    Header_Size : constant := ROSIDL.CDR.Request_Header_Size;
 
@@ -24,7 +24,7 @@ package body ROSIDL.Static.Message_Support is
    end Put_Header;
 
    --  One pass: no size pass first. Every byte the write pass stores is
-   --  index-checked (ROSIDL.Static.Wire keeps the checks on), so a buffer
+   --  index-checked (ROSIDL.Static.Impl.Wire keeps the checks on), so a buffer
    --  too small stops it with Constraint_Error at its end, never past it;
    --  only then is the size computed, to turn that into Encode_Error (an
    --  error of another origin, the buffer being large enough, propagates).
@@ -36,17 +36,17 @@ package body ROSIDL.Static.Message_Support is
       Last        : out Stream_Element_Offset;
       Order       : Byte_Order)
    is
-      C : ROSIDL.Static.Wire.Cursor;
+      C : ROSIDL.Static.Impl.Wire.Cursor;
    begin
       Put_Header (Buffer, Order);
       C := (Pos    => Buffer'First + Encapsulation_Size,
             Origin => Buffer'First + Encapsulation_Size,
             Swap   => Order /= Native_Order);
       if With_Header then
-         ROSIDL.Static.Wire.Put_Request_Header (Buffer, C, Header.GUID, Header.Sequence);
+         ROSIDL.Static.Impl.Wire.Put_Request_Header (Buffer, C, Header.GUID, Header.Sequence);
       end if;
       Write_Body (Msg, Buffer, C);
-      ROSIDL.Static.Wire.Pad (Buffer, C, 4);
+      ROSIDL.Static.Impl.Wire.Pad (Buffer, C, 4);
       Last := C.Pos - 1;
    exception
       when Constraint_Error =>
@@ -96,14 +96,14 @@ package body ROSIDL.Static.Message_Support is
       With_Header : Boolean;
       Header      : out Request_Header)
    is
-      C : ROSIDL.Static.Wire.Cursor;
+      C : ROSIDL.Static.Impl.Wire.Cursor;
    begin
       Header := (others => <>);
       C := (Pos    => Data'First + Encapsulation_Size,
             Origin => Data'First + Encapsulation_Size,
             Swap   => Byte_Order_Of (Data) /= Native_Order);
       if With_Header then
-         ROSIDL.Static.Wire.Get_Request_Header
+         ROSIDL.Static.Impl.Wire.Get_Request_Header
            (Data, C, Header.GUID, Header.Sequence, Full_Name);
       end if;
       Read_Body (Data, C, Msg);

@@ -15,7 +15,7 @@ pragma Warnings (Off, "formal object * is not referenced");
 --  DDS_Type_Name, Type_Hash, Is_Bounded: for the users of an instance.
 with Ada.Streams;
 with ROSIDL.CDR;
-with ROSIDL.Static.Wire;
+with ROSIDL.Static.Impl.Wire;
 
 generic
    type Message is private;
@@ -32,10 +32,10 @@ generic
    with procedure Write_Body
      (Msg : Message;
       B   : in out Ada.Streams.Stream_Element_Array;
-      C   : in out ROSIDL.Static.Wire.Cursor);
+      C   : in out ROSIDL.Static.Impl.Wire.Cursor);
    with procedure Read_Body
      (B   : Ada.Streams.Stream_Element_Array;
-      C   : in out ROSIDL.Static.Wire.Cursor;
+      C   : in out ROSIDL.Static.Impl.Wire.Cursor;
       Msg : in out Message);
    with function "=" (Left, Right : Message) return Boolean is <>;
 package ROSIDL.Static.Message_Support is

@@ -64,9 +64,9 @@ package ROSIDL.Static.Unbounded_Sequences is
    overriding function "=" (Left, Right : Sequence) return Boolean;
    --  Same length and equal elements (the storage kept does not count).
 
-   --  Not for users (the generated codecs): elements 0 .. Length (S) - 1
-   --  of Storage (S).all are the sequence's; null when nothing was ever
-   --  stored.
+   --  For generated code (see ROSIDL.Static.Impl): elements 0 ..
+   --  Length (S) - 1 of Storage (S).all are the sequence's; null when
+   --  nothing was ever stored.
    type Element_Array_Access is access Element_Array
      with Storage_Pool => Message_Pool;
    --  From the pool the allocating task selected (ROSIDL.Static.Storage).

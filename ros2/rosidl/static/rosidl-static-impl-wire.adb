@@ -11,7 +11,7 @@ pragma Warnings (On, "*non-portable and version-dependent*");
 with Interfaces;
 with System;
 
-package body ROSIDL.Static.Wire is
+package body ROSIDL.Static.Impl.Wire is
 
    pragma Unsuppress (Index_Check);
    pragma Unsuppress (Length_Check);
@@ -335,4 +335,4 @@ package body ROSIDL.Static.Wire is
       Sequence := To_Int64 (Get_U64);
    end Get_Request_Header;
 
-end ROSIDL.Static.Wire;
+end ROSIDL.Static.Impl.Wire;

@@ -1,9 +1,10 @@
---  Not for users: the codec of each ROS 2 primitive type, as the generated
---  code calls them (ROSIDL.Static.Codecs.Float64_Codec.Put (B, C, V)).
+--  For generated code (ROSIDL.Static.Impl): the codec of each ROS 2
+--  primitive type, as the generated code calls them
+--  (ROSIDL.Static.Impl.Codecs.Float64_Codec.Put (B, C, V)).
 with Ada.Streams;
-with ROSIDL.Static.Wire.Primitives;
+with ROSIDL.Static.Impl.Wire.Primitives;
 
-package ROSIDL.Static.Codecs is
+package ROSIDL.Static.Impl.Codecs is
 
    subtype Bytes is Ada.Streams.Stream_Element_Array;
 
@@ -31,4 +32,4 @@ package ROSIDL.Static.Codecs is
         (B : Bytes; C : in out Wire.Cursor; Items : out Bool_Array; What : String);
    end Bool_Codec;
 
-end ROSIDL.Static.Codecs;
+end ROSIDL.Static.Impl.Codecs;

@@ -1,10 +1,11 @@
---  Not for users: the XCDR1 codec of one primitive type (numbers; bool is
---  ROSIDL.Static.Codecs.Bool_Codec), single values and arrays. Arrays are
---  copied in one block when the wire's byte order is the machine's.
+--  For generated code (ROSIDL.Static.Impl): the XCDR1 codec of one
+--  primitive type (numbers; bool is ROSIDL.Static.Impl.Codecs.Bool_Codec),
+--  single values and arrays. Arrays are copied in one block when the wire's
+--  byte order is the machine's.
 generic
    type T is private;
    type T_Array is array (Natural range <>) of T;
-package ROSIDL.Static.Wire.Primitives is
+package ROSIDL.Static.Impl.Wire.Primitives is
 
    Size : constant Stream_Element_Offset := T'Size / Stream_Element'Size;
 
@@ -16,4 +17,4 @@ package ROSIDL.Static.Wire.Primitives is
      (B : Stream_Element_Array; C : in out Cursor; Items : out T_Array; What : String);
    --  Items'Length elements (a fixed array, or a sequence after its count).
 
-end ROSIDL.Static.Wire.Primitives;
+end ROSIDL.Static.Impl.Wire.Primitives;

@@ -1,18 +1,18 @@
---  Not for users: the XCDR1 primitives the generated codecs call (the
---  rules of ROSIDL.CDR: each primitive aligned to its size relative to the
---  end of the encapsulation header, strings as a uint32 length counting a
---  NUL, sequences with a uint32 count). Reading checks every length
---  and count against the bytes that remain and raises ROSIDL.Decode_Error
---  naming the field and the byte offset, never reading outside the buffer.
---  Writing makes no size pass: every store is index-checked (the checks
---  are kept on in the bodies), so a buffer too small raises
---  Constraint_Error at its end, never writes past it (Message_Support
---  reports it as Encode_Error).
+--  For generated code (ROSIDL.Static.Impl): the XCDR1 primitives the
+--  generated codecs call (the rules of ROSIDL.CDR: each primitive aligned
+--  to its size relative to the end of the encapsulation header, strings as
+--  a uint32 length counting a NUL, sequences with a uint32 count). Reading
+--  checks every length and count against the bytes that remain and raises
+--  ROSIDL.Decode_Error naming the field and the byte offset, never reading
+--  outside the buffer. Writing makes no size pass: every store is
+--  index-checked (the checks are kept on in the bodies), so a buffer too
+--  small raises Constraint_Error at its end, never writes past it
+--  (Message_Support reports it as Encode_Error).
 with Ada.Streams;
 with Ada.Strings.Unbounded;
 with Ada.Strings.Wide_Wide_Unbounded;
 
-package ROSIDL.Static.Wire is
+package ROSIDL.Static.Impl.Wire is
 
    use Ada.Streams;
 
@@ -116,4 +116,4 @@ package ROSIDL.Static.Wire is
       Sequence : out Int64;
       What     : String);
 
-end ROSIDL.Static.Wire;
+end ROSIDL.Static.Impl.Wire;

@@ -1,11 +1,11 @@
 pragma Validity_Checks (Off);
 with Ada.Unchecked_Conversion;
 
-package body ROSIDL.Static.Wire.Primitives is
+package body ROSIDL.Static.Impl.Wire.Primitives is
 
    pragma Unsuppress (Index_Check);
    pragma Unsuppress (Length_Check);
-   --  Writing relies on them (see ROSIDL.Static.Wire).
+   --  Writing relies on them (see ROSIDL.Static.Impl.Wire).
 
    subtype Raw is Stream_Element_Array (1 .. Size);
    function To_Raw is new Ada.Unchecked_Conversion (T, Raw);
@@ -120,4 +120,4 @@ package body ROSIDL.Static.Wire.Primitives is
       end if;
    end Get_Array;
 
-end ROSIDL.Static.Wire.Primitives;
+end ROSIDL.Static.Impl.Wire.Primitives;

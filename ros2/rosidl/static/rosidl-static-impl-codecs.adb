@@ -1,10 +1,10 @@
 pragma Validity_Checks (Off);
 --  Floats may be NaN or infinite (ROS 2 data, definitions).
-package body ROSIDL.Static.Codecs is
+package body ROSIDL.Static.Impl.Codecs is
 
    pragma Unsuppress (Index_Check);
    pragma Unsuppress (Length_Check);
-   --  Writing relies on them (see ROSIDL.Static.Wire).
+   --  Writing relies on them (see ROSIDL.Static.Impl.Wire).
 
    use type Ada.Streams.Stream_Element_Offset;
    use type Ada.Streams.Stream_Element;
@@ -50,4 +50,4 @@ package body ROSIDL.Static.Codecs is
 
    end Bool_Codec;
 
-end ROSIDL.Static.Codecs;
+end ROSIDL.Static.Impl.Codecs;
