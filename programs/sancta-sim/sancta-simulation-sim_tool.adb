@@ -70,7 +70,6 @@ package body Sancta.Simulation.Sim_Tool is
       Scan      : Publisher_Access;
       Truth     : Publisher_Access;
       GPS       : Publisher_Access;
-      Cmd       : RCL.Nodes.Subscription_Access;
       Last_Odom : Natural := 0;
       Last_Scan : Natural := 0;
       Last_GPS  : Natural := 0;
@@ -336,7 +335,6 @@ package body Sancta.Simulation.Sim_Tool is
             R.GPS := new RCL.Publishers.Publisher'(R.Node.Publish (GPS_Support, "gps"));
          end if;
          R.Node.Subscribe_Raw (DDS_Type_Name (Twist_Support), "cmd_vel", Ignore_Sample'Access);
-         R.Cmd := R.Node.Get_Subscription (R.Node.Subscription_Count);
          IO.Append (R);
          Publish_Static_Transforms;
       end Add;
@@ -421,11 +419,11 @@ package body Sancta.Simulation.Sim_Tool is
       end Publish_Readings;
 
       procedure Take_Commands (R : in out Robot_IO) is
-         Info : RCL.DDS.Sample_Info;
+         Info : ROSIDL.Message_Info;
       begin
          loop
             declare
-               Data : constant RCL.DDS.Byte_Array := R.Cmd.Reader.Take (Info);
+               Data : constant RCL.DDS.Byte_Array := R.Node.Take_Raw ("cmd_vel", Info);
             begin
                exit when Data'Length = 0;
                ROSIDL.CDR.Decode (Data, Twist_Msg);

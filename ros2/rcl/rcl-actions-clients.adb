@@ -66,7 +66,7 @@ package body RCL.Actions.Clients is
       This.Cancel.Init (Node, Cancel_Support, FQ & Cancel_Suffix);
       This.Results.Init (Node, Get_Result_Support (Support), FQ & Get_Result_Suffix);
       if Stored /= null then
-         Node.Add_Subscription
+         Node.Subscribe_Handler
            (ROSIDL.Typesupport.DDS_Type_Name (Feedback_Message_Support (Support)),
             FQ & Feedback_Suffix,
             new Feedback_Handler'(Support => Support, Mine => This.Mine, Callback => Stored),

@@ -1,5 +1,6 @@
 with RCL.DDS.Matching;
 with RCL.Graph_Announcements;
+with RCL.Node_Entities;
 with RCL.Process_Context;
 with RCL.Services;
 
@@ -32,8 +33,10 @@ package body RCL.Client_Endpoints is
                       (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
                       User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
       Handle := RCL.DDS.Matching.Instance_Handle (Requests);
-      RCL.Graph_Announcements.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Requests));
-      RCL.Graph_Announcements.Add_Reader (Node.Graph_Id, RCL.DDS.Endpoint_GUID (Replies));
+      RCL.Graph_Announcements.Add_Writer
+        (RCL.Node_Entities.Graph_Id (Node), RCL.DDS.Endpoint_GUID (Requests));
+      RCL.Graph_Announcements.Add_Reader
+        (RCL.Node_Entities.Graph_Id (Node), RCL.DDS.Endpoint_GUID (Replies));
    end Open_Endpoints;
 
    procedure Close_Endpoints

@@ -29,7 +29,7 @@ private package RCL.Client_Endpoints is
      (Node     : RCL.Graph.Node_Id;
       Requests : RCL.DDS.Writer;
       Replies  : RCL.DDS.Reader);
-   --  Withdraws them from the graph of Node (Node.Graph_Id when they were
+   --  Withdraws them from the graph of Node (RCL.Node_Entities.Graph_Id when they were
    --  opened); the DDS entities go with the objects.
 
 end RCL.Client_Endpoints;

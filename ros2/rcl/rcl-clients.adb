@@ -6,6 +6,7 @@ with RCL.Client_Endpoints;
 with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Logging;
+with RCL.Node_Entities;
 with RCL.Keyed_Caches;
 with RCL.Process_Context;
 
@@ -51,7 +52,7 @@ package body RCL.Clients is
          This.Requests, This.Replies, This.Handle);
       RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Node := Node.Graph_Id;
+      This.Node := RCL.Node_Entities.Graph_Id (Node);
       This.Open := True;
    end Init;
 

@@ -4,6 +4,7 @@ with Interfaces;
 with System;
 with RCL.DDS;
 with RCL.Logging;
+with RCL.Publisher_Writers;
 with ROSIDL.Mutexes;
 
 package body RCL.Event_Watches is
@@ -19,7 +20,7 @@ package body RCL.Event_Watches is
       Node      : RCL.Graph.Node_Id := RCL.Graph.No_Node;
       Writer    : Writer_Access;
       --  null for a subscription (found through its node).
-      Topic     : RCL.Nodes.Name_Access;
+      Topic     : RCL.Node_Entities.Name_Access;
       On_Event  : Callback;
       Last      : RCL.DDS.QoS_Events;
    end record;
@@ -33,7 +34,7 @@ package body RCL.Event_Watches is
    --  Guarded by Lock. Keys: a publisher's writer, a subscription record.
 
    procedure Register_Publisher (Pub : RCL.Publishers.Publisher; Node : RCL.Graph.Node_Id) is
-      W : constant Writer_Access := Pub.Writer.all'Unchecked_Access;
+      W : constant Writer_Access := RCL.Publisher_Writers.Writer (Pub).all'Unchecked_Access;
    begin
       Lock.Seize;
       Table.Include (W.all'Address, (Node     => Node,
@@ -51,7 +52,7 @@ package body RCL.Event_Watches is
    procedure Unregister_Publisher (Pub : RCL.Publishers.Publisher) is
    begin
       Lock.Seize;
-      Table.Exclude (Pub.Writer.all'Address);
+      Table.Exclude (RCL.Publisher_Writers.Writer (Pub).all'Address);
       Lock.Release;
    end Unregister_Publisher;
 
@@ -71,7 +72,7 @@ package body RCL.Event_Watches is
       Pub      : RCL.Publishers.Publisher;
       On_Event : RCL.Events.Callback)
    is
-      W : constant Writer_Access := Pub.Writer.all'Unchecked_Access;
+      W : constant Writer_Access := RCL.Publisher_Writers.Writer (Pub).all'Unchecked_Access;
    begin
       Set_Callback (W.all'Address,
                     (Node => Node, Writer => W, Topic => new String'(Pub.Topic),
@@ -81,7 +82,7 @@ package body RCL.Event_Watches is
 
    procedure Watch_Subscription
      (Node     : RCL.Graph.Node_Id;
-      Sub      : not null RCL.Nodes.Subscription_Access;
+      Sub      : not null RCL.Node_Entities.Subscription_Access;
       On_Event : RCL.Events.Callback) is
    begin
       Set_Callback (Sub.all'Address,
@@ -116,8 +117,8 @@ package body RCL.Event_Watches is
             Queue.Append (Pending'(Item.On_Event, E));
          end if;
       end Add;
-      Base : constant Event := (Kind => Matched, Topic => Item.Topic, Publisher => Is_Pub,
-                                others => <>);
+      Base : constant Event :=
+        (Kind => Matched, Topic => Name_Access (Item.Topic), Publisher => Is_Pub, others => <>);
    begin
       if Now.Incompatible_Total > B.Incompatible_Total then
          RCL.Logging.Warn
@@ -165,14 +166,17 @@ package body RCL.Event_Watches is
    begin
       Lock.Seize;
       begin
-         for I in 1 .. Node.Subscription_Count loop
+         for I in 1 .. RCL.Node_Entities.Subscription_Count (Node) loop
             declare
-               S : constant RCL.Nodes.Subscription_Access := Node.Get_Subscription (I);
+               S : constant RCL.Node_Entities.Subscription_Access :=
+                 RCL.Node_Entities.Get_Subscription (Node, I);
             begin
                if not Table.Contains (S.all'Address) then
-                  Table.Insert (S.all'Address, (Node => Node.Graph_Id, Writer => null,
-                                                Topic => S.Topic, On_Event => null,
-                                                Last => <>));
+                  Table.Insert (S.all'Address, (Node     => RCL.Node_Entities.Graph_Id (Node),
+                                                Writer   => null,
+                                                Topic    => S.Topic,
+                                                On_Event => null,
+                                                Last     => <>));
                end if;
                RCL.DDS.Poll_Events (S.Reader, Now);
                Compare (Node, Table (S.all'Address), Now, False, Queue);
@@ -183,7 +187,8 @@ package body RCL.Event_Watches is
             declare
                W : Watched renames Table.Reference (C);
             begin
-               if W.Node = Node.Graph_Id and then W.Writer /= null then
+               if W.Node = RCL.Node_Entities.Graph_Id (Node) and then W.Writer /= null
+               then
                   RCL.DDS.Poll_Events (W.Writer.all, Now);
                   Compare (Node, W, Now, True, Queue);
                   W.Last := Now;

@@ -4,6 +4,7 @@
 --  child of RCL: RCL.Events, RCL.Publishers and the executors use it.
 with RCL.Events;
 with RCL.Graph;
+with RCL.Node_Entities;
 with RCL.Nodes;
 with RCL.Publishers;
 
@@ -19,7 +20,7 @@ private package RCL.Event_Watches is
       On_Event : RCL.Events.Callback);
    procedure Watch_Subscription
      (Node     : RCL.Graph.Node_Id;
-      Sub      : not null RCL.Nodes.Subscription_Access;
+      Sub      : not null RCL.Node_Entities.Subscription_Access;
       On_Event : RCL.Events.Callback);
    --  RCL.Events.Watch: On_Event gets the endpoint's events from now on.
 

@@ -1,4 +1,5 @@
 with RCL.Event_Watches;
+with RCL.Node_Entities;
 
 package body RCL.Events is
 
@@ -21,7 +22,7 @@ package body RCL.Events is
       Stored : constant Callback with Import, Address => On_Event'Address;
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
    begin
-      RCL.Event_Watches.Watch_Publisher (Node.Graph_Id, Pub, Stored);
+      RCL.Event_Watches.Watch_Publisher (RCL.Node_Entities.Graph_Id (Node), Pub, Stored);
    end Watch;
 
    procedure Watch
@@ -32,12 +33,14 @@ package body RCL.Events is
       Stored : constant Callback with Import, Address => On_Event'Address;
       FQ     : constant String := Node.Expand (Topic);
    begin
-      for I in 1 .. Node.Subscription_Count loop
+      for I in 1 .. RCL.Node_Entities.Subscription_Count (Node) loop
          declare
-            S : constant RCL.Nodes.Subscription_Access := Node.Get_Subscription (I);
+            S : constant RCL.Node_Entities.Subscription_Access :=
+              RCL.Node_Entities.Get_Subscription (Node, I);
          begin
             if S.Topic.all = FQ then
-               RCL.Event_Watches.Watch_Subscription (Node.Graph_Id, S, Stored);
+               RCL.Event_Watches.Watch_Subscription
+                 (RCL.Node_Entities.Graph_Id (Node), S, Stored);
                return;
             end if;
          end;

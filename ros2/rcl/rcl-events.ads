@@ -36,9 +36,11 @@ package RCL.Events is
      (Deadline_Missed, Incompatible_QoS, Liveliness_Lost, Liveliness_Changed, Message_Lost,
       Matched);
 
+   type Name_Access is access constant String;
+
    type Event is record
       Kind          : Event_Kind;
-      Topic         : RCL.Nodes.Name_Access;
+      Topic         : Name_Access;
       --  Fully qualified; valid during the callback.
       Publisher     : Boolean;
       --  Of a publisher (offered, lost, matched readers) or a subscription.

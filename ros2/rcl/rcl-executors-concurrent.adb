@@ -10,25 +10,21 @@ package body RCL.Executors.Concurrent is
    overriding procedure Dispatch_Sample
      (This : in out Tuned_Executor;
       Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access)
+      Sub  : Subscription_Work)
    is
-      procedure Queue_It (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
+      procedure Queue_It (Data : RCL.DDS.Byte_Array; Info : ROSIDL.Message_Info) is
       begin
-         Pools.Put_Sample (This.Workers, Node, Sub, Data, To_Info (Info));
+         Pools.Put_Sample (This.Workers, Node, Sub, Data, Info);
       end Queue_It;
-      Count : Natural;
    begin
       Start (This);
-      loop
-         RCL.DDS.Take_Many (Sub.Reader, Queue_It'Access, Count);
-         exit when Count = 0;
-      end loop;
+      Take_Samples (Sub, Queue_It'Access);
    end Dispatch_Sample;
 
    overriding procedure Dispatch_Timer
      (This    : in out Tuned_Executor;
       Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration) is
    begin
       Start (This);

@@ -36,12 +36,12 @@ package RCL.Executors.Concurrent is
    overriding procedure Dispatch_Sample
      (This : in out Tuned_Executor;
       Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access);
+      Sub  : Subscription_Work);
 
    overriding procedure Dispatch_Timer
      (This    : in out Tuned_Executor;
       Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration);
 
    overriding procedure Flush (This : in out Tuned_Executor);

@@ -2,8 +2,6 @@ with Ada.Unchecked_Deallocation;
 
 package body RCL.Executors.Pools is
 
-   use type RCL.Nodes.Callback_Group_Kind;
-
    type Bytes_Access is access RCL.DDS.Byte_Array;
    procedure Free is new Ada.Unchecked_Deallocation (RCL.DDS.Byte_Array, Bytes_Access);
 
@@ -13,11 +11,11 @@ package body RCL.Executors.Pools is
       Node : Node_Access;
       case Kind is
          when Sample =>
-            Sub  : RCL.Nodes.Subscription_Access;
+            Sub  : Subscription_Work;
             Data : Bytes_Access;
             Info : ROSIDL.Message_Info;
          when Tick =>
-            Timer   : RCL.Nodes.Timer_Entry;
+            Timer   : Timer_Work;
             Elapsed : Duration;
          when Stop =>
             null;
@@ -38,10 +36,8 @@ package body RCL.Executors.Pools is
 
    function Key_Of (Item : Work) return Group_Key is
      (case Item.Kind is
-         when Sample => (Item.Node, RCL.Nodes.Id (Item.Sub.Group),
-                         RCL.Nodes.Kind (Item.Sub.Group) = RCL.Nodes.Mutually_Exclusive),
-         when Tick   => (Item.Node, RCL.Nodes.Id (Item.Timer.Group),
-                         RCL.Nodes.Kind (Item.Timer.Group) = RCL.Nodes.Mutually_Exclusive),
+         when Sample => (Item.Node, Item.Sub.Group.Id, Item.Sub.Group.Exclusive),
+         when Tick   => (Item.Node, Item.Timer.Group.Id, Item.Timer.Group.Exclusive),
          when Stop   => (Node => null, Group => 0, Exclusive => False));
 
    type Key_Array is array (Positive range <>) of Group_Key;
@@ -192,7 +188,7 @@ package body RCL.Executors.Pools is
    procedure Put_Sample
      (This : in out Task_Pool;
       Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access;
+      Sub  : Subscription_Work;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info) is
    begin
@@ -203,7 +199,7 @@ package body RCL.Executors.Pools is
    procedure Put_Timer
      (This    : in out Task_Pool;
       Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration) is
    begin
       Queue (This).Put ((Kind => Tick, Node => Node, Timer => Timer, Elapsed => Elapsed));

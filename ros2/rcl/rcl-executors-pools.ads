@@ -4,7 +4,6 @@
 with System;
 with ROSIDL;
 with RCL.DDS;
-with RCL.Nodes;
 
 private package RCL.Executors.Pools is
 
@@ -20,7 +19,7 @@ private package RCL.Executors.Pools is
    procedure Put_Sample
      (This : in out Task_Pool;
       Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access;
+      Sub  : Subscription_Work;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
      with Pre => Started (This);
@@ -29,7 +28,7 @@ private package RCL.Executors.Pools is
    procedure Put_Timer
      (This    : in out Task_Pool;
       Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration)
      with Pre => Started (This);
 

@@ -8,12 +8,12 @@ package RCL.Executors.Sequential is
    overriding procedure Dispatch_Sample
      (This : in out Executor;
       Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access);
+      Sub  : Subscription_Work);
 
    overriding procedure Dispatch_Timer
      (This    : in out Executor;
       Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration);
 
 end RCL.Executors.Sequential;

@@ -6,6 +6,7 @@ with RCL.Contexts;
 with RCL.Event_Watches;
 with RCL.Events;
 with RCL.Logging;
+with RCL.Timer_States;
 with RCL.Timers;
 with ROSIDL.Static.Storage;
 
@@ -32,14 +33,26 @@ package body RCL.Executors is
       end if;
    end Stop;
 
-   function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info is
-     ((Source_Timestamp   => ROSIDL.Int64 (Info.Source_Timestamp),
-       Received_Timestamp => ROSIDL.Int64 (RCL.DDS.Now),
-       Publisher_GID      => ROSIDL.GID (Info.Publisher)));
+   procedure Take_Samples
+     (Sub     : Subscription_Work;
+      Process : not null access procedure
+        (Data : RCL.DDS.Byte_Array; Info : ROSIDL.Message_Info))
+   is
+      procedure Take_One (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
+      begin
+         Process (Data, RCL.Node_Entities.To_Info (Info));
+      end Take_One;
+      Count : Natural;
+   begin
+      loop
+         RCL.DDS.Take_Many (Sub.Reader, Take_One'Access, Count);
+         exit when Count = 0;
+      end loop;
+   end Take_Samples;
 
    procedure Run_Subscription
      (Node : not null Node_Access;
-      Sub  : not null RCL.Nodes.Subscription_Access;
+      Sub  : Subscription_Work;
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
    is
@@ -65,10 +78,10 @@ package body RCL.Executors is
 
    procedure Run_Timer
      (Node    : not null Node_Access;
-      Timer   : RCL.Nodes.Timer_Entry;
+      Timer   : Timer_Work;
       Elapsed : Duration)
    is
-      T : RCL.Timers.Timer := RCL.Timers.To_Timer (Timer.State);
+      T : RCL.Timers.Timer := RCL.Timer_States.To_Timer (Timer.State);
    begin
       Timer.Callback (Node.all, T, Elapsed);
    exception
@@ -84,7 +97,7 @@ package body RCL.Executors is
       Changed : Boolean := False;
    begin
       for I in 1 .. This.N_Nodes loop
-         if This.Versions (I) /= This.Nodes (I).Version then
+         if This.Versions (I) /= RCL.Node_Entities.Version (This.Nodes (I).all) then
             Changed := True;
          end if;
       end loop;
@@ -96,15 +109,15 @@ package body RCL.Executors is
       end loop;
       This.N_Attached := 0;
       for I in 1 .. This.N_Nodes loop
-         This.Versions (I) := This.Nodes (I).Version;
-         for J in 1 .. This.Nodes (I).Subscription_Count loop
+         This.Versions (I) := RCL.Node_Entities.Version (This.Nodes (I).all);
+         for J in 1 .. RCL.Node_Entities.Subscription_Count (This.Nodes (I).all) loop
             if This.N_Attached = Max_Attached then
                raise ROS_Exception with "executor: more than" & Max_Attached'Image
                  & " subscriptions";
             end if;
             This.N_Attached := This.N_Attached + 1;
             This.Attached (This.N_Attached) :=
-              (This.Nodes (I), This.Nodes (I).Get_Subscription (J));
+              (This.Nodes (I), RCL.Node_Entities.Get_Subscription (This.Nodes (I).all, J));
             RCL.DDS.Attach (This.Set.all, This.Attached (This.N_Attached).Sub.Reader,
                             This.N_Attached);
          end loop;
@@ -140,7 +153,7 @@ package body RCL.Executors is
          begin
             for I in 1 .. This.N_Nodes loop
                declare
-                  Due : constant Time := This.Nodes (I).Next_Timer_Due;
+                  Due : constant Time := RCL.Node_Entities.Next_Timer_Due (This.Nodes (I).all);
                begin
                   if Due < Wake_At then
                      Wake_At := Due;
@@ -156,15 +169,17 @@ package body RCL.Executors is
             exit when RCL.Contexts.Is_Shutdown or else This.Stopping;
             for K in Ready'First .. Last loop
                if Ready (K) <= This.N_Attached then
-                  This.Dispatch_Sample (This.Attached (Ready (K)).Node,
-                                        This.Attached (Ready (K)).Sub);
+                  This.Dispatch_Sample
+                    (This.Attached (Ready (K)).Node,
+                     Subscription_Work (This.Attached (Ready (K)).Sub));
                   Worked := True;
                end if;
             end loop;
             for I in 1 .. This.N_Nodes loop
-               for J in 1 .. This.Nodes (I).Timer_Count loop
+               for J in 1 .. RCL.Node_Entities.Timer_Count (This.Nodes (I).all) loop
                   declare
-                     T       : constant RCL.Nodes.Timer_Entry := This.Nodes (I).Get_Timer (J);
+                     T       : constant Timer_Work :=
+                       Timer_Work (RCL.Node_Entities.Get_Timer (This.Nodes (I).all, J));
                      Fired   : Boolean;
                      Elapsed : Duration;
                   begin

@@ -1,6 +1,7 @@
 with Ada.Streams;
 with Ada.Unchecked_Deallocation;
 with RCL.Contexts;
+with RCL.Publisher_Writers;
 with ROSIDL.Type_Hashes;
 with System.Address_To_Access_Conversions;
 
@@ -33,7 +34,7 @@ package body RCL.Nodes.Typed is
          raise ROS_Exception with "publishing on " & RCL.Publishers.Topic (Pub)
            & ": the context is shut down";
       end if;
-      RCL.DDS.Write_Filled (RCL.Publishers.Writer (Pub).all, Handling.Encoded_Size (Msg),
+      RCL.DDS.Write_Filled (RCL.Publisher_Writers.Writer (Pub).all, Handling.Encoded_Size (Msg),
                             Fill'Access);
    end Publish;
 

@@ -6,17 +6,20 @@ with RCL.Clients;
 with RCL.Clocks;
 with RCL.Contexts;
 with RCL.Executors.Sequential;
+with RCL.Graph;
 with RCL.Graph_Announcements;
 with RCL.Logging;
 with RCL.Names;
 with RCL.Parameters;
-with RCL.Process_Context;
+with RCL.Publisher_Writers;
 with RCL.Rosout;
 with RCL.Services;
+with RCL.Timer_States;
 
 package body RCL.Nodes is
 
-   use type Ada.Real_Time.Time;
+   use type RCL.Node_Entities.Node_Serial;
+   use type RCL.Timers.Timer_Clock;
 
    type Spinner is record
       E : RCL.Executors.Sequential.Executor (Max_Nodes => 1);
@@ -24,65 +27,18 @@ package body RCL.Nodes is
 
    procedure Free is new Ada.Unchecked_Deallocation (Spinner, Spinner_Access);
 
-   --------------
-   -- Registry --
-   --------------
-
-   protected body Registry is
-
-      procedure Add (S : Subscription_Access) is
-      begin
-         if N_Sub = Max_Subscriptions then
-            raise ROS_Exception with "more than" & Max_Subscriptions'Image
-              & " subscriptions in one node";
-         end if;
-         N_Sub := N_Sub + 1;
-         Subs (N_Sub) := S;
-         Ver := Ver + 1;
-      end Add;
-
-      procedure Add (T : Timer_Entry) is
-      begin
-         if N_Tim = Max_Timers then
-            raise ROS_Exception with "more than" & Max_Timers'Image & " timers in one node";
-         end if;
-         N_Tim := N_Tim + 1;
-         Tims (N_Tim) := T;
-         Ver := Ver + 1;
-      end Add;
-
-      function Version return Natural is (Ver);
-      function Sub_Count return Natural is (N_Sub);
-      function Sub (I : Positive) return Subscription_Access is (Subs (I));
-      function Tim_Count return Natural is (N_Tim);
-      function Tim (I : Positive) return Timer_Entry is (Tims (I));
-
-      procedure Take_All (Subs : out Subscription_Array; N_Subs : out Natural;
-                          Tims : out Timer_Array; N_Tims : out Natural) is
-      begin
-         Subs := Registry.Subs;
-         N_Subs := N_Sub;
-         Tims := Registry.Tims;
-         N_Tims := N_Tim;
-         N_Sub := 0;
-         N_Tim := 0;
-         Ver := Ver + 1;
-      end Take_All;
-
-   end Registry;
-
    ----------
    -- Init --
    ----------
 
    protected Serials is
-      procedure Next (Serial : out Node_Serial);
+      procedure Next (Serial : out RCL.Node_Entities.Node_Serial);
    private
-      Last : Node_Serial := 0;
+      Last : RCL.Node_Entities.Node_Serial := 0;
    end Serials;
 
    protected body Serials is
-      procedure Next (Serial : out Node_Serial) is
+      procedure Next (Serial : out RCL.Node_Entities.Node_Serial) is
       begin
          Last := Last + 1;
          Serial := Last;
@@ -134,15 +90,6 @@ package body RCL.Nodes is
 
    function Original_Name (This : Node) return String is (To_String (This.Original));
 
-   function Serves_Parameters (This : Node) return Boolean is (This.Params_On);
-
-   procedure Set_Serves_Parameters (This : in out Node) is
-   begin
-      This.Params_On := True;
-   end Set_Serves_Parameters;
-
-   function Graph_Id (This : Node) return RCL.Graph.Node_Id is (This.Graph_Id);
-
    function Name (This : Node) return String is (To_String (This.Name));
    function Namespace (This : Node) return String is (To_String (This.Namespace));
    function Fully_Qualified_Name (This : Node) return String is
@@ -189,7 +136,7 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publishers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
+         RCL.Publisher_Writers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
                                 This.Graph_Id);
       end return;
    end Publish_Raw;
@@ -207,65 +154,30 @@ package body RCL.Nodes is
       return P : RCL.Publishers.Publisher :=
         This.Publish_Raw (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, QoS)
       do
-         RCL.Publishers.Set_Support (P, Support);
+         RCL.Publisher_Writers.Set_Support (P, Support);
       end return;
    end Publish;
 
-   ----------------------
-   -- Add_Subscription --
-   ----------------------
+   -----------------------
+   -- Subscribe_Handler --
+   -----------------------
 
-   procedure Free is new Ada.Unchecked_Deallocation (Subscription, Subscription_Access);
    procedure Free is new Ada.Unchecked_Deallocation (Handler'Class, Handler_Access);
 
-   procedure Add_Subscription
+   procedure Subscribe_Handler
      (This      : in out Node;
       Type_Name : String;
       Topic     : String;
       Handle    : not null Handler_Access;
-      QoS       : RCL.QoS.Profile)
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default)
    is
-      FQ : constant String := This.Expand (Topic);
-      S  : Subscription_Access := new Subscription;
+      FQ    : constant String := This.Expand (Topic);
+      Added : RCL.Node_Entities.Subscription_Access;
    begin
-      S.Topic := new String'(FQ);
-      S.Handle := Handle;
-      S.Group := This.Current;
-      RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, RCL.Names.DDS_Topic_Name (FQ),
-                      Type_Name, QoS, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
-      This.Entities.Add (S);
-      RCL.Graph_Announcements.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
-   exception
-      when others =>
-         Free (S);
-         raise;
-   end Add_Subscription;
-
-   procedure Add_Endpoint
-     (This      : in out Node;
-      Type_Name : String;
-      DDS_Topic : String;
-      Name      : String;
-      User_Data : String;
-      Handle    : not null Handler_Access;
-      QoS       : RCL.QoS.Profile;
-      Added     : out Subscription_Access)
-   is
-      S : Subscription_Access := new Subscription;
-   begin
-      S.Topic := new String'(Name);
-      S.Handle := Handle;
-      S.Group := This.Current;
-      RCL.DDS.Create (S.Reader, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, QoS,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Type_Name, User_Data));
-      This.Entities.Add (S);
-      RCL.Graph_Announcements.Add_Reader (This.Graph_Id, RCL.DDS.Endpoint_GUID (S.Reader));
-      Added := S;
-   exception
-      when others =>
-         Free (S);
-         raise;
-   end Add_Endpoint;
+      RCL.Node_Entities.Add_Endpoint
+        (This, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
+         Handle => RCL.Node_Entities.Handler_Access (Handle), QoS => QoS, Added => Added);
+   end Subscribe_Handler;
 
    -----------------------------
    -- Services and clients --
@@ -382,7 +294,7 @@ package body RCL.Nodes is
       Typed_Handler (H.all).Support := Support;
       Typed_Handler (H.all).Callback := Stored;
       begin
-         This.Add_Subscription (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
+         This.Subscribe_Handler (ROSIDL.Typesupport.DDS_Type_Name (Support), Topic, H, QoS);
       exception
          when others =>
             Free (H);
@@ -404,7 +316,7 @@ package body RCL.Nodes is
       --  GNAT: the same subprogram access, kept beyond the call (see spec).
       H : Handler_Access := new Raw_Handler'(Callback => Stored);
    begin
-      This.Add_Subscription (Type_Name, Topic, H, QoS);
+      This.Subscribe_Handler (Type_Name, Topic, H, QoS);
    exception
       when others =>
          Free (H);
@@ -484,7 +396,7 @@ package body RCL.Nodes is
       Closure_Handler (H.all).State := State;
       Closure_Handler (H.all).Guard.Release := Stored_Release;
       Closure_Handler (H.all).Guard.State := State;
-      This.Add_Subscription (Type_Name, Topic, H, QoS);
+      This.Subscribe_Handler (Type_Name, Topic, H, QoS);
    exception
       when others =>
          Free (H);
@@ -506,20 +418,22 @@ package body RCL.Nodes is
       Kind : Callback_Group_Kind) return Callback_Group is
    begin
       This.Groups := This.Groups + 1;
-      return (Owner => This.Serial, Id => This.Groups, Kind => Kind);
+      return (Owner => This.Serial, Id => This.Groups, Exclusive => Kind = Mutually_Exclusive);
    end Create_Callback_Group;
 
    procedure Set_Callback_Group (This : in out Node; Group : Callback_Group) is
    begin
-      This.Current := Group;
+      This.Current := RCL.Node_Entities.Group_Data (Group);
    end Set_Callback_Group;
 
-   function Current_Callback_Group (This : Node) return Callback_Group is (This.Current);
+   function Current_Callback_Group (This : Node) return Callback_Group is
+     (Callback_Group (This.Current));
 
    function Belongs_To (Group : Callback_Group; This : Node) return Boolean is
      (Group.Owner = 0 or else Group.Owner = This.Serial);
 
-   function Kind (Group : Callback_Group) return Callback_Group_Kind is (Group.Kind);
+   function Kind (Group : Callback_Group) return Callback_Group_Kind is
+     (if Group.Exclusive then Mutually_Exclusive else Reentrant);
    function Id (Group : Callback_Group) return Natural is (Group.Id);
 
    ------------
@@ -536,13 +450,14 @@ package body RCL.Nodes is
       Clock    : RCL.Timers.Timer_Clock := RCL.Timers.Node_Clock) return RCL.Timers.Timer
    is
       Stored : constant RCL.Timers.Callback with Import, Address => Callback'Address;
-      S : constant RCL.Timers.State_Access :=
-        new RCL.Timers.State
-          (Period_Ns => RCL.Clocks.Nanoseconds (Period * 1_000_000_000.0), On => Clock);
+      S : constant RCL.Timer_States.State_Access :=
+        new RCL.Timer_States.State
+          (Period_Ns     => RCL.Clocks.Nanoseconds (Period * 1_000_000_000.0),
+           Always_Steady => Clock = RCL.Timers.Steady_Clock);
    begin
       S.Start;
-      This.Entities.Add (Timer_Entry'(S, Stored, This.Current));
-      return RCL.Timers.To_Timer (S);
+      This.Entities.Add (RCL.Node_Entities.Timer_Entry'(S, Stored, This.Current));
+      return RCL.Timer_States.To_Timer (S);
    end Timer_Add;
 
    procedure Timer_Add
@@ -576,17 +491,19 @@ package body RCL.Nodes is
       This.Spin_Exec.E.Spin (During => During, Once => Once);
    end Spin;
 
-   ---------------------
-   -- Executors' view --
-   ---------------------
+   -----------------------------------
+   -- Taking samples; liveliness --
+   -----------------------------------
 
-   function Version (This : Node) return Natural is (This.Entities.Version);
-   function Tracked_Subscription (This : Node; Topic : String) return Subscription_Access is
+   --  This node's first subscription on Topic (expanded).
+   function Subscription_On
+     (This : Node; Topic : String) return RCL.Node_Entities.Subscription_Access
+   is
       FQ : constant String := This.Expand (Topic);
    begin
       for I in 1 .. This.Entities.Sub_Count loop
          declare
-            S : constant Subscription_Access := This.Entities.Sub (I);
+            S : constant RCL.Node_Entities.Subscription_Access := This.Entities.Sub (I);
          begin
             if S.Topic.all = FQ then
                return S;
@@ -594,10 +511,23 @@ package body RCL.Nodes is
          end;
       end loop;
       raise ROS_Exception with "node " & To_String (This.Name) & " has no subscription on " & FQ;
-   end Tracked_Subscription;
+   end Subscription_On;
+
+   function Take_Raw
+     (This  : in out Node;
+      Topic : String;
+      Info  : out ROSIDL.Message_Info) return RCL.DDS.Byte_Array
+   is
+      S      : constant RCL.Node_Entities.Subscription_Access := Subscription_On (This, Topic);
+      Sample : RCL.DDS.Sample_Info;
+   begin
+      return Data : constant RCL.DDS.Byte_Array := RCL.DDS.Take (S.Reader, Sample) do
+         Info := RCL.Node_Entities.To_Info (Sample);
+      end return;
+   end Take_Raw;
 
    procedure Track_Liveliness (This : in out Node; Topic : String) is
-      S : constant Subscription_Access := Tracked_Subscription (This, Topic);
+      S : constant RCL.Node_Entities.Subscription_Access := Subscription_On (This, Topic);
    begin
       if not RCL.DDS.Is_Tracking_Liveliness (S.Reader) then
          RCL.DDS.Track_Liveliness (S.Reader);
@@ -611,7 +541,7 @@ package body RCL.Nodes is
       Alive     : out Boolean;
       Found     : out Boolean)
    is
-      S      : constant Subscription_Access := Tracked_Subscription (This, Topic);
+      S      : constant RCL.Node_Entities.Subscription_Access := Subscription_On (This, Topic);
       Writer : RCL.DDS.GUID;
    begin
       if not RCL.DDS.Is_Tracking_Liveliness (S.Reader) then
@@ -621,38 +551,21 @@ package body RCL.Nodes is
       Publisher := ROSIDL.GID (Writer);
    end Take_Liveliness_Change;
 
-   function Subscription_Count (This : Node) return Natural is (This.Entities.Sub_Count);
-   function Get_Subscription (This : Node; Index : Positive) return Subscription_Access is
-     (This.Entities.Sub (Index));
-   function Timer_Count (This : Node) return Natural is (This.Entities.Tim_Count);
-   function Get_Timer (This : Node; Index : Positive) return Timer_Entry is
-     (This.Entities.Tim (Index));
-
-   function Next_Timer_Due (This : Node) return Ada.Real_Time.Time is
-      Result : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;
-   begin
-      for I in 1 .. This.Entities.Tim_Count loop
-         declare
-            Due : constant Ada.Real_Time.Time := This.Entities.Tim (I).State.Due_At;
-         begin
-            if Due < Result then
-               Result := Due;
-            end if;
-         end;
-      end loop;
-      return Result;
-   end Next_Timer_Due;
-
    --------------
    -- Finalize --
    --------------
 
    overriding procedure Finalize (This : in out Node) is
-      Subs   : Subscription_Array;
-      Tims   : Timer_Array;
+      Subs   : RCL.Node_Entities.Subscription_Array;
+      Tims   : RCL.Node_Entities.Timer_Array;
       N_Subs : Natural;
       N_Tims : Natural;
-      procedure Free_Name is new Ada.Unchecked_Deallocation (String, Name_Access);
+      procedure Free_Name is new Ada.Unchecked_Deallocation
+        (String, RCL.Node_Entities.Name_Access);
+      procedure Free_Handler is new Ada.Unchecked_Deallocation
+        (Handler'Class, RCL.Node_Entities.Handler_Access);
+      procedure Free is new Ada.Unchecked_Deallocation
+        (RCL.Node_Entities.Subscription, RCL.Node_Entities.Subscription_Access);
    begin
       Free (This.Spin_Exec);
       --  Before the subscriptions: it detaches their readers.
@@ -660,7 +573,7 @@ package body RCL.Nodes is
       This.Graph_Id := RCL.Graph.No_Node;
       This.Entities.Take_All (Subs, N_Subs, Tims, N_Tims);
       for I in 1 .. N_Subs loop
-         Free (Subs (I).Handle);
+         Free_Handler (Subs (I).Handle);
          Free_Name (Subs (I).Topic);
          Free (Subs (I));
       end loop;

@@ -11,19 +11,18 @@
 --  (RCLAda's slides write Spin (Until => Forever); "until" being an Ada
 --  reserved word, the parameter is named During.)
 with Ada.Finalization;
-with Ada.Real_Time;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Allocators;
 with RCL.DDS;
-with RCL.Graph;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
 with System;
 
 private with Ada.Strings.Unbounded;
+private with RCL.Node_Entities;
 
 package RCL.Nodes is
 
@@ -78,10 +77,6 @@ package RCL.Nodes is
    function Original_Name (This : Node) return String;
    --  The name the program gave, before "-r __node:=" renamed it.
 
-   function Serves_Parameters (This : Node) return Boolean;
-   procedure Set_Serves_Parameters (This : in out Node);
-   --  Not for users: RCL.Parameters.Serve was done for This.
-
    --  Publish / subscribe --------------------------------------------------
 
    function Publish
@@ -132,6 +127,53 @@ package RCL.Nodes is
       QoS       : RCL.QoS.Profile := RCL.QoS.Default);
    --  Callback may be nested in the main subprogram (as in the RCLAda
    --  slides): it must stay callable as long as the node exists.
+
+   function Take_Raw
+     (This  : in out Node;
+      Topic : String;
+      Info  : out ROSIDL.Message_Info) return RCL.DDS.Byte_Array;
+   --  The next sample of this node's first subscription on Topic (expanded),
+   --  taken without running its callback (as rclcpp's Subscription::take),
+   --  for a program that polls in its own loop instead of spinning the
+   --  node; an empty array when none is waiting. ROS_Exception when the node
+   --  has no subscription on Topic.
+   --  Example:
+   --     Info : ROSIDL.Message_Info;
+   --     Node.Subscribe_Raw ("geometry_msgs::msg::dds_::Twist_", "cmd_vel", Ignore'Access);
+   --     ...
+   --     Next : constant RCL.DDS.Byte_Array := Node.Take_Raw ("cmd_vel", Info);
+
+   --  Subscriptions with a handler object ----------------------------------
+
+   type Handler is abstract tagged limited null record;
+   --  What a subscription runs for each sample, as an object with its own
+   --  state rather than a callback (the typed subscriptions, a bag
+   --  recorder's topics, the services' request readers are handlers).
+
+   procedure Deliver
+     (This : in out Handler;
+      Node : in out Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info) is abstract;
+   --  Data: CDR with its encapsulation header, valid during the call only.
+   --  Run by the executor spinning the node, as a callback.
+
+   type Handler_Access is access all Handler'Class;
+
+   procedure Subscribe_Handler
+     (This      : in out Node;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile := RCL.QoS.Default);
+   --  As Subscribe_Raw, Handle.Deliver receiving the samples. The node owns
+   --  Handle once this returns (freed with the node); not when it raises.
+   --  Example:
+   --     type Sink is new Nodes.Handler with null record;
+   --     overriding procedure Deliver
+   --       (This : in out Sink; Node : in out Nodes.Node'Class;
+   --        Data : RCL.DDS.Byte_Array; Info : ROSIDL.Message_Info) is null;
+   --     Node.Subscribe_Handler ("std_msgs::msg::dds_::String_", "chatter", new Sink);
 
    --  Liveliness of publishers ---------------------------------------------
 
@@ -256,68 +298,6 @@ package RCL.Nodes is
    --  Contexts.Shutdown). Spin a node from one task at a time; to run
    --  several nodes, or callbacks in parallel, use RCL.Executors.
 
-   --  Not for users: the executors' view ----------------------------------
-
-   type Handler is abstract tagged limited null record;
-   procedure Deliver
-     (This : in out Handler;
-      Node : in out Nodes.Node'Class;
-      Data : RCL.DDS.Byte_Array;
-      Info : ROSIDL.Message_Info) is abstract;
-   type Handler_Access is access all Handler'Class;
-
-   type Name_Access is access String;
-
-   type Subscription is limited record
-      Reader  : RCL.DDS.Reader;
-      Topic   : Name_Access;
-      --  Fully qualified ROS name.
-      Handle  : Handler_Access;
-      Group   : Callback_Group;
-   end record;
-   type Subscription_Access is access all Subscription;
-
-   type Timer_Entry is record
-      State    : RCL.Timers.State_Access;
-      Callback : RCL.Timers.Callback;
-      Group    : Callback_Group;
-   end record;
-
-   Max_Subscriptions : constant := 256;
-   Max_Timers        : constant := 64;
-
-   function Graph_Id (This : Node) return RCL.Graph.Node_Id;
-   --  For endpoints made outside this package (services, clients).
-
-   function Version (This : Node) return Natural;
-   --  Changes whenever a subscription or timer is added.
-   function Subscription_Count (This : Node) return Natural;
-   function Get_Subscription (This : Node; Index : Positive) return Subscription_Access;
-   function Timer_Count (This : Node) return Natural;
-   function Get_Timer (This : Node; Index : Positive) return Timer_Entry;
-   function Next_Timer_Due (This : Node) return Ada.Real_Time.Time;
-   --  Time_Last when there is no active timer.
-
-   procedure Add_Subscription
-     (This      : in out Node;
-      Type_Name : String;
-      Topic     : String;
-      Handle    : not null Handler_Access;
-      QoS       : RCL.QoS.Profile);
-   --  Used by Subscribe_Raw and by the typed Subscribe.
-
-   procedure Add_Endpoint
-     (This      : in out Node;
-      Type_Name : String;
-      DDS_Topic : String;
-      Name      : String;
-      User_Data : String;
-      Handle    : not null Handler_Access;
-      QoS       : RCL.QoS.Profile;
-      Added     : out Subscription_Access);
-   --  As Add_Subscription with the DDS topic ("rq/addRequest"), the fully
-   --  qualified ROS Name and the reader's USER_DATA given (services).
-
    overriding procedure Finalize (This : in out Node);
 
 private
@@ -341,15 +321,7 @@ private
    --  (the node's finalization, or a failed Subscribe_Closure). Deliver,
    --  Release and State must stay valid as long as the node exists.
 
-   type Node_Serial is new Natural;
-   --  Tells the nodes of a process apart (Belongs_To).
-
-   type Callback_Group is record
-      Owner : Node_Serial := 0;
-      --  0: the default group of any node.
-      Id    : Natural := 0;
-      Kind  : Callback_Group_Kind := Mutually_Exclusive;
-   end record;
+   type Callback_Group is new RCL.Node_Entities.Group_Data;
 
    protected type Cache_Lock is
       procedure Try (Got : out Boolean);
@@ -362,49 +334,25 @@ private
    --  allocation per sample); a concurrent delivery that finds it taken
    --  decodes into a fresh one (RCL.Nodes and RCL.Nodes.Typed).
 
-   type Subscription_Array is array (1 .. Max_Subscriptions) of Subscription_Access;
-   type Timer_Array is array (1 .. Max_Timers) of Timer_Entry;
-
-   protected type Registry is
-      procedure Add (S : Subscription_Access);
-      procedure Add (T : Timer_Entry);
-      function Version return Natural;
-      function Sub_Count return Natural;
-      function Sub (I : Positive) return Subscription_Access;
-      function Tim_Count return Natural;
-      function Tim (I : Positive) return Timer_Entry;
-      procedure Take_All (Subs : out Subscription_Array; N_Subs : out Natural;
-                          Tims : out Timer_Array; N_Tims : out Natural);
-      --  Empties the registry (finalization).
-   private
-      Ver    : Natural := 0;
-      Subs   : Subscription_Array := [others => null];
-      N_Sub  : Natural := 0;
-      Tims   : Timer_Array := [others => (null, null, (others => <>))];
-      N_Tim  : Natural := 0;
-   end Registry;
-
    type Spinner;
    type Spinner_Access is access Spinner;
    --  The sequential executor of Node.Spin, made by the first Spin and
    --  reused (completed in the body).
 
-   type Node is new Ada.Finalization.Limited_Controlled with record
+   type Node is new RCL.Node_Entities.Node_Core with record
+      --  Node_Core: the subscriptions, timers, graph identity and current
+      --  callback group that the other RCL units reach (RCL.Node_Entities).
       Spin_Exec : Spinner_Access;
       Name      : Unbounded_String;
       Namespace : Unbounded_String;
       Original  : Unbounded_String;
       Remapped  : Boolean := True;
       --  Options.Use_Global_Arguments.
-      Params_On : Boolean := False;
       Pool      : RCL.Allocators.Pool_Access;
-      Entities  : Registry;
-      Graph_Id  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
-      Serial    : Node_Serial := 0;
+      Serial    : RCL.Node_Entities.Node_Serial := 0;
+      --  Tells the nodes of a process apart (Belongs_To).
       Groups    : Natural := 0;
       --  Callback groups made so far.
-      Current   : Callback_Group;
-      --  The group of entities made from now on.
    end record;
 
 end RCL.Nodes;

@@ -3,6 +3,7 @@ with ROSIDL.CDR;
 with ROSIDL.Typesupport;
 with RCL.Clocks;
 with RCL.DDS;
+with RCL.Node_Entities;
 with RCL.Parameters.Stores;
 with RCL.Publishers;
 with RCL.QoS;
@@ -206,10 +207,10 @@ package body RCL.Parameters.Serving is
       Q : constant RCL.QoS.Profile := RCL.QoS.Parameters;
       Declared : Boolean;
    begin
-      if Node.Serves_Parameters then
+      if RCL.Node_Entities.Serves_Parameters (Node) then
          return;  --  Done by Nodes.Init already.
       end if;
-      Node.Set_Serves_Parameters;
+      RCL.Node_Entities.Set_Serves_Parameters (Node);
       if not Event_Support_Set then
          Event_Support := Get_Message_Support ("rcl_interfaces", "ParameterEvent");
          Event_Support_Set := True;

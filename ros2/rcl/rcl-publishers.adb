@@ -1,9 +1,11 @@
 with Ada.Streams;
+with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
+with ROSIDL.Typesupport;
 with RCL.Contexts;
 with RCL.Event_Watches;
+with RCL.Graph;
 with RCL.Graph_Announcements;
-with RCL.Process_Context;
 
 package body RCL.Publishers is
 
@@ -55,29 +57,6 @@ package body RCL.Publishers is
    function Matched_Subscriptions (This : Publisher) return Natural is
      (RCL.DDS.Matched_Readers (This.W));
 
-   procedure Create
-     (This       : in out Publisher;
-      Topic      : String;
-      Type_Name  : String;
-      Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String;
-      Node       : RCL.Graph.Node_Id) is
-   begin
-      RCL.DDS.Create (This.W, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, Profile,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
-      This.Topic := To_Unbounded_String (Topic);
-      This.Node := Node;
-      RCL.Graph_Announcements.Add_Writer (Node, RCL.DDS.Endpoint_GUID (This.W));
-      RCL.Event_Watches.Register_Publisher (This, Node);
-   end Create;
-
-   procedure Set_Support
-     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support) is
-   begin
-      This.Support := Support;
-      This.Typed := True;
-   end Set_Support;
-
    overriding procedure Finalize (This : in out Publisher) is
    begin
       if RCL.DDS.Is_Open (This.W) then
@@ -89,8 +68,5 @@ package body RCL.Publishers is
       when others =>
          null;
    end Finalize;
-
-   function Writer (This : Publisher) return access constant RCL.DDS.Writer is
-     (This.W'Unchecked_Access);
 
 end RCL.Publishers;

@@ -5,12 +5,9 @@
 --     Pub.Publish_Raw (Bytes);  --  CDR with the 4-byte encapsulation header
 with Ada.Finalization;
 with ROSIDL.Dynamic;
-with ROSIDL.Typesupport;
 with RCL.DDS;
-with RCL.Graph;
-with RCL.QoS;
 
-private with Ada.Strings.Unbounded;
+private with RCL.Publisher_Writers;
 
 package RCL.Publishers is
 
@@ -36,31 +33,11 @@ package RCL.Publishers is
 
    function Matched_Subscriptions (This : Publisher) return Natural;
 
-   --  Not for users:
-   procedure Create
-     (This       : in out Publisher;
-      Topic      : String;
-      Type_Name  : String;
-      Profile    : RCL.QoS.Profile;
-      DDS_Topic  : String;
-      Node       : RCL.Graph.Node_Id);
-
-   function Writer (This : Publisher) return access constant RCL.DDS.Writer;
-
-   procedure Set_Support
-     (This : in out Publisher; Support : ROSIDL.Typesupport.Message_Support);
-   --  The message type of a typed publisher (a cheaper check in Publish).
-
    overriding procedure Finalize (This : in out Publisher);
 
 private
 
-   type Publisher is new Ada.Finalization.Limited_Controlled with record
-      W     : aliased RCL.DDS.Writer;
-      Topic : Ada.Strings.Unbounded.Unbounded_String;
-      Node  : RCL.Graph.Node_Id := RCL.Graph.No_Node;
-      Typed : Boolean := False;
-      Support : ROSIDL.Typesupport.Message_Support;
-   end record;
+   type Publisher is new RCL.Publisher_Writers.Publisher_Core with null record;
+   --  The writer, topic, node and message type (RCL.Publisher_Writers).
 
 end RCL.Publishers;

@@ -8,6 +8,7 @@ with RCL.Client_Endpoints;
 with RCL.Contexts;
 with RCL.DDS.Matching;
 with RCL.Logging;
+with RCL.Node_Entities;
 with RCL.Pending_Calls;
 with RCL.Keyed_Caches;
 with RCL.Process_Context;
@@ -61,7 +62,7 @@ package body RCL.Services.Typed is
       RCL.Client_Endpoints.Open_Endpoints
         (Node, FQ, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS,
          This.Requests, This.Replies, This.Handle);
-      This.Node := Node.Graph_Id;
+      This.Node := RCL.Node_Entities.Graph_Id (Node);
       This.Name := To_Unbounded_String (FQ);
       RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
       RCL.DDS.Attach (This.Waiting, This.Replies, 1);

@@ -225,13 +225,15 @@ package body RCL.Services is
       RCL.DDS.Create (S.Replies, RCL.Process_Context.Participant.all, Reply_Topic (FQ),
                       Response_Type, QoS,
                       User_Data => RCL.Graph.Endpoint_User_Data (Response_Type, Id));
-      RCL.Graph_Announcements.Add_Writer (Node.Graph_Id, RCL.DDS.Endpoint_GUID (S.Replies));
-      Node.Add_Endpoint
-        (Type_Name => Request_Type,
+      RCL.Graph_Announcements.Add_Writer
+        (RCL.Node_Entities.Graph_Id (Node), RCL.DDS.Endpoint_GUID (S.Replies));
+      RCL.Node_Entities.Add_Endpoint
+        (Node,
+         Type_Name => Request_Type,
          DDS_Topic => Request_Topic (FQ),
          Name      => FQ,
          User_Data => Id,
-         Handle    => RCL.Nodes.Handler_Access (Handler),
+         Handle    => RCL.Node_Entities.Handler_Access (Handler),
          QoS       => (QoS with delta Depth => Positive'Max (QoS.Depth, Deep_History)),
          Added     => S.Requests);
    end Open_Endpoints;

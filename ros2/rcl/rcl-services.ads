@@ -30,6 +30,8 @@ with RCL.DDS;
 with RCL.Nodes;
 with RCL.QoS;
 
+private with RCL.Node_Entities;
+
 private with Ada.Containers.Ordered_Sets;
 private with Ada.Strings.Unbounded;
 
@@ -160,7 +162,7 @@ private
       Support  : ROSIDL.Typesupport.Service_Support;
       Name     : Ada.Strings.Unbounded.Unbounded_String;
       Replies  : RCL.DDS.Writer;
-      Requests : RCL.Nodes.Subscription_Access;
+      Requests : RCL.Node_Entities.Subscription_Access;
       --  The node's subscription holding the request reader.
       Ready    : GUID_Set;
       --  Request writers whose client's reply reader is known to be

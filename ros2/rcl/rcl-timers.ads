@@ -13,15 +13,16 @@
 --  Example:
 --     T : Timers.Timer := Node.Timer_Add (0.5, Tick'Access);
 --     T.Cancel;  T.Reset;  --  Reset restarts the grid from now
-with Ada.Real_Time;
-with RCL.Clocks;
+with Ada.Finalization;
 limited with RCL.Nodes;
+
+private with RCL.Timer_States;
 
 package RCL.Timers is
 
    type Timer_Clock is (Node_Clock, Steady_Clock);
 
-   type Timer is tagged private;
+   type Timer is new Ada.Finalization.Controlled with private;
    --  A handle on a timer owned by its node (copies designate the same
    --  timer); valid while the node exists.
 
@@ -46,43 +47,9 @@ package RCL.Timers is
 
    function Clock (This : Timer) return Timer_Clock;
 
-   --  Not for users: the executor's side.
-
-   subtype Period_Nanoseconds is RCL.Clocks.Nanoseconds range 1 .. RCL.Clocks.Nanoseconds'Last;
-
-   protected type State (Period_Ns : Period_Nanoseconds; On : Timer_Clock) is
-      procedure Start;
-      procedure Cancel;
-      procedure Reset;
-      function Canceled return Boolean;
-      function Due_At return Ada.Real_Time.Time;
-      --  On the steady clock; Time_Last when canceled or following
-      --  simulated time (the executors are woken by each /clock message).
-      function Until_Next return Duration;
-      procedure Fire (Fired : out Boolean; Elapsed : out Duration);
-      --  When due now: Fired, the grid advances past now.
-      procedure Fire_At
-        (Now : RCL.Clocks.Nanoseconds; Simulated : Boolean;
-         Fired : out Boolean; Elapsed : out Duration);
-      --  Fire with the clock read as Now (on simulated time or not).
-      function Next_Call return RCL.Clocks.Nanoseconds;
-   private
-      Next, Last  : RCL.Clocks.Nanoseconds := 0;
-      Simulated   : Boolean := False;
-      --  The clock Next and Last are on.
-      Is_Canceled : Boolean := False;
-   end State;
-
-   type State_Access is access all State;
-
-   function To_Timer (S : not null State_Access) return Timer;
-
-   function State_Of (This : Timer) return State_Access;
-
 private
 
-   type Timer is tagged record
-      S : State_Access;
-   end record;
+   type Timer is new RCL.Timer_States.Handle with null record;
+   --  Copies designate the same state (RCL.Timer_States).
 
 end RCL.Timers;

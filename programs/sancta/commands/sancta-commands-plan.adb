@@ -52,7 +52,7 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --iterations N       move budget (with --time 0: deterministic)");
       Put_Line ("  --converge N         stop after N moves without a new best");
       Put_Line ("  --seed N             random seed (default 1)");
-      Put_Line ("  --schedule S         geometric | cyclic | reheat (default geometric)");
+      Put_Line ("  --schedule S         geometric | cyclic | reheat | hybrid (default geometric)");
       Put_Line ("  --cycles N           cyclic schedule: cycles, each from the best (3)");
       Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
       Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
@@ -522,9 +522,11 @@ package body Sancta.Commands.Plan is
                      Opts.Schedule := Annealers.Cyclic;
                   elsif S = "reheat" then
                      Opts.Schedule := Annealers.Reheat;
+                  elsif S = "hybrid" then
+                     Opts.Schedule := Annealers.Hybrid;
                   else
                      raise Usage_Error with "--schedule: '" & S
-                       & "' is not geometric, cyclic or reheat";
+                       & "' is not geometric, cyclic, reheat or hybrid";
                   end if;
                end;
             elsif A = "--cycles" then

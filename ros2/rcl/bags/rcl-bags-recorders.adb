@@ -127,7 +127,7 @@ package body RCL.Bags.Recorders is
                         QoS.Durability := RCL.QoS.Transient_Local;
                      end if;
                      Guarded (This.Shared.all, Add_Topic'Access);
-                     Node.Add_Subscription
+                     Node.Subscribe_Handler
                        (To_String (DDS_Type), Name,
                         new Topic_Handler'(Shared => This.Shared, Topic => Index), QoS);
                      This.Recorded.Append (Name);

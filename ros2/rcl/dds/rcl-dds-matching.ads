@@ -1,7 +1,17 @@
---  Not for users: what services, clients and graph queries learn from the
---  DDS discovery data (matched endpoints' USER_DATA, the built-in topics
---  DCPSParticipant / DCPSPublication / DCPSSubscription). Wraps
---  csrc/rclada_matching.c.
+--  The DDS discovery data, as ROS 2 reads it: the built-in topics
+--  DCPSParticipant / DCPSPublication / DCPSSubscription (every participant
+--  and endpoint discovered, with its QoS and USER_DATA), the USER_DATA of
+--  the endpoints a reader or writer matched, and rmw_cyclonedds's service
+--  conventions on top of them (client and service ids, "is the service
+--  available"). RCL's graph queries, services and clients are built on it;
+--  a program working at the DDS layer (RCL.DDS) uses it the same way.
+--  Wraps csrc/rclada_matching.c.
+--  Example:
+--     P : Participant;
+--     Create (P, Domain => 0, Localhost_Only => True);
+--     for E of Builtin (P, Publications) loop
+--        Put_Line (To_String (E.Topic_Name) & " : " & To_String (E.Type_Name));
+--     end loop;
 with Ada.Strings.Unbounded;
 
 package RCL.DDS.Matching is

@@ -417,11 +417,18 @@ package body Sancta.Allocation.Annealers.Searches is
       S : State renames This.Tours.all;
       X : Kind_Stats renames This.Kinds (Route_Search);
       Found : Local_Search.Statistics;
+      Time_Left : constant Duration :=
+        (if This.Opts.Time_Limit > 0.0
+         then Duration'Max (0.001, This.Opts.Time_Limit - To_Duration (Now (This) - This.Started))
+         else 0.0);
+      --  Descents stopped at the end of the budget (unbounded under a move
+      --  budget alone: deterministic).
    begin
       X.Tries := X.Tries + 1;
       Store (S, This.Backup);
-      Local_Search.Polish_Routes (P, This.Backup, 0.0, This.Opts.Seed, Found,
-                                  Check => This.Opts.Check, Kicks => False);
+      Local_Search.Polish_Routes
+        (P, This.Backup, Time_Left, This.Opts.Seed, Found,
+         Check => This.Opts.Check, Kicks => False, Budget_Clock => This.Opts.Budget_Clock);
       if Found.After >= Found.Before then
          return;
       end if;
@@ -575,7 +582,7 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Started := Now (This);
       This.Next_Report := This.Started + To_Time_Span (Opts.Report_Every);
       This.Runs := (if Opts.Runs > 0 then Opts.Runs else 1);
-      This.Runs_Decided := Opts.Runs > 0 or else Opts.Schedule /= Geometric
+      This.Runs_Decided := Opts.Runs > 0 or else Opts.Schedule not in Geometric | Hybrid
         or else (Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0);
       This.Switch := New_Switch (P);
       This.Log_Tries := Natural (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
@@ -725,6 +732,32 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Temperature := This.Reheat_Temperature;
    end Reheat_Step;
 
+   --  Hybrid: Geometric over the first Geometric_Share of the budget, then
+   --  Reheat from the best so far, starting at T1 (back to T0 only after
+   --  the reheat schedule's long stretch without a new best).
+   procedure Hybrid_Step (This : in out Search; P : Problem; X : Long_Float) is
+      Share : constant Long_Float := This.Opts.Geometric_Share;
+   begin
+      if X < Share then
+         Geometric_Step (This, P, X / Share);
+         return;
+      end if;
+      if not This.Reheating then
+         This.Reheating := True;
+         if not This.Best_Saved then
+            Save_Best (This);
+         end if;
+         Load (P, This.Tours.all, This.Best);
+         Check (This, P);
+         Restart_From_Current (This, P);
+         This.Reheat_Temperature := This.End_Temperature;
+         This.Cycle_Best := This.Current;
+         This.Since_Improve := 0;
+         This.Last_Best_Move := This.Moves;
+      end if;
+      Reheat_Step (This);
+   end Hybrid_Step;
+
    procedure Adapt_Weights (This : in out Search) is
    begin
       for M in Move_Kind loop
@@ -756,6 +789,7 @@ package body Sancta.Allocation.Annealers.Searches is
          when Geometric => Geometric_Step (This, P, X);
          when Cyclic    => Cyclic_Step (This, P, X);
          when Reheat    => Reheat_Step (This);
+         when Hybrid    => Hybrid_Step (This, P, X);
       end case;
       if Reading >= This.Next_Report then
          This.Next_Report := Reading + To_Time_Span (This.Opts.Report_Every);

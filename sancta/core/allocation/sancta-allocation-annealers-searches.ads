@@ -57,7 +57,8 @@ private package Sancta.Allocation.Annealers.Searches is
       Since_Improve   : Long_Long_Integer := 0;
       Cycle_Best      : Long_Float := 0.0;
       Cycle           : Natural := 0;
-      --  Reheat and cyclic schedules.
+      Reheating       : Boolean := False;
+      --  Reheat and cyclic schedules; Hybrid: past its geometric share.
       Runs            : Positive := 1;
       Run             : Natural := 0;
       Runs_Decided    : Boolean := False;

@@ -45,10 +45,14 @@ package body Sancta.Allocation.Annealers is
    is
       Search : Local_Search.Statistics;
       Before : constant Duration := Stats.Elapsed;
+      Tour_Target : constant Cost :=
+        (if Opts.Target > 0.0 then Cost (Long_Float'Floor (Long_Float'Min (Opts.Target, 1.0E15)))
+         else 0);
    begin
       Local_Search.Improve (P, Best, Duration'Max (0.0, Opts.Time_Limit - Before), Opts.Seed,
                             Search, Neighbours => Opts.Neighbours, Check => Opts.Check,
-                            Budget_Clock => Opts.Budget_Clock);
+                            Budget_Clock => Opts.Budget_Clock,
+                            Target => Tour_Target);
       Stats.Elapsed := Before + Search.Elapsed;
       if Search.After < Search.Before then
          Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
@@ -137,7 +141,11 @@ package body Sancta.Allocation.Annealers is
       Searches.Start (Run, P, Anneal_Opts, Best, Report);
       Searches.Anneal (Run, P);
       Searches.Finish (Run, P, Best, Stats);
-      if Share > 0.0 and then Single_Tour then
+      if Opts.Target > 0.0 and then Stats.Best <= Opts.Target then
+         return;
+         --  Reached: no search after the anneal (Time_To_Best stays the
+         --  time the target was reached).
+      elsif Share > 0.0 and then Single_Tour then
          Improve_Tour (P, Opts, Best, Stats);
       elsif Share > 0.0 then
          Polish_Routes (P, Opts, Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed), True,

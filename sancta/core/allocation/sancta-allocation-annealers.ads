@@ -40,11 +40,13 @@ with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 
 package Sancta.Allocation.Annealers is
 
-   type Schedule_Kind is (Geometric, Cyclic, Reheat);
+   type Schedule_Kind is (Geometric, Cyclic, Reheat, Hybrid);
    --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs,
    --  each from the best so far at a lower start temperature.
    --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
    --  without improvement, back to T0 after a long stretch without a new best.
+   --  Hybrid: Geometric over the first Geometric_Share of the budget, then
+   --  Reheat from the best so far (at T1 first) for the rest.
 
    protected type Best_Box (Robots : Positive; Tasks : Positive) is
       --  Anytime access to a running annealer's best allocation: it posts
@@ -95,6 +97,8 @@ package Sancta.Allocation.Annealers is
       --  Max_Runs) as give each Run_Moves x tasks ** 2 moves, from the move
       --  rate measured over the first 2% of the budget.
       Run_Moves    : Long_Float := 1000.0;
+      Geometric_Share : Long_Float := 0.5;
+      --  Hybrid: the share of the budget cooled geometrically (0 < x < 1).
       Cycles       : Positive := 3;
       Cycle_Drop   : Long_Float := 3.0;
       --  Cyclic: each cycle restarts from the best at T0 / Cycle_Drop ** k.

@@ -36,8 +36,11 @@ package body Sancta.Allocation.Local_Search is
       Neighbours     : Positive;
       Check          : Boolean;
       Kicks          : Boolean := True;
-      Budget_Clock   : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
+      Budget_Clock   : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
+      Target         : Cost := 0)
    is
+      --  Target > 0: stop as soon as the route is no longer than Target
+      --  (closed routes only).
       M : constant Natural := Route'Length;
       Route_In : constant Count_Array (1 .. M) := Route;
       N : constant Positive := M + 1 + (if Has_End then 1 else 0);
@@ -352,6 +355,7 @@ package body Sancta.Allocation.Local_Search is
             Pops := Pops + 1;
             exit when Time_Limit > 0.0 and then Pops mod 128 = 0
               and then Budget_Clocks.Clock (Budget_Clock) >= Deadline;
+            exit when Target > 0 and then Length <= Target;
             declare
                V : constant Node := Queue (Head);
             begin
@@ -433,8 +437,15 @@ package body Sancta.Allocation.Local_Search is
          return;
       end if;
       --  Candidate lists: the K nearest nodes of each node (never the
-      --  forced arc's other end).
+      --  forced arc's other end); O (M^2): past the deadline, the route is
+      --  left as it is.
       for U in Node loop
+         if Time_Limit > 0.0 and then U mod 64 = 63
+           and then Budget_Clocks.Clock (Budget_Clock) >= Deadline
+         then
+            Free (Near);
+            return;
+         end if;
          declare
             Best : array (1 .. K) of Cost := [others => Cost'Last];
             Found : Natural := 0;
@@ -477,7 +488,9 @@ package body Sancta.Allocation.Local_Search is
       if Length < Started_Length then
          Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
       end if;
-      if Time_Limit > 0.0 and then Kicks then
+      if Time_Limit > 0.0 and then Kicks
+        and then not (Target > 0 and then Length <= Target)
+      then
          Saved_Order := Order;
          Saved_Position := Position;
          Saved_Length := Length;
@@ -498,6 +511,7 @@ package body Sancta.Allocation.Local_Search is
                Saved_Order := Order;
                Saved_Position := Position;
                Saved_Length := Length;
+               exit when Target > 0 and then Length <= Target;
             else
                Order := Saved_Order;
                Position := Saved_Position;
@@ -528,7 +542,8 @@ package body Sancta.Allocation.Local_Search is
       Stats      : out Statistics;
       Neighbours : Positive := 8;
       Check      : Boolean := False;
-      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
+      Target     : Cost := 0)
    is
       Started : constant Time := Budget_Clocks.Clock (Budget_Clock);
       Route : Count_Array (1 .. P.Tasks) := [for I in 1 .. P.Tasks => A.Tour (1, I)];
@@ -537,7 +552,7 @@ package body Sancta.Allocation.Local_Search is
       Search_Route (P, 1, P.Start (1), False, 0, Route,
                     [for I in 1 .. P.Tasks => Location_Of (P, Route (I))],
                     Time_Limit, Seed, Stats, Neighbours, Check,
-                    Budget_Clock => Budget_Clock);
+                    Budget_Clock => Budget_Clock, Target => Target);
       for I in Route'Range loop
          A.Tour (1, I) := Route (I);
       end loop;
@@ -617,7 +632,11 @@ package body Sancta.Allocation.Local_Search is
             F : constant Natural := Natural'Min (A.Length (R), P.Frozen_Length (R));
             Free : constant Natural := A.Length (R) - F;
          begin
-            if Free >= 5 and then Symmetric_For (P, R, A) then
+            if Free >= 5 and then Symmetric_For (P, R, A)
+              and then (Time_Limit = 0.0
+                        or else Budget_Clocks.Clock (Budget_Clock) - Started
+                                < To_Time_Span (Time_Limit))
+            then
                declare
                   Route : Count_Array (1 .. Free) := [for I in 1 .. Free => A.Tour (R, F + I)];
                   Depot : constant Positive :=

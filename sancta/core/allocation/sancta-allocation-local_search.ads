@@ -46,11 +46,13 @@ package Sancta.Allocation.Local_Search is
       Stats      : out Statistics;
       Neighbours : Positive := 8;
       Check      : Boolean := False;
-      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
+      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
+      Target     : Cost := 0)
      with Pre => Applies (P) and then A.Robots = 1 and then A.Tasks = P.Tasks
                  and then A.Length (1) = P.Tasks;
    --  A's tour improved for Time_Limit on Budget_Clock (0.0: one descent,
-   --  no kicks), the descents included.
+   --  no kicks), the descents included; Target > 0: stops as soon as the
+   --  tour is no longer than Target (Stats.Time_To_Best: when it got there).
    --  Check: after every move the tour length is recomputed and compared
    --  with the incremental one (Program_Error on a difference).
 
@@ -79,8 +81,10 @@ package Sancta.Allocation.Local_Search is
    --  for its robot (the shared matrix, or its own on the route's
    --  locations) improved by the same search, Time_Limit shared among the
    --  routes by their task counts (0.0: one descent each, unbounded; not
-   --  Kicks: descents only, each stopped at its share). Tasks, their
-   --  robots, choices and frozen prefixes stay; Stats.Before / After are
-   --  the sums of the searched routes' base lengths.
+   --  Kicks: descents only, each stopped at its share; a route whose
+   --  candidate lists, O (M^2) for M tasks, are not built within its share,
+   --  or reached past Time_Limit, is left as it is). Tasks, their robots,
+   --  choices and frozen prefixes stay; Stats.Before / After are the sums
+   --  of the searched routes' base lengths.
 
 end Sancta.Allocation.Local_Search;

@@ -147,11 +147,23 @@ package Sancta.Allocation.Problems is
           + (Long_Float (A.Y) - Long_Float (B.Y)) * (Long_Float (A.Y) - Long_Float (B.Y))));
    --  Example: Euclidean_Length ((0.0, 0.0), (3.0, 4.0)) = 5.0.
 
+   function Floor_Cost (X : Long_Float) return Cost
+   is (Cost (X) - (if Long_Float (Cost (X)) > X then 1 else 0))
+     with Inline;
+   --  Cost (Long_Float'Floor (X)) without the attribute's library call (the
+   --  conversion rounds to the nearest, then one down if that was above).
+   --  Example: Floor_Cost (2.5) = 2, Floor_Cost (-0.5) = -1.
+
+   function Ceiling_Cost (X : Long_Float) return Cost
+   is (Cost (X) + (if Long_Float (Cost (X)) < X then 1 else 0))
+     with Inline;
+   --  Cost (Long_Float'Ceiling (X)). Example: Ceiling_Cost (2.1) = 3.
+
    function Rounded (Rule : Distance_Rule; D : Long_Float) return Cost
    is (case Rule is
-          when Euclidean_Floor   => Cost (Long_Float'Floor (D)),
-          when Euclidean_Ceiling => Cost (Long_Float'Ceiling (D)),
-          when others            => Cost (Long_Float'Floor (D + 0.5)))
+          when Euclidean_Floor   => Floor_Cost (D),
+          when Euclidean_Ceiling => Ceiling_Cost (D),
+          when others            => Floor_Cost (D + 0.5))
      with Inline;
    --  D rounded as Rule says (nearest for From_Matrix).
 
@@ -263,8 +275,8 @@ package Sancta.Allocation.Problems is
    function Robot_Distance (This : Problem; R : Positive; From, To : Natural) return Cost
    is (if This.Own (R) /= null then This.Own (R) (From, To)
        elsif This.Own_Factor (R) > 0.0
-       then Cost'Min (Infinity, Cost (Long_Float'Floor
-                        (This.Own_Factor (R) * Long_Float (Distance (This, From, To)) + 0.5)))
+       then Cost'Min (Infinity, Floor_Cost
+                        (This.Own_Factor (R) * Long_Float (Distance (This, From, To)) + 0.5))
        else Distance (This, From, To))
      with Inline;
    --  Base distance for robot R (before its multiplier).

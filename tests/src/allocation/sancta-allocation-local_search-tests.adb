@@ -3,6 +3,7 @@ with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Allocation.Annealers;
+with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
@@ -202,6 +203,67 @@ package body Sancta.Allocation.Local_Search.Tests is
               "no better with the polish");
    end Annealer_Polishes_Routes;
 
+   --  Improve with a target stops as soon as the tour is that short: within
+   --  the first descent for a target just below the start (shorter than the
+   --  start, longer than a whole descent's end), with no kick for a target
+   --  the descent passes; without a target, kicks run.
+   procedure Stops_At_Target (Unused : in out Fixture) is
+      P : constant Problem_Access := Scattered (400, 12);
+      Start : constant Assignment := Nearest_Neighbour_Tour (P.all);
+      Start_Length : constant Cost := Evaluate (P.all, Start, Min_Sum).Sum;
+      Descended, Near, Passed, Kicked : Assignment := Start;
+      S : Statistics;
+      Descent_Length : Cost;
+   begin
+      Improve (P.all, Descended, 0.0, 1, S);
+      Descent_Length := S.After;
+      Assert (Descent_Length < Start_Length - 100, "the descent gains too little to test");
+      Improve (P.all, Near, 30.0, 1, S, Target => Start_Length - 1,
+               Budget_Clock => Budget_Clocks.CPU_Time, Check => True);
+      Assert (S.After <= Start_Length - 1 and then S.After > Descent_Length,
+              "target just below the start:" & S.After'Image & ", start" & Start_Length'Image
+              & ", descent" & Descent_Length'Image);
+      Assert (S.Kicks = 0, "kicked after reaching the target");
+      Assert (Evaluate (P.all, Near, Min_Sum).Sum = S.After, "reported length");
+      Improve (P.all, Passed, 30.0, 1, S, Target => Descent_Length + 1,
+               Budget_Clock => Budget_Clocks.CPU_Time);
+      Assert (S.After <= Descent_Length + 1 and then S.Kicks = 0,
+              "target reached by the descent:" & S.After'Image & S.Kicks'Image & " kicks");
+      Assert (S.Time_To_Best <= S.Elapsed, "time to the target after the end");
+      Improve (P.all, Kicked, 0.05, 1, S, Budget_Clock => Budget_Clocks.CPU_Time);
+      Assert (S.Kicks > 0, "no kick without a target");
+   end Stops_At_Target;
+
+   --  The route polish keeps to its time limit on large routes (3 robots x
+   --  1000 tasks at random places: O (M^2) candidate lists per route, which
+   --  took past the limit before they were checked against it).
+   procedure Route_Polish_Keeps_Time (Unused : in out Fixture) is
+      Tasks : constant := 3_000;
+      G : Random.Generator := Random.Seeded (8);
+      P : constant Problem_Access := Create (Tasks + 1, Tasks, 3);
+      A : Assignment (3, Tasks);
+      S : Statistics;
+      Limit : constant Duration := 0.05;
+   begin
+      Set_Euclidean (P.all, [for I in 1 .. Tasks + 1 =>
+                               (Sancta.Geometry.Real (Random.Below (G, 10_000)),
+                                Sancta.Geometry.Real (Random.Below (G, 10_000)))], 1.0);
+      for T in 1 .. Tasks loop
+         Set_Task (P.all, T, T + 1);
+      end loop;
+      for R in 1 .. 3 loop
+         Set_Robot (P.all, R, 1, Closed => True);
+      end loop;
+      for T in 1 .. Tasks loop
+         Append (A, 1 + (T - 1) mod 3, T);
+      end loop;
+      Polish_Routes (P.all, A, Limit, 1, S, Kicks => False,
+                     Budget_Clock => Budget_Clocks.CPU_Time);
+      Assert (S.Elapsed <= Limit + 0.05, "route polish took" & S.Elapsed'Image & " s for"
+              & Limit'Image & " s");
+      Assert (Validate (P.all, A) = "", Validate (P.all, A));
+   end Route_Polish_Keeps_Time;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -218,6 +280,8 @@ package body Sancta.Allocation.Local_Search.Tests is
       Add ("route polish: Held-Karp optima of open and depot routes", Route_Optima'Access);
       Add ("route polish is deterministic", Deterministic_Route_Polish'Access);
       Add ("the annealer polishes the routes", Annealer_Polishes_Routes'Access);
+      Add ("the tour search stops at a target", Stops_At_Target'Access);
+      Add ("the route polish keeps to its time limit", Route_Polish_Keeps_Time'Access);
       return Result;
    end Suite;
 

@@ -177,6 +177,35 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Route_Search_In_Anneal;
 
+   --  The hybrid schedule (geometric, then reheats from the best) under the
+   --  expensive check, for the makespan and the total: valid, the reported
+   --  best is the allocation's value, deterministic for a seed; it is not
+   --  the geometric run (same seed and moves) from the start (its own cooling).
+   procedure Hybrid_Schedule (Unused : in out Fixture) is
+      P : constant Problem_Access := TSPLIB.To_MTSP (TSPLIB.Read (Data & "eil76.tsp").all, 3);
+      use Annealers;
+   begin
+      for C of Criterion_Array'[Min_Max, Min_Sum] loop
+         declare
+            O : constant Options :=
+              (Criterion => C, Seed => 11, Time_Limit => 0.0, Iterations => 60_000,
+               Schedule => Hybrid, Geometric_Share => 0.3, Check => True, others => <>);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            Plain : Options := O;
+         begin
+            Solve (P.all, O, A, S);
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            Plain.Schedule := Geometric;
+            Solve (P.all, Plain, B, T);
+            Assert (A /= B, "the hybrid run equals the geometric one");
+         end;
+      end loop;
+   end Hybrid_Schedule;
+
    ---------------------------------------------------------------------------
 
    procedure Optimal_Tours (Unused : in out Fixture) is
@@ -633,6 +662,34 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Computed_Distances_Equal_Matrix;
 
+   --  The rounding of computed distances without the attributes' library
+   --  calls: equal to Cost (Long_Float'Floor / 'Ceiling (X)) on integers,
+   --  halves, values next to integers (both signs) and random reals.
+   procedure Fast_Rounding (Unused : in out Fixture) is
+      type Offsets is array (Positive range <>) of Long_Float;
+      G : Random.Generator := Random.Seeded (31);
+      procedure Same (X : Long_Float) is
+      begin
+         Assert (Floor_Cost (X) = Cost (Long_Float'Floor (X)), "floor of" & X'Image);
+         Assert (Ceiling_Cost (X) = Cost (Long_Float'Ceiling (X)), "ceiling of" & X'Image);
+         Assert (Rounded (Euclidean_Nearest, abs X) = Cost (Long_Float'Floor (abs X + 0.5)),
+                 "nearest of" & Long_Float'Image (abs X));
+      end Same;
+   begin
+      for I in -1_000 .. 1_000 loop
+         for Offset of Offsets'[0.0, 0.5, -0.5, 1.0E-9, -1.0E-9, 0.499_999_999,
+                                0.500_000_001, 0.25, 0.75]
+         loop
+            Same (Long_Float (I) + Offset);
+         end loop;
+      end loop;
+      for I in 1 .. 100_000 loop
+         Same ((Random.Uniform (G) - 0.5) * 1.0E7);
+      end loop;
+      Same (2.0 ** 52 + 1.0);
+      Same (-(2.0 ** 52) - 1.0);
+   end Fast_Rounding;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -652,6 +709,8 @@ package body Sancta.Allocation.Tests is
       Add ("TSPLIB explicit matrix formats", Explicit_Formats'Access);
       Add ("TSPLIB ATT and GEO distances", Pseudo_Euclidean_And_Geo'Access);
       Add ("computed distances equal the matrix", Computed_Distances_Equal_Matrix'Access);
+      Add ("fast floor / ceiling / nearest rounding", Fast_Rounding'Access);
+      Add ("hybrid schedule, checked", Hybrid_Schedule'Access);
       Add ("TSPLIB bad files: file:line and reason", Bad_Files'Access);
       Add ("mission XML: robots, OR tasks, done prefix, errors", Mission_File'Access);
       Add ("robots ending at their own depots", End_Depots'Access);

@@ -1,6 +1,9 @@
 with AUnit.Assertions; use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
+with Ada.Real_Time;
+with RCL.Clocks;
+with RCL.Timer_States; use RCL.Timer_States;
 
 package body RCL.Timers.Tests is
 
@@ -14,7 +17,7 @@ package body RCL.Timers.Tests is
    Ms : constant Nanoseconds := 1_000_000;
 
    procedure Grid (Unused : in out Fixture) is
-      S       : aliased State (Period_Ns => P, On => Steady_Clock);
+      S       : aliased State (Period_Ns => P, Always_Steady => True);
       Fired   : Boolean;
       Elapsed : Duration;
       First   : Nanoseconds;
@@ -34,7 +37,7 @@ package body RCL.Timers.Tests is
    end Grid;
 
    procedure Time_Jumps (Unused : in out Fixture) is
-      S       : aliased State (Period_Ns => P, On => Node_Clock);
+      S       : aliased State (Period_Ns => P, Always_Steady => False);
       Fired   : Boolean;
       Elapsed : Duration;
       Sec     : constant Nanoseconds := 1_000_000_000;
@@ -60,7 +63,7 @@ package body RCL.Timers.Tests is
    end Time_Jumps;
 
    procedure Cancel_Reset (Unused : in out Fixture) is
-      S       : aliased State (Period_Ns => P, On => Steady_Clock);
+      S       : aliased State (Period_Ns => P, Always_Steady => True);
       T       : Timer;
       Fired   : Boolean;
       Elapsed : Duration;
