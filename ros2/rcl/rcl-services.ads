@@ -30,10 +30,9 @@ with RCL.DDS;
 with RCL.Nodes;
 with RCL.QoS;
 
-private with RCL.Node_Entities;
-
 private with Ada.Containers.Ordered_Sets;
 private with Ada.Strings.Unbounded;
+private with RCL.Node_Entities;
 
 package RCL.Services is
 

@@ -11,6 +11,7 @@ with RCL.Clocks.Tests;
 with RCL.Graph.Tests;
 with RCL.Logging.Tests;
 with RCL.MCAP.Tests;
+with RCL.MCAP.Writers.Contract_Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
 with RCL.Parameters.Tests;
@@ -59,6 +60,7 @@ package body All_Suites is
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Tests.Suite);
+      Result.Add_Test (RCL.MCAP.Writers.Contract_Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Plan_Tests.Suite);

@@ -24,6 +24,8 @@ private with RCL.MCAP.Buffers;
 package RCL.MCAP.Writers is
 
    type Writer is new Ada.Finalization.Limited_Controlled with private;
+   --  Its time ranges stay consistent (a Type_Invariant): the open chunk's
+   --  range covers the chunk's messages and lies within the file's.
 
    Default_Chunk_Size : constant := 768 * 1024;
    --  Uncompressed bytes per chunk (rosbag2's MCAP default).
@@ -92,6 +94,7 @@ private
 
    use Ada.Strings.Unbounded;
    use type Interfaces.Unsigned_32;
+   use type Interfaces.Unsigned_64;
 
    type Index_Entry is record
       Time, Offset : Time_Stamp;
@@ -171,6 +174,15 @@ private
       Job_End        : Time_Stamp := 0;
       Jobs           : Handoff;
       Worker         : Finisher_Access;
-   end record;
+   end record
+     with Type_Invariant =>
+       --  The time ranges the chunk and statistics records state: the open
+       --  chunk's covers its messages and lies within the file's.
+       Interfaces.Unsigned_64 (Writer.Chunk_Messages) <= Writer.Message_Total
+       and then (Writer.Message_Total = 0 or else Writer.First_Time <= Writer.Last_Time)
+       and then (Writer.Chunk_Messages = 0
+                 or else (Writer.First_Time <= Writer.Chunk_Start
+                          and then Writer.Chunk_Start <= Writer.Chunk_End
+                          and then Writer.Chunk_End <= Writer.Last_Time));
 
 end RCL.MCAP.Writers;
