@@ -30,22 +30,16 @@ package body RCL.Events is
       Topic    : String;
       On_Event : not null access procedure (Node : in out RCL.Nodes.Node'Class; E : Event))
    is
+      use type RCL.Node_Entities.Subscription_Access;
       Stored : constant Callback with Import, Address => On_Event'Address;
       FQ     : constant String := Node.Expand (Topic);
+      S      : constant RCL.Node_Entities.Subscription_Access :=
+        RCL.Node_Entities.Find_Subscription (Node, FQ);
    begin
-      for I in 1 .. RCL.Node_Entities.Subscription_Count (Node) loop
-         declare
-            S : constant RCL.Node_Entities.Subscription_Access :=
-              RCL.Node_Entities.Get_Subscription (Node, I);
-         begin
-            if S.Topic.all = FQ then
-               RCL.Event_Watches.Watch_Subscription
-                 (RCL.Node_Entities.Graph_Id (Node), S, Stored);
-               return;
-            end if;
-         end;
-      end loop;
-      raise ROS_Exception with "node " & Node.Name & " has no subscription on " & FQ;
+      if S = null then
+         raise ROS_Exception with "node " & Node.Name & " has no subscription on " & FQ;
+      end if;
+      RCL.Event_Watches.Watch_Subscription (RCL.Node_Entities.Graph_Id (Node), S, Stored);
    end Watch;
 
    --  Polling ------------------------------------------------------------------

@@ -74,6 +74,19 @@ package body RCL.Node_Entities is
      (Node : RCL.Nodes.Node'Class; Index : Positive) return Subscription_Access is
      (Core (Node).Entities.Sub (Index));
 
+   function Find_Subscription
+     (Node : RCL.Nodes.Node'Class; Topic : String) return Subscription_Access
+   is
+      C : constant not null access constant Node_Core'Class := Core (Node);
+   begin
+      for I in 1 .. C.Entities.Sub_Count loop
+         if C.Entities.Sub (I).Topic.all = Topic then
+            return C.Entities.Sub (I);
+         end if;
+      end loop;
+      return null;
+   end Find_Subscription;
+
    function Timer_Count (Node : RCL.Nodes.Node'Class) return Natural is
      (Core (Node).Entities.Tim_Count);
 

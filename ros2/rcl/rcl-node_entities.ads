@@ -93,6 +93,9 @@ private package RCL.Node_Entities is
    function Subscription_Count (Node : RCL.Nodes.Node'Class) return Natural;
    function Get_Subscription
      (Node : RCL.Nodes.Node'Class; Index : Positive) return Subscription_Access;
+   function Find_Subscription
+     (Node : RCL.Nodes.Node'Class; Topic : String) return Subscription_Access;
+   --  Node's first subscription on Topic (fully qualified); null if none.
    function Timer_Count (Node : RCL.Nodes.Node'Class) return Natural;
    function Get_Timer (Node : RCL.Nodes.Node'Class; Index : Positive) return Timer_Entry;
    function Next_Timer_Due (Node : RCL.Nodes.Node'Class) return Ada.Real_Time.Time;

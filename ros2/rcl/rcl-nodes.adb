@@ -499,18 +499,15 @@ package body RCL.Nodes is
    function Subscription_On
      (This : Node; Topic : String) return RCL.Node_Entities.Subscription_Access
    is
+      use type RCL.Node_Entities.Subscription_Access;
       FQ : constant String := This.Expand (Topic);
+      S  : constant RCL.Node_Entities.Subscription_Access :=
+        RCL.Node_Entities.Find_Subscription (This, FQ);
    begin
-      for I in 1 .. This.Entities.Sub_Count loop
-         declare
-            S : constant RCL.Node_Entities.Subscription_Access := This.Entities.Sub (I);
-         begin
-            if S.Topic.all = FQ then
-               return S;
-            end if;
-         end;
-      end loop;
-      raise ROS_Exception with "node " & To_String (This.Name) & " has no subscription on " & FQ;
+      if S = null then
+         raise ROS_Exception with "node " & To_String (This.Name) & " has no subscription on " & FQ;
+      end if;
+      return S;
    end Subscription_On;
 
    function Take_Raw
