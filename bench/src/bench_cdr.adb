@@ -7,7 +7,7 @@
 with Ada.Command_Line;
 with Ada.Real_Time;
 with Ada.Streams;
-with Ada.Text_IO;
+with Bench_Rows;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
@@ -15,7 +15,6 @@ with ROSIDL.Typesupport;
 procedure Bench_CDR is
    use Ada.Real_Time;
    use Ada.Streams;
-   use Ada.Text_IO;
    use ROSIDL;
    use ROSIDL.Dynamic;
    use ROSIDL.Typesupport;
@@ -27,9 +26,6 @@ procedure Bench_CDR is
 
    Sink : Stream_Element := 0 with Volatile;
    --  Keeps the encoded bytes observable.
-
-   CSV : File_Type;
-   Has_CSV : constant Boolean := Ada.Command_Line.Argument_Count >= 2;
 
    function Laser_Scan return Message is
       Ranges : Float32_Array (1 .. 720);
@@ -76,10 +72,7 @@ procedure Bench_CDR is
         & "," & Long_Float'Image (Rate) & ","
         & Long_Float'Image (Rate * Long_Float (Bytes) / 1.0E6);
    begin
-      Put_Line (Line);
-      if Has_CSV then
-         Put_Line (CSV, Line);
-      end if;
+      Bench_Rows.Put (Line);
    end Report;
 
    procedure Measure (Case_Name : String; Msg : Message) is
@@ -122,12 +115,8 @@ procedure Bench_CDR is
    end Measure;
 
 begin
-   if Has_CSV then
-      Create (CSV, Out_File, Ada.Command_Line.Argument (2));
-   end if;
+   Bench_Rows.Open (CSV_Argument => 2);
    Measure ("laser_scan_720", Laser_Scan);
    Measure ("occupancy_grid_1000x1000", Occupancy_Grid);
-   if Has_CSV then
-      Close (CSV);
-   end if;
+   Bench_Rows.Close;
 end Bench_CDR;

@@ -13,7 +13,7 @@ with Ada.Real_Time;
 with Ada.Streams;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Unbounded;
-with Ada.Text_IO;
+with Bench_Rows;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
 with ROSIDL.Interfaces;
@@ -26,17 +26,14 @@ with ROSIDL.Static.Sensor_Msgs.Messages.LaserScan;
 procedure Bench_Typed_CDR is
    use Ada.Real_Time;
    use Ada.Streams;
-   use Ada.Text_IO;
    use type ROSIDL.Float32;
    use type ROSIDL.Float64;
 
    Budget : constant Duration :=
      (if Ada.Command_Line.Argument_Count >= 1
       then Duration'Value (Ada.Command_Line.Argument (1)) else 1.0);
-   Has_CSV : constant Boolean := Ada.Command_Line.Argument_Count >= 2;
    Dumps   : constant String :=
      (if Ada.Command_Line.Argument_Count >= 3 then Ada.Command_Line.Argument (3) else "");
-   CSV     : File_Type;
    Sink    : Stream_Element := 0 with Volatile;
 
    package Scans renames ROSIDL.Static.Sensor_Msgs.Messages.LaserScan;
@@ -94,10 +91,7 @@ procedure Bench_Typed_CDR is
         & Long_Long_Integer'Image (Long_Long_Integer (Ns)) (2 .. Long_Long_Integer'Image
                                                                  (Long_Long_Integer (Ns))'Last);
    begin
-      Put_Line (Line);
-      if Has_CSV then
-         Put_Line (CSV, Line);
-      end if;
+      Bench_Rows.Put (Line);
    end Report;
 
    procedure Dump (Case_Name : String; Data : Stream_Element_Array) is
@@ -184,13 +178,9 @@ procedure Bench_Typed_CDR is
    procedure Measure_Grid is new Measure (Grids.Handling);
 
 begin
-   if Has_CSV then
-      Create (CSV, Out_File, Ada.Command_Line.Argument (2));
-   end if;
+   Bench_Rows.Open (CSV_Argument => 2);
    Measure_Scan ("laser_scan_720", Scan);
    Measure_Odometry ("odometry", Odometry);
    Measure_Grid ("occupancy_grid_1000x1000", Grid);
-   if Has_CSV then
-      Close (CSV);
-   end if;
+   Bench_Rows.Close;
 end Bench_Typed_CDR;

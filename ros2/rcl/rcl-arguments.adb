@@ -336,7 +336,20 @@ package body RCL.Arguments is
 
    function Enclave return String is (To_String (Current.Get.Enclave));
 
-   function Parameter_Arguments return Argument_List is (Current.Get.Parameters);
+   procedure For_Each_Parameter_Argument
+     (Process : not null access procedure (Flag, Value : String))
+   is
+      Args : Argument_List;
+      I    : Positive := 1;
+   begin
+      Load;
+      Args := Current.Get.Parameters;
+      --  Pairs (flag, value), checked by Parse.
+      while I < Natural (Args.Length) loop
+         Process (Args (I), Args (I + 1));
+         I := I + 2;
+      end loop;
+   end For_Each_Parameter_Argument;
 
    function Rosout_Enabled return Boolean is (Current.Get.Rosout);
    function Stdout_Enabled return Boolean is (Current.Get.Stdout);

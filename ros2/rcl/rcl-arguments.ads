@@ -66,10 +66,12 @@ package RCL.Arguments is
    function Enclave return String;
    --  "/" unless -e / --enclave said.
 
-   function Parameter_Arguments return Argument_List;
-   --  The -p and --params-file arguments with their values, in order
-   --  ("-p", "rate:=20", "--params-file", "p.yaml"); RCL.Parameters reads
-   --  them.
+   procedure For_Each_Parameter_Argument
+     (Process : not null access procedure (Flag, Value : String));
+   --  Loads the command line (Load), then calls Process with each -p and
+   --  --params-file argument and its value, in order (Flag "-p", Value
+   --  "rate:=20"; Flag "--params-file", Value "p.yaml"); RCL.Parameters
+   --  reads them.
 
    function Rosout_Enabled return Boolean;
    function Stdout_Enabled return Boolean;

@@ -104,20 +104,19 @@ package body RCL.Clocks is
    end Follow_Clock;
 
    function Sim_Time_Requested return Boolean is
-      Args : RCL.Arguments.Argument_List;
-      I    : Positive := 1;
-   begin
-      RCL.Arguments.Load;
-      Args := RCL.Arguments.Parameter_Arguments;
-      while I < Natural (Args.Length) loop
-         if Args (I) in "-p" | "--param"
-           and then Args (I + 1) in "use_sim_time:=true" | "use_sim_time:=True"
+      Requested : Boolean := False;
+
+      procedure Check (Flag, Value : String) is
+      begin
+         if Flag in "-p" | "--param"
+           and then Value in "use_sim_time:=true" | "use_sim_time:=True"
          then
-            return True;
+            Requested := True;
          end if;
-         I := I + 2;
-      end loop;
-      return False;
+      end Check;
+   begin
+      RCL.Arguments.For_Each_Parameter_Argument (Check'Access);
+      return Requested;
    end Sim_Time_Requested;
 
 end RCL.Clocks;

@@ -192,23 +192,35 @@ package body RCL.Graph_Announcements is
       end if;
    end Remove_Node;
 
-   type Endpoint_Side is (Readers, Writers);
-
-   procedure Add (Id : Node_Id; Side : Endpoint_Side; Endpoint : RCL.DDS.GUID) is
-      procedure Change is
+   --  Update with Change applied to the entry of node Id, if Id is known.
+   procedure Update_Node
+     (Id : Node_Id; Change : not null access procedure (Item : in out Node_Entry))
+   is
+      procedure Change_Known_Node is
          I : constant Natural := Index (Id);
       begin
          if I > 0 then
-            case Side is
-               when Readers => Nodes (I).Readers.Append (Endpoint);
-               when Writers => Nodes (I).Writers.Append (Endpoint);
-            end case;
+            Change (Nodes (I));
          end if;
-      end Change;
+      end Change_Known_Node;
    begin
       if Id /= No_Node then
-         Update (Change'Access);
+         Update (Change_Known_Node'Access);
       end if;
+   end Update_Node;
+
+   type Endpoint_Side is (Readers, Writers);
+
+   procedure Add (Id : Node_Id; Side : Endpoint_Side; Endpoint : RCL.DDS.GUID) is
+      procedure Change (Item : in out Node_Entry) is
+      begin
+         case Side is
+            when Readers => Item.Readers.Append (Endpoint);
+            when Writers => Item.Writers.Append (Endpoint);
+         end case;
+      end Change;
+   begin
+      Update_Node (Id, Change'Access);
    end Add;
 
    procedure Remove (Id : Node_Id; Side : Endpoint_Side; Endpoint : RCL.DDS.GUID) is
@@ -219,20 +231,16 @@ package body RCL.Graph_Announcements is
             List.Delete (Pos);
          end if;
       end Delete;
-      procedure Change is
-         I : constant Natural := Index (Id);
+
+      procedure Change (Item : in out Node_Entry) is
       begin
-         if I > 0 then
-            case Side is
-               when Readers => Delete (Nodes (I).Readers);
-               when Writers => Delete (Nodes (I).Writers);
-            end case;
-         end if;
+         case Side is
+            when Readers => Delete (Item.Readers);
+            when Writers => Delete (Item.Writers);
+         end case;
       end Change;
    begin
-      if Id /= No_Node then
-         Update (Change'Access);
-      end if;
+      Update_Node (Id, Change'Access);
    end Remove;
 
    procedure Add_Writer (Id : Node_Id; Endpoint : RCL.DDS.GUID) is

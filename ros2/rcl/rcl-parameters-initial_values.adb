@@ -65,35 +65,26 @@ package body RCL.Parameters.Initial_Values is
    end Load_File;
 
    procedure Load_Arguments is
-      Args : RCL.Arguments.Argument_List;
-      I    : Positive := 1;
+      procedure Load_Argument (Flag, Value : String) is
+      begin
+         if Flag in "-p" | "--param" then
+            declare
+               Sep : constant Natural := Ada.Strings.Fixed.Index (Value, ":=");
+            begin
+               if Sep <= Value'First then
+                  raise Parameter_Error with "--ros-args " & Flag & " '" & Value
+                    & "': expected name:=value";
+               end if;
+               Add_Override ("/**", Value (Value'First .. Sep - 1),
+                             Parse (Value (Sep + 2 .. Value'Last),
+                                    "--ros-args " & Flag & " " & Value (Value'First .. Sep - 1)));
+            end;
+         else
+            Load_File (Value);
+         end if;
+      end Load_Argument;
    begin
-      RCL.Arguments.Load;
-      Args := RCL.Arguments.Parameter_Arguments;
-      --  Pairs (flag, value) in command-line order, checked by RCL.Arguments.
-      while I < Natural (Args.Length) loop
-         declare
-            A   : constant String := Args (I);
-            Arg : constant String := Args (I + 1);
-         begin
-            if A in "-p" | "--param" then
-               declare
-                  Sep : constant Natural := Ada.Strings.Fixed.Index (Arg, ":=");
-               begin
-                  if Sep <= Arg'First then
-                     raise Parameter_Error with "--ros-args " & A & " '" & Arg
-                       & "': expected name:=value";
-                  end if;
-                  Add_Override ("/**", Arg (Arg'First .. Sep - 1),
-                                Parse (Arg (Sep + 2 .. Arg'Last),
-                                       "--ros-args " & A & " " & Arg (Arg'First .. Sep - 1)));
-               end;
-            else
-               Load_File (Arg);
-            end if;
-         end;
-         I := I + 2;
-      end loop;
+      RCL.Arguments.For_Each_Parameter_Argument (Load_Argument'Access);
    end Load_Arguments;
 
 end RCL.Parameters.Initial_Values;

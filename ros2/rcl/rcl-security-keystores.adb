@@ -255,31 +255,34 @@ package body RCL.Security.Keystores is
    -- Create_Enclave --
    --------------------
 
-   procedure Create_Enclave (Keystore, Enclave : String) is
+   function Checked_Root (Keystore, Enclave : String) return String is
    begin
       Check_Enclave_Name (Enclave);
       Check_Keystore (Keystore);
-      declare
-         Root : constant String := Absolute (Keystore);
-         Dir  : constant String := Enclave_Directory (Root, Enclave);
-         Back : constant String := Up (Depth (Enclave));
-      begin
-         Make_Directory (Dir);
-         Request_Config (Dir & "/.request.cnf", Enclave);
-         OpenSSL ("req -new -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes"
-                  & " -keyout " & Dir & "/key.pem -out " & Dir & "/.request.csr"
-                  & " -config " & Dir & "/.request.cnf", Dir);
-         OpenSSL ("x509 -req -in " & Dir & "/.request.csr"
-                  & " -CA " & Root & "/public/identity_ca.cert.pem"
-                  & " -CAkey " & Root & "/private/identity_ca.key.pem"
-                  & " -set_serial " & Serial
-                  & " -days 3650 -sha256 -out " & Dir & "/cert.pem", Dir);
-         Dirs.Delete_File (Dir & "/.request.cnf");
-         Dirs.Delete_File (Dir & "/.request.csr");
-         Link (Back & "../public/identity_ca.cert.pem", Dir & "/identity_ca.cert.pem");
-         Link (Back & "../public/permissions_ca.cert.pem", Dir & "/permissions_ca.cert.pem");
-         Link (Back & "governance.p7s", Dir & "/governance.p7s");
-      end;
+      return Absolute (Keystore);
+   end Checked_Root;
+   --  The absolute path of Keystore, once Enclave's name and Keystore are checked.
+
+   procedure Create_Enclave (Keystore, Enclave : String) is
+      Root : constant String := Checked_Root (Keystore, Enclave);
+      Dir  : constant String := Enclave_Directory (Root, Enclave);
+      Back : constant String := Up (Depth (Enclave));
+   begin
+      Make_Directory (Dir);
+      Request_Config (Dir & "/.request.cnf", Enclave);
+      OpenSSL ("req -new -newkey ec -pkeyopt ec_paramgen_curve:prime256v1 -nodes"
+               & " -keyout " & Dir & "/key.pem -out " & Dir & "/.request.csr"
+               & " -config " & Dir & "/.request.cnf", Dir);
+      OpenSSL ("x509 -req -in " & Dir & "/.request.csr"
+               & " -CA " & Root & "/public/identity_ca.cert.pem"
+               & " -CAkey " & Root & "/private/identity_ca.key.pem"
+               & " -set_serial " & Serial
+               & " -days 3650 -sha256 -out " & Dir & "/cert.pem", Dir);
+      Dirs.Delete_File (Dir & "/.request.cnf");
+      Dirs.Delete_File (Dir & "/.request.csr");
+      Link (Back & "../public/identity_ca.cert.pem", Dir & "/identity_ca.cert.pem");
+      Link (Back & "../public/permissions_ca.cert.pem", Dir & "/permissions_ca.cert.pem");
+      Link (Back & "governance.p7s", Dir & "/governance.p7s");
       Create_Permission (Keystore, Enclave, Default_Rules);
    end Create_Enclave;
 
@@ -392,20 +395,15 @@ package body RCL.Security.Keystores is
    end Permissions_Document;
 
    procedure Create_Permission (Keystore, Enclave : String; Rules : Topic_Rules) is
+      Root : constant String := Checked_Root (Keystore, Enclave);
+      Dir  : constant String := Enclave_Directory (Root, Enclave);
    begin
-      Check_Enclave_Name (Enclave);
-      Check_Keystore (Keystore);
-      declare
-         Root : constant String := Absolute (Keystore);
-         Dir  : constant String := Enclave_Directory (Root, Enclave);
-      begin
-         if not Dirs.Exists (Dir & "/cert.pem") then
-            raise ROS_Exception with "security: no enclave """ & Enclave & """ in " & Keystore
-              & " (make it with create_enclave)";
-         end if;
-         Write_File (Dir & "/permissions.xml", Permissions_Document (Enclave, Rules));
-         Sign (Root, Dir & "/permissions.xml", Dir & "/permissions.p7s");
-      end;
+      if not Dirs.Exists (Dir & "/cert.pem") then
+         raise ROS_Exception with "security: no enclave """ & Enclave & """ in " & Keystore
+           & " (make it with create_enclave)";
+      end if;
+      Write_File (Dir & "/permissions.xml", Permissions_Document (Enclave, Rules));
+      Sign (Root, Dir & "/permissions.xml", Dir & "/permissions.p7s");
    end Create_Permission;
 
    -------------------

@@ -590,45 +590,50 @@ package body ROSIDL.Interfaces is
    ---------------------------------------------------------------------------
    --  Listings
 
+   --  Names, in order.
+   function To_Vector (Names : Name_Sets.Set) return String_Vectors.Vector is
+   begin
+      return Result : String_Vectors.Vector do
+         for N of Names loop
+            Result.Append (N);
+         end loop;
+      end return;
+   end To_Vector;
+
    function Packages return String_Vectors.Vector is
       use Ada.Directories;
       Names : Name_Sets.Set;
-      Result : String_Vectors.Vector;
+
+      procedure Take (E : Directory_Entry_Type) is
+         Name : constant String := Simple_Name (E);
+         Full : constant String := Full_Name (E);
+      begin
+         if ROSIDL.Parser.Is_Valid_Package_Name (Name)
+           and then (Is_Folder (Full & "/msg") or else Is_Folder (Full & "/srv")
+                     or else Is_Folder (Full & "/action"))
+         then
+            Names.Include (Name);
+         end if;
+      end Take;
    begin
       for Folder of Search_Path loop
-         declare
-            S : Search_Type;
-            E : Directory_Entry_Type;
-         begin
-            Start_Search (S, Folder, "", [Directory => True, others => False]);
-            while More_Entries (S) loop
-               Get_Next_Entry (S, E);
-               declare
-                  Name : constant String := Simple_Name (E);
-                  Full : constant String := Full_Name (E);
-               begin
-                  if ROSIDL.Parser.Is_Valid_Package_Name (Name)
-                    and then (Is_Folder (Full & "/msg") or else Is_Folder (Full & "/srv")
-                              or else Is_Folder (Full & "/action"))
-                  then
-                     Names.Include (Name);
-                  end if;
-               end;
-            end loop;
-            End_Search (S);
-         end;
+         Search (Folder, "", [Directory => True, others => False], Take'Access);
       end loop;
-      for N of Names loop
-         Result.Append (N);
-      end loop;
-      return Result;
+      return To_Vector (Names);
    end Packages;
 
    function Listing (Package_Name, Kind : String) return String_Vectors.Vector is
       use Ada.Directories;
       Folder : constant String := Package_Folder (Package_Name);
       Names  : Name_Sets.Set;
-      Result : String_Vectors.Vector;
+
+      procedure Take (E : Directory_Entry_Type) is
+         Name : constant String := Base_Name (Simple_Name (E));
+      begin
+         if ROSIDL.Parser.Is_Valid_Type_Name (Name) then
+            Names.Include (Name);
+         end if;
+      end Take;
    begin
       if Folder = "" then
          raise Unknown_Type with
@@ -636,29 +641,10 @@ package body ROSIDL.Interfaces is
            & Path_Image;
       end if;
       if Is_Folder (Folder & "/" & Kind) then
-         declare
-            S : Search_Type;
-            E : Directory_Entry_Type;
-         begin
-            Start_Search (S, Folder & "/" & Kind, "*." & Kind,
-                          [Ordinary_File => True, others => False]);
-            while More_Entries (S) loop
-               Get_Next_Entry (S, E);
-               declare
-                  Name : constant String := Base_Name (Simple_Name (E));
-               begin
-                  if ROSIDL.Parser.Is_Valid_Type_Name (Name) then
-                     Names.Include (Name);
-                  end if;
-               end;
-            end loop;
-            End_Search (S);
-         end;
+         Search (Folder & "/" & Kind, "*." & Kind, [Ordinary_File => True, others => False],
+                 Take'Access);
       end if;
-      for N of Names loop
-         Result.Append (N);
-      end loop;
-      return Result;
+      return To_Vector (Names);
    end Listing;
 
    function Messages (Package_Name : String) return String_Vectors.Vector is

@@ -2,20 +2,20 @@
 --  interface definitions, the graph, event watches, recorders, typed
 --  clients): Seize waits until the mutex is free. Not reentrant; not
 --  released by itself when the holder raises (callers release in their
---  exception handlers).
+--  exception handlers). It is GNAT's binary semaphore, free at first.
 --
 --  Example:
 --     Lock : Mutex;
 --     ...
 --     Lock.Seize;
 --     Lock.Release;
+with GNAT.Semaphores;
+with System;
+
 package ROSIDL.Mutexes is
 
-   protected type Mutex is
-      entry Seize;
-      procedure Release;
-   private
-      Busy : Boolean := False;
-   end Mutex;
+   subtype Mutex is GNAT.Semaphores.Binary_Semaphore
+     (Initially_Available => True, Ceiling => System.Priority'Last);
+   --  The ceiling of a protected object without a Priority pragma.
 
 end ROSIDL.Mutexes;

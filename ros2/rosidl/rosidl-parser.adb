@@ -379,85 +379,83 @@ package body ROSIDL.Parser is
       return L'Last;
    end Content_End;
 
+   type Token (Length : Natural) is record
+      Text   : String (1 .. Length);
+      Column : Positive;
+   end record;
+   --  A word of a definition line and the column where it starts (for the
+   --  messages); an empty one stands where a word is missing.
+
    procedure Add_Constant
-     (C          : Context;
-      Def        : in out Message_Definition;
-      Line       : Positive;
-      Type_Token : String;
-      Type_Col   : Positive;
-      Name       : String;
-      Name_Col   : Positive;
-      Value      : String;
-      Value_Col  : Positive)
-   --  "<type> <NAME>=<value>"; Value is trimmed ("" when missing).
+     (C                       : Context;
+      Def                     : in out Message_Definition;
+      Line                    : Positive;
+      Type_Token, Name, Value : Token)
+   --  "<type> <NAME>=<value>"; Value is trimmed (empty when missing).
    is
       File : constant String := To_String (C.File);
-      T    : constant Field_Type := Parse_Type (C, Type_Token, Line, Type_Col);
+      T    : constant Field_Type := Parse_Type (C, Type_Token.Text, Line, Type_Token.Column);
    begin
       if T.Kind = Message_Kind or else T.Collection /= Single or else T.String_Bound /= 0 then
-         Fail (File, Line, Type_Col, "a primitive, string or wstring type for a constant",
-               Quote (Type_Token));
-      elsif Name'Length = 0 then
-         Fail (File, Line, Name_Col, "a constant name before '='", "'='");
-      elsif not Is_Valid_Constant_Name (Name) then
-         Fail (File, Line, Name_Col,
-               "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')", Quote (Name));
+         Fail (File, Line, Type_Token.Column,
+               "a primitive, string or wstring type for a constant", Quote (Type_Token.Text));
+      elsif Name.Length = 0 then
+         Fail (File, Line, Name.Column, "a constant name before '='", "'='");
+      elsif not Is_Valid_Constant_Name (Name.Text) then
+         Fail (File, Line, Name.Column,
+               "a constant name ([A-Z][A-Z0-9_]*, no '__' or trailing '_')", Quote (Name.Text));
       end if;
       for K of Def.Constants loop
-         if K.Name = Name then
-            Fail (File, Line, Name_Col, "a new constant name",
-                  Quote (Name) & " (already defined at line" & K.Position.Line'Image & ")");
+         if K.Name = Name.Text then
+            Fail (File, Line, Name.Column, "a new constant name",
+                  Quote (Name.Text) & " (already defined at line" & K.Position.Line'Image & ")");
          end if;
       end loop;
-      if Value'Length = 0 then
-         Fail (File, Line, Value_Col, "a constant value after '='", "end of line");
+      if Value.Length = 0 then
+         Fail (File, Line, Value.Column, "a constant value after '='", "end of line");
       end if;
       declare
-         R : constant Check_Result := Check_Scalar (T.Kind, 0, Value);
+         R : constant Check_Result := Check_Scalar (T.Kind, 0, Value.Text);
       begin
          if not R.OK then
-            Fail (File, Line, Value_Col, To_String (R.Expected), Quote (Value));
+            Fail (File, Line, Value.Column, To_String (R.Expected), Quote (Value.Text));
          end if;
          Def.Constants.Append
-           (Constant_Definition'(Name     => To_Unbounded_String (Name),
+           (Constant_Definition'(Name     => To_Unbounded_String (Name.Text),
                                  Kind     => T.Kind,
                                  Value    => R.Value,
-                                 Position => (C.File, Line, Name_Col)));
+                                 Position => (C.File, Line, Name.Column)));
       end;
    end Add_Constant;
 
    procedure Add_Field
-     (C          : Context;
-      Def        : in out Message_Definition;
-      Line       : Positive;
-      Type_Token : String;
-      Type_Col   : Positive;
-      Name       : String;
-      Name_Col   : Positive;
-      Value      : String;
-      Value_Col  : Positive)
-   --  "<type> <name> [<default>]"; Value is trimmed ("" when there is none).
+     (C                       : Context;
+      Def                     : in out Message_Definition;
+      Line                    : Positive;
+      Type_Token, Name, Value : Token)
+   --  "<type> <name> [<default>]"; Value is trimmed (empty when there is none).
    is
       File : constant String := To_String (C.File);
       F    : Field;
    begin
-      F.Of_Type := Parse_Type (C, Type_Token, Line, Type_Col);
-      if not Is_Valid_Field_Name (Name) then
-         Fail (File, Line, Name_Col,
-               "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')", Quote (Name));
-      elsif Is_Reserved_Name (Name) then
-         Fail (File, Line, Name_Col, "a field name that is not a reserved word", Quote (Name));
+      F.Of_Type := Parse_Type (C, Type_Token.Text, Line, Type_Token.Column);
+      if not Is_Valid_Field_Name (Name.Text) then
+         Fail (File, Line, Name.Column,
+               "a field name ([a-z][a-z0-9_]*, no '__' or trailing '_')", Quote (Name.Text));
+      elsif Is_Reserved_Name (Name.Text) then
+         Fail (File, Line, Name.Column, "a field name that is not a reserved word",
+               Quote (Name.Text));
       end if;
       for G of Def.Fields loop
-         if G.Name = Name then
-            Fail (File, Line, Name_Col, "a new field name",
-                  Quote (Name) & " (already defined at line" & G.Position.Line'Image & ")");
+         if G.Name = Name.Text then
+            Fail (File, Line, Name.Column, "a new field name",
+                  Quote (Name.Text) & " (already defined at line" & G.Position.Line'Image & ")");
          end if;
       end loop;
-      F.Name := To_Unbounded_String (Name);
-      F.Position := (C.File, Line, Name_Col);
-      if Value'Length > 0 then
-         Check_Default (C, F.Of_Type, Value, Line, Value_Col, F.Default);
+      F.Name := To_Unbounded_String (Name.Text);
+      F.Position := (C.File, Line, Name.Column);
+      if Value.Length > 0 then
+         Check_Default (C, F.Of_Type, Value.Text, Line, Value.Column, F.Default);
       end if;
       Def.Fields.Append (F);
    end Add_Field;
@@ -477,6 +475,11 @@ package body ROSIDL.Parser is
       N    : constant Positive := Line.Number;
 
       function Col (J : Positive) return Positive is (J - Full'First + 1);
+
+      function Word (First : Positive; Last : Natural) return Token is
+        ((Length => Natural'Max (0, Last - First + 1), Text => L (First .. Last),
+          Column => Col (First)));
+      --  The word L (First .. Last) (empty when Last < First).
 
       procedure Skip_Blanks is
       begin
@@ -522,13 +525,11 @@ package body ROSIDL.Parser is
       if I <= Last and then L (I) = '=' then
          I := I + 1;
          Skip_Blanks;
-         Add_Constant
-           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
-            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+         Add_Constant (C, Def, N, Word (Type_First, Type_Last), Word (Name_First, Name_Last),
+                       Word (I, Last));
       else
-         Add_Field
-           (C, Def, N, L (Type_First .. Type_Last), Col (Type_First),
-            L (Name_First .. Name_Last), Col (Name_First), L (I .. Last), Col (I));
+         Add_Field (C, Def, N, Word (Type_First, Type_Last), Word (Name_First, Name_Last),
+                    Word (I, Last));
       end if;
    end Parse_Line;
 
@@ -587,6 +588,18 @@ package body ROSIDL.Parser is
          return null;
    end Search_Path_Resolver;
 
+   function Parse_Part
+     (Whole  : Context;
+      Suffix : String;
+      Lines  : Line_Vectors.Vector;
+      From   : Positive;
+      To     : Natural) return Message_Access
+   is
+     (new Message_Definition'
+        (Parse_Section ((Whole with delta Name => Whole.Name & Suffix), Lines, From, To)));
+   --  Lines From .. To of a service or an action (Whole) parsed as its
+   --  message NAME & Suffix ("_Request", "_Goal", ...).
+
    function Parse_Message
      (Package_Name, Name, Text : String;
       File    : String := "";
@@ -616,15 +629,10 @@ package body ROSIDL.Parser is
       Lines : constant Line_Vectors.Vector := Split_Lines (Text);
       Separator : Natural := 0;
 
-      function Part (Suffix : String; From : Positive; To : Natural) return Message_Access is
-        (new Message_Definition'
-           (Parse_Section
-              ((File => To_Unbounded_String (File_Name),
-                Package_Name => To_Unbounded_String (Package_Name),
-                Name => To_Unbounded_String (Name & Suffix),
-                Namespace => Srv, Resolve => Resolve),
-               Lines, From, To)));
-
+      Whole : constant Context :=
+        (File => To_Unbounded_String (File_Name),
+         Package_Name => To_Unbounded_String (Package_Name),
+         Name => To_Unbounded_String (Name), Namespace => Srv, Resolve => Resolve);
    begin
       Check_Names (Package_Name, Name, File_Name);
       for I in 1 .. Lines.Last_Index loop
@@ -644,9 +652,10 @@ package body ROSIDL.Parser is
                "end of file");
       end if;
       declare
-         Request  : constant Message_Access := Part ("_Request", 1, Separator - 1);
+         Request  : constant Message_Access :=
+           Parse_Part (Whole, "_Request", Lines, 1, Separator - 1);
          Response : constant Message_Access :=
-           Part ("_Response", Separator + 1, Lines.Last_Index);
+           Parse_Part (Whole, "_Response", Lines, Separator + 1, Lines.Last_Index);
       begin
          return new Service_Definition'
            (Package_Name => To_Unbounded_String (Package_Name),
@@ -669,14 +678,10 @@ package body ROSIDL.Parser is
       Count : Natural := 0;
       Origin : constant Source_Position := (To_Unbounded_String (File_Name), 1, 1);
 
-      function Part (Suffix : String; From : Positive; To : Natural) return Message_Access is
-        (new Message_Definition'
-           (Parse_Section
-              ((File => To_Unbounded_String (File_Name),
-                Package_Name => To_Unbounded_String (Package_Name),
-                Name => To_Unbounded_String (Name & Suffix),
-                Namespace => Action, Resolve => Resolve),
-               Lines, From, To)));
+      Whole : constant Context :=
+        (File => To_Unbounded_String (File_Name),
+         Package_Name => To_Unbounded_String (Package_Name),
+         Name => To_Unbounded_String (Name), Namespace => Action, Resolve => Resolve);
 
       function Needed (Pkg, Type_Name : String) return Message_Access is
          M : constant Message_Access := Resolve (Pkg, Type_Name, Origin);
@@ -732,11 +737,12 @@ package body ROSIDL.Parser is
                (if Count = 0 then "none" else "one") & " before the end of file");
       end if;
       declare
-         Goal     : constant Message_Access := Part ("_Goal", 1, Separators (1) - 1);
+         Goal     : constant Message_Access :=
+           Parse_Part (Whole, "_Goal", Lines, 1, Separators (1) - 1);
          Result   : constant Message_Access :=
-           Part ("_Result", Separators (1) + 1, Separators (2) - 1);
+           Parse_Part (Whole, "_Result", Lines, Separators (1) + 1, Separators (2) - 1);
          Feedback : constant Message_Access :=
-           Part ("_Feedback", Separators (2) + 1, Lines.Last_Index);
+           Parse_Part (Whole, "_Feedback", Lines, Separators (2) + 1, Lines.Last_Index);
          UUID     : constant Message_Access := Needed ("unique_identifier_msgs", "UUID");
          Time     : constant Message_Access := Needed ("builtin_interfaces", "Time");
          Goal_Id  : constant Field := Nested ("goal_id", UUID);

@@ -172,8 +172,9 @@ package body Sancta.Standard_Components.Localization is
    begin
       This.Start_Pose := (Real_Option (This, "x"), Real_Option (This, "y"),
                           Real_Option (This, "yaw"));
-      This.Filter.Initialize (This.Start_Pose, Real_Option (This, "variance"),
-                              Real_Option (This, "odometry_noise"));
+      This.Filter.Initialize
+        (This.Start_Pose, Real_Option (This, "variance"),
+         Config => (Odometry_Noise => Real_Option (This, "odometry_noise"), others => <>));
       This.Subscribe ("odometry");
       This.Subscribe ("gps");
    end Start;

@@ -411,9 +411,7 @@ package body Sancta.Standard_Components.ROS2 is
    begin
       This.Stopping := True;
       if This.Worker /= null then
-         while not This.Worker'Terminated loop
-            delay 0.01;
-         end loop;
+         Tasks.Await_Termination (This.Worker'Identity);
       end if;
    end Stop;
 

@@ -3,6 +3,7 @@ with Ada.Real_Time;
 with RCL.Clocks;
 with RCL.Nodes;
 with Sancta.Logging;
+with Sancta.Runtime.Tasks;
 
 package body Sancta.Standard_Components.ROS_Clocks is
 
@@ -58,9 +59,7 @@ package body Sancta.Standard_Components.ROS_Clocks is
    begin
       This.Stopping := True;
       if This.Worker /= null then
-         while not This.Worker'Terminated loop
-            delay 0.01;
-         end loop;
+         Runtime.Tasks.Await_Termination (This.Worker'Identity);
          This.Worker := null;
       end if;
    end Stop;

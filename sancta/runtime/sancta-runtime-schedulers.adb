@@ -216,9 +216,7 @@ package body Sancta.Runtime.Schedulers is
    begin
       This.Calls.Request_Stop;
       if This.Worker /= null then
-         while not This.Worker'Terminated loop
-            delay 0.01;
-         end loop;
+         Tasks.Await_Termination (This.Worker'Identity);
       end if;
    end Stop;
 

@@ -88,4 +88,11 @@ package body Sancta.Runtime.Tasks is
 
    function Abnormal_Ends return Natural is (Monitor.Count);
 
+   procedure Await_Termination (Id : Ada.Task_Identification.Task_Id) is
+   begin
+      while not Ada.Task_Identification.Is_Terminated (Id) loop
+         delay 0.01;
+      end loop;
+   end Await_Termination;
+
 end Sancta.Runtime.Tasks;

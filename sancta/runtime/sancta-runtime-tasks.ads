@@ -21,4 +21,9 @@ package Sancta.Runtime.Tasks is
    function Abnormal_Ends return Natural;
    --  How many watched tasks ended abnormally or by an exception so far.
 
+   procedure Await_Termination (Id : Ada.Task_Identification.Task_Id);
+   --  Returns once task Id has terminated (checked every 10 ms): how a
+   --  component's Stop waits for the worker task it has told to stop.
+   --  Example: This.Stopping := True; Await_Termination (This.Worker'Identity);
+
 end Sancta.Runtime.Tasks;

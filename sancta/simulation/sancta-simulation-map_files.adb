@@ -14,6 +14,16 @@ package body Sancta.Simulation.Map_Files is
    type Grid_Access is access Grid;
    procedure Free is new Ada.Unchecked_Deallocation (Grid, Grid_Access);
 
+   function Into_World (G : in out Grid_Access) return Worlds.World;
+   --  The world of grid G; frees G.
+
+   function Into_World (G : in out Grid_Access) return Worlds.World is
+   begin
+      return Result : constant Worlds.World := Worlds.Create (G.all) do
+         Free (G);
+      end return;
+   end Into_World;
+
    function Trim (S : String) return String is
      (Ada.Strings.Fixed.Trim (S, Ada.Strings.Both));
 
@@ -24,17 +34,6 @@ package body Sancta.Simulation.Map_Files is
    begin
       raise Format_Error with File & ":" & Img (Line) & ": " & Reason;
    end Fail;
-
-   procedure Open_Text (F : in out Ada.Text_IO.File_Type; File_Name : String);
-   --  Opens File_Name for reading; Format_Error "FILE: cannot be opened".
-
-   procedure Open_Text (F : in out Ada.Text_IO.File_Type; File_Name : String) is
-   begin
-      Ada.Text_IO.Open (F, Ada.Text_IO.In_File, File_Name);
-   exception
-      when others =>
-         raise Format_Error with File_Name & ": cannot be opened";
-   end Open_Text;
 
    function Without_Comment (S : String) return String is
       In_Quote : Character := ' ';
@@ -82,118 +81,136 @@ package body Sancta.Simulation.Map_Files is
          Fail (File, Line, "expected " & What & " (a number), found """ & Trim (S) & """");
    end To_Real;
 
+   generic
+      with procedure Read_Line (Line : String; Line_No : Positive);
+   procedure Read_Lines (File_Name : String; Last_Line : out Natural);
+   --  Passes each line of File_Name, without its comment and trimmed, to
+   --  Read_Line; Last_Line is the number of lines. The file is closed also
+   --  when Read_Line raises. Format_Error "FILE: cannot be opened".
+
+   procedure Read_Lines (File_Name : String; Last_Line : out Natural) is
+      use Ada.Text_IO;
+      F : File_Type;
+   begin
+      begin
+         Open (F, In_File, File_Name);
+      exception
+         when others =>
+            raise Format_Error with File_Name & ": cannot be opened";
+      end;
+      Last_Line := 0;
+      while not End_Of_File (F) loop
+         Last_Line := Last_Line + 1;
+         Read_Line (Trim (Without_Comment (Get_Line (F))), Last_Line);
+      end loop;
+      Close (F);
+   exception
+      when others =>
+         if Is_Open (F) then
+            Close (F);
+         end if;
+         raise;
+   end Read_Lines;
+
    ---------------
    -- Read_YAML --
    ---------------
 
    function Read_YAML (File_Name : String) return Map_Info is
-      use Ada.Text_IO;
-      F          : File_Type;
-      Line_No    : Natural := 0;
+      Last_Line  : Natural;
       Result     : Map_Info;
       Have_Image, Have_Resolution, Have_Origin : Boolean := False;
-   begin
-      Open_Text (F, File_Name);
-      while not End_Of_File (F) loop
-         declare
-            Line : constant String := Trim (Without_Comment (Get_Line (F)));
-            Colon : Natural;
-         begin
-            Line_No := Line_No + 1;
-            if Line /= "" and then Line /= "---" then
-               Colon := Ada.Strings.Fixed.Index (Line, ":");
-               if Colon = 0 then
-                  Close (F);
-                  Fail (File_Name, Line_No, "expected ""key: value"", found """ & Line & """");
-               end if;
-               declare
-                  Key   : constant String :=
-                    Ada.Characters.Handling.To_Lower (Trim (Line (Line'First .. Colon - 1)));
-                  Raw   : constant String := Trim (Line (Colon + 1 .. Line'Last));
-                  Value : constant String :=
-                    (if Raw'Length >= 2 and then Raw (Raw'First) in '"' | '''
-                       and then Raw (Raw'Last) = Raw (Raw'First)
-                     then Raw (Raw'First + 1 .. Raw'Last - 1) else Raw);
-               begin
-                  if Key = "image" then
-                     if Value = "" then
-                        Close (F);
-                        Fail (File_Name, Line_No, "image: expected a file name");
-                     end if;
-                     Result.Image := To_Unbounded_String (Value);
-                     Have_Image := True;
-                  elsif Key = "resolution" then
-                     Result.Resolution := To_Real (File_Name, Line_No, "resolution", Value);
-                     if Result.Resolution <= 0.0 then
-                        Close (F);
-                        Fail (File_Name, Line_No, "resolution must be positive");
-                     end if;
-                     Have_Resolution := True;
-                  elsif Key = "origin" then
-                     if Value'Length < 2 or else Value (Value'First) /= '['
-                       or else Value (Value'Last) /= ']'
-                     then
-                        Close (F);
-                        Fail (File_Name, Line_No, "origin: expected [x, y, yaw], found """
-                              & Value & """");
-                     end if;
-                     declare
-                        Inner : constant String := Value (Value'First + 1 .. Value'Last - 1);
-                        C1    : constant Natural := Ada.Strings.Fixed.Index (Inner, ",");
-                        C2    : constant Natural :=
-                          (if C1 = 0 then 0
-                           else Ada.Strings.Fixed.Index (Inner (C1 + 1 .. Inner'Last), ","));
-                     begin
-                        if C1 = 0 or else C2 = 0 then
-                           Close (F);
-                           Fail (File_Name, Line_No, "origin: expected three numbers [x, y, yaw]");
-                        end if;
-                        Result.Origin :=
-                          (To_Real (File_Name, Line_No, "origin x",
-                                    Inner (Inner'First .. C1 - 1)),
-                           To_Real (File_Name, Line_No, "origin y",
-                                    Inner (C1 + 1 .. C2 - 1)),
-                           To_Real (File_Name, Line_No, "origin yaw",
-                                    Inner (C2 + 1 .. Inner'Last)));
-                        if Result.Origin.Yaw /= 0.0 then
-                           Close (F);
-                           Fail (File_Name, Line_No, "origin: a rotated map (yaw /= 0) is not"
-                                 & " supported");
-                        end if;
-                     end;
-                     Have_Origin := True;
-                  elsif Key = "negate" then
-                     if Value in "0" | "false" | "False" then
-                        Result.Negate := False;
-                     elsif Value in "1" | "true" | "True" then
-                        Result.Negate := True;
-                     else
-                        Close (F);
-                        Fail (File_Name, Line_No, "negate: expected 0 or 1, found """
-                              & Value & """");
-                     end if;
-                  elsif Key = "occupied_thresh" then
-                     Result.Occupied_Thresh :=
-                       To_Real (File_Name, Line_No, "occupied_thresh", Value);
-                  elsif Key = "free_thresh" then
-                     Result.Free_Thresh := To_Real (File_Name, Line_No, "free_thresh", Value);
-                  elsif Key = "mode" then
-                     if Value not in "trinary" | "scale" then
-                        Close (F);
-                        Fail (File_Name, Line_No, "mode: only trinary and scale are supported,"
-                              & " found """ & Value & """");
-                     end if;
-                  else
-                     Close (F);
-                     Fail (File_Name, Line_No, "unknown key """ & Key & """");
-                  end if;
-               end;
+
+      procedure Read_Entry (Line : String; Line_No : Positive) is
+         Colon : Natural;
+      begin
+         if Line /= "" and then Line /= "---" then
+            Colon := Ada.Strings.Fixed.Index (Line, ":");
+            if Colon = 0 then
+               Fail (File_Name, Line_No, "expected ""key: value"", found """ & Line & """");
             end if;
-         end;
-      end loop;
-      Close (F);
+            declare
+               Key   : constant String :=
+                 Ada.Characters.Handling.To_Lower (Trim (Line (Line'First .. Colon - 1)));
+               Raw   : constant String := Trim (Line (Colon + 1 .. Line'Last));
+               Value : constant String :=
+                 (if Raw'Length >= 2 and then Raw (Raw'First) in '"' | '''
+                    and then Raw (Raw'Last) = Raw (Raw'First)
+                  then Raw (Raw'First + 1 .. Raw'Last - 1) else Raw);
+            begin
+               if Key = "image" then
+                  if Value = "" then
+                     Fail (File_Name, Line_No, "image: expected a file name");
+                  end if;
+                  Result.Image := To_Unbounded_String (Value);
+                  Have_Image := True;
+               elsif Key = "resolution" then
+                  Result.Resolution := To_Real (File_Name, Line_No, "resolution", Value);
+                  if Result.Resolution <= 0.0 then
+                     Fail (File_Name, Line_No, "resolution must be positive");
+                  end if;
+                  Have_Resolution := True;
+               elsif Key = "origin" then
+                  if Value'Length < 2 or else Value (Value'First) /= '['
+                    or else Value (Value'Last) /= ']'
+                  then
+                     Fail (File_Name, Line_No, "origin: expected [x, y, yaw], found """
+                           & Value & """");
+                  end if;
+                  declare
+                     Inner : constant String := Value (Value'First + 1 .. Value'Last - 1);
+                     C1    : constant Natural := Ada.Strings.Fixed.Index (Inner, ",");
+                     C2    : constant Natural :=
+                       (if C1 = 0 then 0
+                        else Ada.Strings.Fixed.Index (Inner (C1 + 1 .. Inner'Last), ","));
+                  begin
+                     if C1 = 0 or else C2 = 0 then
+                        Fail (File_Name, Line_No, "origin: expected three numbers [x, y, yaw]");
+                     end if;
+                     Result.Origin :=
+                       (To_Real (File_Name, Line_No, "origin x",
+                                 Inner (Inner'First .. C1 - 1)),
+                        To_Real (File_Name, Line_No, "origin y",
+                                 Inner (C1 + 1 .. C2 - 1)),
+                        To_Real (File_Name, Line_No, "origin yaw",
+                                 Inner (C2 + 1 .. Inner'Last)));
+                     if Result.Origin.Yaw /= 0.0 then
+                        Fail (File_Name, Line_No, "origin: a rotated map (yaw /= 0) is not"
+                              & " supported");
+                     end if;
+                  end;
+                  Have_Origin := True;
+               elsif Key = "negate" then
+                  if Value in "0" | "false" | "False" then
+                     Result.Negate := False;
+                  elsif Value in "1" | "true" | "True" then
+                     Result.Negate := True;
+                  else
+                     Fail (File_Name, Line_No, "negate: expected 0 or 1, found """
+                           & Value & """");
+                  end if;
+               elsif Key = "occupied_thresh" then
+                  Result.Occupied_Thresh :=
+                    To_Real (File_Name, Line_No, "occupied_thresh", Value);
+               elsif Key = "free_thresh" then
+                  Result.Free_Thresh := To_Real (File_Name, Line_No, "free_thresh", Value);
+               elsif Key = "mode" then
+                  if Value not in "trinary" | "scale" then
+                     Fail (File_Name, Line_No, "mode: only trinary and scale are supported,"
+                           & " found """ & Value & """");
+                  end if;
+               else
+                  Fail (File_Name, Line_No, "unknown key """ & Key & """");
+               end if;
+            end;
+         end if;
+      end Read_Entry;
+
+      procedure Read_Entries is new Read_Lines (Read_Entry);
+   begin
+      Read_Entries (File_Name, Last_Line);
       if not (Have_Image and then Have_Resolution and then Have_Origin) then
-         Fail (File_Name, Line_No + 1, "missing key(s):"
+         Fail (File_Name, Last_Line + 1, "missing key(s):"
                & (if Have_Image then "" else " image")
                & (if Have_Resolution then "" else " resolution")
                & (if Have_Origin then "" else " origin"));
@@ -201,7 +218,7 @@ package body Sancta.Simulation.Map_Files is
       if Result.Free_Thresh > Result.Occupied_Thresh
         or else Result.Occupied_Thresh > 1.0 or else Result.Free_Thresh < 0.0
       then
-         Fail (File_Name, Line_No, "thresholds must satisfy 0 <= free_thresh <="
+         Fail (File_Name, Last_Line, "thresholds must satisfy 0 <= free_thresh <="
                & " occupied_thresh <= 1");
       end if;
       declare
@@ -239,9 +256,7 @@ package body Sancta.Simulation.Map_Files is
             end;
          end loop;
       end loop;
-      return Result : constant Worlds.World := Worlds.Create (G.all) do
-         Free (G);
-      end return;
+      return Into_World (G);
    end To_World;
 
    function Load_Map (File_Name : String) return Worlds.World is
@@ -261,108 +276,98 @@ package body Sancta.Simulation.Map_Files is
       Resolution : out Real;
       Low, High  : out Point) return Segment_Array
    is
-      use Ada.Text_IO;
-      F         : File_Type;
-      Line_No   : Natural := 0;
+      Last_Line : Natural;
       Walls     : Segment_Vectors.Vector;
       Thickness : Real := 0.1;
       Bounded   : Boolean := False;
+
+      procedure Read_Statement (Line : String; Line_No : Positive) is
+         Words : array (1 .. 8) of Unbounded_String;
+         Count : Natural := 0;
+         K     : Natural := Line'First;
+         Start : Natural;
+
+         function N (I : Positive; What : String) return Real is
+           (To_Real (File_Name, Line_No, What, To_String (Words (I))));
+
+         procedure Expect (Low_Count, High_Count : Natural; Form : String) is
+         begin
+            if Count - 1 not in Low_Count .. High_Count then
+               Fail (File_Name, Line_No, "expected """ & Form & """");
+            end if;
+         end Expect;
+      begin
+         while K <= Line'Last loop
+            if Line (K) in ' ' | ASCII.HT then
+               K := K + 1;
+            else
+               Start := K;
+               while K <= Line'Last and then Line (K) not in ' ' | ASCII.HT loop
+                  K := K + 1;
+               end loop;
+               Count := Count + 1;
+               if Count > Words'Last then
+                  Fail (File_Name, Line_No, "too many words");
+               end if;
+               Words (Count) := To_Unbounded_String (Line (Start .. K - 1));
+            end if;
+         end loop;
+         if Count > 0 then
+            declare
+               Key : constant String := To_String (Words (1));
+            begin
+               if Key = "resolution" then
+                  Expect (1, 1, "resolution METRES");
+                  Resolution := N (2, "resolution");
+                  if Resolution <= 0.0 then
+                     Fail (File_Name, Line_No, "resolution must be positive");
+                  end if;
+               elsif Key = "thickness" then
+                  Expect (1, 1, "thickness METRES");
+                  Thickness := N (2, "thickness");
+               elsif Key = "bounds" then
+                  Expect (4, 4, "bounds X0 Y0 X1 Y1");
+                  Low := (N (2, "X0"), N (3, "Y0"));
+                  High := (N (4, "X1"), N (5, "Y1"));
+                  if High.X <= Low.X or else High.Y <= Low.Y then
+                     Fail (File_Name, Line_No, "bounds: X1 > X0 and Y1 > Y0 expected");
+                  end if;
+                  Bounded := True;
+               elsif Key = "wall" or else Key = "box" then
+                  Expect (4, 5, Key & " X1 Y1 X2 Y2 [THICKNESS]");
+                  declare
+                     A : constant Point := (N (2, "X1"), N (3, "Y1"));
+                     B : constant Point := (N (4, "X2"), N (5, "Y2"));
+                     T : constant Real := (if Count = 6 then N (6, "thickness") else Thickness);
+                  begin
+                     if T < 0.0 then
+                        Fail (File_Name, Line_No, "negative thickness");
+                     end if;
+                     if Key = "wall" then
+                        Walls.Append (Segment'(A, B, T));
+                     else
+                        Walls.Append (Segment'((A.X, A.Y), (B.X, A.Y), T));
+                        Walls.Append (Segment'((B.X, A.Y), (B.X, B.Y), T));
+                        Walls.Append (Segment'((B.X, B.Y), (A.X, B.Y), T));
+                        Walls.Append (Segment'((A.X, B.Y), (A.X, A.Y), T));
+                     end if;
+                  end;
+               else
+                  Fail (File_Name, Line_No, "expected resolution, thickness, bounds, wall"
+                        & " or box, found """ & Key & """");
+               end if;
+            end;
+         end if;
+      end Read_Statement;
+
+      procedure Read_Statements is new Read_Lines (Read_Statement);
    begin
       Resolution := 0.05;
       Low := (0.0, 0.0);
       High := (0.0, 0.0);
-      Open_Text (F, File_Name);
-      while not End_Of_File (F) loop
-         declare
-            Line  : constant String := Trim (Without_Comment (Get_Line (F)));
-            Words : array (1 .. 8) of Unbounded_String;
-            Count : Natural := 0;
-            K     : Natural := Line'First;
-            Start : Natural;
-
-            function N (I : Positive; What : String) return Real is
-              (To_Real (File_Name, Line_No, What, To_String (Words (I))));
-
-            procedure Expect (Low_Count, High_Count : Natural; Form : String) is
-            begin
-               if Count - 1 not in Low_Count .. High_Count then
-                  Close (F);
-                  Fail (File_Name, Line_No, "expected """ & Form & """");
-               end if;
-            end Expect;
-         begin
-            Line_No := Line_No + 1;
-            while K <= Line'Last loop
-               if Line (K) in ' ' | ASCII.HT then
-                  K := K + 1;
-               else
-                  Start := K;
-                  while K <= Line'Last and then Line (K) not in ' ' | ASCII.HT loop
-                     K := K + 1;
-                  end loop;
-                  Count := Count + 1;
-                  if Count > Words'Last then
-                     Close (F);
-                     Fail (File_Name, Line_No, "too many words");
-                  end if;
-                  Words (Count) := To_Unbounded_String (Line (Start .. K - 1));
-               end if;
-            end loop;
-            if Count > 0 then
-               declare
-                  Key : constant String := To_String (Words (1));
-               begin
-                  if Key = "resolution" then
-                     Expect (1, 1, "resolution METRES");
-                     Resolution := N (2, "resolution");
-                     if Resolution <= 0.0 then
-                        Close (F);
-                        Fail (File_Name, Line_No, "resolution must be positive");
-                     end if;
-                  elsif Key = "thickness" then
-                     Expect (1, 1, "thickness METRES");
-                     Thickness := N (2, "thickness");
-                  elsif Key = "bounds" then
-                     Expect (4, 4, "bounds X0 Y0 X1 Y1");
-                     Low := (N (2, "X0"), N (3, "Y0"));
-                     High := (N (4, "X1"), N (5, "Y1"));
-                     if High.X <= Low.X or else High.Y <= Low.Y then
-                        Close (F);
-                        Fail (File_Name, Line_No, "bounds: X1 > X0 and Y1 > Y0 expected");
-                     end if;
-                     Bounded := True;
-                  elsif Key = "wall" or else Key = "box" then
-                     Expect (4, 5, Key & " X1 Y1 X2 Y2 [THICKNESS]");
-                     declare
-                        A : constant Point := (N (2, "X1"), N (3, "Y1"));
-                        B : constant Point := (N (4, "X2"), N (5, "Y2"));
-                        T : constant Real := (if Count = 6 then N (6, "thickness") else Thickness);
-                     begin
-                        if T < 0.0 then
-                           Close (F);
-                           Fail (File_Name, Line_No, "negative thickness");
-                        end if;
-                        if Key = "wall" then
-                           Walls.Append (Segment'(A, B, T));
-                        else
-                           Walls.Append (Segment'((A.X, A.Y), (B.X, A.Y), T));
-                           Walls.Append (Segment'((B.X, A.Y), (B.X, B.Y), T));
-                           Walls.Append (Segment'((B.X, B.Y), (A.X, B.Y), T));
-                           Walls.Append (Segment'((A.X, B.Y), (A.X, A.Y), T));
-                        end if;
-                     end;
-                  else
-                     Close (F);
-                     Fail (File_Name, Line_No, "expected resolution, thickness, bounds, wall"
-                           & " or box, found """ & Key & """");
-                  end if;
-               end;
-            end if;
-         end;
-      end loop;
-      Close (F);
+      Read_Statements (File_Name, Last_Line);
       if Walls.Is_Empty and then not Bounded then
-         Fail (File_Name, Line_No, "no walls and no bounds");
+         Fail (File_Name, Last_Line, "no walls and no bounds");
       end if;
       if not Bounded then
          Low := (Real'Last, Real'Last);
@@ -380,7 +385,7 @@ package body Sancta.Simulation.Map_Files is
         or else (High.Y - Low.Y) / Resolution > 20_000.0
         or else (High.X - Low.X) * (High.Y - Low.Y) / Resolution ** 2 > 40.0E6
       then
-         Fail (File_Name, Line_No, "world too large for its resolution (over 20000 cells"
+         Fail (File_Name, Last_Line, "world too large for its resolution (over 20000 cells"
                & " a side or 40 million cells)");
       end if;
       return Result : Segment_Array (1 .. Natural (Walls.Length)) do
@@ -405,9 +410,7 @@ package body Sancta.Simulation.Map_Files is
       for S of Walls loop
          Draw (G.all, S);
       end loop;
-      return Result : constant Worlds.World := Worlds.Create (G.all) do
-         Free (G);
-      end return;
+      return Into_World (G);
    end Load_Walls;
 
    function Load_World (File_Name : String) return Worlds.World is

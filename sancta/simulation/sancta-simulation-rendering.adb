@@ -420,6 +420,17 @@ package body Sancta.Simulation.Rendering is
          end loop;
          return To_String (R);
       end Escape;
+
+      procedure Put_Rectangle (Row, First_Column, Last_Column : Integer) is
+      begin
+         Put_Line (Out_File, "<rect x="""
+           & SX (F.Origin.X + Real (First_Column) * F.Resolution)
+           & """ y=""" & SY (F.Origin.Y + Real (Row + 1) * F.Resolution)
+           & """ width=""" & Num (Real (Last_Column - First_Column + 1) * F.Resolution * Scale)
+           & """ height=""" & Num (F.Resolution * Scale) & """/>");
+      end Put_Rectangle;
+
+      procedure Put_Rectangles is new Robot.Grids.For_Each_Occupied_Run (Put_Rectangle);
    begin
       Create (Out_File, Ada.Text_IO.Out_File, File_Name);
       Put_Line (Out_File, "<?xml version=""1.0"" encoding=""UTF-8""?>");
@@ -434,30 +445,7 @@ package body Sancta.Simulation.Rendering is
       end if;
       Put_Line (Out_File, "<g fill=""#323232"">");
       --  Occupied cells, merged into horizontal runs.
-      for J in 0 .. F.Height - 1 loop
-         declare
-            I : Integer := 0;
-         begin
-            while I < F.Width loop
-               if Worlds.Is_Occupied (World, I, J) then
-                  declare
-                     Start : constant Integer := I;
-                  begin
-                     while I < F.Width and then Worlds.Is_Occupied (World, I, J) loop
-                        I := I + 1;
-                     end loop;
-                     Put_Line (Out_File, "<rect x="""
-                       & SX (F.Origin.X + Real (Start) * F.Resolution)
-                       & """ y=""" & SY (F.Origin.Y + Real (J + 1) * F.Resolution)
-                       & """ width=""" & Num (Real (I - Start) * F.Resolution * Scale)
-                       & """ height=""" & Num (F.Resolution * Scale) & """/>");
-                  end;
-               else
-                  I := I + 1;
-               end if;
-            end loop;
-         end;
-      end loop;
+      Put_Rectangles (Worlds.Occupancy (World));
       Put_Line (Out_File, "</g>");
       for R in 1 .. S.Trajectories.Last_Index loop
          Put (Out_File, "<polyline fill=""none"" stroke=""" & Hex (Color_Of (R))

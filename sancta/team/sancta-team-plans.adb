@@ -139,6 +139,32 @@ package body Sancta.Team.Plans is
       return To_String (Result);
    end Encode;
 
+   function Decode_Tour (Item : String; Robot_Id : String) return Step_Vectors.Vector is
+      Eq   : constant Natural := Ada.Strings.Fixed.Index (Item, "=");
+      Tour : Step_Vectors.Vector;
+   begin
+      if Eq = 0 or else Item (Item'First .. Eq - 1) /= Robot_Id then
+         raise Format_Error with "plan tour """ & Item & """ does not fit the round";
+      end if;
+      if Eq < Item'Last then
+         for St of Split (Item (Eq + 1 .. Item'Last), ',') loop
+            declare
+               X   : constant String := To_String (St);
+               Dot : constant Natural :=
+                 Ada.Strings.Fixed.Index (X, ".", Going => Ada.Strings.Backward);
+            begin
+               if Dot = 0 then
+                  raise Format_Error with "plan step """ & X & """";
+               end if;
+               Tour.Append (Step'(To_Unbounded_String (X (X'First .. Dot - 1)),
+                             Positive'Value (X (Dot + 1 .. X'Last))));
+            end;
+         end loop;
+      end if;
+      return Tour;
+   end Decode_Tour;
+   --  "ROBOT=TASK.CHOICE,..." (an encoded tour), the tour of robot Robot_Id.
+
    function Decode (Text : String; S : Snapshot) return Plan is
       Parts  : constant String_Vectors.Vector := Split (Text, '|');
       Result : Plan;
@@ -156,31 +182,7 @@ package body Sancta.Team.Plans is
             raise Format_Error with "plan """ & Text & """: not one tour per robot";
          end if;
          for R in 1 .. Natural (Tours.Length) loop
-            declare
-               Item : constant String := To_String (Tours (R));
-               Eq   : constant Natural := Ada.Strings.Fixed.Index (Item, "=");
-               Tour : Step_Vectors.Vector;
-            begin
-               if Eq = 0 or else Item (Item'First .. Eq - 1) /= To_String (S.Robots (R).Id) then
-                  raise Format_Error with "plan tour """ & Item & """ does not fit the round";
-               end if;
-               if Eq < Item'Last then
-                  for St of Split (Item (Eq + 1 .. Item'Last), ',') loop
-                     declare
-                        X   : constant String := To_String (St);
-                        Dot : constant Natural :=
-                          Ada.Strings.Fixed.Index (X, ".", Going => Ada.Strings.Backward);
-                     begin
-                        if Dot = 0 then
-                           raise Format_Error with "plan step """ & X & """";
-                        end if;
-                        Tour.Append (Step'(To_Unbounded_String (X (X'First .. Dot - 1)),
-                                      Positive'Value (X (Dot + 1 .. X'Last))));
-                     end;
-                  end loop;
-               end if;
-               Result.Tours.Append (Tour);
-            end;
+            Result.Tours.Append (Decode_Tour (To_String (Tours (R)), To_String (S.Robots (R).Id)));
          end loop;
       end;
       return Result;

@@ -591,6 +591,15 @@ package body Sancta.Commands.Team_Demos is
          package Version_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Version);
          Target     : Version_Maps.Map;
 
+         function Newer (A, B : Version) return Boolean is
+           (A.Revision > B.Revision
+            or else (A.Revision = B.Revision and then A.Writer > B.Writer));
+         --  The order of the replicated databases: by revision, then writer.
+
+         function Version_Of
+           (Db : Replicated_Databases.Team_Database_Access; Key : String) return Version is
+           ((Db.Revision (Key), To_Unbounded_String (Db.Writer (Key))));
+
          function Observer return Agents.Agent_Access is
          begin
             for R in 1 .. N loop
@@ -658,19 +667,9 @@ package body Sancta.Commands.Team_Demos is
             procedure Take (Db : Replicated_Databases.Team_Database_Access) is
             begin
                for K of Db.Keys loop
-                  declare
-                     V : constant Version :=
-                       (Db.Revision (K), To_Unbounded_String (Db.Writer (K)));
-                  begin
-                     if not Target.Contains (K) then
-                        Target.Insert (K, V);
-                     elsif V.Revision > Target (K).Revision
-                       or else (V.Revision = Target (K).Revision
-                                and then V.Writer > Target (K).Writer)
-                     then
-                        Target.Replace (K, V);
-                     end if;
-                  end;
+                  if not Target.Contains (K) or else Newer (Version_Of (Db, K), Target (K)) then
+                     Target.Include (K, Version_Of (Db, K));
+                  end if;
                end loop;
             end Take;
          begin
@@ -685,32 +684,13 @@ package body Sancta.Commands.Team_Demos is
 
          function Caught_Up return Boolean is
             function Holds (Db : Replicated_Databases.Team_Database_Access) return Boolean is
-            begin
-               for C in Target.Iterate loop
-                  declare
-                     K : constant String := Version_Maps.Key (C);
-                     V : constant Version := Version_Maps.Element (C);
-                     Rev : constant Long_Long_Integer := Db.Revision (K);
-                  begin
-                     if Rev < V.Revision
-                       or else (Rev = V.Revision and then Db.Writer (K) < To_String (V.Writer))
-                     then
-                        return False;
-                     end if;
-                  end;
-               end loop;
-               return True;
-            end Holds;
+              (for all C in Target.Iterate =>
+                 not Newer (Version_Maps.Element (C), Version_Of (Db, Version_Maps.Key (C))));
+            --  Db has every key of Target at its version or newer.
          begin
-            if not Holds (Operator.Database) then
-               return False;
-            end if;
-            for R in 1 .. N loop
-               if Alive (R) and then not Holds (Agent_List (R).Database) then
-                  return False;
-               end if;
-            end loop;
-            return True;
+            return Holds (Operator.Database)
+              and then (for all R in 1 .. N =>
+                          not Alive (R) or else Holds (Agent_List (R).Database));
          end Caught_Up;
 
          procedure Partition_Step is

@@ -147,31 +147,19 @@ package body Sancta.Views.Drawing is
       declare
          Cr : constant Cairo_Context := Create (Map_Surface);
          H  : constant Integer := Sancta.Robot.Grids.Height (G.all);
+
+         procedure Add_Rectangle (Row, First_Column, Last_Column : Integer) is
+         begin
+            Rectangle (Cr, Gdouble (First_Column), Gdouble (H - 1 - Row),
+                       Gdouble (Last_Column - First_Column + 1), 1.0);
+         end Add_Rectangle;
+
+         procedure Add_Rectangles is new Sancta.Robot.Grids.For_Each_Occupied_Run (Add_Rectangle);
       begin
          Set_Source_Rgb (Cr, 1.0, 1.0, 1.0);
          Paint (Cr);
          Set_Source_Rgb (Cr, 0.22, 0.22, 0.25);
-         for J in 0 .. G.Last_Row loop
-            declare
-               I : Integer := 0;
-            begin
-               while I <= G.Last_Column loop
-                  if G.Occupied (I, J) then
-                     declare
-                        First : constant Integer := I;
-                     begin
-                        while I <= G.Last_Column and then G.Occupied (I, J) loop
-                           I := I + 1;
-                        end loop;
-                        Rectangle (Cr, Gdouble (First), Gdouble (H - 1 - J),
-                                   Gdouble (I - First), 1.0);
-                     end;
-                  else
-                     I := I + 1;
-                  end if;
-               end loop;
-            end;
-         end loop;
+         Add_Rectangles (G.all);
          Fill (Cr);
          Destroy (Cr);
       end;

@@ -202,6 +202,16 @@ package body RCL.DDS is
       end if;
    end Delete;
 
+   --  Deletes what a reader or a writer owns: its entity, its topic, its names.
+   procedure Delete_Endpoint
+     (Handle, Topic : in out Entity_Id; Topic_Name, Type_Name : in out Name_Access) is
+   begin
+      Delete (Handle);
+      Delete (Topic);
+      Free (Topic_Name);
+      Free (Type_Name);
+   end Delete_Endpoint;
+
    -----------------
    -- Participant --
    -----------------
@@ -482,10 +492,7 @@ package body RCL.DDS is
 
    overriding procedure Finalize (This : in out Writer) is
    begin
-      Delete (This.Handle);
-      Delete (This.Topic);
-      Free (This.Topic_Name);
-      Free (This.Type_Name);
+      Delete_Endpoint (This.Handle, This.Topic, This.Topic_Name, This.Type_Name);
    exception
       when others =>
          null;
@@ -703,10 +710,7 @@ package body RCL.DDS is
          This.Liveliness := System.Null_Address;
       end if;
       Delete (This.Condition);
-      Delete (This.Handle);
-      Delete (This.Topic);
-      Free (This.Topic_Name);
-      Free (This.Type_Name);
+      Delete_Endpoint (This.Handle, This.Topic, This.Topic_Name, This.Type_Name);
    exception
       when others =>
          null;

@@ -53,11 +53,10 @@ package body RCL.MCAP.Compression is
    -- Bound --
    -----------
 
-   function Bound (Kind : Compression_Kind; Size : Ada.Streams.Stream_Element_Offset)
+   function Bound (Kind : Compressing_Kind; Size : Ada.Streams.Stream_Element_Offset)
                    return Ada.Streams.Stream_Element_Offset is
    begin
       case Kind is
-         when None => return Size;
          when Zstd =>
             return Ada.Streams.Stream_Element_Offset (ZSTD_compressBound (size_t (Size)));
          when LZ4 =>
@@ -71,14 +70,12 @@ package body RCL.MCAP.Compression is
    --------------
 
    function Compress
-     (Kind : Compression_Kind; Data : Byte_Array; Into : in out Byte_Array)
+     (Kind : Compressing_Kind; Data : Byte_Array; Into : in out Byte_Array)
       return Ada.Streams.Stream_Element_Offset
    is
       Result : size_t;
    begin
       case Kind is
-         when None =>
-            raise Program_Error;
          when Zstd =>
             Result := ZSTD_compress (Into (Into'First)'Address, Into'Length, Address_Of (Data),
                                      Data'Length, 1);
@@ -100,12 +97,10 @@ package body RCL.MCAP.Compression is
    ----------------
 
    pragma Warnings (Off, "formal parameter ""Into"" is read but never assigned");
-   procedure Decompress (Kind : Compression_Kind; Data : Byte_Array; Into : out Byte_Array) is
+   procedure Decompress (Kind : Compressing_Kind; Data : Byte_Array; Into : out Byte_Array) is
       Result : size_t;
    begin
       case Kind is
-         when None =>
-            raise Program_Error;
          when Zstd =>
             Result := ZSTD_decompress (Address_Of (Into), Into'Length, Address_Of (Data),
                                        Data'Length);

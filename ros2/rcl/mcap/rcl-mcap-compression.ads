@@ -9,20 +9,21 @@ private package RCL.MCAP.Compression is
    Compression_Error : exception;
    --  The library's own message ("Unknown frame descriptor").
 
-   function Bound (Kind : Compression_Kind; Size : Ada.Streams.Stream_Element_Offset)
-                   return Ada.Streams.Stream_Element_Offset
-     with Pre => Kind /= None;
+   subtype Compressing_Kind is Compression_Kind range Zstd .. LZ4;
+   --  A kind that compresses (not None).
+
+   function Bound (Kind : Compressing_Kind; Size : Ada.Streams.Stream_Element_Offset)
+                   return Ada.Streams.Stream_Element_Offset;
    --  The largest compressed size of Size bytes.
 
    function Compress
-     (Kind : Compression_Kind; Data : Byte_Array; Into : in out Byte_Array)
+     (Kind : Compressing_Kind; Data : Byte_Array; Into : in out Byte_Array)
       return Ada.Streams.Stream_Element_Offset
-     with Pre => Kind /= None and then Into'Length >= Bound (Kind, Data'Length);
+     with Pre => Into'Length >= Bound (Kind, Data'Length);
    --  Compresses Data (fastest level) into Into, returns the index of the
    --  last byte written.
 
-   procedure Decompress (Kind : Compression_Kind; Data : Byte_Array; Into : out Byte_Array)
-     with Pre => Kind /= None;
+   procedure Decompress (Kind : Compressing_Kind; Data : Byte_Array; Into : out Byte_Array);
    --  Decompresses Data, which must expand to exactly Into'Length bytes;
    --  Compression_Error otherwise or when Data is corrupt.
 

@@ -267,6 +267,29 @@ package body RCL.MCAP.Readers is
       Length := Get_U64 (Head, 2);
    end Read_Head;
 
+   generic
+      with procedure Read_Content (Content : Byte_Array; C : in out Cursor);
+   procedure Read_Record_Content
+     (This : in out Reader; Offset, Length : Unsigned_64; What : String);
+   --  Reads the Length bytes of a record's content at Offset (What names them
+   --  in the errors), passes them to Read_Content with a cursor on their first
+   --  byte, and frees them, also when Read_Content raises.
+
+   procedure Read_Record_Content
+     (This : in out Reader; Offset, Length : Unsigned_64; What : String)
+   is
+      Content : Byte_Array_Access := Read_At (This, Offset, Length, What);
+      C       : Cursor := (Pos => 1, First => 1, Last => Content'Last, Base => Offset,
+                           In_Chunk => False);
+   begin
+      Read_Content (Content.all, C);
+      Free (Content);
+   exception
+      when others =>
+         Free (Content);
+         raise;
+   end Read_Record_Content;
+
    --  Chunks -----------------------------------------------------------------------
 
    type Entry_Position is record
@@ -505,21 +528,18 @@ package body RCL.MCAP.Readers is
          case Opcode is
             when Op_Schema | Op_Channel =>
                declare
-                  Content : Byte_Array_Access :=
-                    Read_At (This, Pos + Record_Head, Length, "record");
-                  C       : Cursor := (Pos => 1, First => 1, Last => Content'Last,
-                                       Base => Pos + Record_Head, In_Chunk => False);
+                  procedure Add (Content : Byte_Array; C : in out Cursor) is
+                  begin
+                     if Opcode = Op_Schema then
+                        Add_Schema (This, Content, C);
+                     else
+                        Add_Channel (This, Content, C);
+                     end if;
+                  end Add;
+
+                  procedure Read_And_Add is new Read_Record_Content (Add);
                begin
-                  if Opcode = Op_Schema then
-                     Add_Schema (This, Content.all, C);
-                  else
-                     Add_Channel (This, Content.all, C);
-                  end if;
-                  Free (Content);
-               exception
-                  when others =>
-                     Free (Content);
-                     raise;
+                  Read_And_Add (This, Pos + Record_Head, Length, "record");
                end;
             when Op_Chunk | Op_Message =>
                declare
@@ -689,17 +709,15 @@ package body RCL.MCAP.Readers is
                & ": corrupt");
       end if;
       declare
-         Content : Byte_Array_Access := Read_At (This, 8 + Record_Head, Length, "header record");
-         C       : Cursor := (Pos => 1, First => 1, Last => Content'Last, Base => 8 + Record_Head,
-                              In_Chunk => False);
+         procedure Take_Header (Content : Byte_Array; C : in out Cursor) is
+         begin
+            This.Profile := To_Unbounded_String (Str (This, Content, C, "profile"));
+            This.Library := To_Unbounded_String (Str (This, Content, C, "library"));
+         end Take_Header;
+
+         procedure Read_Header is new Read_Record_Content (Take_Header);
       begin
-         This.Profile := To_Unbounded_String (Str (This, Content.all, C, "profile"));
-         This.Library := To_Unbounded_String (Str (This, Content.all, C, "library"));
-         Free (Content);
-      exception
-         when others =>
-            Free (Content);
-            raise;
+         Read_Header (This, 8 + Record_Head, Length, "header record");
       end;
       After_Header := 8 + Record_Head + Length;
       --  The footer and the closing magic.

@@ -5,20 +5,18 @@ package body Sancta.Robot.GPS_Fusion is
    package Math is new Ada.Numerics.Generic_Elementary_Functions (Real);
 
    procedure Initialize
-     (This           : in out Filter;
-      Start          : Pose;
-      Variance       : Real := 0.0;
-      Odometry_Noise : Real := 0.01;
-      Track_Length   : Real := 3.0;
-      Heading_Gain   : Real := 0.5) is
+     (This     : in out Filter;
+      Start    : Pose;
+      Variance : Real := 0.0;
+      Config   : Fusion_Config := (others => <>)) is
    begin
       This := (Estimate  => Start,
                Variance  => Variance,
-               Noise     => Odometry_Noise,
+               Noise     => Config.Odometry_Noise,
                Last_Odom => Start,
                Have_Odom => False,
-               Track     => Track_Length,
-               Gain      => Heading_Gain,
+               Track     => Config.Track_Length,
+               Gain      => Config.Heading_Gain,
                Anchored  => False,
                Anchor    => (0.0, 0.0),
                Travel    => (0.0, 0.0));

@@ -8,7 +8,7 @@
 --  displacement (turned into the world with the estimated heading), and a
 --  share (Heading_Gain) of the difference corrects the heading.
 --
---     F.Initialize (Start, Variance => 0.01);
+--     F.Initialize (Start, Variance => 0.01, Config => (Odometry_Noise => 0.05, others => <>));
 --     F.Predict (Odometry.Pose);   --  at every odometry reading
 --     F.Correct (Fix);             --  at every GPS reading
 --     Estimate := F.Estimate;
@@ -21,16 +21,23 @@ is
 
    type Filter is tagged private;
 
-   procedure Initialize
-     (This           : in out Filter;
-      Start          : Pose;
-      Variance       : Real := 0.0;
+   type Fusion_Config is record
       Odometry_Noise : Real := 0.01;
+      --  Variance added per metre travelled, m^2/m.
       Track_Length   : Real := 3.0;
-      Heading_Gain   : Real := 0.5)
-     with Pre => Variance >= 0.0 and then Odometry_Noise >= 0.0
-                 and then Heading_Gain in 0.0 .. 1.0;
-   --  Odometry_Noise: variance added per metre travelled, m^2/m.
+      --  Metres of fixes whose direction corrects the heading.
+      Heading_Gain   : Real := 0.5;
+      --  The share of the heading difference corrected.
+   end record;
+   --  The filter's tuning.
+
+   procedure Initialize
+     (This     : in out Filter;
+      Start    : Pose;
+      Variance : Real := 0.0;
+      Config   : Fusion_Config := (others => <>))
+     with Pre => Variance >= 0.0 and then Config.Odometry_Noise >= 0.0
+                 and then Config.Heading_Gain in 0.0 .. 1.0;
 
    procedure Predict (This : in out Filter; Odometry : Pose);
    --  An odometry reading (its increment since the previous one is used).

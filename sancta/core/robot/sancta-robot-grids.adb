@@ -57,4 +57,24 @@ package body Sancta.Robot.Grids is
       end loop;
    end Draw;
 
+   procedure For_Each_Occupied_Run (G : Grid) is
+      I     : Integer;
+      First : Integer;
+   begin
+      for J in 0 .. G.Last_Row loop
+         I := 0;
+         while I <= G.Last_Column loop
+            if G.Occupied (I, J) then
+               First := I;
+               while I <= G.Last_Column and then G.Occupied (I, J) loop
+                  I := I + 1;
+               end loop;
+               Occupied_Run (J, First, I - 1);
+            else
+               I := I + 1;
+            end if;
+         end loop;
+      end loop;
+   end For_Each_Occupied_Run;
+
 end Sancta.Robot.Grids;

@@ -82,4 +82,11 @@ is
 
    function Distance_To_Segment (P : Point; Wall : Segment) return Real;
 
+   generic
+      with procedure Occupied_Run (Row, First_Column, Last_Column : Integer);
+   procedure For_Each_Occupied_Run (G : Grid);
+   --  Calls Occupied_Run once for each longest horizontal run of occupied
+   --  cells of G, row 0 first, each row from left to right (how a map is
+   --  drawn with one rectangle a run rather than one a cell).
+
 end Sancta.Robot.Grids;

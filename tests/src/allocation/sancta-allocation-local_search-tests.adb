@@ -6,6 +6,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Exact;
 with Sancta.Allocation.Random;
+with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
 with Sancta.Geometry;
 
@@ -13,20 +14,6 @@ package body Sancta.Allocation.Local_Search.Tests is
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
    package Caller is new AUnit.Test_Caller (Fixture);
-
-   --  Tasks at random points, one robot on a closed tour from point 1.
-   function Scattered (Tasks : Positive; Seed : Interfaces.Unsigned_64) return Problem_Access is
-      G : Random.Generator := Random.Seeded (Seed);
-      P : constant Problem_Access := Create (Tasks + 1, Tasks, 1);
-   begin
-      Set_Euclidean (P.all, [for I in 1 .. Tasks + 1 =>
-                               (Sancta.Geometry.Real (Random.Below (G, 1000)),
-                                Sancta.Geometry.Real (Random.Below (G, 1000)))], 1.0);
-      for T in 1 .. Tasks loop
-         Set_Task (P.all, T, T + 1);
-      end loop;
-      return P;
-   end Scattered;
 
    procedure Checked_Moves_And_Optima (Unused : in out Fixture) is
    begin

@@ -2,32 +2,14 @@ with Ada.Real_Time;           use Ada.Real_Time;
 with AUnit.Assertions;        use AUnit.Assertions;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
-with Interfaces;
 with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Local_Search;
-with Sancta.Allocation.Random;
-with Sancta.Geometry;
+with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 
 package body Sancta.Allocation.Replanning.Tests is
 
    type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
    package Caller is new AUnit.Test_Caller (Fixture);
-
-   --  Tasks at random points, Robots robots on closed tours from point 1.
-   function Scattered (Tasks, Robots : Positive; Seed : Interfaces.Unsigned_64)
-     return Problem_Access
-   is
-      G : Random.Generator := Random.Seeded (Seed);
-      P : constant Problem_Access := Create (Tasks + 1, Tasks, Robots);
-   begin
-      Set_Euclidean (P.all, [for I in 1 .. Tasks + 1 =>
-                               (Sancta.Geometry.Real (Random.Below (G, 1000)),
-                                Sancta.Geometry.Real (Random.Below (G, 1000)))], 1.0);
-      for T in 1 .. Tasks loop
-         Set_Task (P.all, T, T + 1);
-      end loop;
-      return P;
-   end Scattered;
 
    --  Old task numbers of robot R's tour in A, mapped to Q's numbers.
    function In_Order (Sub : Count_Array; A : Assignment; R : Positive) return Boolean is
@@ -42,7 +24,7 @@ package body Sancta.Allocation.Replanning.Tests is
    end In_Order;
 
    procedure Loss_Starts_From_Current_Plan (Unused : in out Fixture) is
-      P : constant Problem_Access := Scattered (40, 3, 7);
+      P : constant Problem_Access := Scattered (40, Seed => 7, Robots => 3);
       Current : Assignment (3, 40);
       Stats : Annealers.Progress;
    begin
@@ -106,7 +88,8 @@ package body Sancta.Allocation.Replanning.Tests is
       for Robots in 1 .. 2 loop
          declare
             Tasks : constant Positive := (if Robots = 1 then 1_100 else 150);
-            P : constant Problem_Access := Scattered (Tasks, (if Robots = 1 then 1 else 5), 3);
+            P : constant Problem_Access :=
+              Scattered (Tasks, Seed => 3, Robots => (if Robots = 1 then 1 else 5));
             A : Assignment (P.Robots, Tasks);
             Stats : Annealers.Progress;
             Began : constant Time := Clock (CPU_Time);

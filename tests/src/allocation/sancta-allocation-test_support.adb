@@ -128,6 +128,23 @@ package body Sancta.Allocation.Test_Support is
       return P;
    end Random_Problem;
 
+   function Scattered
+     (Tasks  : Positive;
+      Seed   : Interfaces.Unsigned_64;
+      Robots : Positive := 1) return Problem_Access
+   is
+      G : Random.Generator := Random.Seeded (Seed);
+      P : constant Problem_Access := Create (Tasks + 1, Tasks, Robots);
+   begin
+      Set_Euclidean (P.all, [for I in 1 .. Tasks + 1 =>
+                               (Sancta.Geometry.Real (Random.Below (G, 1000)),
+                                Sancta.Geometry.Real (Random.Below (G, 1000)))], 1.0);
+      for T in 1 .. Tasks loop
+         Set_Task (P.all, T, T + 1);
+      end loop;
+      return P;
+   end Scattered;
+
    function Brute_Force (P : Problem; C : Criterion) return Long_Float is
       N : constant Positive := P.Tasks;
       Sel : Location_Array (1 .. N) := [others => 1];

@@ -45,6 +45,13 @@ package Sancta.Allocation.Test_Support is
    --  The same arguments give the same problem.
    --  Example: P := Random_Problem (5, 2, (Closed => False, others => <>), 501);
 
+   function Scattered
+     (Tasks  : Positive;
+      Seed   : Interfaces.Unsigned_64;
+      Robots : Positive := 1) return Problem_Access;
+   --  Tasks at random points (integer coordinates below 1000), Robots robots
+   --  on closed tours from point 1, Euclidean costs.
+
    function Brute_Force (P : Problem; C : Criterion) return Long_Float;
    --  The optimum of P under C by enumeration: every plan selection, every
    --  order of its active tasks cut into robot tours, every choice of

@@ -151,6 +151,22 @@ package body RCL.Nodes.Tests is
       Assert (Count = 0, "a reliable reader gets nothing from a best-effort writer");
    end QoS_Mismatch;
 
+   procedure Await_Liveliness_Change
+     (Watcher : in out Node;
+      Topic   : String;
+      Writer  : out ROSIDL.GID;
+      Alive   : out Boolean;
+      Found   : out Boolean) is
+   begin
+      for I in 1 .. 100 loop
+         Watcher.Take_Liveliness_Change (Topic, Writer, Alive, Found);
+         exit when Found;
+         delay 0.05;
+      end loop;
+   end Await_Liveliness_Change;
+   --  The next liveliness change of a writer of Topic, waiting up to 5 s;
+   --  Found is False when none came.
+
    procedure Publisher_Liveliness (Unused : in out Fixture) is
       Leased   : constant RCL.QoS.Profile := (RCL.QoS.Default with delta Lease => 0.5);
       Watcher  : Node := Init ("liveliness_watcher");
@@ -170,24 +186,12 @@ package body RCL.Nodes.Tests is
       begin
          Writer := ROSIDL.GID (Pub.GID);
          Pub.Publish_Raw (Payload (1));
-         for I in 1 .. 100 loop
-            Watcher.Take_Liveliness_Change ("/leased", G, Alive, Found);
-            if Found then
-               Came_Alive := Alive and then G = Writer;
-               exit;
-            end if;
-            delay 0.05;
-         end loop;
+         Await_Liveliness_Change (Watcher, "/leased", G, Alive, Found);
+         Came_Alive := Found and then Alive and then G = Writer;
       end;
       --  The publisher is gone: reported lost.
-      for I in 1 .. 100 loop
-         Watcher.Take_Liveliness_Change ("/leased", G, Alive, Found);
-         if Found then
-            Lost := not Alive and then G = Writer;
-            exit;
-         end if;
-         delay 0.05;
-      end loop;
+      Await_Liveliness_Change (Watcher, "/leased", G, Alive, Found);
+      Lost := Found and then not Alive and then G = Writer;
       Assert (Came_Alive, "the publisher is reported alive, with its GID");
       Assert (Lost, "the deleted publisher is reported lost, with its GID");
       begin
@@ -232,14 +236,8 @@ package body RCL.Nodes.Tests is
          Watcher.Take_Liveliness_Change ("/leased_late", G, Alive, Found);
          Came_Alive := Found and then Alive and then G = Writer;
       end;
-      for I in 1 .. 100 loop
-         Watcher.Take_Liveliness_Change ("/leased_late", G, Alive, Found);
-         if Found then
-            Lost := not Alive and then G = Writer;
-            exit;
-         end if;
-         delay 0.05;
-      end loop;
+      Await_Liveliness_Change (Watcher, "/leased_late", G, Alive, Found);
+      Lost := Found and then not Alive and then G = Writer;
       Assert (Came_Alive, "a publisher matched before the tracking is reported alive at once");
       Assert (Lost, "and reported lost when it goes, with its GID");
    end Liveliness_Tracked_Late;

@@ -483,7 +483,8 @@ package body Sancta.Robot.Tests is
       Robot.Laser.Rate := 0.0;
       S.Initialize (Worlds.Create (G), Seed => 4);
       S.Add_Robot (Robot, (15.0, 5.0, 0.0), R);
-      F.Initialize ((15.0, 5.0, 0.0), Variance => 0.0, Odometry_Noise => 0.05);
+      F.Initialize ((15.0, 5.0, 0.0), Variance => 0.0,
+                    Config => (Odometry_Noise => 0.05, others => <>));
       --  Circles of radius 5 for 120 s.
       S.Set_Command (R, (0.5, 0.1));
       while S.Clock < 120.0 loop

@@ -113,53 +113,50 @@ package body ROSIDL.Parser.Tests is
    procedure Every_Bundled_Interface_Parses (Unused : in out Fixture) is
       use Ada.Directories;
       Found, Parsed, Listed : Natural := 0;
-      Packages : Search_Type;
-      Package_Entry : Directory_Entry_Type;
+
+      procedure Check_Definition (Pkg, Kind : String; File : Directory_Entry_Type) is
+         Name : constant String := Base_Name (Simple_Name (File));
+      begin
+         Found := Found + 1;
+         if Kind = "msg" then
+            Assert (Interfaces.Message (Pkg, Name) /= null, Name);
+         elsif Kind = "srv" then
+            Assert (Interfaces.Service (Pkg, Name) /= null, Name);
+         else
+            Assert (Interfaces.Action (Pkg, Name) /= null, Name);
+         end if;
+         Parsed := Parsed + 1;
+      exception
+         when E : Definition_Error =>
+            Assert (False, Pkg & "/" & Kind & "/" & Name & ": "
+                    & Ada.Exceptions.Exception_Message (E));
+      end Check_Definition;
+
+      procedure Check_Package (Package_Entry : Directory_Entry_Type) is
+         Pkg : constant String := Simple_Name (Package_Entry);
+
+         procedure Check_Folder (Kind : String) is
+            Folder : constant String := Full_Name (Package_Entry) & "/" & Kind;
+
+            procedure Check (File : Directory_Entry_Type) is
+            begin
+               Check_Definition (Pkg, Kind, File);
+            end Check;
+         begin
+            if Exists (Folder) then
+               Search (Folder, "*." & Kind, Process => Check'Access);
+            end if;
+         end Check_Folder;
+      begin
+         if Pkg /= "." and then Pkg /= ".." then
+            for Kind of String_Vectors.Vector'["msg", "srv", "action"] loop
+               Check_Folder (Kind);
+            end loop;
+         end if;
+      end Check_Package;
    begin
       --  An independent walk of the bundled folder.
-      Start_Search (Packages, Bundled, "", [Directory => True, others => False]);
-      while More_Entries (Packages) loop
-         Get_Next_Entry (Packages, Package_Entry);
-         declare
-            Pkg : constant String := Simple_Name (Package_Entry);
-         begin
-            if Pkg /= "." and then Pkg /= ".." then
-               for Kind of String_Vectors.Vector'["msg", "srv", "action"] loop
-                  declare
-                     Folder : constant String := Full_Name (Package_Entry) & "/" & Kind;
-                     Files  : Search_Type;
-                     File   : Directory_Entry_Type;
-                  begin
-                     if Exists (Folder) then
-                        Start_Search (Files, Folder, "*." & Kind);
-                        while More_Entries (Files) loop
-                           Get_Next_Entry (Files, File);
-                           Found := Found + 1;
-                           declare
-                              Name : constant String := Base_Name (Simple_Name (File));
-                           begin
-                              if Kind = "msg" then
-                                 Assert (Interfaces.Message (Pkg, Name) /= null, Name);
-                              elsif Kind = "srv" then
-                                 Assert (Interfaces.Service (Pkg, Name) /= null, Name);
-                              else
-                                 Assert (Interfaces.Action (Pkg, Name) /= null, Name);
-                              end if;
-                              Parsed := Parsed + 1;
-                           exception
-                              when E : Definition_Error =>
-                                 Assert (False, Pkg & "/" & Kind & "/" & Name & ": "
-                                         & Ada.Exceptions.Exception_Message (E));
-                           end;
-                        end loop;
-                        End_Search (Files);
-                     end if;
-                  end;
-               end loop;
-            end if;
-         end;
-      end loop;
-      End_Search (Packages);
+      Search (Bundled, "", [Directory => True, others => False], Check_Package'Access);
       for Pkg of Interfaces.Packages loop
          --  Only the packages of this folder (share/interfaces follows it).
          if Exists (Bundled & "/" & Pkg) then

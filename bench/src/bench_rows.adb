@@ -1,0 +1,30 @@
+with Ada.Command_Line;
+with Ada.Text_IO; use Ada.Text_IO;
+
+package body Bench_Rows is
+
+   CSV : File_Type;
+
+   procedure Open (CSV_Argument : Positive) is
+   begin
+      if Ada.Command_Line.Argument_Count >= CSV_Argument then
+         Create (CSV, Out_File, Ada.Command_Line.Argument (CSV_Argument));
+      end if;
+   end Open;
+
+   procedure Put (Row : String) is
+   begin
+      Put_Line (Row);
+      if Is_Open (CSV) then
+         Put_Line (CSV, Row);
+      end if;
+   end Put;
+
+   procedure Close is
+   begin
+      if Is_Open (CSV) then
+         Close (CSV);
+      end if;
+   end Close;
+
+end Bench_Rows;
