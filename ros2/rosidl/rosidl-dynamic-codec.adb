@@ -511,13 +511,13 @@ package body ROSIDL.Dynamic.Codec is
                   Count := Natural (Wire);
                end;
          end case;
+         if T.Kind not in Primitive_Kind and then Cell.Count /= Count then
+            Set_Count (Cell, Count);  --  Get_Block sizes a primitive cell itself.
+         end if;
          case T.Kind is
             when Primitive_Kind =>
                Get_Block (Cell, Count);
             when String_Kind =>
-               if Cell.Count /= Count then
-                  Set_Count (Cell, Count);
-               end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
                   declare
@@ -564,9 +564,6 @@ package body ROSIDL.Dynamic.Codec is
                   end;
                end loop;
             when WString_Kind =>
-               if Cell.Count /= Count then
-                  Set_Count (Cell, Count);
-               end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
                   declare
@@ -617,9 +614,6 @@ package body ROSIDL.Dynamic.Codec is
                   end;
                end loop;
             when Message_Kind =>
-               if Cell.Count /= Count then
-                  Set_Count (Cell, Count);
-               end if;
                for I in 1 .. Count loop
                   Set_Index (S, I);
                   Get_Node (Cell.Extra.Nodes.Element (I));

@@ -2,9 +2,9 @@ with Ada.Characters.Handling;
 with Ada.Containers.Vectors;
 with Ada.Directories;
 with Ada.Strings.Fixed;
-with Ada.Text_IO;
 with Ada.Unchecked_Deallocation;
 with Sancta.Installation;
+with Sancta.Simulation.Text_Files;
 
 package body Sancta.Simulation.Map_Files is
 
@@ -81,37 +81,6 @@ package body Sancta.Simulation.Map_Files is
          Fail (File, Line, "expected " & What & " (a number), found """ & Trim (S) & """");
    end To_Real;
 
-   generic
-      with procedure Read_Line (Line : String; Line_No : Positive);
-   procedure Read_Lines (File_Name : String; Last_Line : out Natural);
-   --  Passes each line of File_Name, without its comment and trimmed, to
-   --  Read_Line; Last_Line is the number of lines. The file is closed also
-   --  when Read_Line raises. Format_Error "FILE: cannot be opened".
-
-   procedure Read_Lines (File_Name : String; Last_Line : out Natural) is
-      use Ada.Text_IO;
-      F : File_Type;
-   begin
-      begin
-         Open (F, In_File, File_Name);
-      exception
-         when others =>
-            raise Format_Error with File_Name & ": cannot be opened";
-      end;
-      Last_Line := 0;
-      while not End_Of_File (F) loop
-         Last_Line := Last_Line + 1;
-         Read_Line (Trim (Without_Comment (Get_Line (F))), Last_Line);
-      end loop;
-      Close (F);
-   exception
-      when others =>
-         if Is_Open (F) then
-            Close (F);
-         end if;
-         raise;
-   end Read_Lines;
-
    ---------------
    -- Read_YAML --
    ---------------
@@ -121,7 +90,8 @@ package body Sancta.Simulation.Map_Files is
       Result     : Map_Info;
       Have_Image, Have_Resolution, Have_Origin : Boolean := False;
 
-      procedure Read_Entry (Line : String; Line_No : Positive) is
+      procedure Read_Entry (Raw_Line : String; Line_No : Positive) is
+         Line  : constant String := Trim (Without_Comment (Raw_Line));
          Colon : Natural;
       begin
          if Line /= "" and then Line /= "---" then
@@ -206,7 +176,7 @@ package body Sancta.Simulation.Map_Files is
          end if;
       end Read_Entry;
 
-      procedure Read_Entries is new Read_Lines (Read_Entry);
+      procedure Read_Entries is new Text_Files.Read_Lines (Read_Entry);
    begin
       Read_Entries (File_Name, Last_Line);
       if not (Have_Image and then Have_Resolution and then Have_Origin) then
@@ -281,7 +251,8 @@ package body Sancta.Simulation.Map_Files is
       Thickness : Real := 0.1;
       Bounded   : Boolean := False;
 
-      procedure Read_Statement (Line : String; Line_No : Positive) is
+      procedure Read_Statement (Raw_Line : String; Line_No : Positive) is
+         Line  : constant String := Trim (Without_Comment (Raw_Line));
          Words : array (1 .. 8) of Unbounded_String;
          Count : Natural := 0;
          K     : Natural := Line'First;
@@ -360,7 +331,7 @@ package body Sancta.Simulation.Map_Files is
          end if;
       end Read_Statement;
 
-      procedure Read_Statements is new Read_Lines (Read_Statement);
+      procedure Read_Statements is new Text_Files.Read_Lines (Read_Statement);
    begin
       Resolution := 0.05;
       Low := (0.0, 0.0);

@@ -5,6 +5,7 @@ with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Sancta.Robot.Grids;
 with Sancta.Simulation.Glyphs;
+with Sancta.Simulation.Text_Files;
 
 package body Sancta.Simulation.Rendering is
 
@@ -566,59 +567,49 @@ package body Sancta.Simulation.Rendering is
    -----------------------
 
    function Read_Trajectories (File_Name : String) return Path_Vectors.Vector is
-      use Ada.Text_IO;
-      F      : File_Type;
-      Result : Path_Vectors.Vector;
-      Line_No : Natural := 0;
+      Result  : Path_Vectors.Vector;
+      Ignored : Natural;
 
-      procedure Fail (Reason : String) with No_Return is
-      begin
-         Close (F);
-         raise Format_Error with File_Name & ":"
-           & Ada.Strings.Fixed.Trim (Line_No'Image, Ada.Strings.Left) & ": " & Reason;
-      end Fail;
-   begin
-      begin
-         Open (F, In_File, File_Name);
-      exception
-         when others =>
-            raise Format_Error with File_Name & ": cannot be opened";
-      end;
-      while not End_Of_File (F) loop
-         declare
-            Line : constant String := Get_Line (F);
-            C1   : constant Natural := Ada.Strings.Fixed.Index (Line, ",");
-            C2   : constant Natural :=
-              (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (Line (C1 + 1 .. Line'Last), ","));
-            Robot : Integer;
-            X, Y  : Real;
+      procedure Read_Sample (Line : String; Line_No : Positive) is
+         C1   : constant Natural := Ada.Strings.Fixed.Index (Line, ",");
+         C2   : constant Natural :=
+           (if C1 = 0 then 0 else Ada.Strings.Fixed.Index (Line (C1 + 1 .. Line'Last), ","));
+         Robot : Integer;
+         X, Y  : Real;
+
+         procedure Fail (Reason : String) with No_Return is
          begin
-            Line_No := Line_No + 1;
-            if Line'Length > 0 and then Line (Line'First) /= '#'
-              and then not (Line_No = 1 and then Ada.Strings.Fixed.Index (Line, "robot") > 0)
-            then
-               if C1 = 0 or else C2 = 0 then
-                  Fail ("expected ""robot,x,y""");
-               end if;
-               begin
-                  Robot := Integer'Value (Line (Line'First .. C1 - 1));
-                  X := Real'Value (Line (C1 + 1 .. C2 - 1));
-                  Y := Real'Value (Line (C2 + 1 .. Line'Last));
-               exception
-                  when Constraint_Error =>
-                     Fail ("expected ""robot,x,y"" with a robot number and two reals");
-               end;
-               if Robot not in 1 .. 10_000 then
-                  Fail ("robot number out of 1 .. 10000");
-               end if;
-               while Result.Last_Index < Robot loop
-                  Result.Append (Point_Vectors.Empty_Vector);
-               end loop;
-               Result (Robot).Append (Point'(X, Y));
+            raise Format_Error with File_Name & ":"
+              & Ada.Strings.Fixed.Trim (Line_No'Image, Ada.Strings.Left) & ": " & Reason;
+         end Fail;
+      begin
+         if Line'Length > 0 and then Line (Line'First) /= '#'
+           and then not (Line_No = 1 and then Ada.Strings.Fixed.Index (Line, "robot") > 0)
+         then
+            if C1 = 0 or else C2 = 0 then
+               Fail ("expected ""robot,x,y""");
             end if;
-         end;
-      end loop;
-      Close (F);
+            begin
+               Robot := Integer'Value (Line (Line'First .. C1 - 1));
+               X := Real'Value (Line (C1 + 1 .. C2 - 1));
+               Y := Real'Value (Line (C2 + 1 .. Line'Last));
+            exception
+               when Constraint_Error =>
+                  Fail ("expected ""robot,x,y"" with a robot number and two reals");
+            end;
+            if Robot not in 1 .. 10_000 then
+               Fail ("robot number out of 1 .. 10000");
+            end if;
+            while Result.Last_Index < Robot loop
+               Result.Append (Point_Vectors.Empty_Vector);
+            end loop;
+            Result (Robot).Append (Point'(X, Y));
+         end if;
+      end Read_Sample;
+
+      procedure Read_Samples is new Text_Files.Read_Lines (Read_Sample);
+   begin
+      Read_Samples (File_Name, Ignored);
       return Result;
    end Read_Trajectories;
 

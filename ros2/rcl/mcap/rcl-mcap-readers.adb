@@ -468,33 +468,26 @@ package body RCL.MCAP.Readers is
          raise;
    end Process_Chunk;
 
+   --  The message record at Offset, its head read (content: Length bytes).
    procedure Process_Loose
      (This     : in out Reader;
       Offset   : Unsigned_64;
+      Length   : Unsigned_64;
       Process  : not null access procedure (Msg : Message; Data : Byte_Array);
       From, To : Time_Stamp)
    is
-      Opcode  : Unsigned_8;
-      Length  : Unsigned_64;
-      Content : Byte_Array_Access;
-   begin
-      Read_Head (This, Offset, Opcode, Length);
-      Content := Read_At (This, Offset + Record_Head, Length, "message record");
-      declare
-         C : constant Cursor := (Pos => 1, First => 1, Last => Content'Last,
-                                 Base => Offset + Record_Head, In_Chunk => False);
-         Probe : Cursor := (C with delta Pos => 7);
-         Log_Time : constant Unsigned_64 := U64 (This, Content.all, Probe, "message log time");
+      procedure Yield_In_Range (Content : Byte_Array; C : in out Cursor) is
+         Probe    : Cursor := (C with delta Pos => 7);
+         Log_Time : constant Unsigned_64 := U64 (This, Content, Probe, "message log time");
       begin
          if Log_Time >= From and then Log_Time <= To then
-            Yield_Message (This, Content.all, 1, C, Process);
+            Yield_Message (This, Content, 1, C, Process);
          end if;
-      end;
-      Free (Content);
-   exception
-      when others =>
-         Free (Content);
-         raise;
+      end Yield_In_Range;
+
+      procedure Read_Message is new Read_Record_Content (Yield_In_Range);
+   begin
+      Read_Message (This, Offset + Record_Head, Length, "message record");
    end Process_Loose;
 
    --  Scanning the data section record by record --------------------------------------
@@ -868,7 +861,7 @@ package body RCL.MCAP.Readers is
          if D.Stop >= From and then D.Start <= To then
             Read_Head (This, D.Offset, Opcode, Length);
             if Opcode = Op_Message then
-               Process_Loose (This, D.Offset, Process, From, To);
+               Process_Loose (This, D.Offset, Length, Process, From, To);
             else
                Process_Chunk (This, D.Offset, Process, From, To);
             end if;
