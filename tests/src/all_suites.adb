@@ -21,6 +21,7 @@ with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
 with ROSIDL.CDR_Tests;
+with ROSIDL.Static.Sequence_Contract_Tests;
 with ROSIDL.Static.Tests;
 with ROSIDL.Type_Hashes.Tests;
 with Sancta.Allocation.Branch_And_Cut.Tests;
@@ -57,6 +58,7 @@ package body All_Suites is
       Result.Add_Test (ROSIDL.CDR_Tests.Suite);
       Result.Add_Test (ROSIDL.Type_Hashes.Tests.Suite);
       Result.Add_Test (ROSIDL.Static.Tests.Suite);
+      Result.Add_Test (ROSIDL.Static.Sequence_Contract_Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Tests.Suite);

@@ -25,6 +25,8 @@ package ROSIDL.Static.Unbounded_Sequences is
    type Sequence is new Ada.Finalization.Controlled with private
      with Constant_Indexing => Constant_Reference,
           Variable_Indexing => Reference;
+   --  Its storage is indexed from 0 and holds its Length elements (a
+   --  Type_Invariant; see Storage).
 
    Empty : constant Sequence;
 
@@ -80,7 +82,12 @@ private
    type Sequence is new Ada.Finalization.Controlled with record
       Items  : Element_Array_Access;
       Length : Natural := 0;
-   end record;
+   end record
+     with Type_Invariant =>
+       --  What Storage promises the generated codecs: the elements are
+       --  Items (0 .. Length - 1).
+       (if Sequence.Items = null then Sequence.Length = 0
+        else Sequence.Items'First = 0 and then Sequence.Length <= Sequence.Items'Length);
 
    Empty : constant Sequence := (Ada.Finalization.Controlled with null, 0);
 
