@@ -574,6 +574,10 @@ package body Sancta.Allocation.Annealers.Searches is
       if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 and then Opts.Convergence <= 0 then
          raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
       end if;
+      if Opts.Geometric_Share not in 0.0 .. 1.0 then
+         raise Constraint_Error with "annealer: Geometric_Share" & Opts.Geometric_Share'Image
+           & " is not in 0 .. 1";
+      end if;
       This.Opts := Opts;
       if Opts.Schedule = Automatic then
          This.Opts.Schedule :=

@@ -19,8 +19,9 @@
 --  and some of its neighbours, for makespan often from the longest tour,
 --  taken out and put back at their best places) on a fixed share of the
 --  work; adaptive move weights; geometric (optionally as several
---  independent runs sharing the budget), cyclic or the old re-heating
---  schedule; budgets by time, iterations and convergence; a final descent
+--  independent runs sharing the budget), cyclic, the old re-heating
+--  schedule or a hybrid of geometric and re-heating (the default for a
+--  pure makespan); budgets by time, iterations and convergence; a final descent
 --  (polish) with the neighbour moves. Per-kind statistics in Progress.Kinds.
 --  On single closed tours, a share of the time may then go to iterated
 --  local search (Opts.Local_Search, package Local_Search); otherwise, for
@@ -100,7 +101,8 @@ package Sancta.Allocation.Annealers is
       --  rate measured over the first 2% of the budget.
       Run_Moves    : Long_Float := 1000.0;
       Geometric_Share : Long_Float := 0.5;
-      --  Hybrid: the share of the budget cooled geometrically (0 < x < 1).
+      --  Hybrid: the share of the budget cooled geometrically (0 .. 1;
+      --  Solve raises Constraint_Error outside).
       Cycles       : Positive := 3;
       Cycle_Drop   : Long_Float := 3.0;
       --  Cyclic: each cycle restarts from the best at T0 / Cycle_Drop ** k.

@@ -202,6 +202,17 @@ package body Sancta.Allocation.Tests is
             Plain.Schedule := Geometric;
             Solve (P.all, Plain, B, T);
             Assert (A /= B, "the hybrid run equals the geometric one");
+            Plain.Schedule := Hybrid;
+            Plain.Geometric_Share := 1.5;
+            begin
+               Solve (P.all, Plain, B, T);
+               Assert (False, "a geometric share of 1.5 was accepted");
+            exception
+               when E : Constraint_Error =>
+                  Assert (Ada.Exceptions.Exception_Message (E)
+                            = "annealer: Geometric_Share 1.50000000000000E+00 is not in 0 .. 1",
+                          Ada.Exceptions.Exception_Message (E));
+            end;
          end;
       end loop;
    end Hybrid_Schedule;
