@@ -103,3 +103,19 @@ def test_cpu_time_budget():
     assert d["clock"] == "wall"
     p = run(str(tsplib / "eil51.tsp"), "--clock", "gpu")
     assert p.returncode != 0 and "--clock: 'gpu' is not wall or cpu" in p.stderr
+
+
+def test_schedules():
+    """Every --schedule (automatic is the default: hybrid for minmax) gives a
+    valid plan; a bad schedule or geometric share is a usage error."""
+    tsplib = REPO / "share" / "tsplib"
+    for schedule in ["automatic", "geometric", "cyclic", "reheat", "hybrid"]:
+        p = run(str(tsplib / "eil51.tsp"), "--robots", "3", "--objective", "minmax",
+                "--schedule", schedule, "--geometric-share", "0.3", "--time", "0",
+                "--iterations", "20000", "--quiet", "--json", "-")
+        assert p.returncode == 0, (schedule, p.stderr)
+        assert json.loads(p.stdout)["valid"], schedule
+    p = run(str(tsplib / "eil51.tsp"), "--schedule", "slow")
+    assert p.returncode != 0 and "is not automatic, geometric, cyclic, reheat or hybrid" in p.stderr
+    p = run(str(tsplib / "eil51.tsp"), "--geometric-share", "1")
+    assert p.returncode != 0 and "--geometric-share: '1' is not a number in 0.01 .. 0.99" in p.stderr

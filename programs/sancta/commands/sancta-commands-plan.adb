@@ -52,7 +52,12 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --iterations N       move budget (with --time 0: deterministic)");
       Put_Line ("  --converge N         stop after N moves without a new best");
       Put_Line ("  --seed N             random seed (default 1)");
-      Put_Line ("  --schedule S         geometric | cyclic | reheat | hybrid (default geometric)");
+      Put_Line ("  --schedule S         automatic | geometric | cyclic | reheat | hybrid");
+      Put_Line ("                       (automatic: hybrid for minmax, else geometric;");
+      Put_Line ("                       hybrid: geometric over half the budget, then");
+      Put_Line ("                       reheats from the best)");
+      Put_Line ("  --geometric-share F  hybrid: share of the budget cooled geometrically");
+      Put_Line ("                       (0.01 .. 0.99, default 0.5)");
       Put_Line ("  --cycles N           cyclic schedule: cycles, each from the best (3)");
       Put_Line ("  --restarts N         independent runs in parallel tasks, best kept");
       Put_Line ("  --solver S           anneal | greedy | makespan | auction | exact");
@@ -462,7 +467,7 @@ package body Sancta.Commands.Plan is
       exception
          when Constraint_Error =>
             raise Usage_Error with Option & ": '" & S & "' is not a number in "
-              & Real_Img (Low, 1) & " .. " & Real_Img (High, 2);
+              & Real_Img (Low, 2) & " .. " & Real_Img (High, 2);
       end Number_In;
    begin
       Opts.Time_Limit := 10.0;
@@ -516,7 +521,9 @@ package body Sancta.Commands.Plan is
                declare
                   S : constant String := Value_Of (A);
                begin
-                  if S = "geometric" then
+                  if S = "automatic" then
+                     Opts.Schedule := Annealers.Automatic;
+                  elsif S = "geometric" then
                      Opts.Schedule := Annealers.Geometric;
                   elsif S = "cyclic" then
                      Opts.Schedule := Annealers.Cyclic;
@@ -526,7 +533,7 @@ package body Sancta.Commands.Plan is
                      Opts.Schedule := Annealers.Hybrid;
                   else
                      raise Usage_Error with "--schedule: '" & S
-                       & "' is not geometric, cyclic, reheat or hybrid";
+                       & "' is not automatic, geometric, cyclic, reheat or hybrid";
                   end if;
                end;
             elsif A = "--cycles" then
@@ -593,6 +600,8 @@ package body Sancta.Commands.Plan is
                end;
             elsif A = "--ruin" then
                Opts.Ruin_Share := Number_In (A, 0.0, 1.0);
+            elsif A = "--geometric-share" then
+               Opts.Geometric_Share := Number_In (A, 0.01, 0.99);
             elsif A = "--lk" then
                Opts.Local_Search := Number_In (A, 0.0, 0.95);
             elsif A = "--balance-decay" then

@@ -575,6 +575,12 @@ package body Sancta.Allocation.Annealers.Searches is
          raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
       end if;
       This.Opts := Opts;
+      if Opts.Schedule = Automatic then
+         This.Opts.Schedule :=
+           (if Opts.Criterion.Sum_Weight = 0.0 and then Opts.Criterion.Ave_Weight = 0.0
+              and then P.Robots > 1
+            then Hybrid else Geometric);
+      end if;
       This.Report := Report;
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
       This.Tours := New_State (P, This.Neighbours);
@@ -582,7 +588,7 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Started := Now (This);
       This.Next_Report := This.Started + To_Time_Span (Opts.Report_Every);
       This.Runs := (if Opts.Runs > 0 then Opts.Runs else 1);
-      This.Runs_Decided := Opts.Runs > 0 or else Opts.Schedule not in Geometric | Hybrid
+      This.Runs_Decided := Opts.Runs > 0 or else This.Opts.Schedule not in Geometric | Hybrid
         or else (Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0);
       This.Switch := New_Switch (P);
       This.Log_Tries := Natural (Long_Float'Floor (Log (Long_Float (P.Tasks)))) + 1;
@@ -790,6 +796,7 @@ package body Sancta.Allocation.Annealers.Searches is
          when Cyclic    => Cyclic_Step (This, P, X);
          when Reheat    => Reheat_Step (This);
          when Hybrid    => Hybrid_Step (This, P, X);
+         when Automatic => raise Program_Error with "schedule not resolved";
       end case;
       if Reading >= This.Next_Report then
          This.Next_Report := Reading + To_Time_Span (This.Opts.Report_Every);

@@ -40,7 +40,9 @@ with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 
 package Sancta.Allocation.Annealers is
 
-   type Schedule_Kind is (Geometric, Cyclic, Reheat, Hybrid);
+   type Schedule_Kind is (Automatic, Geometric, Cyclic, Reheat, Hybrid);
+   --  Automatic: Hybrid for a pure makespan (Min_Max) with several robots,
+   --  Geometric otherwise.
    --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs,
    --  each from the best so far at a lower start temperature.
    --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
@@ -90,7 +92,7 @@ package Sancta.Allocation.Annealers is
       --  Move budget; 0 = none. With only this budget, runs are deterministic.
       Convergence  : Long_Long_Integer := 0;
       --  Stop after this many moves without a new best; 0 = never.
-      Schedule     : Schedule_Kind := Geometric;
+      Schedule     : Schedule_Kind := Automatic;
       Runs         : Natural := 0;
       --  Geometric: independent anneals, each from a fresh start, sharing
       --  the budget (the best is kept); 0 = automatic: as many (at most
