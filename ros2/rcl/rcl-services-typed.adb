@@ -1,6 +1,6 @@
 with Ada.Exceptions;
-with Ada.Real_Time;
 with Ada.Streams;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
@@ -97,6 +97,172 @@ package body RCL.Services.Typed is
       end if;
    end Wait_For_Service;
 
+   --------------------------
+   -- Asynchronous replies --
+   --------------------------
+
+   procedure Run_Async (This : in out Client; Data : RCL.DDS.Byte_Array; Sequence : ROSIDL.Int64)
+   --  Runs the callback of the asynchronous call Sequence with the reply
+   --  Data (this client's); nothing if the call is unknown (late after its
+   --  timeout, duplicate). Decode_Error (the call stays pending) when
+   --  Data is malformed.
+   is
+      Callback : Response_Callback;
+      Resp     : Response;
+      Header   : ROSIDL.CDR.Request_Header;
+   begin
+      if This.Asyncs.Count = 0 then
+         return;
+      end if;
+      Responses.Decode (Data, Resp, Header);
+      This.Asyncs.Take (Sequence, Callback);
+      if Callback /= null then
+         This.In_Callback := Ada.Task_Identification.Current_Task;
+         begin
+            Callback (Resp);
+         exception
+            when E : others =>
+               RCL.Logging.Error
+                 ("response callback of service " & To_String (This.Name)
+                  & " raised " & Ada.Exceptions.Exception_Information (E));
+         end;
+         This.In_Callback := Ada.Task_Identification.Null_Task_Id;
+      end if;
+   end Run_Async;
+
+   procedure Take_Replies (This : in out Client; Taken : out Natural) is
+   --  Reads the replies there are, running asynchronous callbacks (with
+   --  This.Lock held); malformed replies are logged and skipped.
+      Got : Boolean;
+
+      procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
+         pragma Unreferenced (Info);
+         Start : constant Ada.Streams.Stream_Element_Offset :=
+           Data'First + ROSIDL.CDR.Encapsulation_Size;
+         C     : ROSIDL.Static.Impl.Wire.Cursor :=
+           (Pos => Start, Origin => Start,
+            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
+         GUID  : ROSIDL.UInt64;
+         Seq   : ROSIDL.Int64;
+      begin
+         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
+         if GUID = This.Handle then
+            Run_Async (This, Data, Seq);
+         end if;
+      end Process;
+
+   begin
+      Taken := 0;
+      loop
+         begin
+            RCL.DDS.Take (This.Replies, Process'Access, Got);
+         exception
+            when E : ROSIDL.Decode_Error =>
+               RCL.Logging.Warn ("service " & To_String (This.Name)
+                                 & ": malformed reply dropped: "
+                                 & Ada.Exceptions.Exception_Message (E));
+               Got := True;
+         end;
+         exit when not Got;
+         Taken := Taken + 1;
+      end loop;
+   end Take_Replies;
+
+   Pump_Slice : constant Duration := 0.02;
+   --  Longest wait of the pumping task with the client's lock held (a
+   --  synchronous Call waits at most this long for the lock).
+
+   task body Pump is
+      Done    : Boolean := False;
+      Expired : Natural;
+      Taken   : Natural;
+      Ready   : RCL.DDS.Key_Array (1 .. 1);
+      Last    : Natural;
+   begin
+      while not Done loop
+         Owner.Lock.Seize;
+         begin
+            Take_Replies (Owner.all, Taken);
+            if Taken = 0 then
+               RCL.DDS.Wait (Owner.Waiting, Pump_Slice, Ready, Last);
+               Take_Replies (Owner.all, Taken);
+            end if;
+         exception
+            when E : others =>
+               RCL.Logging.Error ("reading the replies of service "
+                                  & To_String (Owner.Name) & ": "
+                                  & Ada.Exceptions.Exception_Message (E));
+         end;
+         Owner.Lock.Release;
+         Owner.Asyncs.Expire (Clock, Expired);
+         if Expired > 0 then
+            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
+                              & To_String (Owner.Name) & " got no response in time");
+         end if;
+         Owner.Asyncs.Pumping_Done (Done);
+      end loop;
+   end Pump;
+
+   protected body Async_Table is
+
+      procedure Add
+        (Sequence   : ROSIDL.Int64;
+         Call       : Async_Call;
+         Start_Pump : out Boolean) is
+      begin
+         Calls.Insert (Sequence, Call);
+         Start_Pump := not Pumping;
+         Pumping := True;
+      end Add;
+
+      procedure Take (Sequence : ROSIDL.Int64; Callback : out Response_Callback) is
+         Position : Async_Maps.Cursor := Calls.Find (Sequence);
+      begin
+         if Async_Maps.Has_Element (Position) then
+            Callback := Async_Maps.Element (Position).Callback;
+            Calls.Delete (Position);
+         else
+            Callback := null;
+         end if;
+      end Take;
+
+      procedure Remove (Sequence : ROSIDL.Int64) is
+      begin
+         Calls.Exclude (Sequence);
+      end Remove;
+
+      procedure Expire (Now : Time; Expired : out Natural) is
+         Position : Async_Maps.Cursor := Calls.First;
+         Next     : Async_Maps.Cursor;
+      begin
+         Expired := 0;
+         while Async_Maps.Has_Element (Position) loop
+            Next := Async_Maps.Next (Position);
+            if Async_Maps.Element (Position).Deadline < Now then
+               Calls.Delete (Position);
+               Expired := Expired + 1;
+            end if;
+            Position := Next;
+         end loop;
+      end Expire;
+
+      procedure Pumping_Done (Done : out Boolean) is
+      begin
+         Done := Stopping or else Calls.Is_Empty;
+         if Done then
+            Pumping := False;
+         end if;
+      end Pumping_Done;
+
+      procedure Stop is
+      begin
+         Stopping := True;
+      end Stop;
+
+      function Count return Natural is (Natural (Calls.Length));
+
+   end Async_Table;
+
    procedure Exchange
      (This     : in out Client;
       Req      : Request;
@@ -132,6 +298,8 @@ package body RCL.Services.Typed is
          if GUID = This.Handle and then Seq = Sequence then
             Responses.Decode (Data, Resp, Header);
             Done := True;
+         elsif GUID = This.Handle then
+            Run_Async (This, Data, Seq);
          end if;
          --  Replies to other clients of this topic, and late replies to
          --  calls that timed out, are dropped.
@@ -183,6 +351,11 @@ package body RCL.Services.Typed is
    is
       Deadline : constant Time := Deadline_Of (Timeout);
    begin
+      if Ada.Task_Identification."=" (This.In_Callback, Ada.Task_Identification.Current_Task) then
+         raise ROS_Exception with "service " & To_String (This.Name)
+           & ": a synchronous call from a response callback of the same client"
+           & " would wait for itself";
+      end if;
       This.Lock.Seize;
       begin
          Exchange (This, Req, Resp, Timeout, Deadline);
@@ -204,8 +377,59 @@ package body RCL.Services.Typed is
       end return;
    end Call;
 
+   ----------------
+   -- Call_Async --
+   ----------------
+
+   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
+
+   procedure Await_Pump_End (This : in out Client) is
+   begin
+      if This.Pumper /= null then
+         while not This.Pumper'Terminated loop
+            delay 0.001;  --  The pump is ending (Pumping_Done said so).
+         end loop;
+         Free (This.Pumper);
+      end if;
+   end Await_Pump_End;
+
+   procedure Call_Async
+     (This     : in out Client;
+      Req      : Request;
+      Callback : not null Response_Callback;
+      Timeout  : Duration := 60.0)
+   is
+      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
+      Start    : Boolean;
+
+      procedure Fill
+        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+      begin
+         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
+      end Fill;
+
+   begin
+      This.Asyncs.Add (Sequence, (Callback, Deadline_Of (Timeout)), Start);
+      if Start then
+         Await_Pump_End (This);
+         This.Pumper := new Pump (This'Unchecked_Access);
+      end if;
+      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+                            Fill'Access);
+   exception
+      when others =>
+         This.Asyncs.Remove (Sequence);
+         raise;
+   end Call_Async;
+
+   function Pending_Async (This : Client) return Natural is (This.Asyncs.Count);
+
    overriding procedure Finalize (This : in out Client) is
    begin
+      if This.Pumper /= null then
+         This.Asyncs.Stop;
+         Await_Pump_End (This);
+      end if;
       if This.Open then
          This.Open := False;
          RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);

@@ -34,7 +34,11 @@ with Ada.Finalization;
 with ROSIDL.Static.Service_Support;
 with RCL.Clients;
 
+private with Ada.Containers.Ordered_Maps;
+private with Ada.Real_Time;
 private with Ada.Strings.Unbounded;
+private with Ada.Task_Identification;
+private with Interfaces;
 private with RCL.Graph;
 private with ROSIDL.Mutexes;
 
@@ -98,6 +102,45 @@ package RCL.Services.Typed is
      with Pre => Is_Open (This);
    --  The same, returning a fresh response.
 
+   type Response_Callback is access procedure (Resp : Response);
+   --  What Call_Async runs with the response.
+
+   procedure Call_Async
+     (This     : in out Client;
+      Req      : Request;
+      Callback : not null Response_Callback;
+      Timeout  : Duration := 60.0)
+     with Pre => Is_Open (This);
+   --  Sends Req at once (without waiting for the service: call
+   --  Wait_For_Service first, a request sent before a server matched is
+   --  lost) and returns. Callback runs with the decoded response, as for
+   --  RCL.Clients.Call_Async, in a task of the client that lives while
+   --  asynchronous calls are pending (or in a synchronous Call of the same
+   --  client that reads the reply), NOT in the node's executor: state
+   --  shared with the node's callbacks needs a protected object. A
+   --  response not come within Timeout is forgotten (a warning is logged);
+   --  malformed replies are logged and skipped; an exception in Callback
+   --  is logged. Callback must not make a synchronous Call of this client
+   --  (ROS_Exception: it would wait for itself). Allocates (the table of
+   --  pending calls, the pumping task): not for the allocation-free path.
+   --  Example:
+   --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
+   --     package Adding is new RCL.Services.Typed (Add.Handling);
+   --     Last_Sum : ROSIDL.Int64 := 0 with Atomic;  --  read by other tasks
+   --
+   --     procedure On_Sum (Resp : Add.Response.Message) is
+   --     begin
+   --        Last_Sum := Resp.Sum;
+   --     end On_Sum;
+   --     C : Adding.Client;
+   --     C.Init (Node, "add_two_ints");
+   --     C.Wait_For_Service (Timeout => 5.0);
+   --     C.Call_Async ((A => 2, B => 3), On_Sum'Access, Timeout => 1.0);
+
+   function Pending_Async (This : Client) return Natural
+     with Pre => Is_Open (This);
+   --  Asynchronous calls still waiting for their response.
+
    overriding procedure Finalize (This : in out Client);
 
    function Call
@@ -134,7 +177,44 @@ package RCL.Services.Typed is
 private
 
    subtype Call_Lock is ROSIDL.Mutexes.Mutex;
-   --  One call at a time per client.
+   --  One call at a time per client; also held while the pumping task
+   --  reads replies (so each reply is read by one task).
+
+   type Async_Call is record
+      Callback : Response_Callback;
+      Deadline : Ada.Real_Time.Time;
+   end record;
+
+   package Async_Maps is new Ada.Containers.Ordered_Maps
+     (ROSIDL.Int64, Async_Call, Interfaces."<");
+
+   protected type Async_Table is
+      procedure Add
+        (Sequence   : ROSIDL.Int64;
+         Call       : Async_Call;
+         Start_Pump : out Boolean);
+      --  Start_Pump: no pumping task runs; the caller must start one.
+      procedure Take (Sequence : ROSIDL.Int64; Callback : out Response_Callback);
+      --  The callback of an asynchronous call, forgotten; null if unknown.
+      procedure Remove (Sequence : ROSIDL.Int64);
+      procedure Expire (Now : Ada.Real_Time.Time; Expired : out Natural);
+      --  Forgets the calls whose deadline is before Now.
+      procedure Pumping_Done (Done : out Boolean);
+      --  Done (and no pumping task any more) when no call is pending or
+      --  Stop was called.
+      procedure Stop;
+      function Count return Natural;
+   private
+      Calls    : Async_Maps.Map;
+      Pumping  : Boolean := False;
+      Stopping : Boolean := False;
+   end Async_Table;
+
+   type Client_Ref is access all Client;
+
+   task type Pump (Owner : Client_Ref);
+   --  Reads replies while asynchronous calls are pending.
+   type Pump_Access is access Pump;
 
    type Client is new Ada.Finalization.Limited_Controlled with record
       Open      : Boolean := False;
@@ -149,6 +229,12 @@ private
       --  The service was available at the last call (not checked again
       --  until a call times out).
       Lock      : Call_Lock;
+      Asyncs    : Async_Table;
+      Pumper    : Pump_Access;
+      In_Callback : Ada.Task_Identification.Task_Id :=
+        Ada.Task_Identification.Null_Task_Id
+        with Volatile;
+      --  The task running an asynchronous callback of this client.
    end record;
 
 end RCL.Services.Typed;

@@ -82,3 +82,43 @@ def test_typed_server_drops_malformed_request_and_goes_on():
         out = ss.stop(ada)
     assert "malformed" in out and "AddTwoInts_Request" in out, out
     assert "offset" in out, out
+
+
+class LateServer(ss.Server):
+    """An AddTwoInts server answering each request `delay` seconds after it
+    came (so a client that waited for the response is seen)."""
+
+    def __init__(self, dp, name, delay=0.3):
+        super().__init__(dp, name)
+        self.delay = delay
+        self.waiting = []
+
+    def serve_some(self):
+        now = time.monotonic()
+        for r in self.reader.take(N=64):
+            if isinstance(r, ss.AddTwoInts_Request_):
+                self.waiting.append((now + self.delay, r))
+        due = [r for t, r in self.waiting if t <= now]
+        self.waiting = [(t, r) for t, r in self.waiting if t > now]
+        for r in due:
+            self.writer.write(ss.AddTwoInts_Response_(guid=r.guid, seq=r.seq, sum=r.a + r.b))
+            self.answered += 1
+
+
+def test_typed_async_calls():
+    """RCL.Services.Typed.Call_Async (tests/src/tools/typed_async_client.adb):
+    returns before the (late) responses, each callback gets its own sum, a
+    synchronous call of the same client still works, and an asynchronous
+    call nobody answers is forgotten after its timeout with a warning and
+    without running its callback."""
+    srv = LateServer(ps.participant(), "/typed_async")
+    ada, out = ss.run_client_against(srv.serve_some, "typed_async_client", "typed_async")
+    assert ada.returncode == 0, out
+    assert "Returned before the responses: TRUE" in out, out
+    answers = sorted(int(line.split(":")[1]) for line in out.splitlines()
+                     if line.startswith("Async answer:"))
+    assert answers == [-2, 42], out
+    assert "Sync answer: 7" in out, out
+    assert "got no response in time" in out, out
+    assert "Unanswered call forgotten: TRUE, its callback ran 0 time(s)" in out, out
+    assert srv.answered == 3
