@@ -58,7 +58,9 @@ private package Sancta.Allocation.Annealers.Searches is
       Cycle_Best      : Long_Float := 0.0;
       Cycle           : Natural := 0;
       Reheating       : Boolean := False;
-      --  Reheat and cyclic schedules; Hybrid: past its geometric share.
+      Automatic_Hybrid : Boolean := False;
+      --  Reheat and cyclic schedules; Hybrid: past its geometric share, and
+      --  chosen by Automatic (not yet checked against the budget).
       Runs            : Positive := 1;
       Run             : Natural := 0;
       Runs_Decided    : Boolean := False;

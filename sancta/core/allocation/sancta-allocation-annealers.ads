@@ -42,8 +42,9 @@ with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 package Sancta.Allocation.Annealers is
 
    type Schedule_Kind is (Automatic, Geometric, Cyclic, Reheat, Hybrid);
-   --  Automatic: Hybrid for a pure makespan (Min_Max) with several robots,
-   --  Geometric otherwise.
+   --  Automatic: Hybrid for a pure makespan (Min_Max) with several robots
+   --  when the budget leaves its reheats 5 M moves (estimated after 1% of
+   --  it), Geometric otherwise.
    --  Geometric: T0 -> T1 over the budget. Cyclic: Cycles geometric runs,
    --  each from the best so far at a lower start temperature.
    --  Reheat: the old "manual" schedule: divide T by 1.85 after a stretch
