@@ -759,13 +759,18 @@ package body Sancta.Allocation.Annealers.Searches is
    procedure Hybrid_Step (This : in out Search; P : Problem; X : Long_Float) is
       Share : constant Long_Float := This.Opts.Geometric_Share;
    begin
-      if This.Automatic_Hybrid and then X >= 0.02 * Share and then X > 0.0 then
+      if This.Automatic_Hybrid then
          --  Chosen by Automatic: kept only if the budget leaves the reheats
          --  Reheat_Phase_Moves (estimated from the moves so far), else the
-         --  geometric schedule over the whole budget.
-         This.Automatic_Hybrid := False;
-         if Long_Float (This.Moves) / X * (1.0 - Share) < Reheat_Phase_Moves then
-            This.Opts.Schedule := Geometric;
+         --  geometric schedule over the whole budget, which also runs until
+         --  that is decided (so a short budget anneals exactly as Geometric).
+         if X >= 0.02 * Share and then X > 0.0 then
+            This.Automatic_Hybrid := False;
+            if Long_Float (This.Moves) / X * (1.0 - Share) < Reheat_Phase_Moves then
+               This.Opts.Schedule := Geometric;
+            end if;
+         end if;
+         if This.Automatic_Hybrid or else This.Opts.Schedule = Geometric then
             Geometric_Step (This, P, X);
             return;
          end if;
