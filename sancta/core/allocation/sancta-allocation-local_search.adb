@@ -632,11 +632,7 @@ package body Sancta.Allocation.Local_Search is
             F : constant Natural := Natural'Min (A.Length (R), P.Frozen_Length (R));
             Free : constant Natural := A.Length (R) - F;
          begin
-            if Free >= 5 and then Symmetric_For (P, R, A)
-              and then (Time_Limit = 0.0
-                        or else Budget_Clocks.Clock (Budget_Clock) - Started
-                                < To_Time_Span (Time_Limit))
-            then
+            if Free >= 5 and then Symmetric_For (P, R, A) then
                declare
                   Route : Count_Array (1 .. Free) := [for I in 1 .. Free => A.Tour (R, F + I)];
                   Depot : constant Positive :=

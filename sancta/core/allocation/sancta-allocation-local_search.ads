@@ -82,8 +82,8 @@ package Sancta.Allocation.Local_Search is
    --  locations) improved by the same search, Time_Limit shared among the
    --  routes by their task counts (0.0: one descent each, unbounded; not
    --  Kicks: descents only, each stopped at its share; a route whose
-   --  candidate lists, O (M^2) for M tasks, are not built within its share,
-   --  or reached past Time_Limit, is left as it is). Tasks, their robots,
+   --  candidate lists, O (M^2) for M tasks, are not built within its share
+   --  is left as it is). Tasks, their robots,
    --  choices and frozen prefixes stay; Stats.Before / After are the sums
    --  of the searched routes' base lengths.
 
