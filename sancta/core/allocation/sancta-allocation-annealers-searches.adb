@@ -176,6 +176,34 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
    end Propose_Best_Insert;
 
+   --  Makespan criteria: a task of the longest tour (the tour that sets the
+   --  makespan) moved next to one of its candidate neighbours (Or-opt of 1
+   --  to 3 tasks) or joined to it by 2-opt / 2-opt*: the neighbour moves,
+   --  aimed where the makespan can fall (uniform draws hit the longest of
+   --  10 tours one time in 10).
+   procedure Propose_Worst_Near
+     (This : in out Search; P : Problem; Mv : in out Move; Ok : out Boolean)
+   is
+      S : State renames This.Tours.all;
+      G : Random.Generator renames This.Generator;
+      K : constant Positive := This.Neighbours;
+      Worst : constant Positive := Worst_Robot (S);
+      Free_Length : constant Natural := S.Length (Worst) - P.Frozen_Length (Worst);
+      T : Positive;
+   begin
+      Ok := False;
+      if Free_Length = 0 then
+         return;
+      end if;
+      T := S.Task_At (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (G, Free_Length));
+      if Random.Below (G, 2) = 0 then
+         Or_Opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
+                 Random.Below (G, 4), Mv, Ok);
+      else
+         Two_Opt (P, S, T, 1 + Random.Below (G, K), Random.Below (G, 4), Mv, Ok);
+      end if;
+   end Propose_Worst_Near;
+
    --  Another alternative of an OR task T, at the best of a few random
    --  places (its own place among them).
    procedure Propose_Switch_Or
@@ -257,8 +285,14 @@ package body Sancta.Allocation.Annealers.Searches is
             end;
          when Move_Owner =>
             Random_Insert (P, S, G, T, True, Mv, Ok);
-         when Guided_Move | Log_Auction =>
-            Propose_Best_Insert (This, P, T, Kind = Guided_Move, Mv, Ok);
+         when Guided_Move =>
+            if This.Guide.C.Max_Weight > 0.0 and then Random.Below (G, 3) > 0 then
+               Propose_Worst_Near (This, P, Mv, Ok);
+            else
+               Propose_Best_Insert (This, P, T, True, Mv, Ok);
+            end if;
+         when Log_Auction =>
+            Propose_Best_Insert (This, P, T, False, Mv, Ok);
          when Segment_Move =>
             --  A random segment (any length) of T's tour, moved to a
             --  random place of a random robot, maybe reversed.

@@ -510,8 +510,11 @@ package body Sancta.Allocation.Tests is
          (End_Depot => True, Heterogeneous => True, Alternatives => True, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
           Alternatives => True, Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>)];
-      Kinds : constant array (1 .. 6) of Move_Kind :=
-        [Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Log_Auction, Ruin_Recreate];
+      Kinds : constant array (1 .. 7) of Move_Kind :=
+        [Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Log_Auction, Guided_Move,
+         Ruin_Recreate];
+      --  Guided_Move: for makespan criteria mostly neighbour moves out of
+      --  the longest tour.
       Seed : Interfaces.Unsigned_64 := 3_000;
    begin
       for K of Kinds loop
