@@ -55,7 +55,7 @@ package body Sancta.Allocation.Annealers.Tours is
       F : constant Positive := Positive'Min (From, N + 1);
       Old_Cost       : constant Cost := S.Robot_Cost (R);
       Old_Completion : constant Cost := S.Robot_Completion (R);
-      Bad : Natural := 0;
+      Bad : constant Natural := Unable_Count (P, S, R, R, 1, N);
    begin
       S.Location_At (R, 0) := P.Start (R);
       for I in F .. N loop
@@ -79,13 +79,6 @@ package body Sancta.Allocation.Annealers.Tours is
         S.Forward_Cost (R, N) + Robot_Distance (P, R, S.Location_At (R, N), P.Finish (R));
       S.Backward_Cost (R, N + 1) :=
         S.Backward_Cost (R, N) + Robot_Distance (P, R, P.Finish (R), S.Location_At (R, N));
-      if not P.All_Feasible then
-         for I in 1 .. N loop
-            if not P.Can_Do (R, S.Task_At (R, I)) then
-               Bad := Bad + 1;
-            end if;
-         end loop;
-      end if;
       S.Infeasible (R) := Bad;
       S.Robot_Cost (R) := M * S.Forward_Cost (R, N + 1) + Cost (Bad) * Infinity;
       S.Robot_Completion (R) := M * S.Forward_Sum (R, N) + Cost (Bad) * Infinity;
@@ -94,6 +87,48 @@ package body Sancta.Allocation.Annealers.Tours is
       S.Total_Square := S.Total_Square - Square_Of (Old_Cost) + Square_Of (S.Robot_Cost (R));
       Set_Tree_Cost (S, R, S.Robot_Cost (R));
    end Rebuild;
+
+   function Unable_Count (P : Problem; S : State; R, Tour : Positive; First, Last : Natural)
+     return Natural
+   is
+      Count : Natural := 0;
+   begin
+      if not P.All_Feasible then
+         for I in First .. Last loop
+            if not P.Can_Do (R, S.Task_At (Tour, I)) then
+               Count := Count + 1;
+            end if;
+         end loop;
+      end if;
+      return Count;
+   end Unable_Count;
+
+   procedure Cost_From_Scratch
+     (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;
+      Choice : Location_Array; Tour_Cost, Completion : out Cost)
+   is
+      Here : Natural := P.Start (R);
+      Time, Sum : Cost := 0;
+      Bad  : Natural := 0;
+      M    : constant Cost := Cost (P.Multiplier (R));
+   begin
+      for I in 1 .. Length loop
+         declare
+            T : constant Positive := Task_At (R, I);
+            L : constant Natural := Location_Of (P, T, Choice (T));
+         begin
+            Time := Time + Robot_Distance (P, R, Here, L);
+            Sum := Sum + Time;
+            if not P.Can_Do (R, T) then
+               Bad := Bad + 1;
+            end if;
+            Here := L;
+         end;
+      end loop;
+      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+      Tour_Cost := M * Time + Cost (Bad) * Infinity;
+      Completion := M * Sum + Cost (Bad) * Infinity;
+   end Cost_From_Scratch;
 
    procedure Compute_Neighbours (P : Problem; S : in out State) is
       K : constant Positive := S.Neighbours;
