@@ -103,7 +103,13 @@ package body Sancta.Allocation.Annealers.Moves is
                      Here := S.Location_At (RS, G.First);
                   end if;
                   Count := Count + Natural (N);
-                  Bad := Bad + Unable_Count (P, S, R, RS, G.First, G.Last);
+                  if not P.All_Feasible then
+                     for I in G.First .. G.Last loop
+                        if not P.Can_Do (R, S.Task_At (RS, I)) then
+                           Bad := Bad + 1;
+                        end if;
+                     end loop;
+                  end if;
                end;
             end if;
          end;

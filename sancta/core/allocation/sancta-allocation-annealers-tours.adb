@@ -55,7 +55,7 @@ package body Sancta.Allocation.Annealers.Tours is
       F : constant Positive := Positive'Min (From, N + 1);
       Old_Cost       : constant Cost := S.Robot_Cost (R);
       Old_Completion : constant Cost := S.Robot_Completion (R);
-      Bad : constant Natural := Unable_Count (P, S, R, R, 1, N);
+      Bad : Natural := 0;
    begin
       S.Location_At (R, 0) := P.Start (R);
       for I in F .. N loop
@@ -79,6 +79,13 @@ package body Sancta.Allocation.Annealers.Tours is
         S.Forward_Cost (R, N) + Robot_Distance (P, R, S.Location_At (R, N), P.Finish (R));
       S.Backward_Cost (R, N + 1) :=
         S.Backward_Cost (R, N) + Robot_Distance (P, R, P.Finish (R), S.Location_At (R, N));
+      if not P.All_Feasible then
+         for I in 1 .. N loop
+            if not P.Can_Do (R, S.Task_At (R, I)) then
+               Bad := Bad + 1;
+            end if;
+         end loop;
+      end if;
       S.Infeasible (R) := Bad;
       S.Robot_Cost (R) := M * S.Forward_Cost (R, N + 1) + Cost (Bad) * Infinity;
       S.Robot_Completion (R) := M * S.Forward_Sum (R, N) + Cost (Bad) * Infinity;
@@ -87,21 +94,6 @@ package body Sancta.Allocation.Annealers.Tours is
       S.Total_Square := S.Total_Square - Square_Of (Old_Cost) + Square_Of (S.Robot_Cost (R));
       Set_Tree_Cost (S, R, S.Robot_Cost (R));
    end Rebuild;
-
-   function Unable_Count (P : Problem; S : State; R, Tour : Positive; First, Last : Natural)
-     return Natural
-   is
-      Count : Natural := 0;
-   begin
-      if not P.All_Feasible then
-         for I in First .. Last loop
-            if not P.Can_Do (R, S.Task_At (Tour, I)) then
-               Count := Count + 1;
-            end if;
-         end loop;
-      end if;
-      return Count;
-   end Unable_Count;
 
    procedure Cost_From_Scratch
      (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;

@@ -85,11 +85,6 @@ private package Sancta.Allocation.Annealers.Tours is
    --  Recomputes the caches of robot R from position From on (its tasks in
    --  Task_At (R, 1 .. Length (R))), its costs, the totals and the tree.
 
-   function Unable_Count (P : Problem; S : State; R, Tour : Positive; First, Last : Natural)
-     return Natural with Inline;
-   --  How many tasks at positions First .. Last of robot Tour's tour robot R
-   --  cannot do (0 at once when every robot can do every task).
-
    procedure Cost_From_Scratch
      (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;
       Choice : Location_Array; Tour_Cost, Completion : out Cost);
