@@ -57,19 +57,22 @@ package body RCL.Actions.Servers is
    --  rcl_action's goal state machine (plus accepted -> aborted, which
    --  rclcpp allows on shutdown).
 
+   type Transition_Outcome is record
+      Done    : Boolean := False;
+      Current : Goal_Status := Unknown;
+      --  The status before the transition.
+      Waiting : Request_Vectors.Vector;
+      --  The get_result requests to answer now (the goal ended).
+   end record;
+
    protected type Goal_Table (Timeout_Ns : RCL.Clocks.Nanoseconds) is
       procedure Add (Id : Goal_Id; Goal : Message; Stamp : Long_Long_Integer; Added : out Boolean);
       function Status_Of (Id : Goal_Id) return Goal_Status;
       function Goal_Of (Id : Goal_Id) return Message;
       procedure Transition
-        (Id      : Goal_Id;
-         To      : Goal_Status;
-         Result  : Message;
-         Done    : out Boolean;
-         Current : out Goal_Status;
-         Waiting : out Request_Vectors.Vector);
-      --  When allowed (Done): To, Result kept, the queued get_result
-      --  requests handed out. Current: the status before the call.
+        (Id : Goal_Id; To : Goal_Status; Result : Message; Outcome : out Transition_Outcome);
+      --  When allowed (Outcome.Done): To, Result kept, the queued get_result
+      --  requests handed out.
       procedure Wait_Result
         (Id : Goal_Id; Request : RCL.Services.Request_Id;
          Status : out Goal_Status; Result : out Message);
@@ -156,17 +159,11 @@ package body RCL.Actions.Servers is
            with "goal " & Image (Id) & " is unknown (expired?)");
 
       procedure Transition
-        (Id      : Goal_Id;
-         To      : Goal_Status;
-         Result  : Message;
-         Done    : out Boolean;
-         Current : out Goal_Status;
-         Waiting : out Request_Vectors.Vector) is
+        (Id : Goal_Id; To : Goal_Status; Result : Message; Outcome : out Transition_Outcome) is
       begin
-         Waiting.Clear;
-         Current := Status_Of (Id);
-         Done := Allowed (Current, To);
-         if Done then
+         Outcome := (Done => False, Current => Status_Of (Id), Waiting => <>);
+         Outcome.Done := Allowed (Outcome.Current, To);
+         if Outcome.Done then
             declare
                E : Goal_Entry renames Goals.Reference (Id);
             begin
@@ -174,7 +171,7 @@ package body RCL.Actions.Servers is
                if To in Terminal_Status then
                   E.Result := Result;
                   E.Ended_At := RCL.Clocks.Now (RCL.Clocks.Steady);
-                  Waiting := E.Waiting;
+                  Outcome.Waiting := E.Waiting;
                   E.Waiting.Clear;
                end if;
             end;
@@ -352,12 +349,10 @@ package body RCL.Actions.Servers is
                      or else State.On_Cancel (Node, (State, C.Id)) = Accept_Cancel)
          then
             declare
-               Done    : Boolean;
-               Current : Goal_Status;
-               Waiting : Request_Vectors.Vector;
+               Outcome : Transition_Outcome;
             begin
-               State.Goals.Transition (C.Id, Canceling, Response, Done, Current, Waiting);
-               if Done then
+               State.Goals.Transition (C.Id, Canceling, Response, Outcome);
+               if Outcome.Done then
                   Now_Canceling.Append (C);
                end if;
             end;
@@ -475,18 +470,16 @@ package body RCL.Actions.Servers is
      (Goal.State.Goals.Status_Of (Goal.Id));
 
    procedure Move (Goal : Goal_Handle; To : Goal_Status; Result : Message) is
-      Done    : Boolean;
-      Current : Goal_Status;
-      Waiting : Request_Vectors.Vector;
+      Outcome : Transition_Outcome;
    begin
-      Goal.State.Goals.Transition (Goal.Id, To, Result, Done, Current, Waiting);
-      if not Done then
+      Goal.State.Goals.Transition (Goal.Id, To, Result, Outcome);
+      if not Outcome.Done then
          raise ROS_Exception with "action " & Ada.Strings.Unbounded.To_String (Goal.State.Name)
-           & ": goal " & Image (Goal.Id) & " cannot go from " & Status_Image (Current)
+           & ": goal " & Image (Goal.Id) & " cannot go from " & Status_Image (Outcome.Current)
            & " to " & Status_Image (To);
       end if;
       Publish_Status (Goal.State);
-      for R of Waiting loop
+      for R of Outcome.Waiting loop
          Send_Result (Goal.State, R, To, Result);
       end loop;
    end Move;

@@ -1,6 +1,7 @@
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
+with ROSIDL.YAML_Strings;
 with RCL.Parameters.Initial_Values;
 with RCL.Parameters.Serving;
 with RCL.Parameters.Stores;
@@ -135,15 +136,6 @@ package body RCL.Parameters is
    ----------------
 
    function YAML_Image (V : Value) return String is
-      function Quote (S : String) return String is
-         R : Unbounded_String := To_Unbounded_String ("'");
-      begin
-         for C of S loop
-            Append (R, (if C = ''' then "''" else [C]));
-         end loop;
-         return To_String (R) & "'";
-      end Quote;
-
       function Real (D : Long_Float) return String is
          S : constant String := Double_Image (D);
       begin
@@ -155,7 +147,7 @@ package body RCL.Parameters is
 
       function Bool (B : Boolean) return String is (if B then "true" else "false");
    begin
-      return Format (V, "~", Bool'Access, Real'Access, Quote'Access);
+      return Format (V, "~", Bool'Access, Real'Access, ROSIDL.YAML_Strings.Quoted'Access);
    end YAML_Image;
 
    ---------------

@@ -79,7 +79,9 @@ package RCL.Parameters is
 
    function YAML_Image (V : Value) return String;
    --  V as a YAML flow value that Parse reads back as V: "true", "10",
-   --  "2.5", "'it''s'", "[1, 2]" (strings always single-quoted).
+   --  "2.5", "'it''s'", "[1, 2]" (strings always quoted: single quotes,
+   --  double quotes with escapes when they hold a line break or other
+   --  special characters; see ROSIDL.YAML_Strings.Quoted).
 
    function From_YAML (From : RCL.YAML.Document; N : RCL.YAML.Node) return Value;
    --  A scalar (bool, integer, double, string) or a sequence of one kind

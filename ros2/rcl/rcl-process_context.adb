@@ -17,8 +17,7 @@ package body RCL.Process_Context is
          Dom       : RCL.DDS.Domain_Id;
          Local     : Boolean;
          User_Data : String;
-         Secured   : Boolean;
-         Files     : RCL.Security.Enclave_Files);
+         Security  : RCL.Security.Credentials);
       function Current return Participant_Access;
       function Initialized return Boolean;
       function Domain return RCL.DDS.Domain_Id;
@@ -42,14 +41,13 @@ package body RCL.Process_Context is
          Dom       : RCL.DDS.Domain_Id;
          Local     : Boolean;
          User_Data : String;
-         Secured   : Boolean;
-         Files     : RCL.Security.Enclave_Files)
+         Security  : RCL.Security.Credentials)
       is
          New_Part : Participant_Access := new RCL.DDS.Participant;
       begin
          if Part = null then
             begin
-               RCL.DDS.Create (New_Part.all, Dom, Local, User_Data, Secured, Files);
+               RCL.DDS.Create (New_Part.all, Dom, Local, User_Data, Security);
             exception
                when others =>
                   Free (New_Part);
@@ -105,13 +103,10 @@ package body RCL.Process_Context is
       if P = null then
          declare
             Settings : constant RCL.Security.Settings := RCL.Security.Current;
-            Secured  : Boolean;
-            Files    : RCL.Security.Enclave_Files;
          begin
-            RCL.Security.Resolve (Settings, Secured, Files);
             State.Init (P, Dom, Local,
                         "enclave=" & Ada.Strings.Unbounded.To_String (Settings.Enclave) & ";",
-                        Secured, Files);
+                        RCL.Security.Resolve (Settings));
          end;
       end if;
    end Ensure;

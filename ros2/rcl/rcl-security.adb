@@ -74,7 +74,7 @@ package body RCL.Security is
       return Keystore & "/enclaves" & (if Relative = "" then "" else "/" & Relative);
    end Enclave_Directory;
 
-   procedure Resolve (This : Settings; Secure : out Boolean; Files : out Enclave_Files) is
+   function Resolve (This : Settings) return Credentials is
 
       procedure Refuse (Why : String) is
       begin
@@ -90,17 +90,16 @@ package body RCL.Security is
 
       Keystore : constant String := To_String (This.Keystore);
       Name     : constant String := To_String (This.Enclave);
+      Files    : Enclave_Files;
    begin
-      Secure := False;
-      Files := [others => Null_Unbounded_String];
       if not This.Enabled then
-         return;
+         return Unsecured;
       elsif Keystore = "" then
          Refuse ("ROS_SECURITY_ENABLE is true but ROS_SECURITY_KEYSTORE is not set");
-         return;
+         return Unsecured;
       elsif Name = "" or else Name (Name'First) /= '/' then
          Refuse ("enclave """ & Name & """: an enclave name starts with ""/""");
-         return;
+         return Unsecured;
       end if;
       declare
          Dir : constant String := Enclave_Directory (Keystore, Name);
@@ -108,7 +107,7 @@ package body RCL.Security is
          if not Ada.Directories.Exists (Dir) then
             Refuse ("no directory for enclave """ & Name & """ in keystore " & Keystore
                     & " (expected " & Dir & ")");
-            return;
+            return Unsecured;
          end if;
          for K in File_Kind loop
             declare
@@ -116,13 +115,13 @@ package body RCL.Security is
             begin
                if not Ada.Directories.Exists (Path) then
                   Refuse ("enclave """ & Name & """ lacks " & Path);
-                  return;
+                  return Unsecured;
                end if;
                Files (K) := To_Unbounded_String (Ada.Directories.Full_Name (Path));
             end;
          end loop;
       end;
-      Secure := True;
+      return (Secured => True, Files => Files);
    end Resolve;
 
 end RCL.Security;

@@ -58,10 +58,20 @@ package RCL.Security is
    function Enclave_Directory (Keystore, Enclave : String) return String;
    --  Keystore/enclaves/<enclave without its leading "/">.
 
-   procedure Resolve (This : Settings; Secure : out Boolean; Files : out Enclave_Files);
-   --  Secure with the enclave's files when enabled and all are there.
+   type Credentials (Secured : Boolean := False) is record
+      case Secured is
+         when True  => Files : Enclave_Files;
+         when False => null;
+      end case;
+   end record;
+   --  How a participant is secured: not at all, or with an enclave's files.
+
+   Unsecured : constant Credentials := (Secured => False);
+
+   function Resolve (This : Settings) return Credentials;
+   --  Secured with the enclave's files when enabled and all are there.
    --  Missing keystore, enclave or file: under Enforce raises ROS_Exception
    --  "SECURITY ERROR: ..." naming what is missing; under Permissive warns on
-   --  standard error and leaves Secure False.
+   --  standard error and returns Unsecured.
 
 end RCL.Security;

@@ -12,7 +12,6 @@ package body RCL.Services is
    use Ada.Strings.Unbounded;
 
    use type Ada.Calendar.Time;
-   use type RCL.DDS.Matching.Key_Lookup;
    use type RCL.DDS.GUID;
 
    Deep_History : constant := 1000;
@@ -84,7 +83,6 @@ package body RCL.Services is
    --  rmw_cyclonedds's check_for_response_reader, waiting up to
    --  Reply_Match_Wait: True when the reply may be written.
    is
-      Result   : RCL.DDS.Matching.Key_Lookup;
       Id       : Unbounded_String;
       Deadline : constant Ada.Calendar.Time := Ada.Calendar.Clock + Reply_Match_Wait;
    begin
@@ -94,21 +92,25 @@ package body RCL.Services is
          return True;
       end if;
       loop
-         RCL.DDS.Matching.Writer_Key
-           (This.Requests.Reader, Requester, "clientid", Result, Id);
-         case Result is
-            when RCL.DDS.Matching.Gone =>
-               return False;
-            when RCL.DDS.Matching.No_Key =>
-               return True;  --  An old client without id: assume it is ready.
-            when RCL.DDS.Matching.Found =>
-               if RCL.DDS.Matching.Has_Matched_Reader
-                    (This.Replies, "clientid", To_String (Id))
-               then
-                  This.Ready.Include (Requester);
-                  return True;
-               end if;
-         end case;
+         declare
+            Client_Id : constant RCL.DDS.Matching.Key_Value :=
+              RCL.DDS.Matching.Writer_Key (This.Requests.Reader, Requester, "clientid");
+         begin
+            case Client_Id.Lookup is
+               when RCL.DDS.Matching.Gone =>
+                  return False;
+               when RCL.DDS.Matching.No_Key =>
+                  return True;  --  An old client without id: assume it is ready.
+               when RCL.DDS.Matching.Found =>
+                  Id := Client_Id.Value;
+                  if RCL.DDS.Matching.Has_Matched_Reader
+                       (This.Replies, "clientid", To_String (Id))
+                  then
+                     This.Ready.Include (Requester);
+                     return True;
+                  end if;
+            end case;
+         end;
          exit when Ada.Calendar.Clock >= Deadline;
          delay 0.01;
       end loop;

@@ -439,17 +439,28 @@ package body RCL.YAML is
 
       --  Plain scalars ----------------------------------------------------
 
-      function Plain_To_Line_End return Positive is
+      type Plain_Context is (Block, Flow, Flow_Key);
+      --  Where a plain scalar stands: it ends at the line end in a block; in
+      --  a flow collection also at ',', a bracket or brace, and at ": " (at
+      --  any ':' in a mapping's key).
+
+      function Plain_Scalar (Context : Plain_Context) return Positive is
          L     : constant Positive := Line;
          C     : constant Positive := Col;
          Start : constant Positive := Pos;
          Last  : Natural := Pos - 1;
+
+         function Ends_Here return Boolean is
+           (Cur = L1.LF
+            or else (Cur = '#' and then Pos > Start and then T (Pos - 1) in ' ' | L1.HT)
+            or else (Context /= Block
+                     and then (Cur in ',' | ']' | '}' | '[' | '{'
+                               or else (Cur = ':'
+                                        and then (Blank_After (1) or Context = Flow_Key)))));
       begin
          Check_Unsupported;
-         while not EOF and then Cur /= L1.LF
-           and then not (Cur = '#' and then Pos > Start and then T (Pos - 1) in ' ' | L1.HT)
-         loop
-            if Cur = ':' and then Blank_After (1) then
+         while not EOF and then not Ends_Here loop
+            if Context = Block and then Cur = ':' and then Blank_After (1) then
                Fail ("a mapping cannot start on the line of its key (put it on its own line"
                      & " or use {...})");
             end if;
@@ -458,8 +469,11 @@ package body RCL.YAML is
             end if;
             Advance;
          end loop;
+         if Last < Start then
+            Fail ("expected a value", L, C);
+         end if;
          return New_Node (Scalar, L, C, T (Start .. Last));
-      end Plain_To_Line_End;
+      end Plain_Scalar;
 
       --  Flow collections -----------------------------------------------
 
@@ -478,28 +492,6 @@ package body RCL.YAML is
 
       function Flow_Node return Positive;
 
-      function Flow_Plain (In_Map_Key : Boolean) return Positive is
-         L     : constant Positive := Line;
-         C     : constant Positive := Col;
-         Start : constant Positive := Pos;
-         Last  : Natural := Pos - 1;
-      begin
-         Check_Unsupported;
-         while not EOF and then Cur not in ',' | ']' | '}' | '[' | '{' | L1.LF
-           and then not (Cur = ':' and then (Blank_After (1) or In_Map_Key))
-           and then not (Cur = '#' and then Pos > Start and then T (Pos - 1) in ' ' | L1.HT)
-         loop
-            if Cur not in ' ' | L1.HT | L1.CR then
-               Last := Pos;
-            end if;
-            Advance;
-         end loop;
-         if Last < Start then
-            Fail ("expected a value", L, C);
-         end if;
-         return New_Node (Scalar, L, C, T (Start .. Last));
-      end Flow_Plain;
-
       function Flow_Item (In_Map_Key : Boolean := False) return Positive is
       begin
          Skip_Flow_Space;
@@ -511,7 +503,7 @@ package body RCL.YAML is
          elsif Cur in '"' | ''' then
             return Quoted_Scalar;
          else
-            return Flow_Plain (In_Map_Key);
+            return Plain_Scalar (if In_Map_Key then Flow_Key else Flow);
          end if;
       end Flow_Item;
 
@@ -637,7 +629,7 @@ package body RCL.YAML is
             Fail ("a sequence cannot start on the line of its key (put it on its own line"
                   & " or use [...])");
          else
-            N := Plain_To_Line_End;
+            N := Plain_Scalar (Block);
          end if;
          return N;
       end Inline_Value;
@@ -768,7 +760,7 @@ package body RCL.YAML is
             N := Quoted_Scalar;
             Expect_Line_End ("a quoted string");
          else
-            N := Plain_To_Line_End;
+            N := Plain_Scalar (Block);
          end if;
          Leave;
          return N;

@@ -1,5 +1,6 @@
 with Ada.Unchecked_Deallocation;
 with Interfaces;
+with ROSIDL.Wide_Text_Builders;
 
 package body ROSIDL.Dynamic.Codec is
 
@@ -584,10 +585,7 @@ package body ROSIDL.Dynamic.Codec is
                            & " characters exceeds its bound" & T.String_Bound'Image);
                      end if;
                      declare
-                        --  Built by chunks: L may be large (no stack copy).
-                        Chunk : Wide_Wide_String (1 .. 256) := [others => ' '];
-                        Used  : Natural := 0;
-                        Text  : Unbounded_Wide_Wide_String;
+                        Text : Wide_Text_Builders.Builder;
                      begin
                         for Unused in 1 .. L loop
                            declare
@@ -600,16 +598,10 @@ package body ROSIDL.Dynamic.Codec is
                                    (S, "wstring character" & Code'Image
                                     & " out of range");
                               end if;
-                              if Used = Chunk'Last then
-                                 Append (Text, Chunk);
-                                 Used := 0;
-                              end if;
-                              Used := Used + 1;
-                              Chunk (Used) := Wide_Wide_Character'Val (Code);
+                              Wide_Text_Builders.Append (Text, Wide_Wide_Character'Val (Code));
                            end;
                         end loop;
-                        Append (Text, Chunk (1 .. Used));
-                        Cell.Extra.WTexts (I) := Text;
+                        Wide_Text_Builders.Take (Text, Cell.Extra.WTexts (I));
                      end;
                   end;
                end loop;

@@ -4,10 +4,12 @@ with Ada.Numerics.Big_Numbers.Big_Integers;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Unchecked_Conversion;
 with Interfaces;
+with ROSIDL.YAML_Strings;
 
 package body ROSIDL.Dynamic.Images is
 
    use Ada.Strings.Fixed;
+   use ROSIDL.YAML_Strings;
    use type Interfaces.Unsigned_64;
    use type Interfaces.Unsigned_32;
    use type Interfaces.Unsigned_8;
@@ -210,8 +212,6 @@ package body ROSIDL.Dynamic.Images is
       return Bits_Image (Bits);
    end Float64_Image;
 
-   Hex : constant String := "0123456789ABCDEF";
-
    --  PyYAML's implicit resolvers (YAML 1.1): a plain scalar that would
    --  read back as a bool, null, int, float, timestamp, merge or value key
    --  must be quoted.
@@ -364,98 +364,6 @@ package body ROSIDL.Dynamic.Images is
       or else Resolves_To_Float (S) or else Resolves_To_Timestamp (S)
       or else S = "<<" or else S = "=");
 
-   function Double_Quoted (S : String) return String is
-      --  PyYAML's double-quoted style with allow_unicode: printable text as
-      --  it is, everything else escaped (\e, \N, \x7F, \u2028 as \L,
-      --  \U0001F600...). S is UTF-8; when it is not valid UTF-8, bytes from
-      --  16#80# on are escaped one by one (\xC3).
-      subtype Code is Natural;
-      R : Unbounded_String := To_Unbounded_String ("""");
-
-      function Hex_Digits (C : Code; Width : Positive) return String is
-         Result : String (1 .. Width);
-         V      : Natural := C;
-      begin
-         for I in reverse Result'Range loop
-            Result (I) := Hex (V mod 16 + 1);
-            V := V / 16;
-         end loop;
-         return Result;
-      end Hex_Digits;
-
-      function Escape (C : Code) return String is
-        (case C is
-            when 16#00# => "0", when 16#07# => "a", when 16#08# => "b", when 16#09# => "t",
-            when 16#0A# => "n", when 16#0B# => "v", when 16#0C# => "f", when 16#0D# => "r",
-            when 16#1B# => "e", when 16#22# => """", when 16#5C# => "\", when 16#85# => "N",
-            when 16#2028# => "L", when 16#2029# => "P",
-            when others => "");
-      --  PyYAML's named escapes.
-
-      procedure Put (C : Code) is
-      begin
-         if Escape (C) /= "" then
-            Append (R, "\" & Escape (C));
-         elsif C in 16#20# .. 16#7E# then
-            Append (R, Character'Val (C));
-         elsif C in 16#A0# .. 16#D7FF# | 16#E000# .. 16#FEFE# | 16#FF00# .. 16#FFFD# then
-            Append (R, Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Encode
-                         ([Wide_Wide_Character'Val (C)]));
-         elsif C <= 16#FF# then
-            Append (R, "\x" & Hex_Digits (C, 2));
-         elsif C <= 16#FFFF# then
-            Append (R, "\u" & Hex_Digits (C, 4));
-         else
-            Append (R, "\U" & Hex_Digits (C, 8));
-         end if;
-      end Put;
-   begin
-      declare
-         Text : constant Wide_Wide_String :=
-           Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (S);
-      begin
-         for C of Text loop
-            Put (Wide_Wide_Character'Pos (C));
-         end loop;
-      end;
-      return To_String (R) & """";
-   exception
-      when Ada.Strings.UTF_Encoding.Encoding_Error =>
-         R := To_Unbounded_String ("""");
-         for C of S loop
-            Put (Character'Pos (C));
-         end loop;
-         return To_String (R) & """";
-   end Double_Quoted;
-
-   function Needs_Double_Quotes (S : String) return Boolean is
-      --  PyYAML's "special characters": anything but LF, printable ASCII,
-      --  NEL and printable Unicode (U+A0..U+D7FF, U+E000..U+FFFD but the
-      --  BOM, U+10000..U+10FFFE); also invalid UTF-8, and (approximation)
-      --  every line break (PyYAML folds such a string into a multi-line
-      --  single-quoted scalar unless a space borders a break).
-   begin
-      if (for some C of S => C not in ' ' .. '~' | Character'Val (16#80#) .. Character'Last)
-      then
-         return True;
-      elsif (for all C of S => C in ' ' .. '~') then
-         return False;
-      end if;
-      declare
-         Text : constant Wide_Wide_String :=
-           Ada.Strings.UTF_Encoding.Wide_Wide_Strings.Decode (S);
-      begin
-         return (for some C of Text =>
-                   Wide_Wide_Character'Pos (C) not in 16#20# .. 16#7E# | 16#A0# .. 16#D7FF#
-                     | 16#E000# .. 16#FEFE#
-                     | 16#FF00# .. 16#FFFD# | 16#1_0000# .. 16#10_FFFE#
-                   or else Wide_Wide_Character'Pos (C) in 16#2028# .. 16#2029#);
-      end;
-   exception
-      when Ada.Strings.UTF_Encoding.Encoding_Error =>
-         return True;
-   end Needs_Double_Quotes;
-
    function Yaml_String (S : String) return String is
       --  As PyYAML (allow_unicode, unbounded width, as ros2 topic echo uses)
       --  writes a string: plain when it can, single-quoted when a plain
@@ -487,14 +395,7 @@ package body ROSIDL.Dynamic.Images is
         or else (S'Length >= 3 and then S (S'First .. S'First + 2) in "---" | "..."
                  and then Followed_By_Space (S'First + 2))
       then
-         declare
-            R : Unbounded_String := To_Unbounded_String ("'");
-         begin
-            for C of S loop
-               Append (R, (if C = ''' then "''" else [C]));
-            end loop;
-            return To_String (R) & "'";
-         end;
+         return Single_Quoted (S);
       end if;
       return S;
    end Yaml_String;

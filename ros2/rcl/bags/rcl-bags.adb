@@ -6,6 +6,7 @@ with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
+with ROSIDL.YAML_Strings;
 with RCL.YAML;
 
 package body RCL.Bags is
@@ -327,20 +328,6 @@ package body RCL.Bags is
    function Message_Count (This : Bag_Writer) return Unsigned_64 is (This.Total);
    function File_Count (This : Bag_Writer) return Natural is (Natural (This.Files.Length));
 
-   function YAML_Quoted (S : String) return String is
-      Result : Unbounded_String := To_Unbounded_String ("""");
-   begin
-      for C of S loop
-         case C is
-            when '"' => Append (Result, "\""");
-            when '\' => Append (Result, "\\");
-            when LF => Append (Result, "\n");
-            when others => Append (Result, C);
-         end case;
-      end loop;
-      return To_String (Result) & """";
-   end YAML_Quoted;
-
    procedure Write_Metadata (This : Bag_Writer) is
       use Ada.Text_IO;
       F      : File_Type;
@@ -371,7 +358,8 @@ package body RCL.Bags is
          Put_Line (F, "        name: " & To_String (T.Name));
          Put_Line (F, "        type: " & To_String (T.Type_Name));
          Put_Line (F, "        serialization_format: cdr");
-         Put_Line (F, "        offered_qos_profiles: " & YAML_Quoted (To_String (T.QoS_Text)));
+         Put_Line (F, "        offered_qos_profiles: "
+                   & ROSIDL.YAML_Strings.Double_Quoted (To_String (T.QoS_Text)));
          Put_Line (F, "      message_count: " & Image (T.Count));
       end loop;
       Put_Line (F, "  compression_format: """"");

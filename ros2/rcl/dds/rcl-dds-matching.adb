@@ -27,13 +27,7 @@ package body RCL.DDS.Matching is
 
    type Guid_Bytes is array (1 .. 16) of Unsigned_8 with Convention => C;
 
-   procedure Writer_Key
-     (This        : Reader;
-      Writer_GUID : GUID;
-      Key         : String;
-      Result      : out Key_Lookup;
-      Value       : out Unbounded_String)
-   is
+   function Writer_Key (This : Reader; Writer_GUID : GUID; Key : String) return Key_Value is
       function Lookup
         (R : C.int; G : Guid_Bytes; K : C.char_array; V : out C.char_array;
          Cap : C.size_t) return C.int
@@ -43,19 +37,15 @@ package body RCL.DDS.Matching is
         Lookup (C.int (This.Handle), Guid_Bytes (Writer_GUID), C.To_C (Key), Buffer,
                 Buffer'Length);
    begin
-      Value := Null_Unbounded_String;
       if Code = 1 then
-         Result := Found;
-         Value := To_Unbounded_String (C.To_Ada (Buffer));
+         return (Lookup => Found, Value => To_Unbounded_String (C.To_Ada (Buffer)));
       elsif Code = 0 then
-         Result := No_Key;
-      elsif Code = -1 then
-         Result := Gone;
-      else
+         return (Lookup => No_Key);
+      elsif Code /= -1 then
          Check (Integer (Code + 1), "reading the matched writers of """
                 & This.Topic_Name.all & """");
-         Result := Gone;
       end if;
+      return (Lookup => Gone);
    end Writer_Key;
 
    ------------------------

@@ -24,15 +24,18 @@ package RCL.DDS.Matching is
 
    type Key_Lookup is (Found, No_Key, Gone);
 
-   procedure Writer_Key
-     (This        : Reader;
-      Writer_GUID : GUID;
-      Key         : String;
-      Result      : out Key_Lookup;
-      Value       : out Unbounded_String)
+   type Key_Value (Lookup : Key_Lookup := Gone) is record
+      case Lookup is
+         when Found         => Value : Unbounded_String;
+         when No_Key | Gone => null;
+      end case;
+   end record;
+   --  Gone: no such matched writer; No_Key: it has no such key.
+
+   function Writer_Key (This : Reader; Writer_GUID : GUID; Key : String) return Key_Value
      with Pre => Is_Open (This);
    --  The USER_DATA value of Key ("clientid") of the writer matched by This
-   --  whose GUID is Writer_GUID. Gone: no such matched writer.
+   --  whose GUID is Writer_GUID.
 
    function Has_Matched_Reader (This : Writer; Key, Value : String) return Boolean
      with Pre => Is_Open (This);

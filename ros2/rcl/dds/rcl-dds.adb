@@ -271,8 +271,7 @@ package body RCL.DDS is
       Domain         : Domain_Id;
       Localhost_Only : Boolean;
       User_Data      : String := "enclave=/;";
-      Secured        : Boolean := False;
-      Files          : RCL.Security.Enclave_Files := [others => <>])
+      Security       : RCL.Security.Credentials := RCL.Security.Unsecured)
    is
       Q      : Thin.Qos_Ptr;
       Result : C.int;
@@ -282,9 +281,9 @@ package body RCL.DDS is
       This.Domain := Dom;
       Q := Thin.Create_Qos;
       Thin.Qset_Userdata (Q, User_Data'Address, User_Data'Length);
-      if Secured then
+      if Security.Secured then
          begin
-            Set_Security (Q, Files);
+            Set_Security (Q, Security.Files);
          exception
             when others =>
                Thin.Delete_Qos (Q);
@@ -296,11 +295,11 @@ package body RCL.DDS is
       Thin.Delete_Qos (Q);
       if Result < 0 then
          This.Finalize;
-         if Secured then
+         if Security.Secured then
             raise ROS_Exception with "creating the secured DDS participant on domain"
               & Domain'Image & ": " & Error_Text (Integer (Result))
               & ": Cyclone's security plugins refused the enclave's files "
-              & Ada.Strings.Unbounded.To_String (Files (RCL.Security.Permissions))
+              & Ada.Strings.Unbounded.To_String (Security.Files (RCL.Security.Permissions))
               & " and the others beside it (a signature that does not verify against"
               & " permissions_ca.cert.pem, an expired or foreign certificate; Cyclone's"
               & " own reason is printed above)";

@@ -61,13 +61,12 @@ package RCL.DDS is
       Domain         : Domain_Id;
       Localhost_Only : Boolean;
       User_Data      : String := "enclave=/;";
-      Secured        : Boolean := False;
-      Files          : RCL.Security.Enclave_Files := [others => <>])
+      Security       : RCL.Security.Credentials := RCL.Security.Unsecured)
      with Pre => not Is_Open (This);
    --  CYCLONEDDS_URI, when set, is Cyclone's whole configuration (Cyclone
    --  reads it itself). Otherwise, with Localhost_Only, the domain gets a
    --  loopback-only configuration (unicast discovery on 127.0.0.1, no
-   --  multicast). Secured: DDS-Security with the enclave's Files (Cyclone's
+   --  multicast). Security.Secured: DDS-Security with its Files (Cyclone's
    --  dds.sec.* properties, the plugins of the libddsc loaded); files that
    --  do not verify (a bad signature, an expired certificate) make Create
    --  raise ROS_Exception, Cyclone's own reason on standard error.

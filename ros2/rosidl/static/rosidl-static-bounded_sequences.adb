@@ -3,17 +3,9 @@ pragma Validity_Checks (Off);
 package body ROSIDL.Static.Bounded_Sequences is
 
    overriding function "=" (Left, Right : Sequence) return Boolean is
-   begin
-      if Left.Length /= Right.Length then
-         return False;
-      end if;
-      for I in 0 .. Left.Length - 1 loop
-         if not (Left.Items (I) = Right.Items (I)) then
-            return False;
-         end if;
-      end loop;
-      return True;
-   end "=";
+     (Left.Length = Right.Length
+      and then (for all I in 0 .. Left.Length - 1 => Left.Items (I) = Right.Items (I)));
+   --  The used elements, compared with the formal "=".
 
    function To_Sequence (Items : Element_Array) return Sequence is
    begin

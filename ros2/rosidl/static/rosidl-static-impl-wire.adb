@@ -10,6 +10,7 @@ pragma Warnings (On, "*internal GNAT unit*");
 pragma Warnings (On, "*non-portable and version-dependent*");
 with Interfaces;
 with System;
+with ROSIDL.Wide_Text_Builders;
 
 package body ROSIDL.Static.Impl.Wire is
 
@@ -243,10 +244,8 @@ package body ROSIDL.Static.Impl.Wire is
       Into  : out Ada.Strings.Wide_Wide_Unbounded.Unbounded_Wide_Wide_String;
       What  : String)
    is
-      use Ada.Strings.Wide_Wide_Unbounded;
-      L : Unsigned_32;
-      Chunk : Wide_Wide_String (1 .. 256) := [others => ' '];
-      Used  : Natural := 0;
+      L    : Unsigned_32;
+      Text : Wide_Text_Builders.Builder;
    begin
       Get_U32 (B, C, L, What & " (wstring length)");
       if Long_Long_Integer (L) * 4 > Remaining (B, C) then
@@ -257,7 +256,6 @@ package body ROSIDL.Static.Impl.Wire is
          Fail (B, C.Pos - 4, What, "wstring of" & L'Image
                & " characters exceeds its bound" & Bound'Image);
       end if;
-      Into := Null_Unbounded_Wide_Wide_String;
       for Unused in 1 .. L loop
          declare
             Code : Unsigned_32;
@@ -266,15 +264,10 @@ package body ROSIDL.Static.Impl.Wire is
             if Code > 16#7FFF_FFFF# then
                Fail (B, C.Pos - 4, What, "wstring character" & Code'Image & " out of range");
             end if;
-            if Used = Chunk'Last then
-               Append (Into, Chunk);
-               Used := 0;
-            end if;
-            Used := Used + 1;
-            Chunk (Used) := Wide_Wide_Character'Val (Code);
+            Wide_Text_Builders.Append (Text, Wide_Wide_Character'Val (Code));
          end;
       end loop;
-      Append (Into, Chunk (1 .. Used));
+      Wide_Text_Builders.Take (Text, Into);
    end Get_WString;
 
    function Get_WString

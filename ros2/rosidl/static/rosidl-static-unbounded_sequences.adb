@@ -84,17 +84,9 @@ package body ROSIDL.Static.Unbounded_Sequences is
      (Item => S.Items (Index)'Access);
 
    overriding function "=" (Left, Right : Sequence) return Boolean is
-   begin
-      if Left.Length /= Right.Length then
-         return False;
-      end if;
-      for I in 0 .. Left.Length - 1 loop
-         if not (Left.Items (I) = Right.Items (I)) then
-            return False;
-         end if;
-      end loop;
-      return True;
-   end "=";
+     (Left.Length = Right.Length
+      and then (for all I in 0 .. Left.Length - 1 => Left.Items (I) = Right.Items (I)));
+   --  The used elements, compared with the formal "=".
 
    overriding procedure Adjust (S : in out Sequence) is
    begin

@@ -29,6 +29,15 @@ package body RCL.Parameters.Tests is
       Assert (Image (Parse ("[true, false]")) = "[True, False]", "bool array");
       Assert (Image (To_Value (Long_Float'(0.1))) = "0.1", "shortest double image");
       Assert (Image (To_Value (Long_Float'(3.0))) = "3.0", "whole double");
+      Assert (YAML_Image (To_Value ("it's")) = "'it''s'", "YAML string single-quoted");
+      declare
+         Two_Lines : constant String := "two" & ASCII.LF & "lines";
+      begin
+         Assert (YAML_Image (To_Value (Two_Lines)) = """two\nlines""",
+                 "YAML string with a line break: " & YAML_Image (To_Value (Two_Lines)));
+         Assert (Image (Parse (YAML_Image (To_Value (Two_Lines)))) = Two_Lines,
+                 "YAML string with a line break read back");
+      end;
       declare
          Msg : Unbounded_String;
       begin
