@@ -75,29 +75,14 @@ package body Sancta.Allocation.Plan_Tests is
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
          (Own_Factor => True, Own_Matrix => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Frozen => Robot_1, Own_Callback => True, Min_Tasks => 1,
           others => <>)];
-      Seed : Interfaces.Unsigned_64 := 3500;
    begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Plan_Problem (6, 2, V, Seed);
-               A : constant Assignment := Exact.Solve (P.all, C);
-               B : constant Long_Float := Brute_Force (P.all, C);
-            begin
-               Assert (Or_Count (P.all) > 0, "no OR node in the test problem");
-               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
-               Assert (Evaluate (P.all, A, C).Value = B,
-                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force"
-                       & Img (B) & " (seed" & Seed'Image & ")");
-            end;
-         end loop;
-      end loop;
+      Check_Exact_Equals_Brute_Force
+        (Variants, Tasks => 6, Robots => 2, First_Seed => 3500, Plan_Trees => True);
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is

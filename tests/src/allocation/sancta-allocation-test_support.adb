@@ -303,6 +303,36 @@ package body Sancta.Allocation.Test_Support is
       end loop;
    end Check_Annealer_Reaches_Optimum;
 
+   procedure Check_Exact_Equals_Brute_Force
+     (Variants   : Variant_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False)
+   is
+      use type Interfaces.Unsigned_64;
+      Seed : Interfaces.Unsigned_64 := First_Seed;
+   begin
+      for V of Variants loop
+         for C of Pure_Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access :=
+                 Random_Problem (Tasks, Robots, (V with delta Plan_Trees => Plan_Trees), Seed);
+               A : constant Assignment := Exact.Solve (P.all, C);
+               B : constant Long_Float := Brute_Force (P.all, C);
+            begin
+               Assert (not Plan_Trees or else Or_Count (P.all) > 0,
+                       "no OR node in the test problem");
+               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
+               Assert (Evaluate (P.all, A, C).Value = B,
+                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force"
+                       & Img (B) & " (seed" & Seed'Image & ")");
+            end;
+         end loop;
+      end loop;
+   end Check_Exact_Equals_Brute_Force;
+
    procedure Write (File, Text : String) is
       F : Ada.Text_IO.File_Type;
    begin

@@ -83,6 +83,17 @@ package Sancta.Allocation.Test_Support is
    --  exact solver's optimum (else both tours of each robot are printed and
    --  the test fails); every baseline's result is valid and no better.
 
+   procedure Check_Exact_Equals_Brute_Force
+     (Variants   : Variant_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False);
+   --  For every variant (with plan trees if Plan_Trees, then with at least
+   --  one OR node) and every pure criterion, one random problem (seeds
+   --  First_Seed + 1, + 2, ...): the exact solver's result is valid and as
+   --  good as Brute_Force's optimum.
+
    NL : constant String := [1 => ASCII.LF];
 
    procedure Write (File, Text : String);

@@ -68,27 +68,13 @@ package body Sancta.Allocation.Tests is
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 5) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
          (End_Depot => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Heterogeneous => True, others => <>),
          (Infeasible => True, Min_Tasks => 1, others => <>)];
-      Seed : Interfaces.Unsigned_64 := 500;
    begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Random_Problem (5, 2, V, Seed);
-               A : constant Assignment := Exact.Solve (P.all, C);
-               B : constant Long_Float := Brute_Force (P.all, C);
-            begin
-               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
-               Assert (Evaluate (P.all, A, C).Value = B,
-                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force" & Img (B));
-            end;
-         end loop;
-      end loop;
+      Check_Exact_Equals_Brute_Force (Variants, Tasks => 5, Robots => 2, First_Seed => 500);
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
