@@ -136,8 +136,7 @@ package body RCL.Nodes is
       FQ : constant String := This.Expand (Topic);
    begin
       return P : RCL.Publishers.Publisher do
-         RCL.Publisher_Writers.Create (P, FQ, Type_Name, QoS, RCL.Names.DDS_Topic_Name (FQ),
-                                This.Graph_Id);
+         RCL.Publisher_Writers.Create (P, FQ, Type_Name, QoS, This.Graph_Id);
       end return;
    end Publish_Raw;
 

@@ -1,5 +1,6 @@
 with RCL.Event_Watches;
 with RCL.Graph_Announcements;
+with RCL.Names;
 with RCL.Process_Context;
 with RCL.Publishers;
 
@@ -23,13 +24,12 @@ package body RCL.Publisher_Writers is
       Topic     : String;
       Type_Name : String;
       Profile   : RCL.QoS.Profile;
-      DDS_Topic : String;
       Node      : RCL.Graph.Node_Id)
    is
       C : constant not null access Publisher_Core'Class := Variable_Core (This);
    begin
-      RCL.DDS.Create (C.W, RCL.Process_Context.Participant.all, DDS_Topic, Type_Name, Profile,
-                      User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
+      RCL.DDS.Create (C.W, RCL.Process_Context.Participant.all, RCL.Names.DDS_Topic_Name (Topic),
+                      Type_Name, Profile, User_Data => RCL.Graph.Endpoint_User_Data (Type_Name));
       C.Topic := Ada.Strings.Unbounded.To_Unbounded_String (Topic);
       C.Node := Node;
       RCL.Graph_Announcements.Add_Writer (Node, RCL.DDS.Endpoint_GUID (C.W));

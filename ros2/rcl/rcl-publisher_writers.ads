@@ -26,10 +26,10 @@ private package RCL.Publisher_Writers is
       Topic     : String;
       Type_Name : String;
       Profile   : RCL.QoS.Profile;
-      DDS_Topic : String;
       Node      : RCL.Graph.Node_Id);
-   --  Opens This's writer on DDS_Topic (ROS name Topic), announced in the
-   --  graph as an endpoint of Node; its QoS events are watched.
+   --  Opens This's writer on the DDS topic of Topic (a fully qualified ROS
+   --  name; RCL.Names.DDS_Topic_Name), announced in the graph as an
+   --  endpoint of Node; its QoS events are watched.
 
    function Writer
      (This : RCL.Publishers.Publisher'Class) return not null access constant RCL.DDS.Writer;
