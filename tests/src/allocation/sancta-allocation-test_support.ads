@@ -61,6 +61,9 @@ package Sancta.Allocation.Test_Support is
 
    type Criterion_Array is array (Positive range <>) of Criterion;
    Pure_Criteria : constant Criterion_Array := [Min_Sum, Min_Max, Min_Ave];
+   Some_Criteria : constant Criterion_Array :=
+     [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
+   --  The pure ones and two mixes.
 
    procedure Anneal_Checked
      (P : Problem; O : in out Annealers.Options; A : in out Assignment;
@@ -70,6 +73,19 @@ package Sancta.Allocation.Test_Support is
 
    type Variant_Array is array (Positive range <>) of Variant;
 
+   generic
+      with procedure Check (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64);
+   procedure For_Each_Random_Problem
+     (Variants   : Variant_Array;
+      Criteria   : Criterion_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False);
+   --  Check, for every variant V (with plan trees if Plan_Trees) and every
+   --  criterion C in turn, one random problem P made with seed First_Seed +
+   --  1, + 2, ... (Seed).
+
    procedure Check_Annealer_Reaches_Optimum
      (Variants   : Variant_Array;
       Tasks      : Positive;
@@ -77,11 +93,10 @@ package Sancta.Allocation.Test_Support is
       First_Seed : Interfaces.Unsigned_64;
       Iterations : Long_Long_Integer;
       Plan_Trees : Boolean := False);
-   --  For every variant (with plan trees if Plan_Trees) and every pure
-   --  criterion, one random problem (seeds First_Seed + 1, + 2, ...): the
-   --  annealer's result after Iterations moves is valid and reaches the
-   --  exact solver's optimum (else both tours of each robot are printed and
-   --  the test fails); every baseline's result is valid and no better.
+   --  For_Each_Random_Problem with the pure criteria: the annealer's result
+   --  after Iterations moves is valid and reaches the exact solver's optimum
+   --  (else both tours of each robot are printed and the test fails); every
+   --  baseline's result is valid and no better.
 
    procedure Check_Exact_Equals_Brute_Force
      (Variants   : Variant_Array;
@@ -89,9 +104,8 @@ package Sancta.Allocation.Test_Support is
       Robots     : Positive;
       First_Seed : Interfaces.Unsigned_64;
       Plan_Trees : Boolean := False);
-   --  For every variant (with plan trees if Plan_Trees, then with at least
-   --  one OR node) and every pure criterion, one random problem (seeds
-   --  First_Seed + 1, + 2, ...): the exact solver's result is valid and as
+   --  For_Each_Random_Problem with the pure criteria (with Plan_Trees, each
+   --  problem has an OR node): the exact solver's result is valid and as
    --  good as Brute_Force's optimum.
 
    NL : constant String := [1 => ASCII.LF];
