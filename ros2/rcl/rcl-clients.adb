@@ -17,7 +17,6 @@ package body RCL.Clients is
    use Ada.Real_Time;
    use type ROSIDL.UInt64;
    use type RCL.Pending_Calls.Outcome;
-   use type RCL.Pending_Calls.Response_Callback;
 
    Slice : constant Duration := 0.05;
    --  Longest single wait of the task reading replies.
@@ -104,22 +103,14 @@ package body RCL.Clients is
               ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
             Header   : ROSIDL.CDR.Request_Header;
             Result   : RCL.Pending_Calls.Outcome;
-            Callback : RCL.Pending_Calls.Response_Callback;
          begin
             exit when Data'Length = 0;
             Taken := Taken + 1;
             ROSIDL.CDR.Decode (Data, Response, Header);
             if Header.GUID = This.Handle then
-               This.Calls.Deliver (Header.Sequence, Response, Result, Callback);
-               if Result = RCL.Pending_Calls.Run_Callback then
-                  begin
-                     Callback (Response);
-                  exception
-                     when E : others =>
-                        RCL.Logging.Error
-                          ("response callback of service " & To_String (This.Name)
-                           & " raised " & Ada.Exceptions.Exception_Information (E));
-                  end;
+               This.Calls.Deliver (Header.Sequence, Response, Result);
+               if Result = RCL.Pending_Calls.Unknown_Sequence then
+                  Async_Calls.Complete (This.Asyncs, Header.Sequence, Response);
                end if;
             end if;
             --  Replies to other clients of this topic, and late replies
@@ -147,38 +138,41 @@ package body RCL.Clients is
       end if;
    end Pump_Once;
 
-   ----------
-   -- Pump --
-   ----------
-
-   task body Pump is
-      Done    : Boolean := False;
-      Got     : Boolean;
-      Expired : Natural;
+   procedure Read_Or_Wait
+     (This : in out Client; Until_Time : Time; Into : RCL.Pending_Calls.Slot_Access)
+   is
+      --  Reads replies until Until_Time (at most Slice) unless another task
+      --  is reading them; then waits for Into's response (if Into is not
+      --  null) at most 2 ms.
+      Got : Boolean;
    begin
-      while not Done loop
-         Owner.Calls.Try_Lead (Got);
-         if Got then
-            begin
-               Pump_Once (Owner.all, Clock + To_Time_Span (Slice));
-            exception
-               when E : others =>
-                  RCL.Logging.Error ("reading the replies of service "
-                                     & To_String (Owner.Name) & ": "
-                                     & Ada.Exceptions.Exception_Message (E));
-            end;
-            Owner.Calls.Release;
-         else
-            delay 0.002;
-         end if;
-         Owner.Calls.Expire (Clock, Expired);
-         if Expired > 0 then
-            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
-                              & To_String (Owner.Name) & " got no response in time");
-         end if;
-         Owner.Calls.Pumping_Done (Done);
-      end loop;
-   end Pump;
+      This.Calls.Try_Lead (Got);
+      if Got then
+         begin
+            Pump_Once (This, Until_Time);
+         exception
+            when others =>
+               This.Calls.Release;
+               raise;
+         end;
+         This.Calls.Release;
+      elsif Into = null then
+         delay until Earliest (Until_Time, Clock + Milliseconds (2));
+      else
+         select
+            Into.Wait;
+         or
+            delay until Earliest (Until_Time, Clock + Milliseconds (2));
+         end select;
+      end if;
+   end Read_Or_Wait;
+
+   procedure Read_Replies (This : Client_Ref) is
+   begin
+      Read_Or_Wait (This.all, Clock + To_Time_Span (Slice), Into => null);
+   end Read_Replies;
+
+   function Service_Name (This : Client_Ref) return String is (To_String (This.Name));
 
    ----------
    -- Send --
@@ -215,8 +209,8 @@ package body RCL.Clients is
       Deadline : constant Time := Deadline_Of (Timeout);
       Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
       Into     : RCL.Pending_Calls.Slot_Access;
-      Got      : Boolean;
    begin
+      Async_Calls.Check_Not_In_Callback (This.Asyncs);
       if not This.Wait_For_Service (Timeout) then
          raise RCL_Timeout with "service " & To_String (This.Name)
            & " not available after" & Seconds_Image (Timeout);
@@ -233,23 +227,7 @@ package body RCL.Clients is
                raise RCL_Timeout with "no response from service " & To_String (This.Name)
                  & " after" & Seconds_Image (Timeout);
             end if;
-            This.Calls.Try_Lead (Got);
-            if Got then
-               begin
-                  Pump_Once (This, Deadline);
-               exception
-                  when others =>
-                     This.Calls.Release;
-                     raise;
-               end;
-               This.Calls.Release;
-            else
-               select
-                  Into.Wait;
-               or
-                  delay until Earliest (Deadline, Clock + Milliseconds (2));
-               end select;
-            end if;
+            Read_Or_Wait (This, Deadline, Into);
          end loop;
       exception
          when others =>
@@ -266,8 +244,6 @@ package body RCL.Clients is
    -- Call_Async --
    ----------------
 
-   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
-
    procedure Call_Async
      (This     : in out Client;
       Request  : ROSIDL.Dynamic.Message;
@@ -275,29 +251,19 @@ package body RCL.Clients is
       Timeout  : Duration := 60.0)
    is
       Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
-      Start    : Boolean;
    begin
-      This.Calls.Add_Async
-        (Sequence, RCL.Pending_Calls.Response_Callback (Callback), Deadline_Of (Timeout), Start);
-      if Start then
-         if This.Pumper /= null then
-            while not This.Pumper'Terminated loop
-               delay 0.001;  --  The previous pump is ending.
-            end loop;
-            Free (This.Pumper);
-         end if;
-         This.Pumper := new Pump (This'Unchecked_Access);
-      end if;
+      Async_Calls.Add (This.Asyncs, This'Unchecked_Access, Sequence, Callback, Timeout);
       Send (This, Request, Sequence);
    exception
       when others =>
-         This.Calls.Remove (Sequence);
+         Async_Calls.Remove (This.Asyncs, Sequence);
          raise;
    end Call_Async;
 
-   function Pending_Async (This : Client) return Natural is (This.Calls.Async_Count);
+   function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
 
-   function Pending_Calls (This : Client) return Natural is (This.Calls.Count);
+   function Pending_Calls (This : Client) return Natural is
+     (This.Calls.Count + Async_Calls.Count (This.Asyncs));
 
    -------------
    -- Futures --
@@ -333,31 +299,15 @@ package body RCL.Clients is
    function Read_Replies (F : in out Future; Until_Time : Time) return Boolean is
       --  Reads replies (or waits for the task reading them) until F is
       --  ready or Until_Time: True when ready.
-      Got : Boolean;
    begin
+      Async_Calls.Check_Not_In_Callback (F.Call.Owner.Asyncs);
       loop
          if F.Call.Into.Filled then
             return True;
          elsif Clock >= Until_Time then
             return False;
          end if;
-         F.Call.Owner.Calls.Try_Lead (Got);
-         if Got then
-            begin
-               Pump_Once (F.Call.Owner.all, Until_Time);
-            exception
-               when others =>
-                  F.Call.Owner.Calls.Release;
-                  raise;
-            end;
-            F.Call.Owner.Calls.Release;
-         else
-            select
-               F.Call.Into.Wait;
-            or
-               delay until Earliest (Until_Time, Clock + Milliseconds (2));
-            end select;
-         end if;
+         Read_Or_Wait (F.Call.Owner.all, Until_Time, F.Call.Into);
       end loop;
    end Read_Replies;
 
@@ -419,13 +369,7 @@ package body RCL.Clients is
 
    overriding procedure Finalize (This : in out Client) is
    begin
-      This.Calls.Stop;
-      if This.Pumper /= null then
-         while not This.Pumper'Terminated loop
-            delay 0.001;
-         end loop;
-         Free (This.Pumper);
-      end if;
+      Async_Calls.Stop (This.Asyncs);
       if This.Open then
          RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
       end if;

@@ -1,6 +1,5 @@
 with Ada.Exceptions;
 with Ada.Streams;
-with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
@@ -41,10 +40,6 @@ package body RCL.Services.Typed is
 
    function Seconds_Image (Timeout : Duration) return String is
      (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
-
-   ---------------
-   -- Call_Lock --
-   ---------------
 
    ------------
    -- Client --
@@ -107,26 +102,12 @@ package body RCL.Services.Typed is
    --  timeout, duplicate). Decode_Error (the call stays pending) when
    --  Data is malformed.
    is
-      Callback : Response_Callback;
-      Resp     : Response;
-      Header   : ROSIDL.CDR.Request_Header;
+      Resp   : Response;
+      Header : ROSIDL.CDR.Request_Header;
    begin
-      if This.Asyncs.Count = 0 then
-         return;
-      end if;
-      Responses.Decode (Data, Resp, Header);
-      This.Asyncs.Take (Sequence, Callback);
-      if Callback /= null then
-         This.In_Callback := Ada.Task_Identification.Current_Task;
-         begin
-            Callback (Resp);
-         exception
-            when E : others =>
-               RCL.Logging.Error
-                 ("response callback of service " & To_String (This.Name)
-                  & " raised " & Ada.Exceptions.Exception_Information (E));
-         end;
-         This.In_Callback := Ada.Task_Identification.Null_Task_Id;
+      if Async_Calls.Is_Pending (This.Asyncs, Sequence) then
+         Responses.Decode (Data, Resp, Header);
+         Async_Calls.Complete (This.Asyncs, Sequence, Resp);
       end if;
    end Run_Async;
 
@@ -172,96 +153,27 @@ package body RCL.Services.Typed is
    --  Longest wait of the pumping task with the client's lock held (a
    --  synchronous Call waits at most this long for the lock).
 
-   task body Pump is
-      Done    : Boolean := False;
-      Expired : Natural;
-      Taken   : Natural;
-      Ready   : RCL.DDS.Key_Array (1 .. 1);
-      Last    : Natural;
+   procedure Read_Replies (This : Client_Ref) is
+      Taken : Natural;
+      Ready : RCL.DDS.Key_Array (1 .. 1);
+      Last  : Natural;
    begin
-      while not Done loop
-         Owner.Lock.Seize;
-         begin
-            Take_Replies (Owner.all, Taken);
-            if Taken = 0 then
-               RCL.DDS.Wait (Owner.Waiting, Pump_Slice, Ready, Last);
-               Take_Replies (Owner.all, Taken);
-            end if;
-         exception
-            when E : others =>
-               RCL.Logging.Error ("reading the replies of service "
-                                  & To_String (Owner.Name) & ": "
-                                  & Ada.Exceptions.Exception_Message (E));
-         end;
-         Owner.Lock.Release;
-         Owner.Asyncs.Expire (Clock, Expired);
-         if Expired > 0 then
-            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
-                              & To_String (Owner.Name) & " got no response in time");
+      This.Lock.Seize;
+      begin
+         Take_Replies (This.all, Taken);
+         if Taken = 0 then
+            RCL.DDS.Wait (This.Waiting, Pump_Slice, Ready, Last);
+            Take_Replies (This.all, Taken);
          end if;
-         Owner.Asyncs.Pumping_Done (Done);
-      end loop;
-   end Pump;
+      exception
+         when others =>
+            This.Lock.Release;
+            raise;
+      end;
+      This.Lock.Release;
+   end Read_Replies;
 
-   protected body Async_Table is
-
-      procedure Add
-        (Sequence   : ROSIDL.Int64;
-         Call       : Async_Call;
-         Start_Pump : out Boolean) is
-      begin
-         Calls.Insert (Sequence, Call);
-         Start_Pump := not Pumping;
-         Pumping := True;
-      end Add;
-
-      procedure Take (Sequence : ROSIDL.Int64; Callback : out Response_Callback) is
-         Position : Async_Maps.Cursor := Calls.Find (Sequence);
-      begin
-         if Async_Maps.Has_Element (Position) then
-            Callback := Async_Maps.Element (Position).Callback;
-            Calls.Delete (Position);
-         else
-            Callback := null;
-         end if;
-      end Take;
-
-      procedure Remove (Sequence : ROSIDL.Int64) is
-      begin
-         Calls.Exclude (Sequence);
-      end Remove;
-
-      procedure Expire (Now : Time; Expired : out Natural) is
-         Position : Async_Maps.Cursor := Calls.First;
-         Next     : Async_Maps.Cursor;
-      begin
-         Expired := 0;
-         while Async_Maps.Has_Element (Position) loop
-            Next := Async_Maps.Next (Position);
-            if Async_Maps.Element (Position).Deadline < Now then
-               Calls.Delete (Position);
-               Expired := Expired + 1;
-            end if;
-            Position := Next;
-         end loop;
-      end Expire;
-
-      procedure Pumping_Done (Done : out Boolean) is
-      begin
-         Done := Stopping or else Calls.Is_Empty;
-         if Done then
-            Pumping := False;
-         end if;
-      end Pumping_Done;
-
-      procedure Stop is
-      begin
-         Stopping := True;
-      end Stop;
-
-      function Count return Natural is (Natural (Calls.Length));
-
-   end Async_Table;
+   function Service_Name (This : Client_Ref) return String is (To_String (This.Name));
 
    procedure Exchange
      (This     : in out Client;
@@ -351,11 +263,7 @@ package body RCL.Services.Typed is
    is
       Deadline : constant Time := Deadline_Of (Timeout);
    begin
-      if Ada.Task_Identification."=" (This.In_Callback, Ada.Task_Identification.Current_Task) then
-         raise ROS_Exception with "service " & To_String (This.Name)
-           & ": a synchronous call from a response callback of the same client"
-           & " would wait for itself";
-      end if;
+      Async_Calls.Check_Not_In_Callback (This.Asyncs);
       This.Lock.Seize;
       begin
          Exchange (This, Req, Resp, Timeout, Deadline);
@@ -381,18 +289,6 @@ package body RCL.Services.Typed is
    -- Call_Async --
    ----------------
 
-   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
-
-   procedure Await_Pump_End (This : in out Client) is
-   begin
-      if This.Pumper /= null then
-         while not This.Pumper'Terminated loop
-            delay 0.001;  --  The pump is ending (Pumping_Done said so).
-         end loop;
-         Free (This.Pumper);
-      end if;
-   end Await_Pump_End;
-
    procedure Call_Async
      (This     : in out Client;
       Req      : Request;
@@ -400,7 +296,6 @@ package body RCL.Services.Typed is
       Timeout  : Duration := 60.0)
    is
       Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
-      Start    : Boolean;
 
       procedure Fill
         (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
@@ -409,27 +304,20 @@ package body RCL.Services.Typed is
       end Fill;
 
    begin
-      This.Asyncs.Add (Sequence, (Callback, Deadline_Of (Timeout)), Start);
-      if Start then
-         Await_Pump_End (This);
-         This.Pumper := new Pump (This'Unchecked_Access);
-      end if;
+      Async_Calls.Add (This.Asyncs, This'Unchecked_Access, Sequence, Callback, Timeout);
       RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
                             Fill'Access);
    exception
       when others =>
-         This.Asyncs.Remove (Sequence);
+         Async_Calls.Remove (This.Asyncs, Sequence);
          raise;
    end Call_Async;
 
-   function Pending_Async (This : Client) return Natural is (This.Asyncs.Count);
+   function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
 
    overriding procedure Finalize (This : in out Client) is
    begin
-      if This.Pumper /= null then
-         This.Asyncs.Stop;
-         Await_Pump_End (This);
-      end if;
+      Async_Calls.Stop (This.Asyncs);
       if This.Open then
          This.Open := False;
          RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
