@@ -43,15 +43,11 @@ package body Sancta.Allocation.Plan_Tests is
       is
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
-         O : Annealers.Options;
+         O : Annealers.Options := Checked_Random_Walk (C, Seed, Iterations => 6_000);
+         --  (The switch subtree's predicted costs are checked too.)
          Switched : Boolean := False;
       begin
          Assert (Check (P) = "", "bad test problem: " & Check (P));
-         --  A near random walk (every move checked against a full
-         --  recomputation, the switch subtree's predicted costs too).
-         O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 6_000,
-               Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
-               Polish => False, Adaptive => False, others => <>);
          Annealers.Solve (P, O, A, S);
          Assert (S.Accepted > 300 or else Active_Count (P, A.Branch) < 6,
                  "too few moves applied:" & S.Accepted'Image

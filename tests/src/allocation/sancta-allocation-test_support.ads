@@ -65,6 +65,15 @@ package Sancta.Allocation.Test_Support is
      [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
    --  The pure ones and two mixes.
 
+   function Checked_Random_Walk
+     (C : Criterion; Seed : Interfaces.Unsigned_64; Iterations : Long_Long_Integer)
+      return Annealers.Options
+   is ((Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => Iterations,
+        Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+        Polish => False, Adaptive => False, others => <>));
+   --  A near random walk (a huge temperature: most moves apply) with the
+   --  expensive check after every move.
+
    procedure Anneal_Checked
      (P : Problem; O : in out Annealers.Options; A : in out Assignment;
       S : out Annealers.Progress);

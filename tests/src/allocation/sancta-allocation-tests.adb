@@ -45,13 +45,8 @@ package body Sancta.Allocation.Tests is
          pragma Unreferenced (V);
          A : Assignment (P.Robots, P.Tasks);
          S : Annealers.Progress;
-         O : Annealers.Options;
+         O : Annealers.Options := Checked_Random_Walk (C, Seed, Iterations => 3_000);
       begin
-         --  A near random walk (huge temperature) so most moves apply,
-         --  with the expensive check after each.
-         O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 3_000,
-               Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
-               Polish => False, Adaptive => False, others => <>);
          Annealers.Solve (P, O, A, S);
          Assert (S.Accepted > 1_000, "too few moves applied:" & S.Accepted'Image);
          Assert (Validate (P, A) = "", "invalid: " & Validate (P, A));
