@@ -1,14 +1,11 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
+with RCL.DDS;
 with ROSIDL.CDR;
-with RCL.Client_Endpoints;
 with RCL.Contexts;
-with RCL.DDS.Matching;
 with RCL.Logging;
-with RCL.Node_Entities;
 with RCL.Keyed_Caches;
-with RCL.Process_Context;
 
 package body RCL.Clients is
 
@@ -23,11 +20,8 @@ package body RCL.Clients is
 
    function Earliest (A, B : Time) return Time is (if A < B then A else B);
 
-   function Deadline_Of (Timeout : Duration) return Time is
-     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
-
-   function Seconds_Image (Timeout : Duration) return String is
-     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
+   use RCL.Client_Endpoints;
+   --  Deadline_Of, Seconds_Image, Await_Service...
 
    ----------
    -- Init --
@@ -41,50 +35,27 @@ package body RCL.Clients is
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
       use ROSIDL.Typesupport;
-      FQ : constant String := Node.Expand_Service (Name);
    begin
-      This.Name := To_Unbounded_String (FQ);
       This.Support := Support;
-      RCL.Client_Endpoints.Open_Endpoints
-        (Node, FQ, DDS_Type_Name (Request_Support (Support)),
-         DDS_Type_Name (Response_Support (Support)), QoS,
-         This.Requests, This.Replies, This.Handle);
-      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
-      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Node := RCL.Node_Entities.Graph_Id (Node);
-      This.Open := True;
+      RCL.Client_Endpoints.Open
+        (This.Ends, Node, Name, DDS_Type_Name (Request_Support (Support)),
+         DDS_Type_Name (Response_Support (Support)), QoS);
    end Init;
 
-   function Is_Open (This : Client) return Boolean is (This.Open);
+   function Is_Open (This : Client) return Boolean is (This.Ends.Is_Open);
 
-   function Service_Name (This : Client) return String is (To_String (This.Name));
-
-   -----------------------
-   -- Service_Available --
-   -----------------------
+   function Service_Name (This : Client) return String is
+     (RCL.Client_Endpoints.Service_Name (This.Ends));
 
    function Service_Available (This : Client) return Boolean is
-     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
+     (RCL.Client_Endpoints.Service_Available (This.Ends));
 
    function Wait_For_Service (This : Client; Timeout : Duration := Forever) return Boolean is
-      Deadline : constant Time := Deadline_Of (Timeout);
-   begin
-      loop
-         if This.Service_Available then
-            return True;
-         end if;
-         exit when Clock >= Deadline or RCL.Contexts.Is_Shutdown;
-         delay until Earliest (Deadline, Clock + Milliseconds (10));
-      end loop;
-      return This.Service_Available;
-   end Wait_For_Service;
+     (RCL.Client_Endpoints.Available_Before (This.Ends, Deadline_Of (Timeout)));
 
    procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
    begin
-      if not This.Wait_For_Service (Timeout) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline_Of (Timeout), Timeout);
    end Wait_For_Service;
 
    -----------------
@@ -98,7 +69,7 @@ package body RCL.Clients is
       Taken := 0;
       loop
          declare
-            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Replies, Info);
+            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Ends.Replies, Info);
             Response : ROSIDL.Dynamic.Message :=
               ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
             Header   : ROSIDL.CDR.Request_Header;
@@ -107,7 +78,7 @@ package body RCL.Clients is
             exit when Data'Length = 0;
             Taken := Taken + 1;
             ROSIDL.CDR.Decode (Data, Response, Header);
-            if Header.GUID = This.Handle then
+            if Header.GUID = This.Ends.Handle then
                This.Calls.Deliver (Header.Sequence, Response, Result);
                if Result = RCL.Pending_Calls.Unknown_Sequence then
                   Async_Calls.Complete (This.Asyncs, Header.Sequence, Response);
@@ -117,7 +88,7 @@ package body RCL.Clients is
             --  (Unknown_Sequence), are dropped.
          exception
             when E : ROSIDL.Decode_Error =>
-               RCL.Logging.Warn ("service " & To_String (This.Name)
+               RCL.Logging.Warn ("service " & This.Service_Name
                                  & ": malformed reply dropped: "
                                  & Ada.Exceptions.Exception_Message (E));
          end;
@@ -132,7 +103,7 @@ package body RCL.Clients is
    begin
       Take_Replies (This, Taken);
       if Taken = 0 then
-         RCL.DDS.Wait (This.Waiting,
+         RCL.DDS.Wait (This.Ends.Waiting,
                        Duration'Min (Slice, To_Duration (Until_Time - Clock)), Ready, Last);
          Take_Replies (This, Taken);
       end if;
@@ -172,7 +143,7 @@ package body RCL.Clients is
       Read_Or_Wait (This.all, Clock + To_Time_Span (Slice), Into => null);
    end Read_Replies;
 
-   function Service_Name (This : Client_Ref) return String is (To_String (This.Name));
+   function Service_Name (This : Client_Ref) return String is (Service_Name (This.all));
 
    ----------
    -- Send --
@@ -186,12 +157,12 @@ package body RCL.Clients is
       if ROSIDL.Dynamic.Type_Name (Request)
         /= Full_Name (Request_Support (This.Support))
       then
-         raise ROS_Exception with "service " & To_String (This.Name) & " takes "
+         raise ROS_Exception with "service " & This.Service_Name & " takes "
            & Full_Name (Request_Support (This.Support)) & " requests, not "
            & ROSIDL.Dynamic.Type_Name (Request);
       end if;
-      RCL.DDS.Write (This.Requests,
-                     ROSIDL.CDR.Encode (Request, (GUID => This.Handle, Sequence => Sequence)));
+      RCL.DDS.Write (This.Ends.Requests,
+                     ROSIDL.CDR.Encode (Request, (GUID => This.Ends.Handle, Sequence => Sequence)));
    end Send;
 
    ----------
@@ -211,10 +182,7 @@ package body RCL.Clients is
       Into     : RCL.Pending_Calls.Slot_Access;
    begin
       Async_Calls.Check_Not_In_Callback (This.Asyncs);
-      if not This.Wait_For_Service (Timeout) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline, Timeout);
       Into := new RCL.Pending_Calls.Slot;
       This.Calls.Add_Sync (Sequence, Into);
       begin
@@ -222,9 +190,9 @@ package body RCL.Clients is
          while not Into.Filled loop
             if RCL.Contexts.Is_Shutdown then
                raise ROS_Exception with "shut down while waiting for service "
-                 & To_String (This.Name);
+                 & This.Service_Name;
             elsif Clock >= Deadline then
-               raise RCL_Timeout with "no response from service " & To_String (This.Name)
+               raise RCL_Timeout with "no response from service " & This.Service_Name
                  & " after" & Seconds_Image (Timeout);
             end if;
             Read_Or_Wait (This, Deadline, Into);
@@ -250,14 +218,13 @@ package body RCL.Clients is
       Callback : not null Response_Callback;
       Timeout  : Duration := 60.0)
    is
-      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
+      procedure Send_Request (Sequence : ROSIDL.Int64) is
+      begin
+         Send (This, Request, Sequence);
+      end Send_Request;
    begin
-      Async_Calls.Add (This.Asyncs, This'Unchecked_Access, Sequence, Callback, Timeout);
-      Send (This, Request, Sequence);
-   exception
-      when others =>
-         Async_Calls.Remove (This.Asyncs, Sequence);
-         raise;
+      Async_Calls.Call (This.Asyncs, This'Unchecked_Access, Callback, Timeout,
+                        Send_Request'Access);
    end Call_Async;
 
    function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
@@ -370,13 +337,7 @@ package body RCL.Clients is
    overriding procedure Finalize (This : in out Client) is
    begin
       Async_Calls.Stop (This.Asyncs);
-      if This.Open then
-         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
-      end if;
-      This.Open := False;
-   exception
-      when others =>
-         This.Open := False;
+      Close (This.Ends);
    end Finalize;
 
    ------------------------

@@ -27,12 +27,10 @@
 with Ada.Finalization;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
-with RCL.DDS;
-with RCL.Graph;
 with RCL.Nodes;
 with RCL.QoS;
 
-private with Ada.Strings.Unbounded;
+private with RCL.Client_Endpoints;
 private with RCL.Pending_Calls.Asynchronous;
 
 package RCL.Clients is
@@ -173,8 +171,6 @@ package RCL.Clients is
 
 private
 
-   use Ada.Strings.Unbounded;
-
    type Client_Ref is access all Client;
 
    procedure Read_Replies (This : Client_Ref);
@@ -198,18 +194,11 @@ private
    --  (Not tagged itself: Call_Future is a primitive of Client.)
 
    type Client is new Ada.Finalization.Limited_Controlled with record
-      Open     : Boolean := False;
-      Name     : Unbounded_String;
-      Support  : ROSIDL.Typesupport.Service_Support;
-      Requests : RCL.DDS.Writer;
-      Replies  : RCL.DDS.Reader;
-      Waiting  : RCL.DDS.Waitset;
-      Handle   : ROSIDL.UInt64 := 0;
-      Calls    : RCL.Pending_Calls.Table;
+      Ends    : RCL.Client_Endpoints.Endpoints;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Calls   : RCL.Pending_Calls.Table;
       --  Synchronous calls and futures; who reads replies.
-      Asyncs   : Async_Calls.Calls;
-      Node     : RCL.Graph.Node_Id := RCL.Graph.No_Node;
-      --  Where the endpoints are announced (ros_discovery_info).
+      Asyncs  : Async_Calls.Calls;
    end record;
 
 end RCL.Clients;

@@ -171,6 +171,23 @@ package body RCL.Pending_Calls.Asynchronous is
          raise;
    end Add;
 
+   procedure Call
+     (This     : in out Calls;
+      Client   : Client_Ref;
+      Callback : not null Response_Callback;
+      Timeout  : Duration;
+      Send     : not null access procedure (Sequence : ROSIDL.Int64))
+   is
+      Sequence : constant ROSIDL.Int64 := Next_Sequence;
+   begin
+      This.Add (Client, Sequence, Callback, Timeout);
+      Send (Sequence);
+   exception
+      when others =>
+         This.State.Remove (Sequence);
+         raise;
+   end Call;
+
    procedure Remove (This : in out Calls; Sequence : ROSIDL.Int64) is
    begin
       This.State.Remove (Sequence);
@@ -232,6 +249,10 @@ package body RCL.Pending_Calls.Asynchronous is
       if not This.In_Callback then
          This.State.Await_Pump_End;
       end if;
+   exception
+      when E : others =>
+         RCL.Logging.Error ("stopping the asynchronous calls of a client: "
+                            & Ada.Exceptions.Exception_Information (E));
    end Stop;
 
 end RCL.Pending_Calls.Asynchronous;

@@ -50,6 +50,16 @@ package RCL.Pending_Calls.Asynchronous is
    --  fails); starts the pump if none runs. Timeout >= 1.0E6: never
    --  forgotten.
 
+   procedure Call
+     (This     : in out Calls;
+      Client   : Client_Ref;
+      Callback : not null Response_Callback;
+      Timeout  : Duration;
+      Send     : not null access procedure (Sequence : ROSIDL.Int64));
+   --  A client's Call_Async: a new sequence number (Next_Sequence), the
+   --  call added (Add), then Send (Sequence) sends the request; the call is
+   --  forgotten if Send raises (the exception propagates).
+
    procedure Remove (This : in out Calls; Sequence : ROSIDL.Int64);
    --  Forgets a call; no effect when unknown.
 
@@ -76,7 +86,7 @@ package RCL.Pending_Calls.Asynchronous is
 
    procedure Stop (This : in out Calls);
    --  Drops the pending calls (a warning says how many) and waits for the
-   --  pump's end; Add starts no pump afterwards. From a callback of these
+   --  pump's end (for the client's Finalize: never raises); Add starts no pump afterwards. From a callback of these
    --  calls (a client finalized by its own callback) it does not wait: the
    --  pump would wait for itself.
 

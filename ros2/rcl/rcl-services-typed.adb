@@ -3,19 +3,14 @@ with Ada.Streams;
 with ROSIDL.CDR;
 with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
-with RCL.Client_Endpoints;
 with RCL.Contexts;
-with RCL.DDS.Matching;
 with RCL.Logging;
-with RCL.Node_Entities;
 with RCL.Pending_Calls;
 with RCL.Keyed_Caches;
-with RCL.Process_Context;
 
 package body RCL.Services.Typed is
 
    use Ada.Real_Time;
-   use Ada.Strings.Unbounded;
    use type Ada.Streams.Stream_Element_Offset;
    use type ROSIDL.UInt64;
    use type ROSIDL.Int64;
@@ -35,11 +30,8 @@ package body RCL.Services.Typed is
    Slice : constant Duration := 0.1;
    --  Longest single wait for a reply (shutdown is checked in between).
 
-   function Deadline_Of (Timeout : Duration) return Time is
-     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
-
-   function Seconds_Image (Timeout : Duration) return String is
-     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
+   use RCL.Client_Endpoints;
+   --  Deadline_Of, Seconds_Image, Await_Service...
 
    ------------
    -- Client --
@@ -51,46 +43,54 @@ package body RCL.Services.Typed is
       Name : String;
       QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
-      FQ : constant String := Node.Expand_Service (Name);
    begin
       Register_Hashes;
-      RCL.Client_Endpoints.Open_Endpoints
-        (Node, FQ, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS,
-         This.Requests, This.Replies, This.Handle);
-      This.Node := RCL.Node_Entities.Graph_Id (Node);
-      This.Name := To_Unbounded_String (FQ);
-      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
-      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Open := True;
+      RCL.Client_Endpoints.Open
+        (This.Ends, Node, Name, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS);
    end Init;
 
-   function Is_Open (This : Client) return Boolean is (This.Open);
+   function Is_Open (This : Client) return Boolean is (This.Ends.Is_Open);
 
-   function Service_Name (This : Client) return String is (To_String (This.Name));
+   function Service_Name (This : Client) return String is
+     (RCL.Client_Endpoints.Service_Name (This.Ends));
 
    function Service_Available (This : Client) return Boolean is
-     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
-
-   function Available_Before (This : Client; Deadline : Time) return Boolean is
-   begin
-      loop
-         if This.Service_Available then
-            return True;
-         end if;
-         exit when Clock >= Deadline or else RCL.Contexts.Is_Shutdown;
-         delay until (if Deadline < Clock + Milliseconds (10) then Deadline
-                      else Clock + Milliseconds (10));
-      end loop;
-      return This.Service_Available;
-   end Available_Before;
+     (RCL.Client_Endpoints.Service_Available (This.Ends));
 
    procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
    begin
-      if not Available_Before (This, Deadline_Of (Timeout)) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline_Of (Timeout), Timeout);
    end Wait_For_Service;
+
+   procedure Read_Header
+     (Data : RCL.DDS.Byte_Array; GUID : out ROSIDL.UInt64; Sequence : out ROSIDL.Int64)
+   --  The request header of a reply (Decode_Error when cut short).
+   is
+      Start : constant Ada.Streams.Stream_Element_Offset :=
+        Data'First + ROSIDL.CDR.Encapsulation_Size;
+      C     : ROSIDL.Static.Impl.Wire.Cursor :=
+        (Pos => Start, Origin => Start,
+         Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
+   begin
+      ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Sequence, Responses.Full_Name);
+   end Read_Header;
+
+   procedure Take_Reply
+     (This    : in out Client;
+      Process : not null access procedure
+        (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info);
+      Taken   : out Boolean)
+   --  Takes one reply (Taken) and runs Process on it; a malformed one
+   --  (Decode_Error from Process) is logged and skipped.
+   is
+   begin
+      RCL.DDS.Take (This.Ends.Replies, Process, Taken);
+   exception
+      when E : ROSIDL.Decode_Error =>
+         RCL.Logging.Warn ("service " & This.Service_Name & ": malformed reply dropped: "
+                           & Ada.Exceptions.Exception_Message (E));
+         Taken := True;
+   end Take_Reply;
 
    --------------------------
    -- Asynchronous replies --
@@ -118,16 +118,11 @@ package body RCL.Services.Typed is
 
       procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
          pragma Unreferenced (Info);
-         Start : constant Ada.Streams.Stream_Element_Offset :=
-           Data'First + ROSIDL.CDR.Encapsulation_Size;
-         C     : ROSIDL.Static.Impl.Wire.Cursor :=
-           (Pos => Start, Origin => Start,
-            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
-         GUID  : ROSIDL.UInt64;
-         Seq   : ROSIDL.Int64;
+         GUID : ROSIDL.UInt64;
+         Seq  : ROSIDL.Int64;
       begin
-         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
-         if GUID = This.Handle then
+         Read_Header (Data, GUID, Seq);
+         if GUID = This.Ends.Handle then
             Run_Async (This, Data, Seq);
          end if;
       end Process;
@@ -135,15 +130,7 @@ package body RCL.Services.Typed is
    begin
       Taken := 0;
       loop
-         begin
-            RCL.DDS.Take (This.Replies, Process'Access, Got);
-         exception
-            when E : ROSIDL.Decode_Error =>
-               RCL.Logging.Warn ("service " & To_String (This.Name)
-                                 & ": malformed reply dropped: "
-                                 & Ada.Exceptions.Exception_Message (E));
-               Got := True;
-         end;
+         Take_Reply (This, Process'Access, Got);
          exit when not Got;
          Taken := Taken + 1;
       end loop;
@@ -153,27 +140,37 @@ package body RCL.Services.Typed is
    --  Longest wait of the pumping task with the client's lock held (a
    --  synchronous Call waits at most this long for the lock).
 
-   procedure Read_Replies (This : Client_Ref) is
-      Taken : Natural;
-      Ready : RCL.DDS.Key_Array (1 .. 1);
-      Last  : Natural;
+   procedure With_Lock (This : in out Client; Action : not null access procedure) is
+   --  Runs Action with This.Lock held (released also on an exception).
    begin
       This.Lock.Seize;
       begin
-         Take_Replies (This.all, Taken);
-         if Taken = 0 then
-            RCL.DDS.Wait (This.Waiting, Pump_Slice, Ready, Last);
-            Take_Replies (This.all, Taken);
-         end if;
+         Action.all;
       exception
          when others =>
             This.Lock.Release;
             raise;
       end;
       This.Lock.Release;
+   end With_Lock;
+
+   procedure Read_Replies (This : Client_Ref) is
+      procedure Read is
+         Taken : Natural;
+         Ready : RCL.DDS.Key_Array (1 .. 1);
+         Last  : Natural;
+      begin
+         Take_Replies (This.all, Taken);
+         if Taken = 0 then
+            RCL.DDS.Wait (This.Ends.Waiting, Pump_Slice, Ready, Last);
+            Take_Replies (This.all, Taken);
+         end if;
+      end Read;
+   begin
+      With_Lock (This.all, Read'Access);
    end Read_Replies;
 
-   function Service_Name (This : Client_Ref) return String is (To_String (This.Name));
+   function Service_Name (This : Client_Ref) return String is (Service_Name (This.all));
 
    procedure Exchange
      (This     : in out Client;
@@ -192,25 +189,20 @@ package body RCL.Services.Typed is
       procedure Fill
         (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
       begin
-         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
+         Requests.Encode (Req, (GUID => This.Ends.Handle, Sequence => Sequence), Buffer, Last);
       end Fill;
 
       procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
          pragma Unreferenced (Info);
-         Start    : constant Ada.Streams.Stream_Element_Offset :=
-           Data'First + ROSIDL.CDR.Encapsulation_Size;
-         C        : ROSIDL.Static.Impl.Wire.Cursor :=
-           (Pos => Start, Origin => Start,
-            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
-         GUID     : ROSIDL.UInt64;
-         Seq      : ROSIDL.Int64;
-         Header   : ROSIDL.CDR.Request_Header;
+         GUID   : ROSIDL.UInt64;
+         Seq    : ROSIDL.Int64;
+         Header : ROSIDL.CDR.Request_Header;
       begin
-         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
-         if GUID = This.Handle and then Seq = Sequence then
+         Read_Header (Data, GUID, Seq);
+         if GUID = This.Ends.Handle and then Seq = Sequence then
             Responses.Decode (Data, Resp, Header);
             Done := True;
-         elsif GUID = This.Handle then
+         elsif GUID = This.Ends.Handle then
             Run_Async (This, Data, Seq);
          end if;
          --  Replies to other clients of this topic, and late replies to
@@ -219,38 +211,27 @@ package body RCL.Services.Typed is
 
    begin
       if not This.Available then
-         if not Available_Before (This, Deadline) then
-            raise RCL_Timeout with "service " & To_String (This.Name)
-              & " not available after" & Seconds_Image (Timeout);
-         end if;
+         RCL.Client_Endpoints.Await_Service (This.Ends, Deadline, Timeout);
          This.Available := True;
       end if;
       Sequence := RCL.Pending_Calls.Next_Sequence;
-      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+      RCL.DDS.Write_Filled (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
                             Fill'Access);
       loop
          loop
-            begin
-               RCL.DDS.Take (This.Replies, Process'Access, Taken);
-            exception
-               when E : ROSIDL.Decode_Error =>
-                  RCL.Logging.Warn ("service " & To_String (This.Name)
-                                    & ": malformed reply dropped: "
-                                    & Ada.Exceptions.Exception_Message (E));
-                  Taken := True;
-            end;
+            Take_Reply (This, Process'Access, Taken);
             exit when Done or else not Taken;
          end loop;
          exit when Done;
          if RCL.Contexts.Is_Shutdown then
             raise ROS_Exception with "shut down while waiting for service "
-              & To_String (This.Name);
+              & This.Service_Name;
          elsif Clock >= Deadline then
             This.Available := False;
-            raise RCL_Timeout with "no response from service " & To_String (This.Name)
+            raise RCL_Timeout with "no response from service " & This.Service_Name
               & " after" & Seconds_Image (Timeout);
          end if;
-         RCL.DDS.Wait (This.Waiting, Duration'Min (Slice, To_Duration (Deadline - Clock)),
+         RCL.DDS.Wait (This.Ends.Waiting, Duration'Min (Slice, To_Duration (Deadline - Clock)),
                        Ready, Last);
       end loop;
    end Exchange;
@@ -262,17 +243,14 @@ package body RCL.Services.Typed is
       Timeout : Duration := Forever)
    is
       Deadline : constant Time := Deadline_Of (Timeout);
-   begin
-      Async_Calls.Check_Not_In_Callback (This.Asyncs);
-      This.Lock.Seize;
+
+      procedure Call_Locked is
       begin
          Exchange (This, Req, Resp, Timeout, Deadline);
-      exception
-         when others =>
-            This.Lock.Release;
-            raise;
-      end;
-      This.Lock.Release;
+      end Call_Locked;
+   begin
+      Async_Calls.Check_Not_In_Callback (This.Asyncs);
+      With_Lock (This, Call_Locked'Access);
    end Call;
 
    function Call
@@ -295,22 +273,19 @@ package body RCL.Services.Typed is
       Callback : not null Response_Callback;
       Timeout  : Duration := 60.0)
    is
-      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
-
-      procedure Fill
-        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+      procedure Send (Sequence : ROSIDL.Int64) is
+         procedure Fill
+           (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+         begin
+            Requests.Encode (Req, (GUID => This.Ends.Handle, Sequence => Sequence), Buffer, Last);
+         end Fill;
       begin
-         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
-      end Fill;
-
+         RCL.DDS.Write_Filled
+           (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+            Fill'Access);
+      end Send;
    begin
-      Async_Calls.Add (This.Asyncs, This'Unchecked_Access, Sequence, Callback, Timeout);
-      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
-                            Fill'Access);
-   exception
-      when others =>
-         Async_Calls.Remove (This.Asyncs, Sequence);
-         raise;
+      Async_Calls.Call (This.Asyncs, This'Unchecked_Access, Callback, Timeout, Send'Access);
    end Call_Async;
 
    function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
@@ -318,13 +293,7 @@ package body RCL.Services.Typed is
    overriding procedure Finalize (This : in out Client) is
    begin
       Async_Calls.Stop (This.Asyncs);
-      if This.Open then
-         This.Open := False;
-         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
-      end if;
-   exception
-      when others =>
-         This.Open := False;
+      Close (This.Ends);
    end Finalize;
 
    ------------------------

@@ -34,8 +34,7 @@ with Ada.Finalization;
 with ROSIDL.Static.Service_Support;
 with RCL.Clients;
 
-private with Ada.Strings.Unbounded;
-private with RCL.Graph;
+private with RCL.Client_Endpoints;
 private with RCL.Pending_Calls.Asynchronous;
 private with ROSIDL.Mutexes;
 
@@ -190,14 +189,7 @@ private
      (Response, Response_Callback, Client_Ref, Read_Replies, Service_Name);
 
    type Client is new Ada.Finalization.Limited_Controlled with record
-      Open      : Boolean := False;
-      Name      : Ada.Strings.Unbounded.Unbounded_String;
-      Requests  : RCL.DDS.Writer;
-      Replies   : RCL.DDS.Reader;
-      Waiting   : RCL.DDS.Waitset;
-      Handle    : ROSIDL.UInt64 := 0;
-      --  The request writer's instance handle (the requests' header GUID).
-      Node      : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Ends      : RCL.Client_Endpoints.Endpoints;
       Available : Boolean := False;
       --  The service was available at the last call (not checked again
       --  until a call times out).
