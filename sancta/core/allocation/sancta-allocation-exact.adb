@@ -144,34 +144,31 @@ package body Sancta.Allocation.Exact is
                   end loop;
                end loop;
                --  SC (S): the robot's best cost for the set S, EN its
-               --  last (forward) or first (backward) node.
-               for S in 0 .. Full loop
+               --  last (forward) or first (backward) node (0: none).
+               SC (0) :=
+                 (if Average then M * FC else M * (F0 + Robot_Distance (P, R, S0, P.Finish (R))));
+               EN (0, 1) := 0;
+               for S in 1 .. Full loop
                   SC (S) := Unreachable;
                   EN (S, 1) := 0;
-                  if S = 0 then
-                     SC (S) :=
-                       (if Average then M * FC
-                        else M * (F0 + Robot_Distance (P, R, S0, P.Finish (R))));
-                  else
-                     for X in 1 .. Nodes'Last loop
-                        if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
-                           declare
-                              Cnt : constant Cost := Cost (Pop_Count (S));
-                              D : constant Cost :=
-                                (if Average
-                                 then M * (FC + Cnt * F0
-                                   + Cnt * Robot_Distance (P, R, S0, Nodes (X).Loc) + DP (S, X))
-                                 else M * (F0 + DP (S, X)
-                                   + Robot_Distance (P, R, Nodes (X).Loc, P.Finish (R))));
-                           begin
-                              if D < SC (S) then
-                                 SC (S) := D;
-                                 EN (S, 1) := X;
-                              end if;
-                           end;
-                        end if;
-                     end loop;
-                  end if;
+                  for X in 1 .. Nodes'Last loop
+                     if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
+                        declare
+                           Cnt : constant Cost := Cost (Pop_Count (S));
+                           D : constant Cost :=
+                             (if Average
+                              then M * (FC + Cnt * F0
+                                + Cnt * Robot_Distance (P, R, S0, Nodes (X).Loc) + DP (S, X))
+                              else M * (F0 + DP (S, X)
+                                + Robot_Distance (P, R, Nodes (X).Loc, P.Finish (R))));
+                        begin
+                           if D < SC (S) then
+                              SC (S) := D;
+                              EN (S, 1) := X;
+                           end if;
+                        end;
+                     end if;
+                  end loop;
                end loop;
                for S in 0 .. Full loop
                   if FN + Pop_Count (S) < P.Min_Tasks or else Bad0 > 0 then
