@@ -201,8 +201,9 @@ package body RCL.Services.Typed is
          This.Available := True;
       end if;
       Sequence := RCL.Pending_Calls.Next_Sequence;
-      RCL.DDS.Write_Filled (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
-                            Fill'Access);
+      RCL.DDS.Write_Filled
+        (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+         Fill'Access);
       loop
          loop
             Take_Reply (This, Process'Access, Taken);
