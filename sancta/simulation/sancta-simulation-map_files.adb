@@ -194,11 +194,12 @@ package body Sancta.Simulation.Map_Files is
       declare
          Name : constant String := To_String (Result.Image);
       begin
+         --  Not Ada.Directories.Compose: it refuses a relative path with
+         --  folders ("maps/room.pgm").
          Result.Image_Path := To_Unbounded_String
            (if Name (Name'First) = '/' then Name
-            else Ada.Directories.Compose
-              (Ada.Directories.Containing_Directory
-                 (Ada.Directories.Full_Name (File_Name)), Name));
+            else Ada.Directories.Containing_Directory
+                   (Ada.Directories.Full_Name (File_Name)) & "/" & Name);
       end;
       return Result;
    end Read_YAML;
