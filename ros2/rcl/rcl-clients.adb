@@ -1,14 +1,11 @@
 with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
+with RCL.DDS;
 with ROSIDL.CDR;
-with RCL.Client_Endpoints;
 with RCL.Contexts;
-with RCL.DDS.Matching;
 with RCL.Logging;
-with RCL.Node_Entities;
 with RCL.Keyed_Caches;
-with RCL.Process_Context;
 
 package body RCL.Clients is
 
@@ -17,18 +14,14 @@ package body RCL.Clients is
    use Ada.Real_Time;
    use type ROSIDL.UInt64;
    use type RCL.Pending_Calls.Outcome;
-   use type RCL.Pending_Calls.Response_Callback;
 
    Slice : constant Duration := 0.05;
    --  Longest single wait of the task reading replies.
 
    function Earliest (A, B : Time) return Time is (if A < B then A else B);
 
-   function Deadline_Of (Timeout : Duration) return Time is
-     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
-
-   function Seconds_Image (Timeout : Duration) return String is
-     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
+   use RCL.Client_Endpoints;
+   --  Deadline_Of, Seconds_Image, Await_Service...
 
    ----------
    -- Init --
@@ -42,50 +35,27 @@ package body RCL.Clients is
       QoS     : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
       use ROSIDL.Typesupport;
-      FQ : constant String := Node.Expand_Service (Name);
    begin
-      This.Name := To_Unbounded_String (FQ);
       This.Support := Support;
-      RCL.Client_Endpoints.Open_Endpoints
-        (Node, FQ, DDS_Type_Name (Request_Support (Support)),
-         DDS_Type_Name (Response_Support (Support)), QoS,
-         This.Requests, This.Replies, This.Handle);
-      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
-      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Node := RCL.Node_Entities.Graph_Id (Node);
-      This.Open := True;
+      RCL.Client_Endpoints.Open
+        (This.Ends, Node, Name, DDS_Type_Name (Request_Support (Support)),
+         DDS_Type_Name (Response_Support (Support)), QoS);
    end Init;
 
-   function Is_Open (This : Client) return Boolean is (This.Open);
+   function Is_Open (This : Client) return Boolean is (This.Ends.Is_Open);
 
-   function Service_Name (This : Client) return String is (To_String (This.Name));
-
-   -----------------------
-   -- Service_Available --
-   -----------------------
+   function Service_Name (This : Client) return String is
+     (RCL.Client_Endpoints.Service_Name (This.Ends));
 
    function Service_Available (This : Client) return Boolean is
-     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
+     (RCL.Client_Endpoints.Service_Available (This.Ends));
 
    function Wait_For_Service (This : Client; Timeout : Duration := Forever) return Boolean is
-      Deadline : constant Time := Deadline_Of (Timeout);
-   begin
-      loop
-         if This.Service_Available then
-            return True;
-         end if;
-         exit when Clock >= Deadline or RCL.Contexts.Is_Shutdown;
-         delay until Earliest (Deadline, Clock + Milliseconds (10));
-      end loop;
-      return This.Service_Available;
-   end Wait_For_Service;
+     (RCL.Client_Endpoints.Available_Before (This.Ends, Deadline_Of (Timeout)));
 
    procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
    begin
-      if not This.Wait_For_Service (Timeout) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline_Of (Timeout), Timeout);
    end Wait_For_Service;
 
    -----------------
@@ -99,34 +69,26 @@ package body RCL.Clients is
       Taken := 0;
       loop
          declare
-            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Replies, Info);
+            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Ends.Replies, Info);
             Response : ROSIDL.Dynamic.Message :=
               ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
             Header   : ROSIDL.CDR.Request_Header;
             Result   : RCL.Pending_Calls.Outcome;
-            Callback : RCL.Pending_Calls.Response_Callback;
          begin
             exit when Data'Length = 0;
             Taken := Taken + 1;
             ROSIDL.CDR.Decode (Data, Response, Header);
-            if Header.GUID = This.Handle then
-               This.Calls.Deliver (Header.Sequence, Response, Result, Callback);
-               if Result = RCL.Pending_Calls.Run_Callback then
-                  begin
-                     Callback (Response);
-                  exception
-                     when E : others =>
-                        RCL.Logging.Error
-                          ("response callback of service " & To_String (This.Name)
-                           & " raised " & Ada.Exceptions.Exception_Information (E));
-                  end;
+            if Header.GUID = This.Ends.Handle then
+               This.Calls.Deliver (Header.Sequence, Response, Result);
+               if Result = RCL.Pending_Calls.Unknown_Sequence then
+                  Async_Calls.Complete (This.Asyncs, Header.Sequence, Response);
                end if;
             end if;
             --  Replies to other clients of this topic, and late replies
             --  (Unknown_Sequence), are dropped.
          exception
             when E : ROSIDL.Decode_Error =>
-               RCL.Logging.Warn ("service " & To_String (This.Name)
+               RCL.Logging.Warn ("service " & This.Service_Name
                                  & ": malformed reply dropped: "
                                  & Ada.Exceptions.Exception_Message (E));
          end;
@@ -141,44 +103,47 @@ package body RCL.Clients is
    begin
       Take_Replies (This, Taken);
       if Taken = 0 then
-         RCL.DDS.Wait (This.Waiting,
+         RCL.DDS.Wait (This.Ends.Waiting,
                        Duration'Min (Slice, To_Duration (Until_Time - Clock)), Ready, Last);
          Take_Replies (This, Taken);
       end if;
    end Pump_Once;
 
-   ----------
-   -- Pump --
-   ----------
-
-   task body Pump is
-      Done    : Boolean := False;
-      Got     : Boolean;
-      Expired : Natural;
+   procedure Read_Or_Wait
+     (This : in out Client; Until_Time : Time; Into : RCL.Pending_Calls.Slot_Access)
+   is
+      --  Reads replies until Until_Time (at most Slice) unless another task
+      --  is reading them; then waits for Into's response (if Into is not
+      --  null) at most 2 ms.
+      Got : Boolean;
    begin
-      while not Done loop
-         Owner.Calls.Try_Lead (Got);
-         if Got then
-            begin
-               Pump_Once (Owner.all, Clock + To_Time_Span (Slice));
-            exception
-               when E : others =>
-                  RCL.Logging.Error ("reading the replies of service "
-                                     & To_String (Owner.Name) & ": "
-                                     & Ada.Exceptions.Exception_Message (E));
-            end;
-            Owner.Calls.Release;
-         else
-            delay 0.002;
-         end if;
-         Owner.Calls.Expire (Clock, Expired);
-         if Expired > 0 then
-            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
-                              & To_String (Owner.Name) & " got no response in time");
-         end if;
-         Owner.Calls.Pumping_Done (Done);
-      end loop;
-   end Pump;
+      This.Calls.Try_Lead (Got);
+      if Got then
+         begin
+            Pump_Once (This, Until_Time);
+         exception
+            when others =>
+               This.Calls.Release;
+               raise;
+         end;
+         This.Calls.Release;
+      elsif Into = null then
+         delay until Earliest (Until_Time, Clock + Milliseconds (2));
+      else
+         select
+            Into.Wait;
+         or
+            delay until Earliest (Until_Time, Clock + Milliseconds (2));
+         end select;
+      end if;
+   end Read_Or_Wait;
+
+   procedure Read_Replies (This : Client_Ref) is
+   begin
+      Read_Or_Wait (This.all, Clock + To_Time_Span (Slice), Into => null);
+   end Read_Replies;
+
+   function Service_Name (This : Client_Ref) return String is (Service_Name (This.all));
 
    ----------
    -- Send --
@@ -192,12 +157,12 @@ package body RCL.Clients is
       if ROSIDL.Dynamic.Type_Name (Request)
         /= Full_Name (Request_Support (This.Support))
       then
-         raise ROS_Exception with "service " & To_String (This.Name) & " takes "
+         raise ROS_Exception with "service " & This.Service_Name & " takes "
            & Full_Name (Request_Support (This.Support)) & " requests, not "
            & ROSIDL.Dynamic.Type_Name (Request);
       end if;
-      RCL.DDS.Write (This.Requests,
-                     ROSIDL.CDR.Encode (Request, (GUID => This.Handle, Sequence => Sequence)));
+      RCL.DDS.Write (This.Ends.Requests,
+                     ROSIDL.CDR.Encode (Request, (GUID => This.Ends.Handle, Sequence => Sequence)));
    end Send;
 
    ----------
@@ -215,12 +180,9 @@ package body RCL.Clients is
       Deadline : constant Time := Deadline_Of (Timeout);
       Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
       Into     : RCL.Pending_Calls.Slot_Access;
-      Got      : Boolean;
    begin
-      if not This.Wait_For_Service (Timeout) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      Async_Calls.Check_Not_In_Callback (This.Asyncs);
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline, Timeout);
       Into := new RCL.Pending_Calls.Slot;
       This.Calls.Add_Sync (Sequence, Into);
       begin
@@ -228,28 +190,12 @@ package body RCL.Clients is
          while not Into.Filled loop
             if RCL.Contexts.Is_Shutdown then
                raise ROS_Exception with "shut down while waiting for service "
-                 & To_String (This.Name);
+                 & This.Service_Name;
             elsif Clock >= Deadline then
-               raise RCL_Timeout with "no response from service " & To_String (This.Name)
+               raise RCL_Timeout with "no response from service " & This.Service_Name
                  & " after" & Seconds_Image (Timeout);
             end if;
-            This.Calls.Try_Lead (Got);
-            if Got then
-               begin
-                  Pump_Once (This, Deadline);
-               exception
-                  when others =>
-                     This.Calls.Release;
-                     raise;
-               end;
-               This.Calls.Release;
-            else
-               select
-                  Into.Wait;
-               or
-                  delay until Earliest (Deadline, Clock + Milliseconds (2));
-               end select;
-            end if;
+            Read_Or_Wait (This, Deadline, Into);
          end loop;
       exception
          when others =>
@@ -266,38 +212,25 @@ package body RCL.Clients is
    -- Call_Async --
    ----------------
 
-   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
-
    procedure Call_Async
      (This     : in out Client;
       Request  : ROSIDL.Dynamic.Message;
       Callback : not null Response_Callback;
       Timeout  : Duration := 60.0)
    is
-      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
-      Start    : Boolean;
+      procedure Send_Request (Sequence : ROSIDL.Int64) is
+      begin
+         Send (This, Request, Sequence);
+      end Send_Request;
    begin
-      This.Calls.Add_Async
-        (Sequence, RCL.Pending_Calls.Response_Callback (Callback), Deadline_Of (Timeout), Start);
-      if Start then
-         if This.Pumper /= null then
-            while not This.Pumper'Terminated loop
-               delay 0.001;  --  The previous pump is ending.
-            end loop;
-            Free (This.Pumper);
-         end if;
-         This.Pumper := new Pump (This'Unchecked_Access);
-      end if;
-      Send (This, Request, Sequence);
-   exception
-      when others =>
-         This.Calls.Remove (Sequence);
-         raise;
+      Async_Calls.Call (This.Asyncs, This'Unchecked_Access, Callback, Timeout,
+                        Send_Request'Access);
    end Call_Async;
 
-   function Pending_Async (This : Client) return Natural is (This.Calls.Async_Count);
+   function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
 
-   function Pending_Calls (This : Client) return Natural is (This.Calls.Count);
+   function Pending_Calls (This : Client) return Natural is
+     (This.Calls.Count + Async_Calls.Count (This.Asyncs));
 
    -------------
    -- Futures --
@@ -333,31 +266,15 @@ package body RCL.Clients is
    function Read_Replies (F : in out Future; Until_Time : Time) return Boolean is
       --  Reads replies (or waits for the task reading them) until F is
       --  ready or Until_Time: True when ready.
-      Got : Boolean;
    begin
+      Async_Calls.Check_Not_In_Callback (F.Call.Owner.Asyncs);
       loop
          if F.Call.Into.Filled then
             return True;
          elsif Clock >= Until_Time then
             return False;
          end if;
-         F.Call.Owner.Calls.Try_Lead (Got);
-         if Got then
-            begin
-               Pump_Once (F.Call.Owner.all, Until_Time);
-            exception
-               when others =>
-                  F.Call.Owner.Calls.Release;
-                  raise;
-            end;
-            F.Call.Owner.Calls.Release;
-         else
-            select
-               F.Call.Into.Wait;
-            or
-               delay until Earliest (Until_Time, Clock + Milliseconds (2));
-            end select;
-         end if;
+         Read_Or_Wait (F.Call.Owner.all, Until_Time, F.Call.Into);
       end loop;
    end Read_Replies;
 
@@ -419,20 +336,8 @@ package body RCL.Clients is
 
    overriding procedure Finalize (This : in out Client) is
    begin
-      This.Calls.Stop;
-      if This.Pumper /= null then
-         while not This.Pumper'Terminated loop
-            delay 0.001;
-         end loop;
-         Free (This.Pumper);
-      end if;
-      if This.Open then
-         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
-      end if;
-      This.Open := False;
-   exception
-      when others =>
-         This.Open := False;
+      Async_Calls.Stop (This.Asyncs);
+      Close (This.Ends);
    end Finalize;
 
    ------------------------

@@ -27,13 +27,11 @@
 with Ada.Finalization;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
-with RCL.DDS;
-with RCL.Graph;
 with RCL.Nodes;
 with RCL.QoS;
 
-private with Ada.Strings.Unbounded;
-private with RCL.Pending_Calls;
+private with RCL.Client_Endpoints;
+private with RCL.Pending_Calls.Asynchronous;
 
 package RCL.Clients is
 
@@ -76,7 +74,8 @@ package RCL.Clients is
      with Pre => Is_Open (This);
    --  RCL_Timeout (naming the service) when no response came within
    --  Timeout; ROS_Exception when Request is not of the service's request
-   --  type, or when the context shuts down (Ctrl-C) during the wait.
+   --  type, when the context shuts down (Ctrl-C) during the wait, or when
+   --  called from a response callback of this client (Call_Async).
 
    procedure Call_Async
      (This     : in out Client;
@@ -85,8 +84,14 @@ package RCL.Clients is
       Timeout  : Duration := 60.0)
      with Pre => Is_Open (This);
    --  Sends Request at once (without waiting for the service) and returns;
-   --  Callback runs with the response in the client's task. A response not
-   --  come within Timeout is forgotten (a warning is logged).
+   --  Callback runs with the response in the client's task (or in a
+   --  synchronous Call or a future's wait of the same client that reads
+   --  the reply); an exception in it is logged. A response not come within
+   --  Timeout is forgotten (a warning is logged), as are the calls still
+   --  pending when the context shuts down or the client is finalized.
+   --  Malformed replies are logged and skipped. Callback must not make a
+   --  synchronous Call of this client (ROS_Exception: it would wait for
+   --  itself).
 
    function Pending_Async (This : Client) return Natural;
    --  Asynchronous calls still waiting for their response.
@@ -135,6 +140,7 @@ package RCL.Clients is
    function Wait (F : in out Future; Timeout : Duration := Forever) return Future_Return_Code
      with Pre => Is_Pending (F);
    --  Reads replies until the response comes, without spinning any node.
+   --  ROS_Exception from a response callback of F's client (as Call).
 
    function Spin_Until_Complete
      (Node    : in out RCL.Nodes.Node'Class;
@@ -142,6 +148,7 @@ package RCL.Clients is
       Timeout : Duration := Forever) return Future_Return_Code
      with Pre => Is_Pending (F);
    --  Runs Node's callbacks (Node.Spin) while waiting for F's response.
+   --  ROS_Exception from a response callback of F's client (as Call).
 
    --  One client per (node, service name) made on first use:
 
@@ -164,13 +171,14 @@ package RCL.Clients is
 
 private
 
-   use Ada.Strings.Unbounded;
-
-   task type Pump (Owner : not null access Client);
-   --  Reads replies while asynchronous calls are pending.
-   type Pump_Access is access Pump;
-
    type Client_Ref is access all Client;
+
+   procedure Read_Replies (This : Client_Ref);
+   --  The pump's reading (RCL.Pending_Calls.Asynchronous).
+   function Service_Name (This : Client_Ref) return String;
+
+   package Async_Calls is new RCL.Pending_Calls.Asynchronous
+     (ROSIDL.Dynamic.Message, Response_Callback, Client_Ref, Read_Replies, Service_Name);
 
    type Future_Call is new Ada.Finalization.Limited_Controlled with record
       Owner    : Client_Ref;
@@ -186,17 +194,11 @@ private
    --  (Not tagged itself: Call_Future is a primitive of Client.)
 
    type Client is new Ada.Finalization.Limited_Controlled with record
-      Open     : Boolean := False;
-      Name     : Unbounded_String;
-      Support  : ROSIDL.Typesupport.Service_Support;
-      Requests : RCL.DDS.Writer;
-      Replies  : RCL.DDS.Reader;
-      Waiting  : RCL.DDS.Waitset;
-      Handle   : ROSIDL.UInt64 := 0;
-      Calls    : RCL.Pending_Calls.Table;
-      Pumper   : Pump_Access;
-      Node     : RCL.Graph.Node_Id := RCL.Graph.No_Node;
-      --  Where the endpoints are announced (ros_discovery_info).
+      Ends    : RCL.Client_Endpoints.Endpoints;
+      Support : ROSIDL.Typesupport.Service_Support;
+      Calls   : RCL.Pending_Calls.Table;
+      --  Synchronous calls and futures; who reads replies.
+      Asyncs  : Async_Calls.Calls;
    end record;
 
 end RCL.Clients;

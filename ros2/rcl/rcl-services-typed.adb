@@ -1,22 +1,16 @@
 with Ada.Exceptions;
 with Ada.Streams;
-with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
-with RCL.Client_Endpoints;
 with RCL.Contexts;
-with RCL.DDS.Matching;
 with RCL.Logging;
-with RCL.Node_Entities;
 with RCL.Pending_Calls;
 with RCL.Keyed_Caches;
-with RCL.Process_Context;
 
 package body RCL.Services.Typed is
 
    use Ada.Real_Time;
-   use Ada.Strings.Unbounded;
    use type Ada.Streams.Stream_Element_Offset;
    use type ROSIDL.UInt64;
    use type ROSIDL.Int64;
@@ -36,15 +30,8 @@ package body RCL.Services.Typed is
    Slice : constant Duration := 0.1;
    --  Longest single wait for a reply (shutdown is checked in between).
 
-   function Deadline_Of (Timeout : Duration) return Time is
-     (if Timeout >= 1.0E6 then Time_Last else Clock + To_Time_Span (Timeout));
-
-   function Seconds_Image (Timeout : Duration) return String is
-     (if Timeout >= 1.0E6 then "ever" else Duration'Image (Timeout) & " s");
-
-   ---------------
-   -- Call_Lock --
-   ---------------
+   use RCL.Client_Endpoints;
+   --  Deadline_Of, Seconds_Image, Await_Service...
 
    ------------
    -- Client --
@@ -56,46 +43,54 @@ package body RCL.Services.Typed is
       Name : String;
       QoS  : RCL.QoS.Profile := RCL.QoS.Services_Default)
    is
-      FQ : constant String := Node.Expand_Service (Name);
    begin
       Register_Hashes;
-      RCL.Client_Endpoints.Open_Endpoints
-        (Node, FQ, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS,
-         This.Requests, This.Replies, This.Handle);
-      This.Node := RCL.Node_Entities.Graph_Id (Node);
-      This.Name := To_Unbounded_String (FQ);
-      RCL.DDS.Create (This.Waiting, RCL.Process_Context.Participant.all);
-      RCL.DDS.Attach (This.Waiting, This.Replies, 1);
-      This.Open := True;
+      RCL.Client_Endpoints.Open
+        (This.Ends, Node, Name, Requests.DDS_Type_Name, Responses.DDS_Type_Name, QoS);
    end Init;
 
-   function Is_Open (This : Client) return Boolean is (This.Open);
+   function Is_Open (This : Client) return Boolean is (This.Ends.Is_Open);
 
-   function Service_Name (This : Client) return String is (To_String (This.Name));
+   function Service_Name (This : Client) return String is
+     (RCL.Client_Endpoints.Service_Name (This.Ends));
 
    function Service_Available (This : Client) return Boolean is
-     (RCL.DDS.Matching.Service_Available (This.Requests, This.Replies));
-
-   function Available_Before (This : Client; Deadline : Time) return Boolean is
-   begin
-      loop
-         if This.Service_Available then
-            return True;
-         end if;
-         exit when Clock >= Deadline or else RCL.Contexts.Is_Shutdown;
-         delay until (if Deadline < Clock + Milliseconds (10) then Deadline
-                      else Clock + Milliseconds (10));
-      end loop;
-      return This.Service_Available;
-   end Available_Before;
+     (RCL.Client_Endpoints.Service_Available (This.Ends));
 
    procedure Wait_For_Service (This : Client; Timeout : Duration := Forever) is
    begin
-      if not Available_Before (This, Deadline_Of (Timeout)) then
-         raise RCL_Timeout with "service " & To_String (This.Name)
-           & " not available after" & Seconds_Image (Timeout);
-      end if;
+      RCL.Client_Endpoints.Await_Service (This.Ends, Deadline_Of (Timeout), Timeout);
    end Wait_For_Service;
+
+   procedure Read_Header
+     (Data : RCL.DDS.Byte_Array; GUID : out ROSIDL.UInt64; Sequence : out ROSIDL.Int64)
+   --  The request header of a reply (Decode_Error when cut short).
+   is
+      Start : constant Ada.Streams.Stream_Element_Offset :=
+        Data'First + ROSIDL.CDR.Encapsulation_Size;
+      C     : ROSIDL.Static.Impl.Wire.Cursor :=
+        (Pos => Start, Origin => Start,
+         Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
+   begin
+      ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Sequence, Responses.Full_Name);
+   end Read_Header;
+
+   procedure Take_Reply
+     (This    : in out Client;
+      Process : not null access procedure
+        (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info);
+      Taken   : out Boolean)
+   --  Takes one reply (Taken) and runs Process on it; a malformed one
+   --  (Decode_Error from Process) is logged and skipped.
+   is
+   begin
+      RCL.DDS.Take (This.Ends.Replies, Process, Taken);
+   exception
+      when E : ROSIDL.Decode_Error =>
+         RCL.Logging.Warn ("service " & This.Service_Name & ": malformed reply dropped: "
+                           & Ada.Exceptions.Exception_Message (E));
+         Taken := True;
+   end Take_Reply;
 
    --------------------------
    -- Asynchronous replies --
@@ -107,26 +102,12 @@ package body RCL.Services.Typed is
    --  timeout, duplicate). Decode_Error (the call stays pending) when
    --  Data is malformed.
    is
-      Callback : Response_Callback;
-      Resp     : Response;
-      Header   : ROSIDL.CDR.Request_Header;
+      Resp   : Response;
+      Header : ROSIDL.CDR.Request_Header;
    begin
-      if This.Asyncs.Count = 0 then
-         return;
-      end if;
-      Responses.Decode (Data, Resp, Header);
-      This.Asyncs.Take (Sequence, Callback);
-      if Callback /= null then
-         This.In_Callback := Ada.Task_Identification.Current_Task;
-         begin
-            Callback (Resp);
-         exception
-            when E : others =>
-               RCL.Logging.Error
-                 ("response callback of service " & To_String (This.Name)
-                  & " raised " & Ada.Exceptions.Exception_Information (E));
-         end;
-         This.In_Callback := Ada.Task_Identification.Null_Task_Id;
+      if Async_Calls.Is_Pending (This.Asyncs, Sequence) then
+         Responses.Decode (Data, Resp, Header);
+         Async_Calls.Complete (This.Asyncs, Sequence, Resp);
       end if;
    end Run_Async;
 
@@ -137,16 +118,11 @@ package body RCL.Services.Typed is
 
       procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
          pragma Unreferenced (Info);
-         Start : constant Ada.Streams.Stream_Element_Offset :=
-           Data'First + ROSIDL.CDR.Encapsulation_Size;
-         C     : ROSIDL.Static.Impl.Wire.Cursor :=
-           (Pos => Start, Origin => Start,
-            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
-         GUID  : ROSIDL.UInt64;
-         Seq   : ROSIDL.Int64;
+         GUID : ROSIDL.UInt64;
+         Seq  : ROSIDL.Int64;
       begin
-         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
-         if GUID = This.Handle then
+         Read_Header (Data, GUID, Seq);
+         if GUID = This.Ends.Handle then
             Run_Async (This, Data, Seq);
          end if;
       end Process;
@@ -154,15 +130,7 @@ package body RCL.Services.Typed is
    begin
       Taken := 0;
       loop
-         begin
-            RCL.DDS.Take (This.Replies, Process'Access, Got);
-         exception
-            when E : ROSIDL.Decode_Error =>
-               RCL.Logging.Warn ("service " & To_String (This.Name)
-                                 & ": malformed reply dropped: "
-                                 & Ada.Exceptions.Exception_Message (E));
-               Got := True;
-         end;
+         Take_Reply (This, Process'Access, Got);
          exit when not Got;
          Taken := Taken + 1;
       end loop;
@@ -172,96 +140,37 @@ package body RCL.Services.Typed is
    --  Longest wait of the pumping task with the client's lock held (a
    --  synchronous Call waits at most this long for the lock).
 
-   task body Pump is
-      Done    : Boolean := False;
-      Expired : Natural;
-      Taken   : Natural;
-      Ready   : RCL.DDS.Key_Array (1 .. 1);
-      Last    : Natural;
+   procedure With_Lock (This : in out Client; Action : not null access procedure) is
+   --  Runs Action with This.Lock held (released also on an exception).
    begin
-      while not Done loop
-         Owner.Lock.Seize;
-         begin
-            Take_Replies (Owner.all, Taken);
-            if Taken = 0 then
-               RCL.DDS.Wait (Owner.Waiting, Pump_Slice, Ready, Last);
-               Take_Replies (Owner.all, Taken);
-            end if;
-         exception
-            when E : others =>
-               RCL.Logging.Error ("reading the replies of service "
-                                  & To_String (Owner.Name) & ": "
-                                  & Ada.Exceptions.Exception_Message (E));
-         end;
-         Owner.Lock.Release;
-         Owner.Asyncs.Expire (Clock, Expired);
-         if Expired > 0 then
-            RCL.Logging.Warn (Expired'Image & " asynchronous call(s) of service "
-                              & To_String (Owner.Name) & " got no response in time");
+      This.Lock.Seize;
+      begin
+         Action.all;
+      exception
+         when others =>
+            This.Lock.Release;
+            raise;
+      end;
+      This.Lock.Release;
+   end With_Lock;
+
+   procedure Read_Replies (This : Client_Ref) is
+      procedure Read is
+         Taken : Natural;
+         Ready : RCL.DDS.Key_Array (1 .. 1);
+         Last  : Natural;
+      begin
+         Take_Replies (This.all, Taken);
+         if Taken = 0 then
+            RCL.DDS.Wait (This.Ends.Waiting, Pump_Slice, Ready, Last);
+            Take_Replies (This.all, Taken);
          end if;
-         Owner.Asyncs.Pumping_Done (Done);
-      end loop;
-   end Pump;
+      end Read;
+   begin
+      With_Lock (This.all, Read'Access);
+   end Read_Replies;
 
-   protected body Async_Table is
-
-      procedure Add
-        (Sequence   : ROSIDL.Int64;
-         Call       : Async_Call;
-         Start_Pump : out Boolean) is
-      begin
-         Calls.Insert (Sequence, Call);
-         Start_Pump := not Pumping;
-         Pumping := True;
-      end Add;
-
-      procedure Take (Sequence : ROSIDL.Int64; Callback : out Response_Callback) is
-         Position : Async_Maps.Cursor := Calls.Find (Sequence);
-      begin
-         if Async_Maps.Has_Element (Position) then
-            Callback := Async_Maps.Element (Position).Callback;
-            Calls.Delete (Position);
-         else
-            Callback := null;
-         end if;
-      end Take;
-
-      procedure Remove (Sequence : ROSIDL.Int64) is
-      begin
-         Calls.Exclude (Sequence);
-      end Remove;
-
-      procedure Expire (Now : Time; Expired : out Natural) is
-         Position : Async_Maps.Cursor := Calls.First;
-         Next     : Async_Maps.Cursor;
-      begin
-         Expired := 0;
-         while Async_Maps.Has_Element (Position) loop
-            Next := Async_Maps.Next (Position);
-            if Async_Maps.Element (Position).Deadline < Now then
-               Calls.Delete (Position);
-               Expired := Expired + 1;
-            end if;
-            Position := Next;
-         end loop;
-      end Expire;
-
-      procedure Pumping_Done (Done : out Boolean) is
-      begin
-         Done := Stopping or else Calls.Is_Empty;
-         if Done then
-            Pumping := False;
-         end if;
-      end Pumping_Done;
-
-      procedure Stop is
-      begin
-         Stopping := True;
-      end Stop;
-
-      function Count return Natural is (Natural (Calls.Length));
-
-   end Async_Table;
+   function Service_Name (This : Client_Ref) return String is (Service_Name (This.all));
 
    procedure Exchange
      (This     : in out Client;
@@ -280,25 +189,20 @@ package body RCL.Services.Typed is
       procedure Fill
         (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
       begin
-         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
+         Requests.Encode (Req, (GUID => This.Ends.Handle, Sequence => Sequence), Buffer, Last);
       end Fill;
 
       procedure Process (Data : RCL.DDS.Byte_Array; Info : RCL.DDS.Sample_Info) is
          pragma Unreferenced (Info);
-         Start    : constant Ada.Streams.Stream_Element_Offset :=
-           Data'First + ROSIDL.CDR.Encapsulation_Size;
-         C        : ROSIDL.Static.Impl.Wire.Cursor :=
-           (Pos => Start, Origin => Start,
-            Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
-         GUID     : ROSIDL.UInt64;
-         Seq      : ROSIDL.Int64;
-         Header   : ROSIDL.CDR.Request_Header;
+         GUID   : ROSIDL.UInt64;
+         Seq    : ROSIDL.Int64;
+         Header : ROSIDL.CDR.Request_Header;
       begin
-         ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Seq, Responses.Full_Name);
-         if GUID = This.Handle and then Seq = Sequence then
+         Read_Header (Data, GUID, Seq);
+         if GUID = This.Ends.Handle and then Seq = Sequence then
             Responses.Decode (Data, Resp, Header);
             Done := True;
-         elsif GUID = This.Handle then
+         elsif GUID = This.Ends.Handle then
             Run_Async (This, Data, Seq);
          end if;
          --  Replies to other clients of this topic, and late replies to
@@ -307,38 +211,27 @@ package body RCL.Services.Typed is
 
    begin
       if not This.Available then
-         if not Available_Before (This, Deadline) then
-            raise RCL_Timeout with "service " & To_String (This.Name)
-              & " not available after" & Seconds_Image (Timeout);
-         end if;
+         RCL.Client_Endpoints.Await_Service (This.Ends, Deadline, Timeout);
          This.Available := True;
       end if;
       Sequence := RCL.Pending_Calls.Next_Sequence;
-      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+      RCL.DDS.Write_Filled (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
                             Fill'Access);
       loop
          loop
-            begin
-               RCL.DDS.Take (This.Replies, Process'Access, Taken);
-            exception
-               when E : ROSIDL.Decode_Error =>
-                  RCL.Logging.Warn ("service " & To_String (This.Name)
-                                    & ": malformed reply dropped: "
-                                    & Ada.Exceptions.Exception_Message (E));
-                  Taken := True;
-            end;
+            Take_Reply (This, Process'Access, Taken);
             exit when Done or else not Taken;
          end loop;
          exit when Done;
          if RCL.Contexts.Is_Shutdown then
             raise ROS_Exception with "shut down while waiting for service "
-              & To_String (This.Name);
+              & This.Service_Name;
          elsif Clock >= Deadline then
             This.Available := False;
-            raise RCL_Timeout with "no response from service " & To_String (This.Name)
+            raise RCL_Timeout with "no response from service " & This.Service_Name
               & " after" & Seconds_Image (Timeout);
          end if;
-         RCL.DDS.Wait (This.Waiting, Duration'Min (Slice, To_Duration (Deadline - Clock)),
+         RCL.DDS.Wait (This.Ends.Waiting, Duration'Min (Slice, To_Duration (Deadline - Clock)),
                        Ready, Last);
       end loop;
    end Exchange;
@@ -350,21 +243,14 @@ package body RCL.Services.Typed is
       Timeout : Duration := Forever)
    is
       Deadline : constant Time := Deadline_Of (Timeout);
-   begin
-      if Ada.Task_Identification."=" (This.In_Callback, Ada.Task_Identification.Current_Task) then
-         raise ROS_Exception with "service " & To_String (This.Name)
-           & ": a synchronous call from a response callback of the same client"
-           & " would wait for itself";
-      end if;
-      This.Lock.Seize;
+
+      procedure Call_Locked is
       begin
          Exchange (This, Req, Resp, Timeout, Deadline);
-      exception
-         when others =>
-            This.Lock.Release;
-            raise;
-      end;
-      This.Lock.Release;
+      end Call_Locked;
+   begin
+      Async_Calls.Check_Not_In_Callback (This.Asyncs);
+      With_Lock (This, Call_Locked'Access);
    end Call;
 
    function Call
@@ -381,62 +267,33 @@ package body RCL.Services.Typed is
    -- Call_Async --
    ----------------
 
-   procedure Free is new Ada.Unchecked_Deallocation (Pump, Pump_Access);
-
-   procedure Await_Pump_End (This : in out Client) is
-   begin
-      if This.Pumper /= null then
-         while not This.Pumper'Terminated loop
-            delay 0.001;  --  The pump is ending (Pumping_Done said so).
-         end loop;
-         Free (This.Pumper);
-      end if;
-   end Await_Pump_End;
-
    procedure Call_Async
      (This     : in out Client;
       Req      : Request;
       Callback : not null Response_Callback;
       Timeout  : Duration := 60.0)
    is
-      Sequence : constant ROSIDL.Int64 := RCL.Pending_Calls.Next_Sequence;
-      Start    : Boolean;
-
-      procedure Fill
-        (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+      procedure Send (Sequence : ROSIDL.Int64) is
+         procedure Fill
+           (Buffer : out RCL.DDS.Byte_Array; Last : out Ada.Streams.Stream_Element_Offset) is
+         begin
+            Requests.Encode (Req, (GUID => This.Ends.Handle, Sequence => Sequence), Buffer, Last);
+         end Fill;
       begin
-         Requests.Encode (Req, (GUID => This.Handle, Sequence => Sequence), Buffer, Last);
-      end Fill;
-
+         RCL.DDS.Write_Filled
+           (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+            Fill'Access);
+      end Send;
    begin
-      This.Asyncs.Add (Sequence, (Callback, Deadline_Of (Timeout)), Start);
-      if Start then
-         Await_Pump_End (This);
-         This.Pumper := new Pump (This'Unchecked_Access);
-      end if;
-      RCL.DDS.Write_Filled (This.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
-                            Fill'Access);
-   exception
-      when others =>
-         This.Asyncs.Remove (Sequence);
-         raise;
+      Async_Calls.Call (This.Asyncs, This'Unchecked_Access, Callback, Timeout, Send'Access);
    end Call_Async;
 
-   function Pending_Async (This : Client) return Natural is (This.Asyncs.Count);
+   function Pending_Async (This : Client) return Natural is (Async_Calls.Count (This.Asyncs));
 
    overriding procedure Finalize (This : in out Client) is
    begin
-      if This.Pumper /= null then
-         This.Asyncs.Stop;
-         Await_Pump_End (This);
-      end if;
-      if This.Open then
-         This.Open := False;
-         RCL.Client_Endpoints.Close_Endpoints (This.Node, This.Requests, This.Replies);
-      end if;
-   exception
-      when others =>
-         This.Open := False;
+      Async_Calls.Stop (This.Asyncs);
+      Close (This.Ends);
    end Finalize;
 
    ------------------------

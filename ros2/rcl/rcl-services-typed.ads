@@ -34,12 +34,8 @@ with Ada.Finalization;
 with ROSIDL.Static.Service_Support;
 with RCL.Clients;
 
-private with Ada.Containers.Ordered_Maps;
-private with Ada.Real_Time;
-private with Ada.Strings.Unbounded;
-private with Ada.Task_Identification;
-private with Interfaces;
-private with RCL.Graph;
+private with RCL.Client_Endpoints;
+private with RCL.Pending_Calls.Asynchronous;
 private with ROSIDL.Mutexes;
 
 generic
@@ -120,9 +116,12 @@ package RCL.Services.Typed is
    --  shared with the node's callbacks needs a protected object. A
    --  response not come within Timeout is forgotten (a warning is logged);
    --  malformed replies are logged and skipped; an exception in Callback
-   --  is logged. Callback must not make a synchronous Call of this client
-   --  (ROS_Exception: it would wait for itself). Allocates (the table of
-   --  pending calls, the pumping task): not for the allocation-free path.
+   --  is logged. The calls still pending when the context shuts down or
+   --  the client is finalized are dropped (a warning is logged). Callback
+   --  must not make a synchronous Call of this client (ROS_Exception: it
+   --  would wait for itself). The same machinery as RCL.Clients's
+   --  (RCL.Pending_Calls.Asynchronous). Allocates (the table of pending
+   --  calls, the pumping task): not for the allocation-free path.
    --  Example:
    --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
    --     package Adding is new RCL.Services.Typed (Add.Handling);
@@ -180,61 +179,22 @@ private
    --  One call at a time per client; also held while the pumping task
    --  reads replies (so each reply is read by one task).
 
-   type Async_Call is record
-      Callback : Response_Callback;
-      Deadline : Ada.Real_Time.Time;
-   end record;
-
-   package Async_Maps is new Ada.Containers.Ordered_Maps
-     (ROSIDL.Int64, Async_Call, Interfaces."<");
-
-   protected type Async_Table is
-      procedure Add
-        (Sequence   : ROSIDL.Int64;
-         Call       : Async_Call;
-         Start_Pump : out Boolean);
-      --  Start_Pump: no pumping task runs; the caller must start one.
-      procedure Take (Sequence : ROSIDL.Int64; Callback : out Response_Callback);
-      --  The callback of an asynchronous call, forgotten; null if unknown.
-      procedure Remove (Sequence : ROSIDL.Int64);
-      procedure Expire (Now : Ada.Real_Time.Time; Expired : out Natural);
-      --  Forgets the calls whose deadline is before Now.
-      procedure Pumping_Done (Done : out Boolean);
-      --  Done (and no pumping task any more) when no call is pending or
-      --  Stop was called.
-      procedure Stop;
-      function Count return Natural;
-   private
-      Calls    : Async_Maps.Map;
-      Pumping  : Boolean := False;
-      Stopping : Boolean := False;
-   end Async_Table;
-
    type Client_Ref is access all Client;
 
-   task type Pump (Owner : Client_Ref);
-   --  Reads replies while asynchronous calls are pending.
-   type Pump_Access is access Pump;
+   procedure Read_Replies (This : Client_Ref);
+   --  The pump's reading (RCL.Pending_Calls.Asynchronous), with the lock.
+   function Service_Name (This : Client_Ref) return String;
+
+   package Async_Calls is new RCL.Pending_Calls.Asynchronous
+     (Response, Response_Callback, Client_Ref, Read_Replies, Service_Name);
 
    type Client is new Ada.Finalization.Limited_Controlled with record
-      Open      : Boolean := False;
-      Name      : Ada.Strings.Unbounded.Unbounded_String;
-      Requests  : RCL.DDS.Writer;
-      Replies   : RCL.DDS.Reader;
-      Waiting   : RCL.DDS.Waitset;
-      Handle    : ROSIDL.UInt64 := 0;
-      --  The request writer's instance handle (the requests' header GUID).
-      Node      : RCL.Graph.Node_Id := RCL.Graph.No_Node;
+      Ends      : RCL.Client_Endpoints.Endpoints;
       Available : Boolean := False;
       --  The service was available at the last call (not checked again
       --  until a call times out).
       Lock      : Call_Lock;
-      Asyncs    : Async_Table;
-      Pumper    : Pump_Access;
-      In_Callback : Ada.Task_Identification.Task_Id :=
-        Ada.Task_Identification.Null_Task_Id
-        with Volatile;
-      --  The task running an asynchronous callback of this client.
+      Asyncs    : Async_Calls.Calls;
    end record;
 
 end RCL.Services.Typed;

@@ -105,20 +105,81 @@ class LateServer(ss.Server):
             self.answered += 1
 
 
-def test_typed_async_calls():
-    """RCL.Services.Typed.Call_Async (tests/src/tools/typed_async_client.adb):
-    returns before the (late) responses, each callback gets its own sum, a
-    synchronous call of the same client still works, and an asynchronous
-    call nobody answers is forgotten after its timeout with a warning and
-    without running its callback."""
-    srv = LateServer(ps.participant(), "/typed_async")
-    ada, out = ss.run_client_against(srv.serve_some, "typed_async_client", "typed_async")
+@final
+@dataclass
+class ShortReply(IdlStruct, typename="example_interfaces::srv::dds_::AddTwoInts_Response_"):
+    """An AddTwoInts reply without its `sum`: malformed."""
+    guid: uint64
+    seq: int64
+
+
+class MalformedFirstServer(LateServer):
+    """A LateServer that answers each request at once with a malformed
+    reply (same guid and sequence, no sum: from a participant of its own,
+    one topic with two Python types), and with the true one `delay` later."""
+
+    def __init__(self, dp, name, delay=0.3):
+        super().__init__(dp, name, delay)
+        self.bad_dp = DomainParticipant(ps.domain_id())
+        self.bad = DataWriter(self.bad_dp, Topic(self.bad_dp, f"rr{name}Reply", ShortReply),
+                              qos=ss.service_qos(f"serviceid={ss.new_id()};"))
+        self.malformed = 0
+
+    def serve_some(self):
+        for r in self.reader.take(N=64):
+            if isinstance(r, ss.AddTwoInts_Request_):
+                if self.malformed == 0:
+                    assert ps.wait_matched(self.bad), "the client's reply reader was not seen"
+                self.bad.write(ShortReply(guid=r.guid, seq=r.seq))
+                self.malformed += 1
+                self.waiting.append((time.monotonic() + self.delay, r))
+        super().serve_some()
+
+
+def check_async_client(srv):
+    """Runs tests/src/tools/async_client.adb against `srv` (on /typed_async)
+    and checks what it printed; returns its output."""
+    ada, out = ss.run_client_against(srv.serve_some, "async_client", "typed_async")
     assert ada.returncode == 0, out
     assert "Returned before the responses: TRUE" in out, out
-    answers = sorted(int(line.split(":")[1]) for line in out.splitlines()
-                     if line.startswith("Async answer:"))
-    assert answers == [-2, 42], out
+    for label in ("Async answer:", "Dynamic async answer:"):
+        answers = sorted(int(line.split(":")[1]) for line in out.splitlines()
+                         if line.startswith(label))
+        assert answers == [-2, 42], label + "\n" + out
     assert "Sync answer: 7" in out, out
+    assert "Self call refused: TRUE" in out, out
     assert "got no response in time" in out, out
     assert "Unanswered call forgotten: TRUE, its callback ran 0 time(s)" in out, out
-    assert srv.answered == 3
+    assert "dropped: the client is finalized" in out, out
+    # typed: 2 asynchronous, 1 synchronous, 1 asynchronous whose callback
+    # calls (refused: no request); dynamic: 2 asynchronous
+    assert srv.answered == 6, out
+    return out
+
+
+def test_async_calls():
+    """Call_Async of the typed and of the dynamic client (one machinery,
+    RCL.Pending_Calls.Asynchronous): returns before the (late) responses,
+    each callback gets its own sum, a synchronous call of the same client
+    still works, a synchronous call from a callback of its own client is
+    refused (ROS_Exception, not a wait for itself), an asynchronous call
+    nobody answers is forgotten after its timeout with a warning and without
+    running its callback, and a client finalized with a call pending drops
+    it at once (with a warning)."""
+    check_async_client(LateServer(ps.participant(), "/typed_async"))
+
+
+def test_async_calls_skip_malformed_replies():
+    """Each call is first answered with a malformed reply (its own guid and
+    sequence, the sum missing): both clients log and skip it, the call stays
+    pending, and its callback runs once, with the true reply."""
+    srv = MalformedFirstServer(ps.participant(), "/typed_async")
+    out = check_async_client(srv)
+    assert srv.malformed == 6, out
+    # The typed codec's message names the field after a dot, the dynamic
+    # one's after a colon. Typed: each of the 4 calls read its own (2
+    # asynchronous, 1 synchronous, 1 asynchronous whose callback calls);
+    # dynamic: its 2 own, and it logs those of the typed client it sees too.
+    typed = out.count("malformed reply dropped: example_interfaces/srv/AddTwoInts_Response.sum:")
+    dynamic = out.count("malformed reply dropped: example_interfaces/srv/AddTwoInts_Response: sum:")
+    assert typed == 4 and dynamic >= 2, out

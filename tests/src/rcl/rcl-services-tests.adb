@@ -12,13 +12,12 @@ with RCL.Publishers;
 with RCL.QoS;
 with RCL.DDS.Matching;
 with RCL.Nodes;
-with RCL.Pending_Calls;
+with RCL.Pending_Calls.Asynchronous;
 
 package body RCL.Services.Tests is
 
    use type ROSIDL.Int64;
    use type RCL.Pending_Calls.Outcome;
-   use type RCL.Pending_Calls.Response_Callback;
    use type Ada.Real_Time.Time;
    use type Ada.Real_Time.Time_Span;
 
@@ -56,13 +55,6 @@ package body RCL.Services.Tests is
 
    --  Pairing ---------------------------------------------------------------
 
-   Callback_Sum : ROSIDL.Int64 := 0;
-
-   procedure Note (Response : ROSIDL.Dynamic.Message) is
-   begin
-      Callback_Sum := Callback_Sum + Sum_Of (Response);
-   end Note;
-
    procedure Pairing (Unused : in out Fixture) is
       use RCL.Pending_Calls;
       T        : Table;
@@ -70,39 +62,21 @@ package body RCL.Services.Tests is
       Response : constant ROSIDL.Dynamic.Message :=
         ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (Add_Support));
       Result   : Outcome;
-      CB       : Response_Callback;
-      Start    : Boolean;
-      Done     : Boolean;
-      Expired  : Natural;
       S1       : constant ROSIDL.Int64 := Next_Sequence;
       S2       : constant ROSIDL.Int64 := Next_Sequence;
    begin
       Assert (S2 = S1 + 1, "sequence numbers follow each other");
       T.Add_Sync (5, A);
       T.Add_Sync (6, B);
-      T.Add_Async (7, Note'Access, Ada.Real_Time.Clock + Ada.Real_Time.Seconds (60), Start);
-      Assert (Start, "the first asynchronous call starts a pump");
-      T.Add_Async (8, Note'Access, Ada.Real_Time.Clock - Ada.Real_Time.Seconds (1), Start);
-      Assert (not Start, "a pump is already running");
-      Assert (T.Count = 4 and T.Async_Count = 2, "four calls, two asynchronous");
+      Assert (T.Count = 2, "two calls");
       Response ("sum").As_Int64 := 11;
-      T.Deliver (6, Response, Result, CB);
+      T.Deliver (6, Response, Result);
       Assert (Result = Delivered and B.Filled and not A.Filled, "reply 6 goes to B only");
       Assert (Sum_Of (B.Response) = 11, "B holds the response");
-      T.Deliver (6, Response, Result, CB);
+      T.Deliver (6, Response, Result);
       Assert (Result = Unknown_Sequence, "a duplicate reply is unknown");
-      T.Deliver (99, Response, Result, CB);
+      T.Deliver (99, Response, Result);
       Assert (Result = Unknown_Sequence, "someone else's sequence is unknown");
-      T.Deliver (7, Response, Result, CB);
-      Assert (Result = Run_Callback and CB = Note'Access, "reply 7 runs its callback");
-      T.Pumping_Done (Done);
-      Assert (not Done, "call 8 still pending");
-      T.Expire (Ada.Real_Time.Clock, Expired);
-      Assert (Expired = 1 and T.Async_Count = 0, "call 8 expired");
-      T.Deliver (8, Response, Result, CB);
-      Assert (Result = Unknown_Sequence, "a late reply is unknown");
-      T.Pumping_Done (Done);
-      Assert (Done, "no asynchronous call left: the pump ends");
       T.Remove (5);
       T.Remove (5);
       Assert (T.Count = 0, "call 5 removed (twice is harmless)");
@@ -117,6 +91,129 @@ package body RCL.Services.Tests is
          Assert (Second, "leading again after Release");
       end;
    end Pairing;
+
+   --  Asynchronous calls' table and pump, with a stand-in client whose
+   --  replies never come (its reading counts the pump's rounds).
+
+   protected Stand_In is
+      procedure Read;
+      function Reads return Natural;
+      procedure Add_Sum (Value : ROSIDL.Int64; In_Own_Callback, Refused : Boolean);
+      function Sum return ROSIDL.Int64;
+      function All_In_Own_Callback return Boolean;
+      function All_Refused return Boolean;
+   private
+      Count   : Natural := 0;
+      Total   : ROSIDL.Int64 := 0;
+      Inside  : Boolean := True;
+      Refusal : Boolean := True;
+   end Stand_In;
+
+   protected body Stand_In is
+      procedure Read is
+      begin
+         Count := Count + 1;
+      end Read;
+      function Reads return Natural is (Count);
+      procedure Add_Sum (Value : ROSIDL.Int64; In_Own_Callback, Refused : Boolean) is
+      begin
+         Total := Total + Value;
+         Inside := Inside and In_Own_Callback;
+         Refusal := Refusal and Refused;
+      end Add_Sum;
+      function Sum return ROSIDL.Int64 is (Total);
+      function All_In_Own_Callback return Boolean is (Inside);
+      function All_Refused return Boolean is (Refusal);
+   end Stand_In;
+
+   type Stand_In_Client is null record;
+   type Stand_In_Ref is access all Stand_In_Client;
+   The_Stand_In : aliased Stand_In_Client;
+
+   procedure Read_Nothing (Client : Stand_In_Ref) is
+      pragma Unreferenced (Client);
+   begin
+      Stand_In.Read;
+      delay 0.005;
+   end Read_Nothing;
+
+   function Stand_In_Name (Unused : Stand_In_Ref) return String is ("/stand_in");
+
+   type Sum_Callback is access procedure (Response : ROSIDL.Dynamic.Message);
+
+   package Stand_In_Calls is new RCL.Pending_Calls.Asynchronous
+     (ROSIDL.Dynamic.Message, Sum_Callback, Stand_In_Ref, Read_Nothing, Stand_In_Name);
+
+   Async_Table : Stand_In_Calls.Calls;
+
+   procedure Note (Response : ROSIDL.Dynamic.Message) is
+      Refused : Boolean := False;
+   begin
+      begin
+         Async_Table.Check_Not_In_Callback;
+      exception
+         when ROS_Exception =>
+            Refused := True;
+      end;
+      Stand_In.Add_Sum (Sum_Of (Response), Async_Table.In_Callback, Refused);
+   end Note;
+
+   procedure Asynchronous_Table (Unused : in out Fixture) is
+      Response : constant ROSIDL.Dynamic.Message :=
+        ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (Add_Support));
+      Client   : constant Stand_In_Ref := The_Stand_In'Access;
+
+      function Settled (Condition : access function return Boolean) return Boolean is
+         Deadline : constant Ada.Real_Time.Time :=
+           Ada.Real_Time.Clock + Ada.Real_Time.Seconds (5);
+      begin
+         while not Condition.all and Ada.Real_Time.Clock < Deadline loop
+            delay 0.005;
+         end loop;
+         return Condition.all;
+      end Settled;
+
+      function None_Pending return Boolean is (Async_Table.Count = 0);
+      function Pumped return Boolean is (Stand_In.Reads > 0);
+      Reads_Before : Natural;
+   begin
+      Async_Table.Add (Client, 7, Note'Access, Timeout => 60.0);
+      Assert (Async_Table.Count = 1 and Async_Table.Is_Pending (7), "call 7 pending");
+      Assert (Settled (Pumped'Access), "the first call started the pump");
+      Assert (not Async_Table.In_Callback, "not in a callback outside one");
+      Async_Table.Check_Not_In_Callback;
+      Response ("sum").As_Int64 := 11;
+      Async_Table.Complete (7, Response);
+      Assert (Stand_In.Sum = 11, "reply 7 ran its callback");
+      Assert (Stand_In.All_In_Own_Callback, "the callback knows it is one");
+      Assert (Stand_In.All_Refused, "a synchronous call from the callback is refused");
+      Assert (Async_Table.Count = 0 and not Async_Table.Is_Pending (7), "call 7 done");
+      Async_Table.Complete (7, Response);
+      Assert (Stand_In.Sum = 11, "a duplicate reply runs nothing");
+
+      --  The pump ended with the last call; a new call starts another,
+      --  which forgets the call after its timeout.
+      Async_Table.Add (Client, 8, Note'Access, Timeout => 0.05);
+      Assert (Settled (None_Pending'Access), "call 8 forgotten after its timeout");
+      Async_Table.Complete (8, Response);
+      Assert (Stand_In.Sum = 11, "a late reply runs nothing");
+
+      --  Stop drops what is pending, waits for the pump's end and starts
+      --  no pump afterwards.
+      Async_Table.Add (Client, 9, Note'Access, Timeout => 60.0);
+      Async_Table.Add (Client, 10, Note'Access, Timeout => 60.0);
+      Async_Table.Remove (10);
+      Async_Table.Remove (10);
+      Assert (Async_Table.Count = 1, "call 10 removed (twice is harmless)");
+      Async_Table.Stop;
+      Assert (Async_Table.Count = 0, "Stop dropped call 9");
+      Reads_Before := Stand_In.Reads;
+      Async_Table.Add (Client, 11, Note'Access, Timeout => 60.0);
+      delay 0.05;
+      Assert (Stand_In.Reads = Reads_Before, "no pump after Stop");
+      Async_Table.Complete (11, Response);
+      Assert (Stand_In.Sum = 22, "a reply read by a synchronous call still runs");
+   end Asynchronous_Table;
 
    --  Ids ------------------------------------------------------------------
 
@@ -167,6 +264,40 @@ package body RCL.Services.Tests is
       Async_Results.Add (Sum_Of (Response));
    end On_Async;
 
+   type Client_Access is access all RCL.Clients.Client;
+   Self_Caller : Client_Access;
+
+   type Self_Call_Outcome is (Not_Yet, Answered, Refused, Failed);
+
+   protected Self_Call is
+      procedure Set (Outcome : Self_Call_Outcome);
+      function Get return Self_Call_Outcome;
+   private
+      Result : Self_Call_Outcome := Not_Yet;
+   end Self_Call;
+
+   protected body Self_Call is
+      procedure Set (Outcome : Self_Call_Outcome) is
+      begin
+         Result := Outcome;
+      end Set;
+      function Get return Self_Call_Outcome is (Result);
+   end Self_Call;
+
+   procedure Call_Self (Response : ROSIDL.Dynamic.Message) is
+      pragma Unreferenced (Response);
+   begin
+      if Sum_Of (Self_Caller.Call (Request (1, 1), 3.0)) = 2 then
+         Self_Call.Set (Answered);
+      end if;
+   exception
+      when ROS_Exception =>
+         Self_Call.Set (Refused);
+      when others =>
+         Self_Call.Set (Failed);
+   end Call_Self;
+   --  An asynchronous callback making a synchronous call of its own client.
+
    procedure Calls (Unused : in out Fixture) is
       Server_Node : RCL.Nodes.Node := RCL.Nodes.Init ("svc_test_server", "/svc_tests");
       Client_Node : constant RCL.Nodes.Node := RCL.Nodes.Init ("svc_test_client", "/svc_tests");
@@ -180,7 +311,7 @@ package body RCL.Services.Tests is
          end loop;
       end Spinner;
 
-      Client : RCL.Clients.Client;
+      Client : aliased RCL.Clients.Client;
       Failures : Natural := 0 with Atomic;
       Done : Natural := 0 with Atomic;
 
@@ -295,6 +426,22 @@ package body RCL.Services.Tests is
       Assert (Async_Results.Total = 5050, "their sums add up to 5050");
       Assert (Client.Pending_Async = 0, "none pending");
 
+      --  A synchronous call from the client's own callback is refused (it
+      --  would wait for itself: the callback holds the client's reading).
+      Self_Caller := Client'Unchecked_Access;
+      Client.Call_Async (Request (5, 6), Call_Self'Access, 10.0);
+      declare
+         Deadline : constant Ada.Real_Time.Time :=
+           Ada.Real_Time.Clock + Ada.Real_Time.Seconds (10);
+      begin
+         while Self_Call.Get = Not_Yet and Ada.Real_Time.Clock < Deadline loop
+            delay 0.01;
+         end loop;
+      end;
+      Assert (Self_Call.Get = Refused,
+              "a call from the own callback: " & Self_Call.Get'Image & ", REFUSED expected");
+      Assert (Sum_Of (Client.Call (Request (2, 2), 5.0)) = 4, "the client works after it");
+
       --  A missing service times out.
       declare
          Nobody  : RCL.Clients.Client;
@@ -311,6 +458,23 @@ package body RCL.Services.Tests is
          Assert (Raised, "RCL_Timeout for a missing service");
          Assert (Ada.Real_Time.Clock - Started < Ada.Real_Time.Seconds (5),
                  "the timeout is honoured");
+      end;
+
+      --  A client finalized with an asynchronous call pending drops it and
+      --  ends its pumping task at once (not after the call's timeout).
+      declare
+         Started : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      begin
+         declare
+            Dropping : RCL.Clients.Client;
+         begin
+            Dropping.Init (Client_Node, Add_Support, "nobody_serves_this");
+            Dropping.Call_Async (Request (1, 1), On_Async'Access, 60.0);
+            Assert (Dropping.Pending_Async = 1, "the call is pending");
+         end;
+         Assert (Ada.Real_Time.Clock - Started < Ada.Real_Time.Seconds (5),
+                 "finalized at once with a call pending");
+         Assert (Async_Results.Count = 100, "the dropped call's callback did not run");
       end;
       Stop := True;
    exception
@@ -447,6 +611,8 @@ package body RCL.Services.Tests is
         new AUnit.Test_Suites.Test_Suite;
    begin
       Result.Add_Test (Caller.Create ("services: request/reply pairing", Pairing'Access));
+      Result.Add_Test (Caller.Create ("services: asynchronous calls' table and pump",
+                                      Asynchronous_Table'Access));
       Result.Add_Test (Caller.Create ("services: client/service ids, USER_DATA", Ids'Access));
       Result.Add_Test (Caller.Create ("services: sync, concurrent, async calls, timeout",
                                       Calls'Access));
