@@ -67,6 +67,11 @@ def tmp(tmp_path_factory):
         f'<mission name="m" world="{world}">\n<robot id="r1" x="2.5" y="10"/>\n<!-- '
         + "x_" * (1 << 20) + ' -->\n<goto id="t1" x="1" y="1.5"/>\n<goto id="t1" x="2" y="2"/>\n'
         "</mission>\n")
+    # An unknown option named by 200 KB: "did you mean" took minutes (the
+    # edit distances were computed once per allowed distance).
+    (d / "long-option.xml").write_text(
+        '<team>\n  <agent id="a1" kind="robot">\n    <component name="odometry" '
+        + "x" * 200_000 + '="1"/>\n  </agent>\n</team>\n')
     (d / "long-line.csv").write_text("robot,x,y\n1,1,1\n1," + "9" * (1 << 21) + ",1\n")
     return d
 
@@ -146,11 +151,11 @@ def test_map_image_path_with_folders(tmp_path):
 
 
 def test_far_trajectory_points_render(tmp_path):
-    """Trajectory points a million kilometres away are drawn outside the
+    """Trajectory points a billion kilometres away are drawn outside the
     picture (were "rendering.adb:35 overflow check failed" for SVG and
     ":215" for PNG)."""
     csv = tmp_path / "far.csv"
-    csv.write_text("robot,x,y\n1,1,1\n1,1e300,2\n2,-1e11,5\n2,3,-1e200\n")
+    csv.write_text("robot,x,y\n1,1,1\n1,9e11,2\n2,-1e11,5\n2,3,-9.5e11\n")
     for kind in ("--svg", "--png"):
         out = tmp_path / ("w" + kind[1:].replace("-", "."))
         p = subprocess.run([str(BIN / "sancta-render"), str(REPO / "share" / "worlds" / "arena.walls"),

@@ -457,6 +457,8 @@ case("fuzz-team-mission-long-line", "sancta team {tmp}/long-line-mission.xml --c
 g = write("world/trajectory-inf.csv", "robot,x,y\n1,1,1\n1,1e400,2\n")
 case("fuzz-trajectory-infinite", f"sancta-render {{repo}}/share/worlds/arena.walls --trajectories {g}"
      " --svg {tmp}/w.svg", 1, "trajectory-inf.csv:3:")
+case("fuzz-config-long-unknown-option", "sancta check {tmp}/long-option.xml", 1,
+     "long-option.xml:3:", "unknown option")
 
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
