@@ -369,7 +369,8 @@ def build_readers(seed_folder):
         Reader("world", [SHARE / "worlds" / "arena.yaml"],
                ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "yaml", None, TEXT_MUTATORS,
                prepare=world_prepare,
-               unlocated_ok=re.compile(r"cannot be opened|not a regular file|no such file")),
+               # A whole-file verdict: the world's extent at the picture's scale.
+               unlocated_ok=re.compile(r": the world is \d+ x \d+ cells")),
         Reader("walls", sorted((SHARE / "worlds").glob("*.walls")),
                ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS),
         Reader("trajectories", [trajectories_seed(seed_folder)],

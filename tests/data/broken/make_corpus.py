@@ -459,6 +459,12 @@ case("fuzz-trajectory-infinite", f"sancta-render {{repo}}/share/worlds/arena.wal
      " --svg {tmp}/w.svg", 1, "trajectory-inf.csv:3:")
 case("fuzz-config-long-unknown-option", "sancta check {tmp}/long-option.xml", 1,
      "long-option.xml:3:", "unknown option")
+# A missing image with a 300-character name: the YAML line first (the
+# message used to start with the path and lose its reason past 200 characters).
+g = write("world/long-image-name.yaml", "resolution: 0.05\nimage: " + "x" * 300
+          + ".pgm\norigin: [0, 0, 0]\n")
+case("fuzz-world-long-image-name", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "long-image-name.yaml:2: image: no such file")
 
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
