@@ -35,18 +35,17 @@ package body RCL.Event_Watches is
 
    procedure Register_Publisher (Pub : RCL.Publishers.Publisher; Node : RCL.Graph.Node_Id) is
       W : constant Writer_Access := RCL.Publisher_Writers.Writer (Pub).all'Unchecked_Access;
+
+      procedure Register is
+      begin
+         Table.Include (W.all'Address, (Node     => Node,
+                                        Writer   => W,
+                                        Topic    => new String'(Pub.Topic),
+                                        On_Event => null,
+                                        Last     => <>));
+      end Register;
    begin
-      Lock.Seize;
-      Table.Include (W.all'Address, (Node     => Node,
-                                     Writer   => W,
-                                     Topic    => new String'(Pub.Topic),
-                                     On_Event => null,
-                                     Last     => <>));
-      Lock.Release;
-   exception
-      when others =>
-         Lock.Release;
-         raise;
+      ROSIDL.Mutexes.Run_Locked (Lock, Register'Access);
    end Register_Publisher;
 
    procedure Unregister_Publisher (Pub : RCL.Publishers.Publisher) is
@@ -163,8 +162,9 @@ package body RCL.Event_Watches is
    procedure Poll (Node : in out RCL.Nodes.Node'Class) is
       Queue : Pending_Vectors.Vector;
       Now   : RCL.DDS.QoS_Events;
-   begin
-      Lock.Seize;
+
+      procedure Collect is
+      --  The events of Node's entities since the last poll, into Queue.
       begin
          for I in 1 .. RCL.Node_Entities.Subscription_Count (Node) loop
             declare
@@ -195,12 +195,9 @@ package body RCL.Event_Watches is
                end if;
             end;
          end loop;
-      exception
-         when others =>
-            Lock.Release;
-            raise;
-      end;
-      Lock.Release;
+      end Collect;
+   begin
+      ROSIDL.Mutexes.Run_Locked (Lock, Collect'Access);
       for P of Queue loop
          P.On_Event (Node, P.E);
       end loop;

@@ -65,27 +65,21 @@ package body RCL.Nodes.Typed is
       Info  : ROSIDL.Message_Info)
    is
       This : Slot renames Slot_Addresses.To_Pointer (State).all;
-      Got  : Boolean;
+
+      procedure Use_Kept is
+      begin
+         Handling.Decode (Data, This.Kept);
+         This.Callback (Node, This.Kept, Info);
+      end Use_Kept;
+
+      procedure Use_Own is
+         Own : Message;
+      begin
+         Handling.Decode (Data, Own);
+         This.Callback (Node, Own, Info);
+      end Use_Own;
    begin
-      This.Lock.Try (Got);
-      if Got then
-         begin
-            Handling.Decode (Data, This.Kept);
-            This.Callback (Node, This.Kept, Info);
-         exception
-            when others =>
-               This.Lock.Release;
-               raise;
-         end;
-         This.Lock.Release;
-      else
-         declare
-            Own : Message;
-         begin
-            Handling.Decode (Data, Own);
-            This.Callback (Node, Own, Info);
-         end;
-      end if;
+      Deliver_Decoded (This.Lock, Use_Kept'Access, Use_Own'Access);
    end Deliver;
 
    type Slot_Access is access all Slot;

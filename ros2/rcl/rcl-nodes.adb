@@ -238,6 +238,28 @@ package body RCL.Nodes is
       end Release;
    end Cache_Lock;
 
+   procedure Deliver_Decoded
+     (Lock     : in out Cache_Lock;
+      Use_Kept : not null access procedure;
+      Use_Own  : not null access procedure)
+   is
+      Got : Boolean;
+   begin
+      Lock.Try (Got);
+      if not Got then
+         Use_Own.all;
+         return;
+      end if;
+      Use_Kept.all;
+      Lock.Release;
+   exception
+      when others =>
+         if Got then
+            Lock.Release;
+         end if;
+         raise;
+   end Deliver_Decoded;
+
    type Typed_Handler is new Handler with record
       Support  : ROSIDL.Typesupport.Message_Support;
       Callback : Typed_Callback;
@@ -251,29 +273,22 @@ package body RCL.Nodes is
       Data : RCL.DDS.Byte_Array;
       Info : ROSIDL.Message_Info)
    is
-      Got : Boolean;
+      procedure Use_Kept is
+      begin
+         if not ROSIDL.Dynamic.Is_Initialised (This.Cached) then
+            This.Cached := ROSIDL.Dynamic.Init (This.Support);
+         end if;
+         ROSIDL.CDR.Decode (Data, This.Cached);
+         This.Callback (Node, This.Cached, Info);
+      end Use_Kept;
+
+      procedure Use_Own is
+         Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
+      begin
+         This.Callback (Node, Msg, Info);
+      end Use_Own;
    begin
-      This.Lock.Try (Got);
-      if Got then
-         begin
-            if not ROSIDL.Dynamic.Is_Initialised (This.Cached) then
-               This.Cached := ROSIDL.Dynamic.Init (This.Support);
-            end if;
-            ROSIDL.CDR.Decode (Data, This.Cached);
-            This.Callback (Node, This.Cached, Info);
-         exception
-            when others =>
-               This.Lock.Release;
-               raise;
-         end;
-         This.Lock.Release;
-      else
-         declare
-            Msg : ROSIDL.Dynamic.Message := ROSIDL.CDR.Decode (This.Support, Data);
-         begin
-            This.Callback (Node, Msg, Info);
-         end;
-      end if;
+      Deliver_Decoded (This.Lock, Use_Kept'Access, Use_Own'Access);
    end Deliver;
 
    procedure Subscribe

@@ -334,6 +334,14 @@ private
    --  allocation per sample); a concurrent delivery that finds it taken
    --  decodes into a fresh one (RCL.Nodes and RCL.Nodes.Typed).
 
+   procedure Deliver_Decoded
+     (Lock     : in out Cache_Lock;
+      Use_Kept : not null access procedure;
+      Use_Own  : not null access procedure);
+   --  A delivery: Use_Kept (decode into the kept message and run the
+   --  callback) with the kept message taken, given back afterwards, also
+   --  when Use_Kept raises; Use_Own (into a fresh message) when it is taken.
+
    type Spinner;
    type Spinner_Access is access Spinner;
    --  The sequential executor of Node.Spin, made by the first Spin and

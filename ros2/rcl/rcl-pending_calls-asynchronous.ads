@@ -86,9 +86,9 @@ package RCL.Pending_Calls.Asynchronous is
 
    procedure Stop (This : in out Calls);
    --  Drops the pending calls (a warning says how many) and waits for the
-   --  pump's end (for the client's Finalize: never raises); Add starts no pump afterwards. From a callback of these
-   --  calls (a client finalized by its own callback) it does not wait: the
-   --  pump would wait for itself.
+   --  pump's end (for the client's Finalize: never raises); Add starts no
+   --  pump afterwards. From a callback of these calls (a client finalized
+   --  by its own callback) it does not wait: the pump would wait for itself.
 
 private
 

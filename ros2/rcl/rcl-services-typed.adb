@@ -140,20 +140,6 @@ package body RCL.Services.Typed is
    --  Longest wait of the pumping task with the client's lock held (a
    --  synchronous Call waits at most this long for the lock).
 
-   procedure With_Lock (This : in out Client; Action : not null access procedure) is
-   --  Runs Action with This.Lock held (released also on an exception).
-   begin
-      This.Lock.Seize;
-      begin
-         Action.all;
-      exception
-         when others =>
-            This.Lock.Release;
-            raise;
-      end;
-      This.Lock.Release;
-   end With_Lock;
-
    procedure Read_Replies (This : Client_Ref) is
       procedure Read is
          Taken : Natural;
@@ -167,7 +153,7 @@ package body RCL.Services.Typed is
          end if;
       end Read;
    begin
-      With_Lock (This.all, Read'Access);
+      ROSIDL.Mutexes.Run_Locked (This.Lock, Read'Access);
    end Read_Replies;
 
    function Service_Name (This : Client_Ref) return String is (Service_Name (This.all));
@@ -215,8 +201,9 @@ package body RCL.Services.Typed is
          This.Available := True;
       end if;
       Sequence := RCL.Pending_Calls.Next_Sequence;
-      RCL.DDS.Write_Filled (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
-                            Fill'Access);
+      RCL.DDS.Write_Filled
+        (This.Ends.Requests, Requests.Encoded_Size (Req, With_Request_Header => True),
+         Fill'Access);
       loop
          loop
             Take_Reply (This, Process'Access, Taken);
@@ -250,7 +237,7 @@ package body RCL.Services.Typed is
       end Call_Locked;
    begin
       Async_Calls.Check_Not_In_Callback (This.Asyncs);
-      With_Lock (This, Call_Locked'Access);
+      ROSIDL.Mutexes.Run_Locked (This.Lock, Call_Locked'Access);
    end Call;
 
    function Call

@@ -121,7 +121,10 @@ package RCL.Services.Typed is
    --  must not make a synchronous Call of this client (ROS_Exception: it
    --  would wait for itself). The same machinery as RCL.Clients's
    --  (RCL.Pending_Calls.Asynchronous). Allocates (the table of pending
-   --  calls, the pumping task): not for the allocation-free path.
+   --  calls, the pumping task): not for the allocation-free path. The
+   --  pumping task depends on the scope of this instance: leaving that
+   --  scope waits until calls still pending there are answered or time
+   --  out (declare the client in an inner scope to drop them at once).
    --  Example:
    --     package Add renames ROSIDL.Static.Example_Interfaces.Services.AddTwoInts;
    --     package Adding is new RCL.Services.Typed (Add.Handling);

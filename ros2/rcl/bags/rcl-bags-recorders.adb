@@ -9,20 +9,6 @@ package body RCL.Bags.Recorders is
 
    package Queries renames RCL.Graph.Queries;
 
-   procedure Guarded (S : in out State; Action : not null access procedure) is
-   --  Action with S.Guard held (released when Action raises too).
-   begin
-      S.Guard.Seize;
-      begin
-         Action.all;
-      exception
-         when others =>
-            S.Guard.Release;
-            raise;
-      end;
-      S.Guard.Release;
-   end Guarded;
-
    --  A subscription's handler: writes each sample to the bag.
    type Topic_Handler is new RCL.Nodes.Handler with record
       Shared : State_Access;
@@ -126,7 +112,7 @@ package body RCL.Bags.Recorders is
                      if All_Local then
                         QoS.Durability := RCL.QoS.Transient_Local;
                      end if;
-                     Guarded (This.Shared.all, Add_Topic'Access);
+                     ROSIDL.Mutexes.Run_Locked (This.Shared.Guard, Add_Topic'Access);
                      Node.Subscribe_Handler
                        (To_String (DDS_Type), Name,
                         new Topic_Handler'(Shared => This.Shared, Topic => Index), QoS);
@@ -153,7 +139,7 @@ package body RCL.Bags.Recorders is
       end Close;
    begin
       if This.Shared /= null and then This.Shared.Recording then
-         Guarded (This.Shared.all, Close'Access);
+         ROSIDL.Mutexes.Run_Locked (This.Shared.Guard, Close'Access);
       end if;
    end Stop;
 

@@ -244,10 +244,6 @@ package body Sancta.Allocation.Annealers.Moves is
    begin
       for R in 1 .. S.Robots loop
          declare
-            Here : Natural := P.Start (R);
-            Time, Time_Sum : Cost := 0;
-            Bad : Natural := 0;
-            M : constant Cost := Cost (P.Multiplier (R));
             RC, RCm : Cost;
          begin
             if S.Length (R) < P.Frozen_Length (R) then
@@ -256,7 +252,6 @@ package body Sancta.Allocation.Annealers.Moves is
             for I in 1 .. S.Length (R) loop
                declare
                   T : constant Positive := S.Task_At (R, I);
-                  L : constant Natural := Location_Of (P, T, S.Choice (T));
                begin
                   if I <= P.Frozen_Length (R) and then P.Frozen (R, I) /= T then
                      Fail ("frozen prefix of robot" & R'Image & " changed");
@@ -265,17 +260,9 @@ package body Sancta.Allocation.Annealers.Moves is
                   if S.Owner (T) /= R or else S.Position (T) /= I then
                      Fail ("position index of task" & T'Image);
                   end if;
-                  Time := Time + Robot_Distance (P, R, Here, L);
-                  Time_Sum := Time_Sum + Time;
-                  if not P.Can_Do (R, T) then
-                     Bad := Bad + 1;
-                  end if;
-                  Here := L;
                end;
             end loop;
-            Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
-            RC := M * Time + Cost (Bad) * Infinity;
-            RCm := M * Time_Sum + Cost (Bad) * Infinity;
+            Cost_From_Scratch (P, R, S.Task_At, S.Length (R), S.Choice, RC, RCm);
             if RC /= S.Robot_Cost (R) or else RCm /= S.Robot_Completion (R) then
                Fail ("robot" & R'Image & " cost" & S.Robot_Cost (R)'Image & " /"
                      & S.Robot_Completion (R)'Image

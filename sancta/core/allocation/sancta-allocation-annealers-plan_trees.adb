@@ -2,51 +2,65 @@ with Sancta.Allocation.Random;
 
 package body Sancta.Allocation.Annealers.Plan_Trees is
 
-   function Under_Size (P : Problem) return Positive is
-      N : Natural := 0;
+   --  Visit (T, X) for every task T and every OR ordinal X above it.
+   generic
+      with procedure Visit (T, X : Positive);
+   procedure For_Each_Or_Above (P : Problem);
+
+   procedure For_Each_Or_Above (P : Problem) is
    begin
       for T in 1 .. P.Tasks loop
          declare
             X : Natural := P.Task_Or (T);
          begin
             while X /= 0 loop
-               N := N + 1;
+               Visit (T, X);
                X := Or_Parent (P, X);
             end loop;
          end;
       end loop;
+   end For_Each_Or_Above;
+
+   function Under_Size (P : Problem) return Positive is
+      N : Natural := 0;
+
+      procedure Count (T, X : Positive) is
+         pragma Unreferenced (T, X);
+      begin
+         N := N + 1;
+      end Count;
+
+      procedure Count_All is new For_Each_Or_Above (Count);
+   begin
+      Count_All (P);
       return Positive'Max (1, N);
    end Under_Size;
 
    procedure Set_Under (P : Problem; D : in out Subtree_Switch) is
       Count : Count_Array (1 .. D.Tasks + 1) := [others => 0];
+
+      procedure Count_Under (T, X : Positive) is
+         pragma Unreferenced (T);
+      begin
+         Count (X) := Count (X) + 1;
+      end Count_Under;
+
+      procedure Place_Under (T, X : Positive) is
+      begin
+         D.Under (D.Under_First (X) + Count (X)) := T;
+         Count (X) := Count (X) + 1;
+      end Place_Under;
+
+      procedure Count_All is new For_Each_Or_Above (Count_Under);
+      procedure Place_All is new For_Each_Or_Above (Place_Under);
    begin
-      for T in 1 .. P.Tasks loop
-         declare
-            X : Natural := P.Task_Or (T);
-         begin
-            while X /= 0 loop
-               Count (X) := Count (X) + 1;
-               X := Or_Parent (P, X);
-            end loop;
-         end;
-      end loop;
+      Count_All (P);
       D.Under_First (1) := 1;
       for O in 1 .. D.Tasks loop
          D.Under_First (O + 1) := D.Under_First (O) + Count (O);
       end loop;
       Count := [others => 0];
-      for T in 1 .. P.Tasks loop
-         declare
-            X : Natural := P.Task_Or (T);
-         begin
-            while X /= 0 loop
-               D.Under (D.Under_First (X) + Count (X)) := T;
-               Count (X) := Count (X) + 1;
-               X := Or_Parent (P, X);
-            end loop;
-         end;
-      end loop;
+      Place_All (P);
    end Set_Under;
 
    function New_Switch (P : Problem) return Switch_Access is
@@ -63,27 +77,9 @@ package body Sancta.Allocation.Annealers.Plan_Trees is
        else D.Location_At (R, Q));
 
    procedure Pending_Costs (P : Problem; S : State; D : in out Subtree_Switch; R : Positive) is
-      Here : Natural := P.Start (R);
-      Time, Sum : Cost := 0;
-      Bad  : Natural := 0;
-      M    : constant Cost := Cost (P.Multiplier (R));
    begin
-      for I in 1 .. D.Length (R) loop
-         declare
-            T : constant Positive := D.Task_At (R, I);
-            L : constant Natural := Location_Of (P, T, S.Choice (T));
-         begin
-            Time := Time + Robot_Distance (P, R, Here, L);
-            Sum := Sum + Time;
-            if not P.Can_Do (R, T) then
-               Bad := Bad + 1;
-            end if;
-            Here := L;
-         end;
-      end loop;
-      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
-      D.Robot_Cost (R) := M * Time + Cost (Bad) * Infinity;
-      D.Robot_Completion (R) := M * Sum + Cost (Bad) * Infinity;
+      Cost_From_Scratch (P, R, D.Task_At, D.Length (R), S.Choice,
+                         D.Robot_Cost (R), D.Robot_Completion (R));
    end Pending_Costs;
 
    --  The OR ordinal to switch (a few tries), or 0.

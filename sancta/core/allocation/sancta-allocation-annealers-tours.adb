@@ -95,6 +95,33 @@ package body Sancta.Allocation.Annealers.Tours is
       Set_Tree_Cost (S, R, S.Robot_Cost (R));
    end Rebuild;
 
+   procedure Cost_From_Scratch
+     (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;
+      Choice : Location_Array; Tour_Cost, Completion : out Cost)
+   is
+      Here : Natural := P.Start (R);
+      Time, Sum : Cost := 0;
+      Bad  : Natural := 0;
+      M    : constant Cost := Cost (P.Multiplier (R));
+   begin
+      for I in 1 .. Length loop
+         declare
+            T : constant Positive := Task_At (R, I);
+            L : constant Natural := Location_Of (P, T, Choice (T));
+         begin
+            Time := Time + Robot_Distance (P, R, Here, L);
+            Sum := Sum + Time;
+            if not P.Can_Do (R, T) then
+               Bad := Bad + 1;
+            end if;
+            Here := L;
+         end;
+      end loop;
+      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+      Tour_Cost := M * Time + Cost (Bad) * Infinity;
+      Completion := M * Sum + Cost (Bad) * Infinity;
+   end Cost_From_Scratch;
+
    procedure Compute_Neighbours (P : Problem; S : in out State) is
       K : constant Positive := S.Neighbours;
       Dist : Cost_Array (1 .. K) := [others => 0];

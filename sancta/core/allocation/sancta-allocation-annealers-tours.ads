@@ -85,6 +85,14 @@ private package Sancta.Allocation.Annealers.Tours is
    --  Recomputes the caches of robot R from position From on (its tasks in
    --  Task_At (R, 1 .. Length (R))), its costs, the totals and the tree.
 
+   procedure Cost_From_Scratch
+     (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;
+      Choice : Location_Array; Tour_Cost, Completion : out Cost);
+   --  The cost and the sum of completion times (times the multiplier,
+   --  Infinity per task R cannot do) of robot R's tour Task_At (R, 1 ..
+   --  Length), each task at its Choice, arc by arc without prefix sums: what
+   --  Rebuild's caches and the moves' predictions must agree with.
+
    procedure Compute_Neighbours (P : Problem; S : in out State);
    --  The Neighbours nearest tasks of each task (by the shorter direction).
 

@@ -73,6 +73,22 @@ package body Sancta.Allocation.Assignments is
       return L;
    end Tour_Cost;
 
+   function Insertion_Cost
+     (P : Problem; This : Assignment; Robot : Positive; Location : Natural; After : Natural)
+     return Cost
+   is
+      function Place (K : Natural) return Natural is
+        (if K = 0 then P.Start (Robot)
+         elsif K > This.Length (Robot) then P.Finish (Robot)
+         else Location_Of (P, This.Tour (Robot, K), This.Choice (This.Tour (Robot, K))));
+      Before : constant Natural := Place (After);
+      Next   : constant Natural := Place (After + 1);
+   begin
+      return Cost (P.Multiplier (Robot))
+        * (Robot_Distance (P, Robot, Before, Location) + Robot_Distance (P, Robot, Location, Next)
+           - Robot_Distance (P, Robot, Before, Next));
+   end Insertion_Cost;
+
    function Evaluate
      (P : Problem; This : Assignment; C : Criterion) return Evaluation
    is

@@ -54,6 +54,13 @@ package Sancta.Allocation.Assignments is
    function Tour_Cost
      (P : Problem; This : Assignment; Robot : Positive) return Cost;
 
+   function Insertion_Cost
+     (P : Problem; This : Assignment; Robot : Positive; Location : Natural; After : Natural)
+     return Cost
+     with Pre => After <= This.Length (Robot);
+   --  What a stop at Location after position After (0: first) of Robot's
+   --  tour adds to its cost: the detour times the robot's multiplier.
+
    function Validate (P : Problem; This : Assignment) return String;
    --  "" when complete (each active task exactly once, no inactive one), frozen prefixes kept,
    --  choices valid, every robot has P.Min_Tasks tasks and all costs are

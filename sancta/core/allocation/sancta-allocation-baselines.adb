@@ -12,15 +12,43 @@ package body Sancta.Allocation.Baselines is
          elsif K > A.Length (R) then P.Finish (R)
          else Location_Of (P, A.Tour (R, K)));
 
-      --  Added cost of T after position K of robot R.
-      function Added (R, T : Positive; K : Natural) return Cost is
-         L : constant Natural := Location_Of (P, T);
+      --  Task T put after position K of robot R: what it adds (Added) and
+      --  the key the method chooses by (the least; then the least Added).
+      type Candidate is record
+         Robot, Task_Id, After : Natural := 0;
+         Key, Added : Cost := Cost'Last;
+      end record;
+
+      function Better (X, Than : Candidate) return Boolean is
+        (X.Key < Than.Key or else (X.Key = Than.Key and then X.Added < Than.Added));
+
+      --  Best becomes T's best place in robot R's tour if that is better.
+      procedure Consider (R, T : Positive; Best : in out Candidate) is
+         First : constant Natural :=
+           (if How = Best_Pair then A.Length (R) else P.Frozen_Length (R));
       begin
-         return (if P.Can_Do (R, T) then 0 else Infinity)
-           + Cost (P.Multiplier (R))
-             * (Robot_Distance (P, R, Loc (R, K), L) + Robot_Distance (P, R, L, Loc (R, K + 1))
-                - Robot_Distance (P, R, Loc (R, K), Loc (R, K + 1)));
-      end Added;
+         for K in First .. A.Length (R) loop
+            declare
+               D : constant Cost :=
+                 (if How = Best_Pair
+                  then Cost (P.Multiplier (R))
+                       * Robot_Distance (P, R, Loc (R, K), Location_Of (P, T))
+                  else Insertion_Cost (P, A, R, Location_Of (P, T), K));
+               Key : constant Cost :=
+                 (case How is
+                    when Best_Pair => D,
+                    when Min_Makespan => RC (R) + D,
+                    when Auction =>
+                      (if C.Max_Weight > 0.0 and then C.Sum_Weight = 0.0 then RC (R) + D else D));
+               Here : constant Candidate :=
+                 (Robot => R, Task_Id => T, After => K, Key => Key, Added => D);
+            begin
+               if Better (Here, Than => Best) then
+                  Best := Here;
+               end if;
+            end;
+         end loop;
+      end Consider;
    begin
       A.Branch := Sel;
       for T in 1 .. P.Tasks loop
@@ -36,60 +64,25 @@ package body Sancta.Allocation.Baselines is
       end loop;
       while Left > 0 loop
          declare
-            Needy : Boolean := False;
-            Best_R, Best_T : Natural := 0;
-            Best_K : Natural := 0;
-            Best_Key, Best_Tie : Cost := Cost'Last;
+            Needy : constant Boolean :=
+              (for some R in 1 .. P.Robots => A.Length (R) < P.Min_Tasks);
+            Best : Candidate;
          begin
-            for R in 1 .. P.Robots loop
-               Needy := Needy or else A.Length (R) < P.Min_Tasks;
-            end loop;
             for R in 1 .. P.Robots loop
                if not Needy or else A.Length (R) < P.Min_Tasks then
                   for T in 1 .. P.Tasks loop
                      if not Done (T) and then P.Can_Do (R, T) then
-                        declare
-                           First : constant Natural :=
-                             (if How = Best_Pair then A.Length (R)
-                              else Natural'Max (P.Frozen_Length (R), 0));
-                        begin
-                           for K in First .. A.Length (R) loop
-                              declare
-                                 D : constant Cost :=
-                                   (if How = Best_Pair
-                                    then Cost (P.Multiplier (R))
-                                         * Robot_Distance (P, R, Loc (R, K),
-                                                           Location_Of (P, T))
-                                    else Added (R, T, K));
-                                 Key : constant Cost :=
-                                   (case How is
-                                      when Best_Pair => D,
-                                      when Min_Makespan => RC (R) + D,
-                                      when Auction =>
-                                        (if C.Max_Weight > 0.0 and then C.Sum_Weight = 0.0
-                                         then RC (R) + D else D));
-                              begin
-                                 if Key < Best_Key or else (Key = Best_Key and then D < Best_Tie)
-                                 then
-                                    Best_Key := Key;
-                                    Best_Tie := D;
-                                    Best_R := R;
-                                    Best_T := T;
-                                    Best_K := K;
-                                 end if;
-                              end;
-                           end loop;
-                        end;
+                        Consider (R, T, Best);
                      end if;
                   end loop;
                end if;
             end loop;
-            if Best_R = 0 then
+            if Best.Robot = 0 then
                raise Constraint_Error with "baseline: no robot can take the remaining tasks";
             end if;
-            Insert (A, Best_R, Best_T, Best_K);
-            RC (Best_R) := Tour_Cost (P, A, Best_R);
-            Done (Best_T) := True;
+            Insert (A, Best.Robot, Best.Task_Id, Best.After);
+            RC (Best.Robot) := Tour_Cost (P, A, Best.Robot);
+            Done (Best.Task_Id) := True;
             Left := Left - 1;
          end;
       end loop;

@@ -107,110 +107,69 @@ package body Sancta.Allocation.Exact is
                end loop;
                DP.all := [others => [others => Unreachable]];
                LK.all := [others => [others => 0]];
-               if not Average then
-                  --  Forward: DP (S, v) = shortest path from S0 through S ending at v.
+               --  Without the mean completion time (forward): DP (S, v) = the
+               --  shortest path from S0 through S ending at v, LK its
+               --  predecessor. With it (backward): DP (S, v) = the least
+               --  completion sum of the tasks of S other than v, starting at
+               --  v (v in S), LK its successor.
+               for X in 1 .. Nodes'Last loop
+                  if P.Can_Do (R, Nodes (X).Task_Id) then
+                     DP (2 ** Nodes (X).Bit, X) :=
+                       (if Average then 0 else Robot_Distance (P, R, S0, Nodes (X).Loc));
+                  end if;
+               end loop;
+               for S in 1 .. Full loop
                   for X in 1 .. Nodes'Last loop
-                     if P.Can_Do (R, Nodes (X).Task_Id) then
-                        DP (2 ** Nodes (X).Bit, X) := Robot_Distance (P, R, S0, Nodes (X).Loc);
-                     end if;
-                  end loop;
-                  for S in 1 .. Full loop
-                     for X in 1 .. Nodes'Last loop
-                        if DP (S, X) < Unreachable then
-                           for Y in 1 .. Nodes'Last loop
-                              if not Has (S, Nodes (Y).Bit) and then P.Can_Do (R, Nodes (Y).Task_Id)
-                              then
-                                 declare
-                                    S2 : constant Natural := S + 2 ** Nodes (Y).Bit;
-                                    D  : constant Cost :=
-                                      DP (S, X)
-                                      + Robot_Distance (P, R, Nodes (X).Loc, Nodes (Y).Loc);
-                                 begin
-                                    if D < DP (S2, Y) then
-                                       DP (S2, Y) := D;
-                                       LK (S2, Y) := X;
-                                    end if;
-                                 end;
-                              end if;
-                           end loop;
-                        end if;
-                     end loop;
-                  end loop;
-                  for S in 0 .. Full loop
-                     SC (S) := Unreachable;
-                     EN (S, 1) := 0;
-                     if S = 0 then
-                        SC (S) := M * (F0 + Robot_Distance (P, R, S0, P.Finish (R)));
-                     else
-                        for X in 1 .. Nodes'Last loop
-                           if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
+                     if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
+                        for Y in 1 .. Nodes'Last loop
+                           if not Has (S, Nodes (Y).Bit) and then P.Can_Do (R, Nodes (Y).Task_Id)
+                           then
                               declare
-                                 D : constant Cost :=
-                                   M * (F0 + DP (S, X)
-                                        + Robot_Distance (P, R, Nodes (X).Loc, P.Finish (R)));
+                                 S2 : constant Natural := S + 2 ** Nodes (Y).Bit;
+                                 D  : constant Cost :=
+                                   (if Average  --  a new first node Y before X
+                                    then DP (S, X) + Cost (Pop_Count (S))
+                                      * Robot_Distance (P, R, Nodes (Y).Loc, Nodes (X).Loc)
+                                    else DP (S, X)
+                                      + Robot_Distance (P, R, Nodes (X).Loc, Nodes (Y).Loc));
                               begin
-                                 if D < SC (S) then
-                                    SC (S) := D;
-                                    EN (S, 1) := X;
+                                 if D < DP (S2, Y) then
+                                    DP (S2, Y) := D;
+                                    LK (S2, Y) := X;
                                  end if;
                               end;
                            end if;
                         end loop;
                      end if;
                   end loop;
-               else
-                  --  Backward: DP (S, v) = least completion sum of the tasks
-                  --  of S other than v, starting at v (v in S).
+               end loop;
+               --  SC (S): the robot's best cost for the set S, EN its
+               --  last (forward) or first (backward) node (0: none).
+               SC (0) :=
+                 (if Average then M * FC else M * (F0 + Robot_Distance (P, R, S0, P.Finish (R))));
+               EN (0, 1) := 0;
+               for S in 1 .. Full loop
+                  SC (S) := Unreachable;
+                  EN (S, 1) := 0;
                   for X in 1 .. Nodes'Last loop
-                     if P.Can_Do (R, Nodes (X).Task_Id) then
-                        DP (2 ** Nodes (X).Bit, X) := 0;
-                     end if;
-                  end loop;
-                  for S in 1 .. Full loop
-                     for X in 1 .. Nodes'Last loop
-                        --  Extend backwards: a new first node Y before X.
-                        if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
-                           for Y in 1 .. Nodes'Last loop
-                              if not Has (S, Nodes (Y).Bit) and then P.Can_Do (R, Nodes (Y).Task_Id)
-                              then
-                                 declare
-                                    S2 : constant Natural := S + 2 ** Nodes (Y).Bit;
-                                    D  : constant Cost := DP (S, X) + Cost (Pop_Count (S))
-                                      * Robot_Distance (P, R, Nodes (Y).Loc, Nodes (X).Loc);
-                                 begin
-                                    if D < DP (S2, Y) then
-                                       DP (S2, Y) := D;
-                                       LK (S2, Y) := X;  --  successor
-                                    end if;
-                                 end;
-                              end if;
-                           end loop;
-                        end if;
-                     end loop;
-                  end loop;
-                  for S in 0 .. Full loop
-                     SC (S) := Unreachable;
-                     EN (S, 1) := 0;
-                     if S = 0 then
-                        SC (S) := M * FC;
-                     else
-                        for X in 1 .. Nodes'Last loop
-                           if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
-                              declare
-                                 Cnt : constant Cost := Cost (Pop_Count (S));
-                                 D : constant Cost := M * (FC + Cnt * F0
-                                   + Cnt * Robot_Distance (P, R, S0, Nodes (X).Loc) + DP (S, X));
-                              begin
-                                 if D < SC (S) then
-                                    SC (S) := D;
-                                    EN (S, 1) := X;
-                                 end if;
-                              end;
+                     if Has (S, Nodes (X).Bit) and then DP (S, X) < Unreachable then
+                        declare
+                           Cnt : constant Cost := Cost (Pop_Count (S));
+                           D : constant Cost :=
+                             (if Average
+                              then M * (FC + Cnt * F0
+                                + Cnt * Robot_Distance (P, R, S0, Nodes (X).Loc) + DP (S, X))
+                              else M * (F0 + DP (S, X)
+                                + Robot_Distance (P, R, Nodes (X).Loc, P.Finish (R))));
+                        begin
+                           if D < SC (S) then
+                              SC (S) := D;
+                              EN (S, 1) := X;
                            end if;
-                        end loop;
+                        end;
                      end if;
                   end loop;
-               end if;
+               end loop;
                for S in 0 .. Full loop
                   if FN + Pop_Count (S) < P.Min_Tasks or else Bad0 > 0 then
                      SC (S) := Unreachable;

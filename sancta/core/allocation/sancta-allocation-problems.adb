@@ -19,24 +19,32 @@ package body Sancta.Allocation.Problems is
       return P;
    end Create;
 
+   --  A new matrix over all locations (0 .. Locations) holding Cost_Of.
+   generic
+      with function Cost_Of (From, To : Natural) return Cost;
+   function Filled_Matrix (Locations : Natural) return Cost_Matrix_Access;
+
+   function Filled_Matrix (Locations : Natural) return Cost_Matrix_Access is
+      M : constant Cost_Matrix_Access := new Cost_Matrix (0 .. Locations, 0 .. Locations);
+   begin
+      for A in M'Range (1) loop
+         for B in M'Range (2) loop
+            M (A, B) := Cost_Of (A, B);
+         end loop;
+      end loop;
+      return M;
+   end Filled_Matrix;
+
    --  The matrix, allocated with the current distances if there is none.
    procedure Need_Matrix (This : in out Problem) is
+      function Current (From, To : Natural) return Cost is (Distance (This, From, To));
+      function Current_Matrix is new Filled_Matrix (Current);
    begin
       if This.Rule = From_Matrix and then This.Matrix /= null then
          return;
       end if;
-      declare
-         M : constant Cost_Matrix_Access :=
-           new Cost_Matrix (0 .. This.Locations, 0 .. This.Locations);
-      begin
-         for A in M'Range (1) loop
-            for B in M'Range (2) loop
-               M (A, B) := Distance (This, A, B);
-            end loop;
-         end loop;
-         This.Matrix := M;
-         This.Rule := From_Matrix;
-      end;
+      This.Matrix := Current_Matrix (This.Locations);
+      This.Rule := From_Matrix;
    end Need_Matrix;
 
    procedure Set_Distance (This : in out Problem; From, To : Positive; D : Cost) is
@@ -161,19 +169,12 @@ package body Sancta.Allocation.Problems is
 
    --  Robot R's own matrix, from its current distances if it has none.
    procedure Own_Matrix (This : in out Problem; R : Positive) is
+      function Current (From, To : Natural) return Cost is
+        (Robot_Distance (This, R, From, To));
+      function Current_Matrix is new Filled_Matrix (Current);
    begin
       if This.Own (R) = null then
-         declare
-            M : constant Cost_Matrix_Access :=
-              new Cost_Matrix (0 .. This.Locations, 0 .. This.Locations);
-         begin
-            for A in M'Range (1) loop
-               for B in M'Range (2) loop
-                  M (A, B) := Robot_Distance (This, R, A, B);
-               end loop;
-            end loop;
-            This.Own (R) := M;
-         end;
+         This.Own (R) := Current_Matrix (This.Locations);
       end if;
       This.Own_Factor (R) := 0.0;
    end Own_Matrix;

@@ -124,20 +124,10 @@ package body Sancta.Allocation.Replanning is
                   if Q.Can_Do (R, T) then
                      declare
                         Robot_Cost : constant Cost := Tour_Cost (Q, A, R);
-                        M : constant Cost := Cost (Q.Multiplier (R));
-                        function Place (I : Natural) return Natural is
-                          (if I = 0 then Q.Start (R)
-                           else Location_Of (Q, A.Tour (R, I), A.Choice (A.Tour (R, I))));
                      begin
                         for After in Q.Frozen_Length (R) .. A.Length (R) loop
                            declare
-                              Before_Place : constant Natural := Place (After);
-                              After_Place : constant Natural :=
-                                (if After = A.Length (R) then Q.Finish (R) else Place (After + 1));
-                              Added : constant Cost :=
-                                M * (Robot_Distance (Q, R, Before_Place, Here)
-                                     + Robot_Distance (Q, R, Here, After_Place)
-                                     - Robot_Distance (Q, R, Before_Place, After_Place));
+                              Added : constant Cost := Insertion_Cost (Q, A, R, Here, After);
                               Key : constant Cost :=
                                 (if Makespan then Robot_Cost + Added else Added);
                            begin

@@ -28,9 +28,7 @@ package body Sancta.Allocation.Plan_Tests is
    ---------------------------------------------------------------------------
 
    procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
-      Criteria : constant Criterion_Array :=
-        [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
-      Variants : constant array (1 .. 7) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>),
          (Closed => False, others => <>),
          (Asymmetric => True, Own_Factor => True, others => <>),
@@ -40,64 +38,44 @@ package body Sancta.Allocation.Plan_Tests is
          (Closed => False, Asymmetric => True, Heterogeneous => True, Own_Factor => True,
           Own_Matrix => True, Own_Callback => True, Infinite_Arcs => True,
           Infeasible => True, Alternatives => True, Frozen => Robot_1, others => <>)];
-      Seed : Interfaces.Unsigned_64 := 3100;
+
+      procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
+      is
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+         O : Annealers.Options := Checked_Random_Walk (C, Seed, Iterations => 6_000);
+         --  (The switch subtree's predicted costs are checked too.)
+         Switched : Boolean := False;
+      begin
+         Assert (Check (P) = "", "bad test problem: " & Check (P));
+         Annealers.Solve (P, O, A, S);
+         Assert (S.Accepted > 300 or else Active_Count (P, A.Branch) < 6,
+                 "too few moves applied:" & S.Accepted'Image
+                 & " (seed" & Seed'Image & ", active tasks"
+                 & Active_Count (P, A.Branch)'Image & ")");
+         Assert (Validate (P, A) = "", "invalid: " & Validate (P, A));
+         Switched := S.Switches > 0;
+         Anneal_Checked (P, O, A, S);
+         Assert (Switched or else V.Frozen /= None,
+                 "the random walk never left the initial plan selection (seed"
+                 & Seed'Image & ")");
+      end Check_One;
+
+      procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      for V of Variants loop
-         for C of Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Plan_Problem (19, 3, V, Seed);
-               A : Assignment (P.Robots, P.Tasks);
-               S : Annealers.Progress;
-               O : Annealers.Options;
-               Switched : Boolean := False;
-            begin
-               Assert (Check (P.all) = "", "bad test problem: " & Check (P.all));
-               --  A near random walk (every move checked against a full
-               --  recomputation, the switch subtree's predicted costs too).
-               O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 6_000,
-                     Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
-                     Polish => False, Adaptive => False, others => <>);
-               Annealers.Solve (P.all, O, A, S);
-               Assert (S.Accepted > 300 or else Active_Count (P.all, A.Branch) < 6,
-                       "too few moves applied:" & S.Accepted'Image
-                       & " (seed" & Seed'Image & ", active tasks"
-                       & Active_Count (P.all, A.Branch)'Image & ")");
-               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
-               Switched := S.Switches > 0;
-               Anneal_Checked (P.all, O, A, S);
-               Assert (Switched or else V.Frozen /= None,
-                       "the random walk never left the initial plan selection (seed"
-                       & Seed'Image & ")");
-            end;
-         end loop;
-      end loop;
+      Check_All (Variants, Some_Criteria, Tasks => 19, Robots => 3, First_Seed => 3100,
+                 Plan_Trees => True);
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 4) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
          (Own_Factor => True, Own_Matrix => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Frozen => Robot_1, Own_Callback => True, Min_Tasks => 1,
           others => <>)];
-      Seed : Interfaces.Unsigned_64 := 3500;
    begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Plan_Problem (6, 2, V, Seed);
-               A : constant Assignment := Exact.Solve (P.all, C);
-               B : constant Long_Float := Brute_Force (P.all, C);
-            begin
-               Assert (Or_Count (P.all) > 0, "no OR node in the test problem");
-               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
-               Assert (Evaluate (P.all, A, C).Value = B,
-                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force"
-                       & Img (B) & " (seed" & Seed'Image & ")");
-            end;
-         end loop;
-      end loop;
+      Check_Exact_Equals_Brute_Force
+        (Variants, Tasks => 6, Robots => 2, First_Seed => 3500, Plan_Trees => True);
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is

@@ -257,6 +257,30 @@ package body Sancta.Allocation.Test_Support is
       end loop;
    end Print_Mismatch;
 
+   procedure For_Each_Random_Problem
+     (Variants   : Variant_Array;
+      Criteria   : Criterion_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False)
+   is
+      use type Interfaces.Unsigned_64;
+      Seed : Interfaces.Unsigned_64 := First_Seed;
+   begin
+      for V of Variants loop
+         for C of Criteria loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access :=
+                 Random_Problem (Tasks, Robots, (V with delta Plan_Trees => Plan_Trees), Seed);
+            begin
+               Check (P.all, V, C, Seed);
+            end;
+         end loop;
+      end loop;
+   end For_Each_Random_Problem;
+
    procedure Check_Annealer_Reaches_Optimum
      (Variants   : Variant_Array;
       Tasks      : Positive;
@@ -265,43 +289,62 @@ package body Sancta.Allocation.Test_Support is
       Iterations : Long_Long_Integer;
       Plan_Trees : Boolean := False)
    is
-      use type Interfaces.Unsigned_64;
-      Seed : Interfaces.Unsigned_64 := First_Seed;
-   begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
+      procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
+      is
+         pragma Unreferenced (V);
+         E : constant Assignment := Exact.Solve (P, C);
+         Opt : constant Long_Float := Evaluate (P, E, C).Value;
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+      begin
+         Annealers.Solve (P, (Criterion => C, Seed => Seed, Time_Limit => 0.0,
+                              Iterations => Iterations, others => <>), A, S);
+         Assert (Validate (P, A) = "", "annealer invalid: " & Validate (P, A));
+         if Evaluate (P, A, C).Value /= Opt then
+            Print_Mismatch (P, A, E);
+         end if;
+         Assert (Evaluate (P, A, C).Value = Opt,
+                 "annealer" & Img (Evaluate (P, A, C).Value) & " /= optimum"
+                 & Img (Opt) & " (seed" & Seed'Image & ")");
+         for M in Baselines.Method loop
             declare
-               P : constant Problem_Access :=
-                 Random_Problem (Tasks, Robots, (V with delta Plan_Trees => Plan_Trees), Seed);
-               E : constant Assignment := Exact.Solve (P.all, C);
-               Opt : constant Long_Float := Evaluate (P.all, E, C).Value;
-               A : Assignment (P.Robots, P.Tasks);
-               S : Annealers.Progress;
+               B : constant Assignment := Baselines.Solve (P, M, C);
             begin
-               Annealers.Solve (P.all, (Criterion => C, Seed => Seed, Time_Limit => 0.0,
-                                        Iterations => Iterations, others => <>), A, S);
-               Assert (Validate (P.all, A) = "", "annealer invalid: " & Validate (P.all, A));
-               if Evaluate (P.all, A, C).Value /= Opt then
-                  Print_Mismatch (P.all, A, E);
-               end if;
-               Assert (Evaluate (P.all, A, C).Value = Opt,
-                       "annealer" & Img (Evaluate (P.all, A, C).Value) & " /= optimum"
-                       & Img (Opt) & " (seed" & Seed'Image & ")");
-               for M in Baselines.Method loop
-                  declare
-                     B : constant Assignment := Baselines.Solve (P.all, M, C);
-                  begin
-                     Assert (Validate (P.all, B) = "", M'Image & " invalid: "
-                             & Validate (P.all, B));
-                     Assert (Evaluate (P.all, B, C).Value >= Opt,
-                             M'Image & " better than the optimum");
-                  end;
-               end loop;
+               Assert (Validate (P, B) = "", M'Image & " invalid: " & Validate (P, B));
+               Assert (Evaluate (P, B, C).Value >= Opt, M'Image & " better than the optimum");
             end;
          end loop;
-      end loop;
+      end Check_One;
+
+      procedure Check_All is new For_Each_Random_Problem (Check_One);
+   begin
+      Check_All (Variants, Pure_Criteria, Tasks, Robots, First_Seed, Plan_Trees);
    end Check_Annealer_Reaches_Optimum;
+
+   procedure Check_Exact_Equals_Brute_Force
+     (Variants   : Variant_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False)
+   is
+      procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
+      is
+         pragma Unreferenced (V);
+         A : constant Assignment := Exact.Solve (P, C);
+         B : constant Long_Float := Brute_Force (P, C);
+      begin
+         Assert (not Plan_Trees or else Or_Count (P) > 0, "no OR node in the test problem");
+         Assert (Validate (P, A) = "", "exact invalid: " & Validate (P, A));
+         Assert (Evaluate (P, A, C).Value = B,
+                 "exact" & Img (Evaluate (P, A, C).Value) & " /= brute force" & Img (B)
+                 & " (seed" & Seed'Image & ")");
+      end Check_One;
+
+      procedure Check_All is new For_Each_Random_Problem (Check_One);
+   begin
+      Check_All (Variants, Pure_Criteria, Tasks, Robots, First_Seed, Plan_Trees);
+   end Check_Exact_Equals_Brute_Force;
 
    procedure Write (File, Text : String) is
       F : Ada.Text_IO.File_Type;

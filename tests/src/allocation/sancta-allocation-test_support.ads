@@ -61,6 +61,18 @@ package Sancta.Allocation.Test_Support is
 
    type Criterion_Array is array (Positive range <>) of Criterion;
    Pure_Criteria : constant Criterion_Array := [Min_Sum, Min_Max, Min_Ave];
+   Some_Criteria : constant Criterion_Array :=
+     [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
+   --  The pure ones and two mixes.
+
+   function Checked_Random_Walk
+     (C : Criterion; Seed : Interfaces.Unsigned_64; Iterations : Long_Long_Integer)
+      return Annealers.Options
+   is ((Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => Iterations,
+        Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+        Polish => False, Adaptive => False, others => <>));
+   --  A near random walk (a huge temperature: most moves apply) with the
+   --  expensive check after every move.
 
    procedure Anneal_Checked
      (P : Problem; O : in out Annealers.Options; A : in out Assignment;
@@ -70,6 +82,19 @@ package Sancta.Allocation.Test_Support is
 
    type Variant_Array is array (Positive range <>) of Variant;
 
+   generic
+      with procedure Check (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64);
+   procedure For_Each_Random_Problem
+     (Variants   : Variant_Array;
+      Criteria   : Criterion_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False);
+   --  Check, for every variant V (with plan trees if Plan_Trees) and every
+   --  criterion C in turn, one random problem P made with seed First_Seed +
+   --  1, + 2, ... (Seed).
+
    procedure Check_Annealer_Reaches_Optimum
      (Variants   : Variant_Array;
       Tasks      : Positive;
@@ -77,11 +102,20 @@ package Sancta.Allocation.Test_Support is
       First_Seed : Interfaces.Unsigned_64;
       Iterations : Long_Long_Integer;
       Plan_Trees : Boolean := False);
-   --  For every variant (with plan trees if Plan_Trees) and every pure
-   --  criterion, one random problem (seeds First_Seed + 1, + 2, ...): the
-   --  annealer's result after Iterations moves is valid and reaches the
-   --  exact solver's optimum (else both tours of each robot are printed and
-   --  the test fails); every baseline's result is valid and no better.
+   --  For_Each_Random_Problem with the pure criteria: the annealer's result
+   --  after Iterations moves is valid and reaches the exact solver's optimum
+   --  (else both tours of each robot are printed and the test fails); every
+   --  baseline's result is valid and no better.
+
+   procedure Check_Exact_Equals_Brute_Force
+     (Variants   : Variant_Array;
+      Tasks      : Positive;
+      Robots     : Positive;
+      First_Seed : Interfaces.Unsigned_64;
+      Plan_Trees : Boolean := False);
+   --  For_Each_Random_Problem with the pure criteria (with Plan_Trees, each
+   --  problem has an OR node): the exact solver's result is valid and as
+   --  good as Brute_Force's optimum.
 
    NL : constant String := [1 => ASCII.LF];
 

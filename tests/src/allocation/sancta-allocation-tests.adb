@@ -29,9 +29,7 @@ package body Sancta.Allocation.Tests is
    ---------------------------------------------------------------------------
 
    procedure Incremental_Equals_Recomputed (Unused : in out Fixture) is
-      Criteria : constant Criterion_Array :=
-        [Min_Sum, Min_Max, Min_Ave, Min_Mix, (0.5, 0.25, 2.0)];
-      Variants : constant array (1 .. 9) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (End_Depot => True, Asymmetric => True, others => <>),
          (Closed => False, others => <>),
          (Asymmetric => True, others => <>),
@@ -41,54 +39,34 @@ package body Sancta.Allocation.Tests is
          (Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>),
          (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
           Alternatives => True, Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>)];
-      Seed : Interfaces.Unsigned_64 := 100;
+
+      procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
+      is
+         pragma Unreferenced (V);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Annealers.Progress;
+         O : Annealers.Options := Checked_Random_Walk (C, Seed, Iterations => 3_000);
+      begin
+         Annealers.Solve (P, O, A, S);
+         Assert (S.Accepted > 1_000, "too few moves applied:" & S.Accepted'Image);
+         Assert (Validate (P, A) = "", "invalid: " & Validate (P, A));
+         --  Then a real annealing run, still checked.
+         Anneal_Checked (P, O, A, S);
+      end Check_One;
+
+      procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      for V of Variants loop
-         for C of Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Random_Problem (18, 3, V, Seed);
-               A : Assignment (P.Robots, P.Tasks);
-               S : Annealers.Progress;
-               O : Annealers.Options;
-            begin
-               --  A near random walk (huge temperature) so most moves apply,
-               --  with the expensive check after each.
-               O := (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 3_000,
-                     Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
-                     Polish => False, Adaptive => False, others => <>);
-               Annealers.Solve (P.all, O, A, S);
-               Assert (S.Accepted > 1_000, "too few moves applied:" & S.Accepted'Image);
-               Assert (Validate (P.all, A) = "", "invalid: " & Validate (P.all, A));
-               --  Then a real annealing run, still checked.
-               Anneal_Checked (P.all, O, A, S);
-            end;
-         end loop;
-      end loop;
+      Check_All (Variants, Some_Criteria, Tasks => 18, Robots => 3, First_Seed => 100);
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
-      Variants : constant array (1 .. 5) of Variant :=
+      Variants : constant Variant_Array :=
         [Variant'(others => <>), (Closed => False, Asymmetric => True, others => <>),
          (End_Depot => True, Heterogeneous => True, others => <>),
          (Alternatives => True, Heterogeneous => True, others => <>),
          (Infeasible => True, Min_Tasks => 1, others => <>)];
-      Seed : Interfaces.Unsigned_64 := 500;
    begin
-      for V of Variants loop
-         for C of Pure_Criteria loop
-            Seed := Seed + 1;
-            declare
-               P : constant Problem_Access := Random_Problem (5, 2, V, Seed);
-               A : constant Assignment := Exact.Solve (P.all, C);
-               B : constant Long_Float := Brute_Force (P.all, C);
-            begin
-               Assert (Validate (P.all, A) = "", "exact invalid: " & Validate (P.all, A));
-               Assert (Evaluate (P.all, A, C).Value = B,
-                       "exact" & Img (Evaluate (P.all, A, C).Value) & " /= brute force" & Img (B));
-            end;
-         end loop;
-      end loop;
+      Check_Exact_Equals_Brute_Force (Variants, Tasks => 5, Robots => 2, First_Seed => 500);
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
