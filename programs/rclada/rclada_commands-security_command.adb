@@ -224,8 +224,19 @@ procedure Security_Command (Args : Arguments) is
       exception
          when E : Sax.Readers.XML_Fatal_Error =>
             Input_Sources.File.Close (Input);
-            raise Command_Error with File & ": malformed XML: "
-              & Ada.Exceptions.Exception_Message (E);
+            --  XML/Ada's message starts with "FILE:LINE:COLUMN: " already.
+            declare
+               Message : constant String := Ada.Exceptions.Exception_Message (E);
+               Located : constant Boolean :=
+                 Message'Length > File'Length
+                 and then Message (Message'First .. Message'First + File'Length) = File & ":";
+            begin
+               raise Command_Error with
+                 (if Located
+                  then File & ":" & Message (Message'First + File'Length + 1 .. Message'Last)
+                    & " (malformed XML)"
+                  else File & ": malformed XML: " & Message);
+            end;
       end;
       Input_Sources.File.Close (Input);
       Doc := Reader.Get_Tree;

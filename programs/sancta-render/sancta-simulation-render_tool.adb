@@ -6,6 +6,7 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Interfaces;
 with Sancta.Geometry;              use Sancta.Geometry;
+with Sancta.Robot.Grids;
 with Sancta.Simulation.Demos;
 with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
@@ -20,6 +21,15 @@ package body Sancta.Simulation.Render_Tool is
    use Ada.Text_IO;
 
    use Tool_Arguments;
+
+   Max_Picture_Side : constant := 1.0E6;
+   Max_PNG_Pixels   : constant := 4.0E8;
+
+   function Rendering_Number (X : Real) return String is
+     (if abs X < 1.0E15 and then X = Real'Rounding (X)
+      then Ada.Strings.Fixed.Trim (Long_Long_Integer (X)'Image, Ada.Strings.Left)
+      else Ada.Strings.Fixed.Trim (X'Image, Ada.Strings.Left));
+   --  Example: 4.0E2 -> "400"; 0.05 -> " 5.00000000000000E-02" trimmed.
 
    procedure Usage is
    begin
@@ -118,7 +128,24 @@ package body Sancta.Simulation.Render_Tool is
       end if;
       declare
          World : constant Worlds.World := Map_Files.Load_World (To_String (World_Name));
+         Frame : constant Sancta.Robot.Grids.Frame := Worlds.Frame_Of (World);
+         Wide  : constant Real := Real (Frame.Width) * Frame.Resolution * Scale;
+         High  : constant Real := Real (Frame.Height) * Frame.Resolution * Scale;
       begin
+         --  A world of a few cells but a huge resolution would make a
+         --  picture no integer can measure (or no memory can hold).
+         if (Length (SVG) > 0 or else Length (PNG) > 0)
+           and then (Wide > Max_Picture_Side or else High > Max_Picture_Side
+                     or else (Length (PNG) > 0 and then Wide * High > Max_PNG_Pixels))
+         then
+            raise Usage_Error with To_String (World_Name) & ": the world is"
+              & Natural'Image (Frame.Width) & " x" & Natural'Image (Frame.Height)
+              & " cells of " & Real'Image (Frame.Resolution) & " m: the picture would be "
+              & Rendering_Number (Wide) & " x " & Rendering_Number (High)
+              & " pixels at --scale " & Rendering_Number (Scale) & " (at most "
+              & Rendering_Number (Max_Picture_Side) & " a side, "
+              & Rendering_Number (Max_PNG_Pixels / 1.0E6) & " million pixels for --png)";
+         end if;
          if Length (Raster) > 0 then
             Rendering.Write_Map (World, To_String (Raster));
             Put_Line ("wrote " & To_String (Raster) & ".pgm and .yaml");

@@ -101,14 +101,28 @@ package body Sancta.Runtime.Factory is
       Limit  : constant Natural := Natural'Max (2, Name'Length / 3);
       Result : Unbounded_String;
       Count  : Natural := 0;
+      --  Each distance computed once (a megabyte name must not cost a
+      --  distance per candidate per D); a length difference above Limit is
+      --  a distance above Limit.
+      Distance : array (1 .. Natural (Candidates.Length)) of Natural;
    begin
+      for I in Distance'Range loop
+         declare
+            C : constant String := Candidates (I);
+         begin
+            Distance (I) :=
+              (if abs (C'Length - Name'Length) > Limit then Limit + 1
+               else Edit_Distance (Name, C));
+         end;
+      end loop;
       for D in 0 .. Limit loop
-         for C of Candidates loop
-            if Count < 3 and then Edit_Distance (Name, C) = D then
+         exit when Count = 3;
+         for I in Distance'Range loop
+            if Count < 3 and then Distance (I) = D then
                if Count > 0 then
                   Append (Result, ", ");
                end if;
-               Append (Result, "'" & C & "'");
+               Append (Result, "'" & Candidates (I) & "'");
                Count := Count + 1;
             end if;
          end loop;

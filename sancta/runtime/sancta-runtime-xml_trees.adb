@@ -228,7 +228,20 @@ package body Sancta.Runtime.XML_Trees is
       begin
          Ada.Text_IO.Open (F, Ada.Text_IO.In_File, File);
          while not Ada.Text_IO.End_Of_File (F) loop
-            Handler.Lines.Append (Ada.Text_IO.Get_Line (F));
+            --  In chunks: Text_IO's Get_Line function overflows the stack
+            --  on a line of megabytes (a file may be minified XML).
+            declare
+               Chunk : String (1 .. 4096);
+               Last  : Natural;
+               Line  : Unbounded_String;
+            begin
+               loop
+                  Ada.Text_IO.Get_Line (F, Chunk, Last);
+                  Append (Line, Chunk (1 .. Last));
+                  exit when Last < Chunk'Last or else Ada.Text_IO.End_Of_File (F);
+               end loop;
+               Handler.Lines.Append (To_String (Line));
+            end;
          end loop;
          Ada.Text_IO.Close (F);
       exception

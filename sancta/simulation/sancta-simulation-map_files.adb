@@ -89,6 +89,7 @@ package body Sancta.Simulation.Map_Files is
       Last_Line  : Natural;
       Result     : Map_Info;
       Have_Image, Have_Resolution, Have_Origin : Boolean := False;
+      Image_Line : Positive := 1;
 
       procedure Read_Entry (Raw_Line : String; Line_No : Positive) is
          Line  : constant String := Trim (Without_Comment (Raw_Line));
@@ -114,6 +115,7 @@ package body Sancta.Simulation.Map_Files is
                   end if;
                   Result.Image := To_Unbounded_String (Value);
                   Have_Image := True;
+                  Image_Line := Line_No;
                elsif Key = "resolution" then
                   Result.Resolution := To_Real (File_Name, Line_No, "resolution", Value);
                   if Result.Resolution <= 0.0 then
@@ -194,11 +196,27 @@ package body Sancta.Simulation.Map_Files is
       declare
          Name : constant String := To_String (Result.Image);
       begin
+         --  Not Ada.Directories.Compose: it refuses a relative path with
+         --  folders ("maps/room.pgm").
          Result.Image_Path := To_Unbounded_String
            (if Name (Name'First) = '/' then Name
-            else Ada.Directories.Compose
-              (Ada.Directories.Containing_Directory
-                 (Ada.Directories.Full_Name (File_Name)), Name));
+            else Ada.Directories.Containing_Directory
+                   (Ada.Directories.Full_Name (File_Name)) & "/" & Name);
+         --  Said here, with the line, before the path (an exception message
+         --  keeps 200 characters: a long path would hide the reason).
+         declare
+            use type Ada.Directories.File_Kind;
+            Path : constant String := To_String (Result.Image_Path);
+         begin
+            if not Ada.Directories.Exists (Path) then
+               Fail (File_Name, Image_Line, "image: no such file: " & Path);
+            elsif Ada.Directories.Kind (Path) /= Ada.Directories.Ordinary_File then
+               Fail (File_Name, Image_Line, "image: not a regular file: " & Path);
+            end if;
+         exception
+            when Ada.Directories.Name_Error =>
+               Fail (File_Name, Image_Line, "image: not a valid file name: " & Path);
+         end;
       end;
       return Result;
    end Read_YAML;

@@ -31,9 +31,19 @@ package body Sancta.Simulation.Rendering is
       return "#" & Two (C.R) & Two (C.G) & Two (C.B);
    end Hex;
 
+   Far : constant := 1.0E8;
+   --  Pixel coordinates are clamped to -Far .. Far before they become
+   --  integers: a point a million kilometres away (a trajectory, a marker)
+   --  is drawn as far outside the picture, not an overflow.
+
+   function Clamped (V : Real) return Real is (Real'Max (-Far, Real'Min (Far, V)));
+
+   function To_Pixel (V : Real) return Integer is (Integer (Clamped (V)));
+   --  Example: To_Pixel (3.4) = 3; To_Pixel (1.0E300) = 100_000_000.
+
    function Num (X : Real) return String is
       --  Fixed-point text with two decimals.
-      V : constant Long_Long_Integer := Long_Long_Integer (X * 100.0);
+      V : constant Long_Long_Integer := Long_Long_Integer (Clamped (X) * 100.0);
       A : constant Long_Long_Integer := abs V;
       F : constant String := Long_Long_Integer'Image (A mod 100);
       Frac : constant String := (if A mod 100 < 10 then "0" & F (2 .. F'Last) else F (2 .. F'Last));
@@ -200,8 +210,8 @@ package body Sancta.Simulation.Rendering is
       F      : constant Frame := Worlds.Frame_Of (World);
       W_M    : constant Real := Real (F.Width) * F.Resolution;
       H_M    : constant Real := Real (F.Height) * F.Resolution;
-      Width  : constant Natural := Natural'Max (1, Natural (W_M * Scale));
-      Height : constant Natural := Natural'Max (1, Natural (H_M * Scale));
+      Width  : constant Natural := Natural'Max (1, To_Pixel (W_M * Scale));
+      Height : constant Natural := Natural'Max (1, To_Pixel (H_M * Scale));
       --  Of the world; the title band above it and the legend band below.
       Line_H : constant := Glyphs.Glyph_Height + 7;
       Top    : constant Natural := (if Length (S.Title) > 0 then Line_H + 4 else 0);
@@ -213,9 +223,9 @@ package body Sancta.Simulation.Rendering is
          else Create (Width, Height + Top + Below));
 
       function PX (P : Point) return Integer is
-        (Integer (Real'Floor ((P.X - F.Origin.X) * Scale)) + 1);
+        (To_Pixel (Real'Floor ((P.X - F.Origin.X) * Scale)) + 1);
       function PY (P : Point) return Integer is
-        (Top + Height - Integer (Real'Floor ((P.Y - F.Origin.Y) * Scale)));
+        (Top + Height - To_Pixel (Real'Floor ((P.Y - F.Origin.Y) * Scale)));
 
       procedure Dot (X, Y, R : Integer; C : Color) is
       begin
@@ -355,7 +365,7 @@ package body Sancta.Simulation.Rendering is
             if S.Scale_Bar then
                declare
                   Metres : constant Real := Bar_Metres (Scale);
-                  Pixels : constant Integer := Integer (Metres * Scale);
+                  Pixels : constant Integer := To_Pixel (Metres * Scale);
                   X1     : constant Integer := Width - 8;
                   X0     : constant Integer := X1 - Pixels;
                   Y      : constant Integer := Band + 4 + Line_H / 2;
@@ -398,7 +408,7 @@ package body Sancta.Simulation.Rendering is
       --  Pixels per character of the 12-pixel sans-serif labels (DejaVu
       --  Sans averages 0.55 em; a little more for safety).
       Line_H  : constant := 20;
-      Width   : constant Natural := Natural (W_M * Scale);
+      Width   : constant Natural := To_Pixel (W_M * Scale);
       Top     : constant Natural := (if Length (S.Title) > 0 then 26 else 0);
       Below   : constant Natural := Layout_Height (S, Width, Char_W, Line_H);
       Total_H : constant Real := H_M * Scale + Real (Top + Below);
@@ -481,9 +491,9 @@ package body Sancta.Simulation.Rendering is
       declare
          N         : constant Natural := Natural (S.Markers.Length);
          AX, AY, W : Pixel_Array (1 .. N);
-         function Pix_X (X : Real) return Integer is (Integer ((X - F.Origin.X) * Scale));
+         function Pix_X (X : Real) return Integer is (To_Pixel ((X - F.Origin.X) * Scale));
          function Pix_Y (Y : Real) return Integer is
-           (Integer ((F.Origin.Y + H_M - Y) * Scale) + Top);
+           (To_Pixel ((F.Origin.Y + H_M - Y) * Scale) + Top);
       begin
          for I in 1 .. N loop
             AX (I) := Pix_X (S.Markers (I).Where.X);
@@ -493,7 +503,7 @@ package body Sancta.Simulation.Rendering is
          declare
             Boxes : constant Label_Boxes :=
               Place_Labels (AX, AY, W, 13, 1, Top + 1, Width - 1,
-                            Top + Integer (H_M * Scale) - 1);
+                            Top + To_Pixel (H_M * Scale) - 1);
          begin
             for I in 1 .. N loop
                if Length (S.Markers (I).Label) > 0 then
@@ -518,7 +528,7 @@ package body Sancta.Simulation.Rendering is
          declare
             Xs, Lines  : Pixel_Array (1 .. Natural (S.Legend.Length));
             Line_Count : Natural;
-            Band       : constant Integer := Top + Integer (H_M * Scale);
+            Band       : constant Integer := Top + To_Pixel (H_M * Scale);
          begin
             Legend_Layout (S, Width, Char_W, Xs, Lines, Line_Count);
             for I in Xs'Range loop
@@ -540,7 +550,7 @@ package body Sancta.Simulation.Rendering is
                declare
                   Metres : constant Real := Bar_Metres (Scale);
                   X1     : constant Integer := Width - 8;
-                  X0     : constant Integer := X1 - Integer (Metres * Scale);
+                  X0     : constant Integer := X1 - To_Pixel (Metres * Scale);
                   Y      : constant Integer := Band + 4 + Line_H / 2;
                begin
                   Put_Line (Out_File, "<g class=""scale-bar"" stroke=""black"" stroke-width=""2"">"
@@ -599,6 +609,10 @@ package body Sancta.Simulation.Rendering is
             end;
             if Robot not in 1 .. 10_000 then
                Fail ("robot number out of 1 .. 10000");
+            elsif not (X'Valid and then Y'Valid) or else abs X > 1.0E12 or else abs Y > 1.0E12
+            then
+               --  1e400 reads as an infinity.
+               Fail ("x and y must be numbers within 1e12");
             end if;
             while Result.Last_Index < Robot loop
                Result.Append (Point_Vectors.Empty_Vector);

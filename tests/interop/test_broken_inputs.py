@@ -57,6 +57,22 @@ def tmp(tmp_path_factory):
         "NAME : many\nTYPE : TSP\nDIMENSION : 2000000\nEDGE_WEIGHT_TYPE : EUC_2D\n"
         "NODE_COORD_SECTION\n" + "".join(f"{i} {i % 1000} {i // 1000}\n"
                                          for i in range(1, 2000001)) + "EOF\n")
+    # Lines of 2 MB (the fuzzer's finding: STORAGE_ERROR in sancta-render).
+    (d / "long-line.walls").write_text("resolution 0.05\nwall " + "x_" * (1 << 20) + "\n")
+    (d / "long-line.yaml").write_text("image: room.pgm\nresolution: " + "5" * (1 << 21) + "\n")
+    (d / "long-line-config.xml").write_text(
+        '<team>\n  <agent id="a1" kind="robot">' + "x_" * (1 << 20)
+        + '<component name="nosuch"/></agent>\n</team>\n')
+    (d / "long-line-mission.xml").write_text(
+        f'<mission name="m" world="{world}">\n<robot id="r1" x="2.5" y="10"/>\n<!-- '
+        + "x_" * (1 << 20) + ' -->\n<goto id="t1" x="1" y="1.5"/>\n<goto id="t1" x="2" y="2"/>\n'
+        "</mission>\n")
+    # An unknown option named by 200 KB: "did you mean" took minutes (the
+    # edit distances were computed once per allowed distance).
+    (d / "long-option.xml").write_text(
+        '<team>\n  <agent id="a1" kind="robot">\n    <component name="odometry" '
+        + "x" * 200_000 + '="1"/>\n  </agent>\n</team>\n')
+    (d / "long-line.csv").write_text("robot,x,y\n1,1,1\n1," + "9" * (1 << 21) + ",1\n")
     return d
 
 
@@ -115,3 +131,36 @@ def test_cdr_tool_shows_a_wstring_code_point_utf8_cannot_encode():
     out = p.stdout + p.stderr
     assert p.returncode == 0 and "w: h\u00e9\ufffd" in p.stdout, out
     assert not any(bad in out for bad in TRACEBACK), out
+
+
+def test_map_image_path_with_folders(tmp_path):
+    """A map YAML naming its image by a relative path with folders
+    ("../maps/room.pgm") loads it (was "cannot write: invalid simple name":
+    Ada.Directories.Compose takes simple names only)."""
+    maps = tmp_path / "maps"
+    maps.mkdir()
+    (maps / "room.pgm").write_bytes((REPO / "tests" / "data" / "simulation" / "room.pgm").read_bytes())
+    worlds = tmp_path / "worlds"
+    worlds.mkdir()
+    (worlds / "room.yaml").write_text("image: ../maps/room.pgm\nresolution: 0.05\n"
+                                      "origin: [0, 0, 0]\n")
+    p = subprocess.run([str(BIN / "sancta-render"), str(worlds / "room.yaml"), "--svg",
+                        str(tmp_path / "w.svg")], capture_output=True, text=True,
+                       timeout=TIME_LIMIT, env=env())
+    assert p.returncode == 0 and (tmp_path / "w.svg").stat().st_size > 0, p.stdout + p.stderr
+
+
+def test_far_trajectory_points_render(tmp_path):
+    """Trajectory points a billion kilometres away are drawn outside the
+    picture (were "rendering.adb:35 overflow check failed" for SVG and
+    ":215" for PNG)."""
+    csv = tmp_path / "far.csv"
+    csv.write_text("robot,x,y\n1,1,1\n1,9e11,2\n2,-1e11,5\n2,3,-9.5e11\n")
+    for kind in ("--svg", "--png"):
+        out = tmp_path / ("w" + kind[1:].replace("-", "."))
+        p = subprocess.run([str(BIN / "sancta-render"), str(REPO / "share" / "worlds" / "arena.walls"),
+                            "--trajectories", str(csv), kind, str(out)],
+                           capture_output=True, text=True, timeout=TIME_LIMIT, env=env())
+        text = p.stdout + p.stderr
+        assert p.returncode == 0 and out.stat().st_size > 0, text
+        assert not any(bad in text for bad in TRACEBACK), text

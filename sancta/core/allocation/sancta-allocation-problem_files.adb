@@ -563,7 +563,14 @@ package body Sancta.Allocation.Problem_Files is
       exception
          when E : Sax.Readers.XML_Fatal_Error =>
             Input_Sources.File.Close (Input);
-            raise Format_Error with File & ":" & Ada.Exceptions.Exception_Message (E);
+            --  XML/Ada's message starts with "FILE:LINE:COLUMN: " already.
+            declare
+               Message : constant String := Ada.Exceptions.Exception_Message (E);
+            begin
+               raise Format_Error with
+                 (if Ada.Strings.Fixed.Head (Message, File'Length + 1) = File & ":" then Message
+                  else File & ": " & Message);
+            end;
          when others =>
             Input_Sources.File.Close (Input);
             raise;

@@ -425,6 +425,47 @@ case("cli-sim-robot-outside", "sancta-sim arena --robot 'r1 500 5 0' --duration 
 case("cli-sim-unknown-option", "sancta-sim arena --frob", 2, "--frob")
 case("cli-render-no-args", "sancta-render", 2, "usage")
 
+# Found by scripts/fuzz_inputs.py (session 8); each failed on the code before its fix.
+# A mission that is not well-formed XML: the file named once, then line:column
+# (was "m.xml:m.xml:4:5: ...").
+f = mission("unclosed-attribute", R + '  <task id="t1" x="1 y="2"/>\n')
+case("fuzz-mission-malformed-xml-located-once", f"sancta plan {f} --time 1", 1,
+     f"sancta plan: {f}:4:")
+# A map of a few cells with a huge resolution: its picture measures more
+# pixels than an integer holds (was "sancta-simulation-rendering.adb:400
+# range check failed").
+g = write("world/res-huge.yaml", "image: ../../simulation/room.pgm\nresolution: 2147483647\n"
+          "origin: [0, 0, 0]\n")
+case("fuzz-world-picture-too-large", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "res-huge.yaml: the world is", "--scale")
+# A 2 MB line in a wall world, a map YAML and a trajectories CSV (made in
+# {tmp}): "FILE:1: line longer than 65536 characters" (was STORAGE_ERROR).
+case("fuzz-walls-long-line", "sancta-render {tmp}/long-line.walls --svg {tmp}/w.svg", 1,
+     "long-line.walls:2: line longer than")
+case("fuzz-map-yaml-long-line", "sancta-render {tmp}/long-line.yaml --svg {tmp}/w.svg", 1,
+     "long-line.yaml:2: line longer than")
+case("fuzz-trajectories-long-line", "sancta-render {repo}/share/worlds/arena.walls "
+     "--trajectories {tmp}/long-line.csv --svg {tmp}/w.svg", 1, "long-line.csv:3: line longer than")
+# 2 MB lines in XML read by the configuration loader (sancta check, sancta
+# team): the whole file is read (was "FILE:1:1: cannot read: STORAGE_ERROR").
+case("fuzz-config-long-line", "sancta check {tmp}/long-line-config.xml", 1,
+     "long-line-config.xml:2:", "nosuch")
+case("fuzz-team-mission-long-line", "sancta team {tmp}/long-line-mission.xml --check", 1,
+     "long-line-mission.xml:5:", "t1")
+# A trajectory sample of 1e400 (an infinity): its line (was
+# "sancta-simulation-rendering.adb:465 invalid data").
+g = write("world/trajectory-inf.csv", "robot,x,y\n1,1,1\n1,1e400,2\n")
+case("fuzz-trajectory-infinite", f"sancta-render {{repo}}/share/worlds/arena.walls --trajectories {g}"
+     " --svg {tmp}/w.svg", 1, "trajectory-inf.csv:3:")
+case("fuzz-config-long-unknown-option", "sancta check {tmp}/long-option.xml", 1,
+     "long-option.xml:3:", "unknown option")
+# A missing image with a 300-character name: the YAML line first (the
+# message used to start with the path and lose its reason past 200 characters).
+g = write("world/long-image-name.yaml", "resolution: 0.05\nimage: " + "x" * 300
+          + ".pgm\norigin: [0, 0, 0]\n")
+case("fuzz-world-long-image-name", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "long-image-name.yaml:2: image: no such file")
+
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
               "#   id | command line | expected exit (a number, or !0) | substrings ;; ...\n"

@@ -1,0 +1,607 @@
+#!/usr/bin/env python3
+"""Mutation fuzzer for the product's input readers (developers' guide: bad
+input gets a clear error with its location, never a crash, a hang or a
+silent wrong answer; malformed wire data never over-reads).
+
+Each reader takes valid seed inputs (bundled configurations, missions,
+TSPLIB files, worlds, interface definitions, parameter files, MCAP bags made
+with the `mcap` package, CDR payloads from `cdr_tool random`), mutates them
+(byte flips, truncations, deletions, insertions of huge numbers / control
+characters / deep nesting / long lines, duplicated and swapped lines, wrong
+values in length fields) and runs the product's own command on every copy.
+
+A case is flagged when the program
+  - ends by a signal,
+  - prints an Ada exception name, "raised", "Call stack", "internal error"
+    (or, for CDR, an exception other than Decode_Error),
+  - runs past the time limit,
+  - refuses the input without naming where (file:line[:column] or byte N),
+  - exits 0 on a mutation that must be refused (XML cut before its root's
+    end tag, an MCAP file cut before its end magic).
+
+    nice -n 19 .venv/bin/python scripts/fuzz_inputs.py --seed 1 --cases 2000 \
+        [--readers config,tsp,...] [--keep out/fuzz]
+
+Flagged inputs are kept in --keep (one folder per finding, with the command
+line and the output); the summary table goes to standard output. The run is
+deterministic for a seed (same mutations, same order)."""
+import argparse
+import os
+import pathlib
+import random
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+BIN = pathlib.Path(os.environ.get("SANCTA_FUZZ_BIN", REPO / "bin"))
+SHARE = REPO / "share"
+
+TRACE = re.compile(r"raised |Call stack|internal error|CONSTRAINT_ERROR|STORAGE_ERROR|"
+                   r"PROGRAM_ERROR|TASKING_ERROR|ASSERT_FAILURE|ADA\.[A-Z_.]+|GNAT\.[A-Z_.]+|"
+                   r"Traceback|INTERNAL ")
+
+HUGE_NUMBERS = [b"99999999999999999999999999", b"1e400", b"-1e400", b"nan", b"-nan", b"inf",
+                b"-inf", b"4294967296", b"-2147483649", b"9223372036854775808",
+                b"18446744073709551616", b"-0", b"0", b"-1", b"0x7fffffff", b"1e-400",
+                b"123456789012345678901234567890.5", b"2147483647", b"1_000", b"+5", b".5",
+                b"5.", b"1e", b"--1"]
+TOKENS = [b"\x00", b"\xff", b"\xc3", b"\xe2\x82", b"\r", b"\t", b"\n", b"<", b">", b"&", b"&#0;",
+          b"&#x110000;", b"&amp;", b"&lt", b"\"", b"'", b"]]>", b"<!--", b"-->", b"<?", b"?>",
+          b"<![CDATA[", b"%", b"{", b"}", b"[", b"]", b":", b"- ", b"#", b"*", b"&a", b"!!str ",
+          b"|", b">-", b"---", b"...", b"\\", b"=", b"<=", b"[]", b"[-1]", b"[0]", b"/", b"~",
+          b"\xef\xbb\xbf", b"string<=", b"[<=", b"::", b"ros__parameters", b"\x7f", b"\x1b"]
+INTERESTING_32 = [0, 1, 2, 3, 4, 7, 8, 0x7F, 0x80, 0xFF, 0x100, 0xFFFF, 0x10000, 0x7FFFFFFF,
+                  0x80000000, 0xFFFFFFFE, 0xFFFFFFFF]
+INTERESTING_64 = INTERESTING_32 + [0x100000000, 0x7FFFFFFFFFFFFFFF, 0x8000000000000000,
+                                   0xFFFFFFFFFFFFFFFF]
+
+
+# ---------------------------------------------------------------- mutators
+
+def _lines(data):
+    return data.split(b"\n")
+
+
+def m_flip(rng, data, kind):
+    if not data:
+        return data, "flip (empty)"
+    d = bytearray(data)
+    for _ in range(rng.choice([1, 1, 2, 4, 8])):
+        i = rng.randrange(len(d))
+        d[i] = rng.randrange(256) if rng.random() < 0.5 else d[i] ^ (1 << rng.randrange(8))
+    return bytes(d), "byte flips"
+
+
+def m_truncate(rng, data, kind):
+    n = rng.randrange(len(data) + 1) if data else 0
+    return data[:n], f"truncated at {n}"
+
+
+def m_delete(rng, data, kind):
+    if not data:
+        return data, "delete (empty)"
+    i = rng.randrange(len(data))
+    n = rng.choice([1, 2, 4, 8, 16, 64, 256])
+    return data[:i] + data[i + n:], f"deleted {n} at {i}"
+
+
+def m_insert_token(rng, data, kind):
+    i = rng.randrange(len(data) + 1)
+    t = rng.choice(TOKENS)
+    return data[:i] + t + data[i:], f"inserted {t!r} at {i}"
+
+
+def m_number(rng, data, kind):
+    spans = [m.span() for m in re.finditer(rb"-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?", data)]
+    huge = rng.choice(HUGE_NUMBERS)
+    if not spans:
+        i = rng.randrange(len(data) + 1)
+        return data[:i] + huge + data[i:], f"inserted number {huge!r} at {i}"
+    a, b = rng.choice(spans)
+    return data[:a] + huge + data[b:], f"number at {a} -> {huge!r}"
+
+
+def m_long_line(rng, data, kind):
+    i = rng.randrange(len(data) + 1)
+    n = rng.choice([300, 5000, 70000, 1 << 20])
+    filler = rng.choice([b"A", b"9", b" ", b"x_"]) * n
+    return data[:i] + filler + data[i:], f"inserted {n} x {filler[:2]!r} at {i}"
+
+
+NESTING = {"xml": [b"<a>"], "yaml": [b"[", b"{a: ", b"- "], "msg": [b"a/"], "tsp": [b"("],
+           "binary": [b"\x00"]}
+
+
+def m_nesting(rng, data, kind):
+    i = rng.randrange(len(data) + 1)
+    unit = rng.choice(NESTING.get(kind, [b"["]))
+    n = rng.choice([100, 1000, 100000])
+    return data[:i] + unit * n + data[i:], f"nesting {unit!r} x {n} at {i}"
+
+
+def m_duplicate_lines(rng, data, kind):
+    ls = _lines(data)
+    a = rng.randrange(len(ls))
+    b = min(len(ls), a + rng.choice([1, 2, 5, 20]))
+    times = rng.choice([1, 2, 50])
+    return b"\n".join(ls[:b] + ls[a:b] * times + ls[b:]), f"lines {a}..{b} repeated {times}"
+
+
+def m_swap_lines(rng, data, kind):
+    ls = _lines(data)
+    if len(ls) < 2:
+        return data, "swap (one line)"
+    a, b = rng.randrange(len(ls)), rng.randrange(len(ls))
+    ls[a], ls[b] = ls[b], ls[a]
+    return b"\n".join(ls), f"lines {a} and {b} swapped"
+
+
+def m_drop_line(rng, data, kind):
+    ls = _lines(data)
+    a = rng.randrange(len(ls))
+    return b"\n".join(ls[:a] + ls[a + 1:]), f"line {a} dropped"
+
+
+def m_word(rng, data, kind):
+    """An integer of 4 or 8 bytes written at an offset (length fields)."""
+    if len(data) < 8:
+        return m_flip(rng, data, kind)
+    size = rng.choice([4, 8])
+    i = rng.randrange(len(data) - size + 1)
+    if rng.random() < 0.7:
+        i -= i % 4
+    v = rng.choice(INTERESTING_64 if size == 8 else INTERESTING_32 + [len(data), len(data) - i])
+    v &= (1 << (8 * size)) - 1
+    return data[:i] + v.to_bytes(size, "little") + data[i + size:], f"u{size * 8} {v:#x} at {i}"
+
+
+TEXT_MUTATORS = [m_flip, m_truncate, m_delete, m_insert_token, m_number, m_number, m_number,
+                 m_long_line, m_nesting, m_duplicate_lines, m_swap_lines, m_drop_line]
+BINARY_MUTATORS = [m_flip, m_flip, m_truncate, m_delete, m_insert_token, m_word, m_word, m_word]
+
+
+def mcap_records(data):
+    """(offset, opcode, length) of the top-level MCAP records."""
+    out = []
+    i = 8
+    while i + 9 <= len(data):
+        op = data[i]
+        n = int.from_bytes(data[i + 1:i + 9], "little")
+        out.append((i, op, n))
+        if n > len(data):
+            break
+        i += 9 + n
+    return out
+
+
+def m_mcap_length(rng, data, kind):
+    """A wrong record length, or a wrong length inside a record's content."""
+    recs = mcap_records(data)
+    if not recs:
+        return m_word(rng, data, kind)
+    off, op, n = rng.choice(recs)
+    if rng.random() < 0.5:
+        v = rng.choice([0, 1, n - 1, n + 1, n * 2, len(data), 0x7FFFFFFFFFFFFFFF,
+                        0xFFFFFFFFFFFFFFFF, 1 << 40]) & 0xFFFFFFFFFFFFFFFF
+        return (data[:off + 1] + v.to_bytes(8, "little") + data[off + 9:],
+                f"record op {op:#x} at {off}: length {n} -> {v:#x}")
+    # a field of the content: every 4-byte position of the first 64 bytes
+    start = off + 9
+    if n < 4:
+        return m_word(rng, data, kind)
+    j = start + rng.randrange(min(n, 64) - 3)
+    v = rng.choice(INTERESTING_32 + [n, n - (j - start)]) & 0xFFFFFFFF
+    return (data[:j] + v.to_bytes(4, "little") + data[j + 4:],
+            f"record op {op:#x} at {off}: u32 {v:#x} at {j}")
+
+
+# ---------------------------------------------------------------- readers
+
+class Reader:
+    """name: how a case is made and run. argv holds {input} (the mutated
+    file) and {dir} (the case's folder); `where` is the pattern an error must
+    contain; `unlocated_ok` matches outputs that concern no place in the
+    file (the input was read)."""
+
+    def __init__(self, name, seeds, argv, kind, where, mutators, timeout=10.0,
+                 unlocated_ok=None, prepare=None, name_of=None, must_refuse=None):
+        self.name, self.seeds, self.argv, self.kind = name, seeds, argv, kind
+        self.where, self.mutators, self.timeout = where, mutators, timeout
+        self.unlocated_ok = unlocated_ok
+        self.prepare = prepare or (lambda seed, folder: None)
+        self.name_of = name_of or (lambda seed: "input" + seed.suffix)
+        self.must_refuse = must_refuse or (lambda seed_data, data, how: False)
+
+
+def located_in(file_name):
+    return re.compile(re.escape(file_name) + r"(:\d+)+")
+
+
+def xml_must_refuse(seed, data, how):
+    # Cut before the root's end tag: not well-formed.
+    if not how.startswith("truncated"):
+        return False
+    end = seed.rstrip().rsplit(b"</", 1)
+    return len(end) == 2 and b"</" + end[1] not in data
+
+
+def mcap_must_refuse(seed, data, how):
+    return how.startswith("truncated") and not data.endswith(b"\x89MCAP0\r\n")
+
+
+def make_mcap_seeds(folder):
+    """Four rosbag2-profile MCAP files written by the `mcap` package:
+    uncompressed chunks with and without CRCs, lz4 chunks, no chunks."""
+    from mcap.writer import Writer, CompressionType
+    seeds = []
+    schema_text = b"string data\n"
+    scan_text = (b"std_msgs/Header header\nfloat32 angle_min\nfloat32 angle_max\n"
+                 b"float32 angle_increment\nfloat32 time_increment\nfloat32 scan_time\n"
+                 b"float32 range_min\nfloat32 range_max\nfloat32[] ranges\n"
+                 b"float32[] intensities\n"
+                 b"================================================================================\n"
+                 b"MSG: std_msgs/Header\nbuiltin_interfaces/Time stamp\nstring frame_id\n"
+                 b"================================================================================\n"
+                 b"MSG: builtin_interfaces/Time\nint32 sec\nuint32 nanosec\n")
+    # Without CRCs (as the format allows: 0 = not computed), a flipped byte
+    # reaches the record readers instead of the CRC check.
+    for label, comp, chunked, crcs in (("plain", CompressionType.NONE, True, True),
+                                       ("nocrc", CompressionType.NONE, True, False),
+                                       ("lz4", CompressionType.LZ4, True, False),
+                                       ("flat", CompressionType.NONE, False, False)):
+        path = folder / f"seed-{label}.mcap"
+        with open(path, "wb") as f:
+            w = Writer(f, compression=comp, use_chunking=chunked, chunk_size=300,
+                       use_summary_offsets=chunked, enable_crcs=crcs)
+            w.start(profile="ros2", library="fuzz")
+            s1 = w.register_schema("std_msgs/msg/String", "ros2msg", schema_text)
+            s2 = w.register_schema("sensor_msgs/msg/LaserScan", "ros2msg", scan_text)
+            c1 = w.register_channel("/chatter", "cdr", s1, {"offered_qos_profiles": ""})
+            c2 = w.register_channel("/scan", "cdr", s2)
+            for i in range(6):
+                text = f"hello {i}".encode()
+                payload = (b"\x00\x01\x00\x00" + (len(text) + 1).to_bytes(4, "little")
+                           + text + b"\x00")
+                w.add_message(c1, log_time=1_000_000_000 + i * 10_000_000, data=payload,
+                              publish_time=1_000_000_000 + i * 10_000_000, sequence=i)
+                scan = (b"\x00\x01\x00\x00" + i.to_bytes(4, "little") + b"\x00" * 4
+                        + (2).to_bytes(4, "little") + b"l\x00\x00\x00" + b"\x00" * 28
+                        + (2).to_bytes(4, "little") + b"\x00\x00\x80\x3f" * 2
+                        + (0).to_bytes(4, "little"))
+                w.add_message(c2, log_time=1_000_000_000 + i * 10_000_000 + 1, data=scan,
+                              publish_time=1_000_000_000 + i * 10_000_000 + 1, sequence=i)
+            w.finish()
+        seeds.append(path)
+    return seeds
+
+
+def definition_seeds():
+    root = SHARE / "ros2_interfaces"
+    picks = ["std_msgs/msg/Header.msg", "sensor_msgs/msg/LaserScan.msg",
+             "geometry_msgs/msg/PoseWithCovariance.msg", "example_interfaces/srv/AddTwoInts.srv",
+             "example_interfaces/action/Fibonacci.action", "rcl_interfaces/msg/ParameterDescriptor.msg",
+             "std_msgs/msg/MultiArrayLayout.msg", "lifecycle_msgs/msg/State.msg",
+             "nav_msgs/srv/GetPlan.srv", "action_msgs/msg/GoalStatus.msg"]
+    return [root / p for p in picks if (root / p).is_file()]
+
+
+def params_seeds(folder):
+    texts = {
+        "plain.yaml": "/**:\n  ros__parameters:\n    speed: 1.5\n    name: \"robot\"\n"
+                      "    count: 3\n    enabled: true\n    ratios: [0.5, 1.0, 2.5]\n"
+                      "    names: ['a', 'b']\n    flags: [true, false]\n"
+                      "    nested:\n      depth: 4\n      label: x\n",
+        "node.yaml": "fuzz_nobody:\n  ros__parameters:\n    use_sim_time: false\n"
+                     "    qos_overrides:\n      /chatter:\n        publisher:\n"
+                     "          depth: 10\n          reliability: reliable\n"
+                     "    bytes: [1, 2, 3]\n    text: |\n      two\n      lines\n",
+        "flow.yaml": "{/**: {ros__parameters: {a: 1, b: [1, 2], c: {d: 'q', e: -0.5e3}}}}\n",
+    }
+    out = []
+    for name, text in texts.items():
+        (folder / name).write_text(text)
+        out.append(folder / name)
+    return out
+
+
+def world_prepare(seed, folder):
+    for f in ("arena.pgm",):
+        shutil.copy(SHARE / "worlds" / f, folder / f)
+
+
+def pgm_prepare(seed, folder):
+    (folder / "world.yaml").write_text(
+        "image: input.pgm\nresolution: 0.05\norigin: [-0.70, -0.70, 0.0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+
+
+def small_pgm(folder):
+    # A 40 x 30 P5 map (the bundled ones are 180 KB: most flips land in pixels).
+    body = bytes((0 if (x in (0, 39) or y in (0, 29)) else 254) for y in range(30) for x in range(40))
+    p5 = folder / "small.pgm"
+    p5.write_bytes(b"P5\n# fuzz seed\n40 30\n255\n" + body)
+    p2 = folder / "small-ascii.pgm"
+    p2.write_text("P2\n40 30\n255\n" + "\n".join(" ".join(str(b) for b in body[y * 40:(y + 1) * 40])
+                                                  for y in range(30)) + "\n")
+    return [p5, p2]
+
+
+def trajectories_seed(folder):
+    p = folder / "trajectories.csv"
+    p.write_text("robot,x,y\n" + "".join(f"{1 + i % 3},{1 + i * 0.25:.2f},{2 + (i % 7) * 0.5:.2f}\n"
+                                          for i in range(30)))
+    return p
+
+
+def definition_prepare(seed, folder):
+    kind = seed.parent.name
+    d = folder / "defs" / "fuzz_pkg" / kind
+    d.mkdir(parents=True)
+
+
+def build_readers(seed_folder):
+    xml_where = None  # filled per case by the input's name
+    readers = [
+        Reader("config", sorted((SHARE / "config").glob("*.xml"))
+               + sorted((SHARE / "config" / "parts").glob("*.xml")),
+               ["sancta", "check", "{input}"], "xml", None, TEXT_MUTATORS,
+               must_refuse=xml_must_refuse,
+               # A configuration naming another file (an include, a mission, a
+               # world) may fail on that file: the message names it.
+               unlocated_ok=re.compile(r"cannot be opened|no such file|not found|does not exist",
+                                       re.I)),
+        Reader("mission", [SHARE / "missions" / n for n in ("example.xml", "plans.xml")],
+               ["sancta", "plan", "{input}", "--time", "0.05"], "xml", None, TEXT_MUTATORS,
+               must_refuse=xml_must_refuse),
+        Reader("team", [SHARE / "missions" / "office-team.xml"],
+               ["sancta", "team", "{input}", "--check"], "xml", None, TEXT_MUTATORS,
+               must_refuse=xml_must_refuse,
+               unlocated_ok=re.compile(r"cannot be opened|not reachable|outside the world")),
+        Reader("tsp", [SHARE / "tsplib" / n for n in ("berlin52.tsp", "eil51.tsp", "br17.atsp",
+                                                        "ftv33.atsp")],
+               ["sancta", "plan", "{input}", "--time", "0.05"], "tsp", None, TEXT_MUTATORS,
+               unlocated_ok=re.compile(r"too few tasks")),
+        Reader("world", [SHARE / "worlds" / "arena.yaml"],
+               ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "yaml", None, TEXT_MUTATORS,
+               prepare=world_prepare,
+               # A whole-file verdict: the world's extent at the picture's scale.
+               unlocated_ok=re.compile(r": the world is \d+ x \d+ cells")),
+        Reader("walls", sorted((SHARE / "worlds").glob("*.walls")),
+               ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS),
+        Reader("trajectories", [trajectories_seed(seed_folder)],
+               ["sancta-render", str(SHARE / "worlds" / "arena.walls"), "--trajectories",
+                "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS),
+        Reader("pgm", small_pgm(seed_folder),
+               ["sancta-render", "{dir}/world.yaml", "--svg", "{dir}/w.svg"], "binary", None,
+               BINARY_MUTATORS + [m_number, m_long_line], prepare=pgm_prepare,
+               name_of=lambda seed: "input.pgm"),
+        Reader("definition", definition_seeds(),
+               ["rosidl_generate", "-o", "{dir}/out", "{dir}/defs"], "msg", None, TEXT_MUTATORS,
+               prepare=definition_prepare,
+               name_of=lambda seed: f"defs/fuzz_pkg/{seed.parent.name}/{seed.name}",
+               unlocated_ok=re.compile(r"unknown (type|package)|cannot find|not found", re.I)),
+        Reader("params", params_seeds(seed_folder),
+               ["rclada", "param", "load", "/fuzz_nobody", "{input}", "--timeout", "0.01"],
+               "yaml", None, TEXT_MUTATORS, timeout=15.0,
+               # Read and understood: it then waits for a node that is not there.
+               unlocated_ok=re.compile(r"service after|not available|set_parameters|has no parameters for")),
+        Reader("mcap", make_mcap_seeds(seed_folder),
+               ["rclada", "bag", "info", "{input}"], "binary", None,
+               BINARY_MUTATORS + [m_mcap_length] * 4, must_refuse=mcap_must_refuse),
+        Reader("mcap-recover", make_mcap_seeds(seed_folder),
+               ["rclada", "bag", "info", "{input}", "--recover"], "binary", None,
+               BINARY_MUTATORS + [m_mcap_length] * 4),
+        Reader("mcap-play", make_mcap_seeds(seed_folder),
+               ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
+               None, BINARY_MUTATORS + [m_mcap_length] * 4, timeout=20.0,
+               must_refuse=mcap_must_refuse),
+    ]
+    del xml_where
+    return readers
+
+
+def env():
+    e = dict(os.environ)
+    e["CYCLONEDDS_URI"] = "file://" + str(SHARE / "cyclonedds-localhost.xml")
+    e["ROS_LOCALHOST_ONLY"] = "1"
+    e.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 200 + 20))
+    e["SANCTA_ROOT"] = str(REPO)
+    e["RCLADA_ROOT"] = str(REPO)
+    return e
+
+
+def run(argv, timeout, stdin=None):
+    began = time.monotonic()
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         stdin=subprocess.PIPE if stdin is not None else subprocess.DEVNULL,
+                         env=env(), start_new_session=True)
+    try:
+        out, err = p.communicate(stdin, timeout=timeout)
+        hung = False
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        out, err = p.communicate()
+        hung = True
+    text = (out + err).decode("utf-8", "replace")
+    return p.returncode, text, hung, time.monotonic() - began
+
+
+def judge(reader, rc, text, hung, data, seed_data, how, file_name):
+    if hung:
+        return "hang"
+    if rc < 0:
+        return f"signal {-rc}"
+    if TRACE.search(text):
+        return "exception"
+    if rc == 0:
+        if reader.must_refuse(seed_data, data, how):
+            return "accepted"
+        return None
+    base = pathlib.PurePath(file_name).name
+    if reader.kind == "binary" and reader.name.startswith("mcap"):
+        if re.search(r": byte \d+", text):
+            return None
+    elif re.search(re.escape(base) + r":\d+", text):
+        return None
+    if reader.unlocated_ok is not None and reader.unlocated_ok.search(text):
+        return None
+    if reader.name == "pgm" and re.search(r"input\.pgm(:\d+|: byte \d+)", text):
+        return None
+    return "no location"
+
+
+VERBOSE = False
+
+
+def fuzz_reader(reader, rng, cases, keep, log):
+    counts = {}
+    findings = []
+    seeds = [(s, s.read_bytes()) for s in reader.seeds]
+    for n in range(cases):
+        seed, seed_data = seeds[n % len(seeds)]
+        data = seed_data
+        hows = []
+        for _ in range(rng.choice([1, 1, 1, 2, 3])):
+            mut = rng.choice(reader.mutators)
+            data, how = mut(rng, data, reader.kind)
+            hows.append(how)
+        how = "; ".join(hows)
+        with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
+            folder = pathlib.Path(tmp)
+            reader.prepare(seed, folder)
+            file_name = reader.name_of(seed)
+            (folder / file_name).parent.mkdir(parents=True, exist_ok=True)
+            (folder / file_name).write_bytes(data)
+            argv = [a.replace("{input}", str(folder / file_name)).replace("{dir}", str(folder))
+                    for a in reader.argv]
+            argv[0] = str(BIN / argv[0])
+            rc, text, hung, took = run(argv, reader.timeout)
+            verdict = judge(reader, rc, text, hung, data, seed_data if len(hows) == 1 else b"",
+                            how, file_name)
+            counts[verdict or "ok"] = counts.get(verdict or "ok", 0) + 1
+            if VERBOSE:
+                log.write(f"{reader.name} #{n} exit {rc} {verdict or 'ok'}: {how[:100]}\n   "
+                          + (text.strip().splitlines() or [""])[-1][:200] + "\n")
+            if verdict:
+                findings.append((verdict, seed.name, how, text.strip().splitlines()[-3:]))
+                log.write(f"{reader.name} #{n} {verdict}: seed {seed.name}; {how}\n"
+                          f"   {' | '.join(text.strip().splitlines()[-3:])[:400]}\n")
+                log.flush()
+                if keep:
+                    d = keep / reader.name / f"{n:05d}-{verdict.replace(' ', '_')}"
+                    d.mkdir(parents=True, exist_ok=True)
+                    shutil.copytree(folder, d, dirs_exist_ok=True)
+                    (d / "CASE.txt").write_text(f"seed {seed}\nmutation {how}\nargv {argv}\n"
+                                                f"exit {rc} hung {hung}\n--- output\n{text}")
+    return counts, findings
+
+
+def fuzz_cdr(rng, cases, keep, log):
+    """CDR payloads of every bundled type (cdr_tool random), mutated and
+    decoded by the dynamic decoder in batches (cdr_tool reencode): a line
+    must re-encode or say ERROR (Decode_Error); INTERNAL, a crash or a hang
+    is a finding."""
+    tool = str(BIN / "cdr_tool")
+    seeds = []
+    for s in (1, 2):
+        out = subprocess.run([tool, "random", str(s)], capture_output=True, text=True,
+                             check=True).stdout
+        seeds += [(line.split(" ")[0], bytes.fromhex(line.split(" ")[1]))
+                  for line in out.splitlines()]
+    counts = {}
+    findings = []
+    batch = []
+
+    def flush():
+        lines = "".join(f"{name} {data.hex()}\n" for name, data, _ in batch).encode()
+        rc, text, hung, _ = run([tool, "reencode"], 120, stdin=lines)
+        outs = text.splitlines()
+        if rc != 0 or hung or len(outs) != len(batch):
+            # Find the culprit(s) one at a time.
+            for name, data, how in batch:
+                rc1, t1, h1, _ = run([tool, "reencode"], 10,
+                                     stdin=f"{name} {data.hex()}\n".encode())
+                v = "hang" if h1 else (f"signal {-rc1}" if rc1 < 0 else
+                                       ("exception" if rc1 != 0 or TRACE.search(t1) else None))
+                record(v, name, data, how, t1)
+        else:
+            for (name, data, how), line in zip(batch, outs):
+                record("exception" if TRACE.search(line) else None, name, data, how, line)
+        batch.clear()
+
+    def record(v, name, data, how, text):
+        counts[v or "ok"] = counts.get(v or "ok", 0) + 1
+        if v:
+            findings.append((v, name, how, [text.strip()[:300]]))
+            log.write(f"cdr {v}: {name} {data.hex()} ({how})\n   {text.strip()[:300]}\n")
+            log.flush()
+            if keep:
+                d = keep / "cdr"
+                d.mkdir(parents=True, exist_ok=True)
+                with open(d / "findings.txt", "a") as f:
+                    f.write(f"{name} {data.hex()}\n# {how}: {text.strip()[:300]}\n")
+
+    for n in range(cases):
+        name, seed_data = seeds[rng.randrange(len(seeds))]
+        data = seed_data
+        hows = []
+        for _ in range(rng.choice([1, 1, 2, 3])):
+            mut = rng.choice([m_flip, m_truncate, m_word, m_word, m_word, m_delete])
+            body, how = mut(rng, data[4:], "binary")
+            data = data[:4] + body
+            hows.append(how)
+        batch.append((name, data, "; ".join(hows)))
+        if len(batch) == 500:
+            flush()
+    if batch:
+        flush()
+    return counts, findings
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--cases", type=int, default=200, help="cases per reader")
+    ap.add_argument("--readers", default="all")
+    ap.add_argument("--keep", type=pathlib.Path, default=None)
+    ap.add_argument("--log", type=pathlib.Path, default=None)
+    ap.add_argument("--verbose", action="store_true", help="log every case")
+    args = ap.parse_args()
+    global VERBOSE
+    VERBOSE = args.verbose
+    rng_master = random.Random(args.seed)
+    with tempfile.TemporaryDirectory(prefix="fuzz-seeds-") as seeds_tmp:
+        readers = build_readers(pathlib.Path(seeds_tmp))
+        wanted = None if args.readers == "all" else set(args.readers.split(","))
+        log = open(args.log, "a") if args.log else sys.stderr
+        table = []
+        total_findings = 0
+        for reader in readers + [None]:
+            name = "cdr" if reader is None else reader.name
+            # Each reader its own generator: a reader's cases do not depend on
+            # which other readers ran.
+            rng = random.Random(f"{args.seed}/{name}")
+            if wanted is not None and name not in wanted:
+                continue
+            began = time.monotonic()
+            if reader is None:
+                counts, findings = fuzz_cdr(rng, args.cases, args.keep, log)
+            else:
+                counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
+            total_findings += len(findings)
+            table.append((name, sum(counts.values()), counts, time.monotonic() - began))
+        del rng_master
+        print(f"{'reader':12} {'cases':>6} {'time s':>7}  verdicts")
+        for name, n, counts, took in table:
+            print(f"{name:12} {n:6d} {took:7.1f}  "
+                  + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
+    return 1 if total_findings else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
