@@ -372,7 +372,8 @@ def build_readers(seed_folder):
                # A whole-file verdict: the world's extent at the picture's scale.
                unlocated_ok=re.compile(r": the world is \d+ x \d+ cells")),
         Reader("walls", sorted((SHARE / "worlds").glob("*.walls")),
-               ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS),
+               ["sancta-render", "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS,
+               unlocated_ok=re.compile(r": the world is \d+ x \d+ cells")),
         Reader("trajectories", [trajectories_seed(seed_folder)],
                ["sancta-render", str(SHARE / "worlds" / "arena.walls"), "--trajectories",
                 "{input}", "--svg", "{dir}/w.svg"], "tsp", None, TEXT_MUTATORS),
@@ -504,8 +505,8 @@ def fuzz_reader(reader, rng, cases, keep, log):
 def fuzz_cdr(rng, cases, keep, log):
     """CDR payloads of every bundled type (cdr_tool random), mutated and
     decoded by the dynamic decoder in batches (cdr_tool reencode): a line
-    must re-encode or say ERROR (Decode_Error); INTERNAL, a crash or a hang
-    is a finding."""
+    must re-encode or say ERROR (Decode_Error) with a byte offset; INTERNAL,
+    a crash or a hang is a finding."""
     tool = str(BIN / "cdr_tool")
     seeds = []
     for s in (1, 2):
@@ -531,7 +532,10 @@ def fuzz_cdr(rng, cases, keep, log):
                 record(v, name, data, how, t1)
         else:
             for (name, data, how), line in zip(batch, outs):
-                record("exception" if TRACE.search(line) else None, name, data, how, line)
+                # A refusal names the field and the byte offset.
+                record("exception" if TRACE.search(line) else
+                       ("no location" if " ERROR " in line and " byte" not in line else None),
+                       name, data, how, line)
         batch.clear()
 
     def record(v, name, data, how, text):
