@@ -247,15 +247,29 @@ procedure Bag_Command (Args : Arguments) is
               (if Receive_Time > Bag_Start then Long_Float (Receive_Time - Bag_Start) / 1.0e9
                else 0.0);
             Due    : constant Time := Wall_Start + To_Time_Span (Duration (Offset / Rate));
+
+            procedure Wait_Until (T : Time) is
+            --  In slices, so that a signal (shutdown) stops a long wait: a bag
+            --  whose log times jump far ahead would otherwise wait for years.
+            begin
+               while Clock < T and then not RCL.Contexts.Is_Shutdown loop
+                  declare
+                     Slice_End : constant Time := Clock + Milliseconds (100);
+                  begin
+                     delay until (if T < Slice_End then T else Slice_End);
+                  end;
+               end loop;
+            end Wait_Until;
          begin
             loop
                exit when RCL.Contexts.Is_Shutdown;
                if Clock_Pub /= null and then Next_Clock <= Due then
-                  delay until Next_Clock;
+                  Wait_Until (Next_Clock);
+                  exit when RCL.Contexts.Is_Shutdown;
                   Publish_Clock (Bag_Time_At (Next_Clock));
                   Next_Clock := Next_Clock + Clock_Period;
                else
-                  delay until Due;
+                  Wait_Until (Due);
                   exit;
                end if;
             end loop;

@@ -199,6 +199,29 @@ def test_play_foreign_bag_to_python_peer(foreign_bag):
     assert all(1_700_000_000 <= t.clock.sec <= 1_700_000_001 for t in ticks), ticks[:3]
 
 
+def test_play_stops_on_sigterm_during_a_far_time_jump(tmp_path):
+    """A bag whose log times jump centuries ahead (found by scripts/fuzz_inputs.py:
+    a mutated log time) must not make play deaf to signals while it waits."""
+    out = tmp_path / "jump"
+    String = TYPESTORE.types["std_msgs/msg/String"]
+    start = 1_700_000_000_000_000_000
+    with BagWriter(out, version=8, storage_plugin=StoragePlugin.MCAP) as w:
+        c = w.add_connection("/jump_chatter", String.__msgtype__, typestore=TYPESTORE)
+        w.write(c, start, TYPESTORE.serialize_cdr(String(data="first"), String.__msgtype__))
+        w.write(c, 2**63 - 1, TYPESTORE.serialize_cdr(String(data="late"), String.__msgtype__))
+    dp = ps.participant()
+    strings = ps.reader(dp, "rt/jump_chatter", String_)
+    play = ps.start("rclada", "bag", "play", out, "--delay", "1.0")
+    got = ps.take_until(strings, 1, timeout=20)
+    assert [m.data for m in got] == ["first"], got
+    time.sleep(0.5)
+    play.terminate()
+    began = time.monotonic()
+    text = ps.finish(play, 5)
+    assert time.monotonic() - began < 3.0, text
+    assert "Played 1 messages" in text, text
+
+
 def test_truncated_and_corrupt_files(recorded, tmp_path):
     out, _ = recorded
     whole = sorted(out.glob("*.mcap"))[0].read_bytes()
