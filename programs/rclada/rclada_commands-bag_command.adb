@@ -246,7 +246,12 @@ procedure Bag_Command (Args : Arguments) is
             Offset : constant Long_Float :=
               (if Receive_Time > Bag_Start then Long_Float (Receive_Time - Bag_Start) / 1.0e9
                else 0.0);
-            Due    : constant Time := Wall_Start + To_Time_Span (Duration (Offset / Rate));
+            Longest_Wait : constant Long_Float := 1.0e9;
+            --  Seconds (about 31 years): a later message (a log time near 2**64,
+            --  or a long bag at --rate 1e-6) is due "never" (a signal ends the
+            --  wait) instead of overflowing Duration.
+            Due    : constant Time :=
+              Wall_Start + To_Time_Span (Duration (Long_Float'Min (Offset / Rate, Longest_Wait)));
 
             procedure Wait_Until (T : Time) is
             --  In slices, so that a signal (shutdown) stops a long wait: a bag

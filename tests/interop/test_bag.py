@@ -199,16 +199,18 @@ def test_play_foreign_bag_to_python_peer(foreign_bag):
     assert all(1_700_000_000 <= t.clock.sec <= 1_700_000_001 for t in ticks), ticks[:3]
 
 
-def test_play_stops_on_sigterm_during_a_far_time_jump(tmp_path):
+@pytest.mark.parametrize("late", [2**63 - 1, 2**64 - 1])
+def test_play_stops_on_sigterm_during_a_far_time_jump(tmp_path, late):
     """A bag whose log times jump centuries ahead (found by scripts/fuzz_inputs.py:
-    a mutated log time) must not make play deaf to signals while it waits."""
+    a mutated log time) must not make play deaf to signals while it waits, nor
+    overflow its wait (2**64 - 1 ns is beyond Ada's Duration)."""
     out = tmp_path / "jump"
     String = TYPESTORE.types["std_msgs/msg/String"]
     start = 1_700_000_000_000_000_000
     with BagWriter(out, version=8, storage_plugin=StoragePlugin.MCAP) as w:
         c = w.add_connection("/jump_chatter", String.__msgtype__, typestore=TYPESTORE)
         w.write(c, start, TYPESTORE.serialize_cdr(String(data="first"), String.__msgtype__))
-        w.write(c, 2**63 - 1, TYPESTORE.serialize_cdr(String(data="late"), String.__msgtype__))
+        w.write(c, late, TYPESTORE.serialize_cdr(String(data="late"), String.__msgtype__))
     dp = ps.participant()
     strings = ps.reader(dp, "rt/jump_chatter", String_)
     play = ps.start("rclada", "bag", "play", out, "--delay", "1.0")
