@@ -625,10 +625,7 @@ package body Sancta.Allocation.Annealers.Searches is
       if Opts.Schedule = Automatic then
          This.Automatic_Hybrid := Opts.Criterion.Sum_Weight = 0.0
            and then Opts.Criterion.Ave_Weight = 0.0 and then P.Robots > 1;
-         This.Opts.Schedule :=
-           (if Opts.Criterion.Sum_Weight = 0.0 and then Opts.Criterion.Ave_Weight = 0.0
-              and then P.Robots > 1
-            then Hybrid else Geometric);
+         This.Opts.Schedule := (if This.Automatic_Hybrid then Hybrid else Geometric);
       end if;
       This.Report := Report;
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
