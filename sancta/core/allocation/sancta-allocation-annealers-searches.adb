@@ -1,4 +1,5 @@
 with Ada.Numerics.Long_Elementary_Functions;
+with Ada.Environment_Variables; --  TEMP experiment
 with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Annealers.Construction; use Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Neighbourhoods;
@@ -7,6 +8,7 @@ use Sancta.Allocation.Annealers.Neighbourhoods;
 package body Sancta.Allocation.Annealers.Searches is
 
    use Ada.Numerics.Long_Elementary_Functions;
+   use type Chains.Workspace_Access;
    use Ada.Real_Time;
 
    --  The budget's clock (wall or CPU time, Options.Budget_Clock).
@@ -25,14 +27,17 @@ package body Sancta.Allocation.Annealers.Searches is
       Random_Move => 0.5, Move_Owner => 0.5, Guided_Move => 0.5,
       Log_Auction => 0.5, Swap_Any => 0.5, Switch_Or => 0.5,
       Segment_Move => 0.5, Random_Reverse => 0.5,
-      Switch_Subtree => 0.5, Ruin_Recreate => 0.0, Route_Search => 0.0];
-   --  Ruin_Recreate is not drawn: it runs on its share of evaluations;
-   --  Route_Search every Route_Search_Interval x tasks moves.
+      Switch_Subtree => 0.5, Ruin_Recreate => 0.0, Route_Search => 0.0,
+      Ejection_Chain => 0.0];
+   --  Ruin_Recreate and Ejection_Chain are not drawn: they run on their
+   --  shares of evaluations; Route_Search every Route_Search_Interval x
+   --  tasks moves.
 
    overriding procedure Finalize (This : in out Search) is
    begin
       Free (This.Tours);
       Free (This.Switch);
+      Chains.Free (This.Chain_Space);
    end Finalize;
 
    ---------------------------------------------------------------------------
@@ -330,8 +335,8 @@ package body Sancta.Allocation.Annealers.Searches is
                   Swap (S, T, U, Mv, Ok);
                end if;
             end;
-         when Ruin_Recreate | Route_Search =>
-            null;  --  Not single moves: see Ruin_And_Recreate, Search_Routes.
+         when Ruin_Recreate | Route_Search | Ejection_Chain =>
+            null;  --  Not single moves: see Ruin_And_Recreate, Search_Routes, Run_Chain.
          when Switch_Or =>
             if P.Alt_Count (T) > 1 then
                Propose_Switch_Or (This, P, T, Mv, Ok);
@@ -450,6 +455,46 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
       Check (This, P);
    end Ruin_And_Recreate;
+
+   function Chain_Due (This : Search) return Boolean is
+     (This.Chain_Space /= null and then This.Opts.Chain_Share > 0.0
+      and then Long_Float (This.Chain_Evaluations)
+               < This.Opts.Chain_Share * Long_Float (This.Moves));
+
+   --  One ejection chain from the current solution (Chains), kept if it
+   --  lowers the search objective.
+   procedure Run_Chain (This : in out Search; P : Problem) is
+      S : State renames This.Tours.all;
+      X : Kind_Stats renames This.Kinds (Ejection_Chain);
+      Improved : Boolean;
+   begin
+      X.Tries := X.Tries + 1;
+      This.Chain_Evaluations := This.Chain_Evaluations + 1;
+      if not This.Best_Saved then
+         Save_Best (This);
+      end if;
+      Chains.Ejection_Chain (P, S, This.Guide, This.Chain_Space.all, This.Opts.Check,
+                             Improved, This.Chain_Evaluations);
+      if not Improved then
+         return;
+      end if;
+      X.Legal := X.Legal + 1;
+      X.Accepted := X.Accepted + 1;
+      X.Improving := X.Improving + 1;
+      This.Accepted := This.Accepted + 1;
+      Restart_From_Current (This, P);
+      if This.Current < This.Cycle_Best then
+         This.Cycle_Best := This.Current;
+         This.Since_Improve := 0;
+      end if;
+      declare
+         Goal_Value : constant Long_Float := Current_Value (P, S, This.Goal);
+      begin
+         if Goal_Value < This.Best_Value - 1.0E-9 then
+            Note_New_Best (This, Ejection_Chain, Goal_Value);
+         end if;
+      end;
+   end Run_Chain;
 
    --  The current routes shortened by a descent of the route search
    --  (Local_Search.Polish_Routes: 2-opt, Or-opt, LK chains, no kicks):
@@ -621,6 +666,10 @@ package body Sancta.Allocation.Annealers.Searches is
            & " is not in 0 .. 1";
       end if;
       This.Opts := Opts;
+      if Ada.Environment_Variables.Exists ("SANCTA_CHAIN_SHARE") then --  TEMP
+         This.Opts.Chain_Share :=
+           Long_Float'Value (Ada.Environment_Variables.Value ("SANCTA_CHAIN_SHARE"));
+      end if;
       This.Automatic_Hybrid := False;
       if Opts.Schedule = Automatic then
          This.Automatic_Hybrid := Opts.Criterion.Sum_Weight = 0.0
@@ -645,6 +694,11 @@ package body Sancta.Allocation.Annealers.Searches is
       Choose_Move_Kinds (This, P);
       This.Route_Searches := Opts.Polish and then Opts.Criterion.Ave_Weight = 0.0
         and then Opts.Enabled (Route_Search);
+      if Opts.Criterion.Max_Weight > 0.0 and then P.Robots > 1
+        and then Opts.Enabled (Ejection_Chain)
+      then
+         This.Chain_Space := Chains.New_Workspace (P);
+      end if;
       This.Next_Route_Search := Route_Search_Interval * Long_Long_Integer (P.Tasks);
       if Opts.Initial then
          declare
@@ -884,6 +938,8 @@ package body Sancta.Allocation.Annealers.Searches is
          elsif Ruin_Due (This) then
             Ruin_And_Recreate (This, P);
             --  A target reached here stops at the next checkpoint.
+         elsif Chain_Due (This) then
+            Run_Chain (This, P);
          else
             Try_Move (This, P);
             exit when This.Stop;
@@ -941,6 +997,26 @@ package body Sancta.Allocation.Annealers.Searches is
       end loop;
    end Polish;
 
+   --  Makespan criteria: ejection chains until none lowers the objective
+   --  (or the time is up), then the neighbour moves' descent again.
+   procedure Chain_Descent (This : in out Search; P : Problem) is
+      Improved : Boolean := True;
+      Any : Boolean := False;
+      Unused : Long_Long_Integer := 0;
+   begin
+      while Improved loop
+         exit when This.Opts.Time_Limit > 0.0
+           and then To_Duration (Now (This) - This.Started) > This.Opts.Time_Limit * 1.02;
+         Chains.Ejection_Chain (P, This.Tours.all, This.Guide, This.Chain_Space.all,
+                                This.Opts.Check, Improved, Unused);
+         Any := Any or else Improved;
+      end loop;
+      if Any then
+         Restart_From_Current (This, P);
+         Polish (This, P);
+      end if;
+   end Chain_Descent;
+
    procedure Finish
      (This : in out Search; P : Problem; Best : in out Assignment; Stats : out Progress) is
    begin
@@ -952,6 +1028,11 @@ package body Sancta.Allocation.Annealers.Searches is
          Load (P, This.Tours.all, This.Best);
          Restart_From_Current (This, P);
          Polish (This, P);
+         if This.Chain_Space /= null
+           and then not Ada.Environment_Variables.Exists ("SANCTA_NO_FINAL_CHAIN")
+         then
+            Chain_Descent (This, P);
+         end if;
          This.Polish_Gain := Long_Float'Max (0.0, This.Best_Value - This.Current);
          if This.Current < This.Best_Value then
             This.Best_Value := This.Current;

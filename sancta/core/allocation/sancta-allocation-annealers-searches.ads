@@ -11,6 +11,7 @@
 with Ada.Finalization;
 with Ada.Real_Time;
 with Sancta.Allocation.Random;
+with Sancta.Allocation.Annealers.Chains;
 with Sancta.Allocation.Annealers.Moves;      use Sancta.Allocation.Annealers.Moves;
 with Sancta.Allocation.Annealers.Plan_Trees; use Sancta.Allocation.Annealers.Plan_Trees;
 with Sancta.Allocation.Annealers.Tours;      use Sancta.Allocation.Annealers.Tours;
@@ -52,6 +53,10 @@ private package Sancta.Allocation.Annealers.Searches is
       Moves, Accepted, Last_Best_Move, Switches : Long_Long_Integer := 0;
       Ruin_Evaluations : Long_Long_Integer := 0;
       --  Move evaluations spent in ruin and recreate (best insertions).
+      Chain_Space     : Chains.Workspace_Access;
+      Chain_Evaluations : Long_Long_Integer := 0;
+      --  Ejection chains (makespan criteria; null otherwise): their undo
+      --  record and the move evaluations spent in them.
       Start_Temperature, End_Temperature, Temperature : Long_Float := 0.0;
       Reheat_Temperature : Long_Float := 0.0;
       Since_Improve   : Long_Long_Integer := 0;

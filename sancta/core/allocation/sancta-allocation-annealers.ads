@@ -68,12 +68,16 @@ package Sancta.Allocation.Annealers is
    type Move_Kind is
      (Or_Opt_Near, Two_Opt_Near, Or3_Near, Cross_Near, Random_Move, Move_Owner,
       Guided_Move, Log_Auction, Swap_Any, Switch_Or, Segment_Move, Random_Reverse,
-      Switch_Subtree, Ruin_Recreate, Route_Search);
+      Switch_Subtree, Ruin_Recreate, Route_Search, Ejection_Chain);
    --  The annealer's neighbourhoods (see the package comment). Route_Search
    --  is not drawn: every Route_Search_Interval x tasks moves, the current
    --  routes get a descent of the route search (2-opt, Or-opt, LK chains;
    --  criteria without the mean completion time), so that the anneal goes
-   --  on from shorter routes.
+   --  on from shorter routes. Ejection_Chain is not drawn either: makespan
+   --  criteria spend Chain_Share of the work in ejection chains (the
+   --  longest tour gives a segment to a neighbouring tour, which gives one
+   --  on, until a tour with slack takes it; kept only if the objective
+   --  falls), and the final descent ends with them.
 
    type Kind_Flags is array (Move_Kind) of Boolean;
 
@@ -140,6 +144,9 @@ package Sancta.Allocation.Annealers is
       --  Share of the move evaluations spent in ruin and recreate moves
       --  (a task and some of its neighbours taken out and put back at their
       --  best places); 0 = none.
+      Chain_Share  : Long_Float := 0.1;
+      --  Makespan criteria: share of the move evaluations spent in
+      --  ejection chains (see Move_Kind); 0 = none.
       Local_Search : Long_Float := 0.0;
       --  The share of Time_Limit given, after the anneal, to iterated 2-opt /
       --  Or-opt / LK search with candidate lists and don't-look bits: on the

@@ -537,6 +537,63 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Each_Move_Kind_Checked;
 
+   --  Ejection chains (makespan criteria) under the expensive check after
+   --  every applied and every undone step, in a random walk (so that the
+   --  tours stay unbalanced) and in the final descent, on random problems
+   --  of every variant: they run, many lower the objective, the result is
+   --  valid and the same for a seed; none run for the total alone or when
+   --  disabled.
+   procedure Ejection_Chains_Checked (Unused : in out Fixture) is
+      use Annealers;
+      Variants : constant array (1 .. 7) of Variant :=
+        [Variant'(others => <>),
+         (Asymmetric => True, Closed => False, others => <>),
+         (Frozen => Robots_1_And_2, Min_Tasks => 2, Infeasible => True, others => <>),
+         (End_Depot => True, Heterogeneous => True, Alternatives => True, others => <>),
+         (Own_Factor => True, Own_Matrix => True, Own_Callback => True,
+          Infinite_Arcs => True, others => <>),
+         (Plan_Trees => True, others => <>),
+         (Closed => False, Asymmetric => True, Heterogeneous => True, Infeasible => True,
+          Alternatives => True, Frozen => Robots_1_And_2, Min_Tasks => 1, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 4_000;
+      Improving : Long_Long_Integer := 0;
+   begin
+      for V of Variants loop
+         for C of Criterion_Array'[Min_Max, Min_Mix, Min_Sum] loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Random_Problem (40, 5, V, Seed);
+               A, B : Assignment (P.Robots, P.Tasks);
+               S : Progress;
+               O : Options :=
+                 (Criterion => C, Seed => Seed, Time_Limit => 0.0, Iterations => 20_000,
+                  Check => True, Start_Temperature => 1.0E15, End_Temperature => 1.0E14,
+                  Adaptive => False, Ruin_Share => 0.0, Chain_Share => 0.9,
+                  Enabled => [Random_Move | Ejection_Chain => True, others => False],
+                  others => <>);
+               Tries : Long_Long_Integer;
+            begin
+               Solve (P.all, O, A, S);
+               Assert (Validate (P.all, A) = "", Validate (P.all, A));
+               Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+               Tries := S.Kinds (Ejection_Chain).Tries;
+               if C.Max_Weight = 0.0 then
+                  Assert (Tries = 0, "chains for the total alone:" & Tries'Image);
+               else
+                  Assert (Tries > 3, "chains tried only" & Tries'Image & " times");
+                  Improving := Improving + S.Kinds (Ejection_Chain).Improving;
+               end if;
+               Solve (P.all, O, B, S);
+               Assert (A = B, "two runs with the same seed differ");
+               O.Enabled (Ejection_Chain) := False;
+               Solve (P.all, O, B, S);
+               Assert (S.Kinds (Ejection_Chain).Tries = 0, "chains ran while disabled");
+            end;
+         end loop;
+      end loop;
+      Assert (Improving > 30, "only" & Improving'Image & " chains lowered the objective");
+   end Ejection_Chains_Checked;
+
    --  Computed Euclidean distances (no matrix) equal the matrix ones on
    --  every bundled TSPLIB file (EUC_2D, ATSP / explicit keep a matrix), on
    --  scaled and floored random points, with robot factors and own costs,
@@ -708,6 +765,7 @@ package body Sancta.Allocation.Tests is
       Add ("robots ending at their own depots", End_Depots'Access);
       Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
       Add ("each move kind alone, checked after every move", Each_Move_Kind_Checked'Access);
+      Add ("ejection chains, checked after every step", Ejection_Chains_Checked'Access);
       return Result;
    end Suite;
 
