@@ -5,12 +5,11 @@ with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with RCL.Bags;
 with RCL.MCAP.Readers;
 with RCL.MCAP.Writers;
 with RCL.QoS;
+with Suite_Support; use Suite_Support;
 
 package body RCL.MCAP.Tests is
 
@@ -18,9 +17,6 @@ package body RCL.MCAP.Tests is
    use Ada.Strings.Unbounded;
    use type Interfaces.Unsigned_16;
    use type Interfaces.Unsigned_64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Getpid return Integer with Import, Convention => C, External_Name => "getpid";
 
@@ -211,7 +207,7 @@ package body RCL.MCAP.Tests is
    end Open_And_Read;
 
    function Names_Offset (Message : String) return Boolean is
-     (Ada.Strings.Fixed.Index (Message, ": byte ") > 0);
+     (Contains (Message, ": byte "));
 
    procedure Truncated_Files (Unused : in out Fixture) is
       Path  : constant String := Temp ("whole.mcap");
@@ -332,6 +328,90 @@ package body RCL.MCAP.Tests is
          Ada.Directories.Delete_File (Path);
    end Not_MCAP;
 
+   procedure Channel_Without_Schema (Unused : in out Fixture) is
+      --  A channel naming a schema no record defines is refused at open,
+      --  with the channel record's offset (the fuzzer found the bare
+      --  "no schema has id N" of a later lookup).
+      Path  : constant String := Temp ("no-schema.mcap");
+      Count : Natural;
+   begin
+      for Kind in Compression_Kind loop
+         declare
+            W : Writers.Writer;
+            C : Channel_Id;
+         begin
+            W.Create (Path, Compression => Kind, Chunk_Size => 256);
+            C := W.Add_Channel ("/orphan", 9, "cdr", Empty_Metadata);
+            W.Write (C, Base, Payload (0));
+            W.Close;
+         end;
+         begin
+            Open_And_Read (Path, False, Count);
+            Assert (False, "a channel without its schema was accepted");
+         exception
+            when E : Format_Error =>
+               declare
+                  Text : constant String := Ada.Exceptions.Exception_Message (E);
+               begin
+                  Assert (Names_Offset (Text)
+                          and then Ada.Strings.Fixed.Index
+                            (Text, "channel 1 (topic '/orphan') names schema 9, which no schema "
+                             & "record defines") > 0, Text);
+               end;
+         end;
+      end loop;
+      Ada.Directories.Delete_File (Path);
+   end Channel_Without_Schema;
+
+   procedure Message_Outside_Its_Chunk (Unused : in out Fixture) is
+      --  A chunk whose start time is later than one of its messages (a
+      --  corrupt header; iterating From/To would silently skip the message)
+      --  is refused with the chunk's offset.
+      Path  : constant String := Temp ("range.mcap");
+      Count : Natural;
+
+      function Le_64 (Bytes : Byte_Array) return Interfaces.Unsigned_64 is
+         Result : Interfaces.Unsigned_64 := 0;
+      begin
+         for B of reverse Bytes loop
+            Result := Interfaces.Shift_Left (Result, 8) or Interfaces.Unsigned_64 (B);
+         end loop;
+         return Result;
+      end Le_64;
+   begin
+      Write_Sample (Path, None, 20, Chunk_Size => 100_000);
+      declare
+         Bytes   : Byte_Array := Read_All (Path);
+         At_Op   : Stream_Element_Offset := Bytes'First + 8;   --  after the magic
+         Patched : Boolean := False;
+      begin
+         while not Patched and then At_Op + 8 <= Bytes'Last loop
+            if Bytes (At_Op) = 6 then
+               --  Chunk content: start time, end time, ... ; start := Base + 1.
+               Bytes (At_Op + 9) := Bytes (At_Op + 9) + 1;
+               Patched := True;
+            else
+               At_Op := At_Op + 9
+                 + Stream_Element_Offset (Le_64 (Bytes (At_Op + 1 .. At_Op + 8)));
+            end if;
+         end loop;
+         Assert (Patched, "no chunk record found");
+         Write_All (Path, Bytes);
+      end;
+      Open_And_Read (Path, False, Count);
+      Assert (False, "a message before its chunk's start time was accepted");
+   exception
+      when E : Format_Error =>
+         declare
+            Text : constant String := Ada.Exceptions.Exception_Message (E);
+         begin
+            Assert (Names_Offset (Text)
+                    and then Ada.Strings.Fixed.Index (Text, "outside the chunk's range") > 0,
+                    Text);
+         end;
+         Ada.Directories.Delete_File (Path);
+   end Message_Outside_Its_Chunk;
+
    procedure Ros2_Profile (Unused : in out Fixture) is
       Twist : constant String := RCL.Bags.Message_Definition_Text ("geometry_msgs/msg/Twist");
       Delimiter : constant String := [1 .. 80 => '='];
@@ -345,14 +425,14 @@ package body RCL.MCAP.Tests is
       use type RCL.QoS.Profile;
    begin
       Assert (Ada.Strings.Fixed.Index (Twist, "Vector3") = Twist'First
-              or else Ada.Strings.Fixed.Index (Twist, "Vector3  linear") > 0
-              or else Ada.Strings.Fixed.Index (Twist, "Vector3 linear") > 0, Twist);
+              or else Contains (Twist, "Vector3  linear")
+              or else Contains (Twist, "Vector3 linear"), Twist);
       Assert (Ada.Strings.Fixed.Count (Twist, "MSG: geometry_msgs/msg/Vector3") = 1,
               "the nested type once: " & Twist);
-      Assert (Ada.Strings.Fixed.Index (Twist, Delimiter & ASCII.LF & "MSG: ") > 0, Twist);
-      Assert (Ada.Strings.Fixed.Index (Twist, "float64 x") > 0, Twist);
+      Assert (Contains (Twist, Delimiter & ASCII.LF & "MSG: "), Twist);
+      Assert (Contains (Twist, "float64 x"), Twist);
       Assert (Ada.Strings.Fixed.Count (Offered, "- history: 1") = 2, Offered);
-      Assert (Ada.Strings.Fixed.Index (Offered, "  reliability: 2") > 0, Offered);
+      Assert (Contains (Offered, "  reliability: 2"), Offered);
       Assert (RCL.Bags.Playback_QoS (Offered).Reliability = RCL.QoS.Best_Effort,
               "best effort when one publisher was");
       Assert (RCL.Bags.Playback_QoS (Offered).Durability = RCL.QoS.Volatile, "volatile");
@@ -372,6 +452,10 @@ package body RCL.MCAP.Tests is
       Result.Add_Test (Caller.Create ("mcap: single-byte corruptions refused",
                                       Corrupt_Files'Access));
       Result.Add_Test (Caller.Create ("mcap: not an MCAP file", Not_MCAP'Access));
+      Result.Add_Test (Caller.Create ("mcap: a channel naming a missing schema",
+                                      Channel_Without_Schema'Access));
+      Result.Add_Test (Caller.Create ("mcap: a message outside its chunk's time range",
+                                      Message_Outside_Its_Chunk'Access));
       Result.Add_Test (Caller.Create ("mcap: background chunk writer, same bytes, errors",
                                       Background_Writer'Access));
       Result.Add_Test (Caller.Create ("mcap: ros2 profile schema and QoS text",
