@@ -1,5 +1,4 @@
 with Ada.Numerics.Long_Elementary_Functions;
-with Ada.Environment_Variables; --  TEMP experiment
 with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Annealers.Construction; use Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Neighbourhoods;
@@ -666,10 +665,6 @@ package body Sancta.Allocation.Annealers.Searches is
            & " is not in 0 .. 1";
       end if;
       This.Opts := Opts;
-      if Ada.Environment_Variables.Exists ("SANCTA_CHAIN_SHARE") then --  TEMP
-         This.Opts.Chain_Share :=
-           Long_Float'Value (Ada.Environment_Variables.Value ("SANCTA_CHAIN_SHARE"));
-      end if;
       This.Automatic_Hybrid := False;
       if Opts.Schedule = Automatic then
          This.Automatic_Hybrid := Opts.Criterion.Sum_Weight = 0.0
@@ -1028,9 +1023,7 @@ package body Sancta.Allocation.Annealers.Searches is
          Load (P, This.Tours.all, This.Best);
          Restart_From_Current (This, P);
          Polish (This, P);
-         if This.Chain_Space /= null
-           and then not Ada.Environment_Variables.Exists ("SANCTA_NO_FINAL_CHAIN")
-         then
+         if This.Chain_Space /= null then
             Chain_Descent (This, P);
          end if;
          This.Polish_Gain := Long_Float'Max (0.0, This.Best_Value - This.Current);
