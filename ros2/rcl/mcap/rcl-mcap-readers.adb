@@ -239,7 +239,8 @@ package body RCL.MCAP.Readers is
    end Add_Schema;
 
    procedure Add_Channel (This : in out Reader; Data : Byte_Array; C : in out Cursor) is
-      Ch : Channel_Info;
+      Ch    : Channel_Info;
+      Start : constant Unsigned_64 := Where (C);
    begin
       Ch.Id := U16 (This, Data, C, "channel id");
       Ch.Schema := U16 (This, Data, C, "channel schema id");
@@ -252,7 +253,27 @@ package body RCL.MCAP.Readers is
          end if;
       end loop;
       This.Channels.Append (Ch);
+      This.Channel_Where.Append (Start);
    end Add_Channel;
+
+   procedure Check_Schemas (This : Reader) is
+   --  Every channel's schema (other than 0, none) must have a schema record.
+   begin
+      for Index in 1 .. Natural (This.Channels.Length) loop
+         declare
+            Ch : Channel_Info renames This.Channels (Index);
+         begin
+            if Ch.Schema /= 0
+              and then not (for some S of This.Schemas => S.Id = Ch.Schema)
+            then
+               Fail (This, This.Channel_Where (Index),
+                     "channel" & Ch.Id'Image & " (topic '" & To_String (Ch.Topic)
+                     & "') names schema" & Ch.Schema'Image
+                     & ", which no schema record defines: corrupt");
+            end if;
+         end;
+      end loop;
+   end Check_Schemas;
 
    --  Record headers -------------------------------------------------------------
 
@@ -682,6 +703,7 @@ package body RCL.MCAP.Readers is
       This.Summary := False;
       This.Schemas.Clear;
       This.Channels.Clear;
+      This.Channel_Where.Clear;
       This.Data.Clear;
       This.Counts.Clear;
       This.Message_Total := 0;
@@ -782,6 +804,7 @@ package body RCL.MCAP.Readers is
             end if;
          end;
       end if;
+      Check_Schemas (This);
       Data_Sorting.Sort (This.Data);
       if not This.Summary then
          Count_Messages (This);

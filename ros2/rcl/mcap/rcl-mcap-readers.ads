@@ -88,6 +88,8 @@ private
    package Record_Vectors is new Ada.Containers.Vectors (Positive, Data_Record);
    package Schema_Vectors is new Ada.Containers.Vectors (Positive, Schema_Info);
    package Channel_Vectors is new Ada.Containers.Vectors (Positive, Channel_Info);
+   package Offset_Vectors is new Ada.Containers.Vectors
+     (Positive, Interfaces.Unsigned_64, Interfaces."=");
 
    type Count_Entry is record
       Id    : Channel_Id;
@@ -105,6 +107,8 @@ private
       Summary       : Boolean := False;
       Schemas       : Schema_Vectors.Vector;
       Channels      : Channel_Vectors.Vector;
+      Channel_Where : Offset_Vectors.Vector;
+      --  Where each of Channels was read (file offset; in a chunk, the chunk's)
       Data          : Record_Vectors.Vector;
       Counts        : Count_Vectors.Vector;
       Message_Total : Interfaces.Unsigned_64 := 0;

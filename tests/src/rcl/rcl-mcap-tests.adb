@@ -332,6 +332,41 @@ package body RCL.MCAP.Tests is
          Ada.Directories.Delete_File (Path);
    end Not_MCAP;
 
+   procedure Channel_Without_Schema (Unused : in out Fixture) is
+      --  A channel naming a schema no record defines is refused at open,
+      --  with the channel record's offset (the fuzzer found the bare
+      --  "no schema has id N" of a later lookup).
+      Path  : constant String := Temp ("no-schema.mcap");
+      Count : Natural;
+   begin
+      for Kind in Compression_Kind loop
+         declare
+            W : Writers.Writer;
+            C : Channel_Id;
+         begin
+            W.Create (Path, Compression => Kind, Chunk_Size => 256);
+            C := W.Add_Channel ("/orphan", 9, "cdr", Empty_Metadata);
+            W.Write (C, Base, Payload (0));
+            W.Close;
+         end;
+         begin
+            Open_And_Read (Path, False, Count);
+            Assert (False, "a channel without its schema was accepted");
+         exception
+            when E : Format_Error =>
+               declare
+                  Text : constant String := Ada.Exceptions.Exception_Message (E);
+               begin
+                  Assert (Names_Offset (Text)
+                          and then Ada.Strings.Fixed.Index
+                            (Text, "channel 1 (topic '/orphan') names schema 9, which no schema "
+                             & "record defines") > 0, Text);
+               end;
+         end;
+      end loop;
+      Ada.Directories.Delete_File (Path);
+   end Channel_Without_Schema;
+
    procedure Ros2_Profile (Unused : in out Fixture) is
       Twist : constant String := RCL.Bags.Message_Definition_Text ("geometry_msgs/msg/Twist");
       Delimiter : constant String := [1 .. 80 => '='];
@@ -372,6 +407,8 @@ package body RCL.MCAP.Tests is
       Result.Add_Test (Caller.Create ("mcap: single-byte corruptions refused",
                                       Corrupt_Files'Access));
       Result.Add_Test (Caller.Create ("mcap: not an MCAP file", Not_MCAP'Access));
+      Result.Add_Test (Caller.Create ("mcap: a channel naming a missing schema",
+                                      Channel_Without_Schema'Access));
       Result.Add_Test (Caller.Create ("mcap: background chunk writer, same bytes, errors",
                                       Background_Writer'Access));
       Result.Add_Test (Caller.Create ("mcap: ros2 profile schema and QoS text",
