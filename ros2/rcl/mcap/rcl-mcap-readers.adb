@@ -452,6 +452,12 @@ package body RCL.MCAP.Readers is
                               Log_Time : constant Unsigned_64 :=
                                 U64 (This, Plain.all, Probe, "message log time");
                            begin
+                              if Log_Time < Start or else Log_Time > Stop then
+                                 Fail (This, Offset, "message at the chunk's uncompressed byte "
+                                       & Image (Unsigned_64 (Body_At - 10)) & " has log time "
+                                       & Image (Log_Time) & ", outside the chunk's range "
+                                       & Image (Start) & " .. " & Image (Stop) & ": corrupt");
+                              end if;
                               if Log_Time >= From and then Log_Time <= To then
                                  Positions.Append (Entry_Position'(Log_Time, Body_At));
                               end if;

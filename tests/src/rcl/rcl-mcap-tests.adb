@@ -367,6 +367,55 @@ package body RCL.MCAP.Tests is
       Ada.Directories.Delete_File (Path);
    end Channel_Without_Schema;
 
+   procedure Message_Outside_Its_Chunk (Unused : in out Fixture) is
+      --  A chunk whose start time is later than one of its messages (a
+      --  corrupt header; iterating From/To would silently skip the message)
+      --  is refused with the chunk's offset.
+      Path  : constant String := Temp ("range.mcap");
+      Count : Natural;
+
+      function Le_64 (Bytes : Byte_Array) return Interfaces.Unsigned_64 is
+         Result : Interfaces.Unsigned_64 := 0;
+      begin
+         for B of reverse Bytes loop
+            Result := Interfaces.Shift_Left (Result, 8) or Interfaces.Unsigned_64 (B);
+         end loop;
+         return Result;
+      end Le_64;
+   begin
+      Write_Sample (Path, None, 20, Chunk_Size => 100_000);
+      declare
+         Bytes   : Byte_Array := Read_All (Path);
+         At_Op   : Stream_Element_Offset := Bytes'First + 8;   --  after the magic
+         Patched : Boolean := False;
+      begin
+         while not Patched and then At_Op + 8 <= Bytes'Last loop
+            if Bytes (At_Op) = 6 then
+               --  Chunk content: start time, end time, ... ; start := Base + 1.
+               Bytes (At_Op + 9) := Bytes (At_Op + 9) + 1;
+               Patched := True;
+            else
+               At_Op := At_Op + 9
+                 + Stream_Element_Offset (Le_64 (Bytes (At_Op + 1 .. At_Op + 8)));
+            end if;
+         end loop;
+         Assert (Patched, "no chunk record found");
+         Write_All (Path, Bytes);
+      end;
+      Open_And_Read (Path, False, Count);
+      Assert (False, "a message before its chunk's start time was accepted");
+   exception
+      when E : Format_Error =>
+         declare
+            Text : constant String := Ada.Exceptions.Exception_Message (E);
+         begin
+            Assert (Names_Offset (Text)
+                    and then Ada.Strings.Fixed.Index (Text, "outside the chunk's range") > 0,
+                    Text);
+         end;
+         Ada.Directories.Delete_File (Path);
+   end Message_Outside_Its_Chunk;
+
    procedure Ros2_Profile (Unused : in out Fixture) is
       Twist : constant String := RCL.Bags.Message_Definition_Text ("geometry_msgs/msg/Twist");
       Delimiter : constant String := [1 .. 80 => '='];
@@ -409,6 +458,8 @@ package body RCL.MCAP.Tests is
       Result.Add_Test (Caller.Create ("mcap: not an MCAP file", Not_MCAP'Access));
       Result.Add_Test (Caller.Create ("mcap: a channel naming a missing schema",
                                       Channel_Without_Schema'Access));
+      Result.Add_Test (Caller.Create ("mcap: a message outside its chunk's time range",
+                                      Message_Outside_Its_Chunk'Access));
       Result.Add_Test (Caller.Create ("mcap: background chunk writer, same bytes, errors",
                                       Background_Writer'Access));
       Result.Add_Test (Caller.Create ("mcap: ros2 profile schema and QoS text",
