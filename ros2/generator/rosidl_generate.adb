@@ -436,11 +436,10 @@ procedure Rosidl_Generate is
          when String_Kind =>
            (if T.String_Bound = 0
             then "ROSIDL.Static.Impl.Wire.Get_String (B, C, 0, " & Expr & ", " & What & ");"
-            else "declare First : Ada.Streams.Stream_Element_Offset; Length : Natural; begin "
+            else Expr & " := " & Bounded_Text_Package (T)
+                 & ".To_Bounded_String (ROSIDL.Static.Impl.Wire.Text (B, "
                  & "ROSIDL.Static.Impl.Wire.Get_String_Span (B, C, " & Trim (T.String_Bound)
-                 & ", First, Length, " & What & "); " & Expr & " := "
-                 & Bounded_Text_Package (T)
-                 & ".To_Bounded_String (ROSIDL.Static.Impl.Wire.Text (B, First, Length)); end;"),
+                 & ", " & What & ")));"),
          when WString_Kind =>
            (if T.String_Bound = 0
             then "ROSIDL.Static.Impl.Wire.Get_WString (B, C, 0, " & Expr & ", " & What & ");"
@@ -701,12 +700,12 @@ procedure Rosidl_Generate is
                         then X & ".Storage (0 .. Count - 1)" else X & ".Items (0 .. Count - 1)");
                   begin
                      Line (Impl, I + 6, "declare");
-                     Line (Impl, I + 9, "Count : Natural;");
-                     Line (Impl, I + 6, "begin");
-                     Line (Impl, I + 9, "ROSIDL.Static.Impl.Wire.Get_Count (B, C, Count, "
+                     Line (Impl, I + 9, "Count : constant Natural := "
+                           & "ROSIDL.Static.Impl.Wire.Get_Count (B, C, "
                            & Trim (Min_Element_Size (T)) & ", "
                            & (if T.Collection = Bounded_Sequence then Trim (T.Size) else "0")
                            & ", " & What & ");");
+                     Line (Impl, I + 6, "begin");
                      if T.Collection = Unbounded_Sequence then
                         Line (Impl, I + 9, X & ".Set_Length (Count);");
                      else

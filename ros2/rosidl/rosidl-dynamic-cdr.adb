@@ -14,7 +14,7 @@ package body ROSIDL.Dynamic.CDR is
       Result : Stream_Element_Array (1 .. Encoded_Size (Msg));
       Last   : Stream_Element_Offset;
    begin
-      Codec.Encode (Msg, False, 0, 0, Order = Little_Endian, Result, Last);
+      Codec.Encode (Msg, Codec.No_Header, Order, Result, Last);
       return Result;
    end Encode;
 
@@ -26,8 +26,7 @@ package body ROSIDL.Dynamic.CDR is
       Result : Stream_Element_Array (1 .. Encoded_Size (Msg, True));
       Last   : Stream_Element_Offset;
    begin
-      Codec.Encode (Msg, True, Header.GUID, Header.Sequence,
-                    Order = Little_Endian, Result, Last);
+      Codec.Encode (Msg, (Present => True, Value => Header), Order, Result, Last);
       return Result;
    end Encode;
 
@@ -37,7 +36,7 @@ package body ROSIDL.Dynamic.CDR is
       Last   : out Stream_Element_Offset;
       Order  : Byte_Order := Native_Order) is
    begin
-      Codec.Encode (Msg, False, 0, 0, Order = Little_Endian, Buffer, Last);
+      Codec.Encode (Msg, Codec.No_Header, Order, Buffer, Last);
    end Encode;
 
    procedure Encode
@@ -47,8 +46,7 @@ package body ROSIDL.Dynamic.CDR is
       Last   : out Stream_Element_Offset;
       Order  : Byte_Order := Native_Order) is
    begin
-      Codec.Encode (Msg, True, Header.GUID, Header.Sequence,
-                    Order = Little_Endian, Buffer, Last);
+      Codec.Encode (Msg, (Present => True, Value => Header), Order, Buffer, Last);
    end Encode;
 
    function Decode
@@ -64,10 +62,9 @@ package body ROSIDL.Dynamic.CDR is
      (Data : Stream_Element_Array;
       Msg  : in out ROSIDL.Dynamic.Message)
    is
-      GUID     : UInt64;
-      Sequence : Int64;
+      Ignored : Request_Header;
    begin
-      Codec.Decode (Data, Msg, False, GUID, Sequence);
+      Codec.Decode (Data, Msg, False, Ignored);
    end Decode;
 
    procedure Decode
@@ -75,7 +72,7 @@ package body ROSIDL.Dynamic.CDR is
       Msg    : in out ROSIDL.Dynamic.Message;
       Header : out Request_Header) is
    begin
-      Codec.Decode (Data, Msg, True, Header.GUID, Header.Sequence);
+      Codec.Decode (Data, Msg, True, Header);
    end Decode;
 
    function Byte_Order_Of (Data : Stream_Element_Array) return Byte_Order is

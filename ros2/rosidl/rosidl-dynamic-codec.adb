@@ -205,16 +205,16 @@ package body ROSIDL.Dynamic.Codec is
    ---------------------------------------------------------------------
 
    procedure Encode
-     (Msg         : Message;
-      With_Header : Boolean;
-      GUID        : UInt64;
-      Sequence    : Int64;
-      Little      : Boolean;
-      Buffer      : out Stream_Element_Array;
-      Last        : out Stream_Element_Offset)
+     (Msg    : Message;
+      Header : Optional_Header;
+      Order  : CDR.Byte_Order;
+      Buffer : out Stream_Element_Array;
+      Last   : out Stream_Element_Offset)
    is
-      Size : constant Stream_Element_Count := Encoded_Size (Msg, With_Header);
-      S    : State;
+      use type CDR.Byte_Order;
+      Little : constant Boolean := Order = CDR.Little_Endian;
+      Size   : constant Stream_Element_Count := Encoded_Size (Msg, Header.Present);
+      S      : State;
 
       procedure Pad_To (Align : Positive) is
          New_Pos : constant Stream_Element_Offset := Aligned (S.Pos, Align);
@@ -336,9 +336,9 @@ package body ROSIDL.Dynamic.Codec is
       Buffer (Buffer'First + 1) := (if Little then 1 else 0);
       Buffer (Buffer'First + 2) := 0;
       Buffer (Buffer'First + 3) := 0;
-      if With_Header then
-         Put_Unsigned (GUID, 8);
-         Put_Unsigned (Unsigned_64'Mod (Sequence), 8);
+      if Header.Present then
+         Put_Unsigned (Header.Value.GUID, 8);
+         Put_Unsigned (Unsigned_64'Mod (Header.Value.Sequence), 8);
       end if;
       Put_Node (Msg.Root);
       Pad_To (4);
@@ -373,8 +373,7 @@ package body ROSIDL.Dynamic.Codec is
      (Data        : Stream_Element_Array;
       Msg         : in out Message;
       With_Header : Boolean;
-      GUID        : out UInt64;
-      Sequence    : out Int64)
+      Header      : out CDR.Request_Header)
    is
       S : State;
 
@@ -623,8 +622,7 @@ package body ROSIDL.Dynamic.Codec is
       end Get_Node;
 
    begin
-      GUID := 0;
-      Sequence := 0;
+      Header := (GUID => 0, Sequence => 0);
       if Msg.Root = null then
          raise Decode_Error with "decoding into an uninitialised message";
       end if;
@@ -634,13 +632,13 @@ package body ROSIDL.Dynamic.Codec is
       S.Swap := S.Little /= Native_Little;
       S.Origin := Data'First + Encapsulation_Size;
       if With_Header then
-         GUID := Get_Unsigned (8, "request header guid");
+         Header.GUID := Get_Unsigned (8, "request header guid");
          declare
             --  The header's sequence is an int64 on the wire: any 64 bits,
             --  e.g. -1 (FF..FF) from a hostile peer, are a valid value.
             Wire : constant Unsigned_64 := Get_Unsigned (8, "request header sequence");
          begin
-            Sequence :=
+            Header.Sequence :=
               (if Wire <= Unsigned_64 (Int64'Last) then Int64 (Wire)
                else -Int64 (not Wire) - 1);
          end;

@@ -153,13 +153,12 @@ package body ROSIDL.Static.Impl.Wire is
       C.Pos := C.Pos + 4;
    end Get_U32;
 
-   procedure Get_Count
+   function Get_Count
      (B        : Stream_Element_Array;
       C        : in out Cursor;
-      Count    : out Natural;
       Min_Size : Positive;
       Bound    : Natural;
-      What     : String)
+      What     : String) return Natural
    is
       Wire : Unsigned_32;
    begin
@@ -174,16 +173,14 @@ package body ROSIDL.Static.Impl.Wire is
          Fail (B, C.Pos - 4, What, "sequence count" & Wire'Image & " cannot fit in the"
                & Long_Long_Integer'Max (Remaining (B, C), 0)'Image & " remaining bytes");
       end if;
-      Count := Natural (Wire);
+      return Natural (Wire);
    end Get_Count;
 
-   procedure Get_String_Span
-     (B      : Stream_Element_Array;
-      C      : in out Cursor;
-      Bound  : Natural;
-      First  : out Stream_Element_Offset;
-      Length : out Natural;
-      What   : String)
+   function Get_String_Span
+     (B     : Stream_Element_Array;
+      C     : in out Cursor;
+      Bound : Natural;
+      What  : String) return String_Span
    is
       L : Unsigned_32;
    begin
@@ -199,18 +196,17 @@ package body ROSIDL.Static.Impl.Wire is
          Fail (B, C.Pos - 4, What, "string of" & Unsigned_32'Image (L - 1)
                & " characters exceeds its bound" & Bound'Image);
       end if;
-      First := C.Pos;
-      Length := Natural (L) - 1;
-      if B (First + Stream_Element_Offset (Length)) /= 0 then
-         Fail (B, First + Stream_Element_Offset (Length), What, "string not terminated by a NUL");
-      end if;
-      C.Pos := C.Pos + Stream_Element_Offset (L);
+      return Span : constant String_Span := (First => C.Pos, Length => Natural (L) - 1) do
+         if B (Span.First + Stream_Element_Offset (Span.Length)) /= 0 then
+            Fail (B, Span.First + Stream_Element_Offset (Span.Length), What,
+                  "string not terminated by a NUL");
+         end if;
+         C.Pos := C.Pos + Stream_Element_Offset (L);
+      end return;
    end Get_String_Span;
 
-   function Text (B : Stream_Element_Array; First : Stream_Element_Offset; Length : Natural)
-      return String
-   is
-      Result : String (1 .. Length) with Import, Address => B (First)'Address;
+   function Text (B : Stream_Element_Array; Span : String_Span) return String is
+      Result : String (1 .. Span.Length) with Import, Address => B (Span.First)'Address;
    begin
       return Result;
    end Text;
@@ -222,15 +218,13 @@ package body ROSIDL.Static.Impl.Wire is
       Into  : in out Ada.Strings.Unbounded.Unbounded_String;
       What  : String)
    is
-      First  : Stream_Element_Offset;
-      Length : Natural;
+      Span : constant String_Span := Get_String_Span (B, C, Bound, What);
    begin
-      Get_String_Span (B, C, Bound, First, Length, What);
-      if Length = 0 then
+      if Span.Length = 0 then
          Ada.Strings.Unbounded.Set_Unbounded_String (Into, "");
       else
          declare
-            Chars : String (1 .. Length) with Import, Address => B (First)'Address;
+            Chars : String (1 .. Span.Length) with Import, Address => B (Span.First)'Address;
          begin
             Ada.Strings.Unbounded.Set_Unbounded_String (Into, Chars);
          end;

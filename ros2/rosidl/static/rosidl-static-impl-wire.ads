@@ -66,27 +66,29 @@ package ROSIDL.Static.Impl.Wire is
 
    procedure Skip_Pad (C : in out Cursor; Align : Stream_Element_Offset) with Inline;
 
-   procedure Get_Count
+   function Get_Count
      (B        : Stream_Element_Array;
       C        : in out Cursor;
-      Count    : out Natural;
       Min_Size : Positive;
       Bound    : Natural;
-      What     : String);
+      What     : String) return Natural;
    --  A sequence count: at most Bound (when not 0) and no more elements of
    --  at least Min_Size bytes than the bytes that remain.
 
-   procedure Get_String_Span
-     (B      : Stream_Element_Array;
-      C      : in out Cursor;
-      Bound  : Natural;
-      First  : out Stream_Element_Offset;
-      Length : out Natural;
-      What   : String);
-   --  A string: its characters are B (First .. First + Length - 1).
+   type String_Span is record
+      First  : Stream_Element_Offset;
+      Length : Natural;
+   end record;
+   --  A string's characters in a buffer B: B (First .. First + Length - 1).
 
-   function Text (B : Stream_Element_Array; First : Stream_Element_Offset; Length : Natural)
-      return String;
+   function Get_String_Span
+     (B     : Stream_Element_Array;
+      C     : in out Cursor;
+      Bound : Natural;
+      What  : String) return String_Span;
+   --  A string, left in B.
+
+   function Text (B : Stream_Element_Array; Span : String_Span) return String;
 
    procedure Get_String
      (B     : Stream_Element_Array;
