@@ -6,14 +6,13 @@
 --  far. Several goals run at once.
 --     fibonacci_server [ACTION_NAME [STEP]]     (default fibonacci 0.1)
 with Ada.Command_Line;
-with Ada.Containers.Vectors;
 with Ada.Exceptions;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
 with RCL.Arguments;
 with RCL.Logging;
 with RCL.Nodes;
-with RCL.Timers;
+with Stepped_Goals;
 
 procedure Fibonacci_Server is
 
@@ -33,10 +32,6 @@ procedure Fibonacci_Server is
       Length   : Natural;
    end record;
 
-   package Work_Vectors is new Ada.Containers.Vectors (Positive, Work);
-   Running : Work_Vectors.Vector;
-   --  Touched by the callbacks only, all run by the one task spinning.
-
    function On_Goal
      (Node : in out Nodes.Node'Class;
       Id   : Goal_Id;
@@ -47,16 +42,6 @@ procedure Fibonacci_Server is
       Logging.Info ("goal " & Image (Id) & ": order" & Order'Image, Node.Logger_Name);
       return (if Order in 0 .. 62 then Accept_And_Execute else Reject);
    end On_Goal;
-
-   procedure On_Accepted (Node : in out Nodes.Node'Class; Goal : Goal_Handle) is
-      pragma Unreferenced (Node);
-   begin
-      Running.Append
-        (Work'(Goal     => Goal,
-               Order    => Natural (Servers.Goal (Goal) ("order").As_Int32.Element.all),
-               Sequence => [1 => 0, 2 => 1, others => 0],
-               Length   => 2));
-   end On_Accepted;
 
    function Result_Of (W : Work) return ROSIDL.Dynamic.Message is
       Result : constant ROSIDL.Dynamic.Message := Result_Message (Support);
@@ -88,24 +73,17 @@ procedure Fibonacci_Server is
       end if;
    end Advance;
 
-   procedure Step
-     (Node    : in out Nodes.Node'Class;
-      Timer   : in out Timers.Timer;
-      Elapsed : Duration)
-   is
-      pragma Unreferenced (Timer, Elapsed);
-      I    : Positive := 1;
-      Done : Boolean;
+   package Running is new Stepped_Goals (Work, Advance);
+
+   procedure On_Accepted (Node : in out Nodes.Node'Class; Goal : Goal_Handle) is
+      pragma Unreferenced (Node);
    begin
-      while I <= Natural (Running.Length) loop
-         Advance (Node, Running.Reference (I), Done);
-         if Done then
-            Running.Delete (I);
-         else
-            I := I + 1;
-         end if;
-      end loop;
-   end Step;
+      Running.Add
+        (Work'(Goal     => Goal,
+               Order    => Natural (Servers.Goal (Goal) ("order").As_Int32.Element.all),
+               Sequence => [1 => 0, 2 => 1, others => 0],
+               Length   => 2));
+   end On_Accepted;
 
 begin
    RCL.Arguments.Load;
@@ -120,7 +98,7 @@ begin
       Server : Servers.Server;
    begin
       Server.Init (Node, Support, Name, On_Goal'Access, On_Accepted'Access);
-      Node.Timer_Add (Period, Step'Access);
+      Node.Timer_Add (Period, Running.Step'Access);
       Logging.Info ("action " & Server.Name & " ready", Node.Logger_Name);
       Node.Spin;
    end;

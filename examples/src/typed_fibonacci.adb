@@ -10,16 +10,15 @@
 --  sends one goal, prints every feedback and the result; exit status 1 when
 --  the goal is rejected or does not succeed within TIMEOUT (default 30 s).
 with Ada.Command_Line;
-with Ada.Containers.Vectors;
 with Ada.Exceptions;
 with RCL.Actions.Clients;
 with RCL.Actions.Servers;
 with RCL.Actions.Typed;
 with RCL.Logging;
 with RCL.Nodes;
-with RCL.Timers;
 with ROSIDL.Static.Example_Interfaces.Actions.Fibonacci;
 with ROSIDL.Static.Sequences;
+with Stepped_Goals;
 
 procedure Typed_Fibonacci is
 
@@ -54,10 +53,6 @@ procedure Typed_Fibonacci is
       Sequence : Int32_Sequences.Sequence;
    end record;
 
-   package Work_Vectors is new Ada.Containers.Vectors (Positive, Work);
-   Running : Work_Vectors.Vector;
-   --  Touched by the callbacks only, all run by the one task spinning.
-
    function On_Goal
      (Node : in out Nodes.Node'Class;
       Id   : Goal_Id;
@@ -66,16 +61,6 @@ procedure Typed_Fibonacci is
       Logging.Info ("goal " & Image (Id) & ": order" & Item.Order'Image, Node.Logger_Name);
       return (if Item.Order in 0 .. 62 then Servers.Accept_And_Execute else Servers.Reject);
    end On_Goal;
-
-   procedure On_Accepted (Node : in out Nodes.Node'Class; Handle : Fibs.Goal_Handle) is
-      pragma Unreferenced (Node);
-   begin
-      Running.Append (Work'(Goal     => Handle,
-                       Order    => Natural (Fibs.Goal_Of (Handle).Order),
-                       Sequence => Int32_Sequences.To_Sequence ([0, 1])));
-   end On_Accepted;
-
-   package Fib_Server is new Fibs.Server (On_Goal, On_Accepted);
 
    function Result_Of (W : Work) return Fib.Result.Message is
       Sequence : Int32_Sequences.Sequence := W.Sequence;
@@ -101,30 +86,23 @@ procedure Typed_Fibonacci is
       end if;
    end Advance;
 
-   procedure Step
-     (Node    : in out Nodes.Node'Class;
-      Timer   : in out Timers.Timer;
-      Elapsed : Duration)
-   is
-      pragma Unreferenced (Timer, Elapsed);
-      I    : Positive := 1;
-      Done : Boolean;
+   package Running is new Stepped_Goals (Work, Advance);
+
+   procedure On_Accepted (Node : in out Nodes.Node'Class; Handle : Fibs.Goal_Handle) is
+      pragma Unreferenced (Node);
    begin
-      while I <= Natural (Running.Length) loop
-         Advance (Node, Running.Reference (I), Done);
-         if Done then
-            Running.Delete (I);
-         else
-            I := I + 1;
-         end if;
-      end loop;
-   end Step;
+      Running.Add (Work'(Goal     => Handle,
+                         Order    => Natural (Fibs.Goal_Of (Handle).Order),
+                         Sequence => Int32_Sequences.To_Sequence ([0, 1])));
+   end On_Accepted;
+
+   package Fib_Server is new Fibs.Server (On_Goal, On_Accepted);
 
    procedure Serve is
       Node : Nodes.Node := Nodes.Init ("typed_fibonacci_server");
    begin
       Fib_Server.Init (Node, Arg (2, "fibonacci"));
-      Node.Timer_Add (Duration'Value (Arg (3, "0.1")), Step'Access);
+      Node.Timer_Add (Duration'Value (Arg (3, "0.1")), Running.Step'Access);
       Logging.Info ("action " & Fib_Server.Name & " ready", Node.Logger_Name);
       Node.Spin;
    end Serve;

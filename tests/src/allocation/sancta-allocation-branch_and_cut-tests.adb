@@ -1,6 +1,4 @@
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Branch_And_Cut.Separation;
@@ -9,13 +7,11 @@ with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.TSPLIB;
 with Sancta.Geometry;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Allocation.Branch_And_Cut.Tests is
 
    use type Interfaces.Unsigned_64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    type Shape is (Closed_Tour, Asymmetric_Tour, Open_Tour, Shared_Depot, Open_Starts);
    --  One robot: a closed symmetric tour, an asymmetric one, an open one;

@@ -1,6 +1,4 @@
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Budget_Clocks;
@@ -9,11 +7,9 @@ with Sancta.Allocation.Random;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
 with Sancta.Geometry;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Allocation.Local_Search.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Checked_Moves_And_Optima (Unused : in out Fixture) is
    begin

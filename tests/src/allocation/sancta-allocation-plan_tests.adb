@@ -1,7 +1,5 @@
 with Ada.Directories;
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
@@ -10,13 +8,11 @@ with Sancta.Allocation.Exact;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Geometry;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Allocation.Plan_Tests is
 
    use type Interfaces.Unsigned_64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Plan_Problem
      (Tasks, Robots : Positive; V : Variant; Seed : Interfaces.Unsigned_64)

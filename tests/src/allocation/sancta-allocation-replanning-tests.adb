@@ -1,15 +1,11 @@
 with Ada.Real_Time;           use Ada.Real_Time;
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Allocation.Budget_Clocks;
 with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Allocation.Replanning.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    --  Old task numbers of robot R's tour in A, mapped to Q's numbers.
    function In_Order (Sub : Count_Array; A : Assignment; R : Positive) return Boolean is

@@ -3,8 +3,6 @@ with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
@@ -16,13 +14,11 @@ with Sancta.Allocation.Random;
 with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Allocation.TSPLIB;
 with Sancta.Geometry;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Allocation.Tests is
 
    use type Interfaces.Unsigned_64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Data : constant String := "share/tsplib/";
 

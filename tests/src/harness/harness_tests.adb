@@ -1,12 +1,7 @@
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
+with Suite_Support; use Suite_Support;
 
 package body Harness_Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Assertions_Are_Enabled (Unused : in out Fixture) is
       Raised : Boolean := False;

@@ -1,16 +1,12 @@
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Clocks.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Real_Clocks (Unused : in out Fixture) is
       S1 : constant Nanoseconds := Now (Steady);

@@ -1,6 +1,4 @@
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL;
 with ROSIDL.Interfaces;
 with ROSIDL.Type_Hashes;
@@ -11,13 +9,11 @@ with RCL.Graph.Queries;
 with RCL.Graph_Announcements;
 with RCL.Nodes;
 with RCL.Publishers;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Graph.Tests is
 
    use Ada.Strings.Unbounded;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Type_Names (Unused : in out Fixture) is
    begin

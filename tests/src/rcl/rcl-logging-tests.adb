@@ -1,11 +1,7 @@
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Logging.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Formats (Unused : in out Fixture) is
       Stamp : constant Long_Long_Integer := 1_700_000_000_012_345_678;

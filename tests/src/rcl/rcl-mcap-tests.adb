@@ -5,12 +5,11 @@ with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with RCL.Bags;
 with RCL.MCAP.Readers;
 with RCL.MCAP.Writers;
 with RCL.QoS;
+with Suite_Support; use Suite_Support;
 
 package body RCL.MCAP.Tests is
 
@@ -18,9 +17,6 @@ package body RCL.MCAP.Tests is
    use Ada.Strings.Unbounded;
    use type Interfaces.Unsigned_16;
    use type Interfaces.Unsigned_64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Getpid return Integer with Import, Convention => C, External_Name => "getpid";
 
@@ -211,7 +207,7 @@ package body RCL.MCAP.Tests is
    end Open_And_Read;
 
    function Names_Offset (Message : String) return Boolean is
-     (Ada.Strings.Fixed.Index (Message, ": byte ") > 0);
+     (Contains (Message, ": byte "));
 
    procedure Truncated_Files (Unused : in out Fixture) is
       Path  : constant String := Temp ("whole.mcap");
@@ -429,14 +425,14 @@ package body RCL.MCAP.Tests is
       use type RCL.QoS.Profile;
    begin
       Assert (Ada.Strings.Fixed.Index (Twist, "Vector3") = Twist'First
-              or else Ada.Strings.Fixed.Index (Twist, "Vector3  linear") > 0
-              or else Ada.Strings.Fixed.Index (Twist, "Vector3 linear") > 0, Twist);
+              or else Contains (Twist, "Vector3  linear")
+              or else Contains (Twist, "Vector3 linear"), Twist);
       Assert (Ada.Strings.Fixed.Count (Twist, "MSG: geometry_msgs/msg/Vector3") = 1,
               "the nested type once: " & Twist);
-      Assert (Ada.Strings.Fixed.Index (Twist, Delimiter & ASCII.LF & "MSG: ") > 0, Twist);
-      Assert (Ada.Strings.Fixed.Index (Twist, "float64 x") > 0, Twist);
+      Assert (Contains (Twist, Delimiter & ASCII.LF & "MSG: "), Twist);
+      Assert (Contains (Twist, "float64 x"), Twist);
       Assert (Ada.Strings.Fixed.Count (Offered, "- history: 1") = 2, Offered);
-      Assert (Ada.Strings.Fixed.Index (Offered, "  reliability: 2") > 0, Offered);
+      Assert (Contains (Offered, "  reliability: 2"), Offered);
       Assert (RCL.Bags.Playback_QoS (Offered).Reliability = RCL.QoS.Best_Effort,
               "best effort when one publisher was");
       Assert (RCL.Bags.Playback_QoS (Offered).Durability = RCL.QoS.Volatile, "volatile");

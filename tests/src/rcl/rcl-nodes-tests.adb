@@ -3,8 +3,6 @@ with Ada.Task_Identification;
 with Ada.Streams;
 with Ada.Strings.Fixed;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with RCL.Contexts;
 with RCL.Executors.Concurrent;
 with RCL.Executors.Sequential;
@@ -12,6 +10,7 @@ with RCL.Names;
 with RCL.Process_Context;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with Suite_Support; use Suite_Support;
 with System;
 
 package body RCL.Nodes.Tests is
@@ -20,9 +19,6 @@ package body RCL.Nodes.Tests is
    use type ROSIDL.GID;
    use type ROSIDL.Int64;
    use type RCL.DDS.Domain_Id;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Type_Name : constant String := "test_msgs::msg::dds_::Bytes_";
    --  Any name: the raw layer does not interpret the bytes.
@@ -536,10 +532,10 @@ package body RCL.Nodes.Tests is
       end Message_Of_Bad_Type;
       Bad_Type : constant String := Message_Of_Bad_Type;
    begin
-      Assert (Ada.Strings.Fixed.Index (Message_Of_Bad_Name, "'-'") > 0,
+      Assert (Contains (Message_Of_Bad_Name, "'-'"),
               "invalid node name names the character");
-      Assert (Ada.Strings.Fixed.Index (Bad_Type, "creating topic ""bad topic name!""") > 0
-              and then Ada.Strings.Fixed.Index (Bad_Type, "Bad Parameter") > 0,
+      Assert (Contains (Bad_Type, "creating topic ""bad topic name!""")
+              and then Contains (Bad_Type, "Bad Parameter"),
               "a DDS error becomes ROS_Exception saying what was attempted: " & Bad_Type);
       Assert (RCL.Contexts.Parse_Domain_Id ("7") = 7, "domain id");
       declare

@@ -1,19 +1,11 @@
 with Ada.Directories;
 with Ada.Exceptions;
-with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with RCL.Nodes;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Parameters.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
-
-   function Contains (S, Part : String) return Boolean is
-     (Ada.Strings.Fixed.Index (S, Part) > 0);
 
    procedure Values (Unused : in out Fixture) is
    begin

@@ -1,14 +1,10 @@
 with Ada.Streams;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with RCL.DDS;
 with RCL.Process_Context;
+with Suite_Support; use Suite_Support;
 
 package body RCL.QoS.Tests is
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Profiles (Unused : in out Fixture) is
    begin

@@ -2,8 +2,6 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Clients;
@@ -13,6 +11,7 @@ with RCL.QoS;
 with RCL.DDS.Matching;
 with RCL.Nodes;
 with RCL.Pending_Calls.Asynchronous;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Services.Tests is
 
@@ -22,9 +21,6 @@ package body RCL.Services.Tests is
    use type Ada.Real_Time.Time_Span;
 
    package Graph renames RCL.Graph.Queries;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Add_Support return ROSIDL.Typesupport.Service_Support is
      (ROSIDL.Typesupport.Get_Service_Support ("example_interfaces", "AddTwoInts"));

@@ -1,17 +1,13 @@
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Ada.Real_Time;
 with RCL.Clocks;
 with RCL.Timer_States; use RCL.Timer_States;
+with Suite_Support; use Suite_Support;
 
 package body RCL.Timers.Tests is
 
    use RCL.Clocks;
    use type Ada.Real_Time.Time;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    P  : constant Nanoseconds := 100_000_000;
    Ms : constant Nanoseconds := 1_000_000;

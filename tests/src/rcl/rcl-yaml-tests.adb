@@ -2,13 +2,12 @@ with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Streams;
 with AUnit.Assertions; use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.DDS;
 with RCL.Graph.Queries;
 with RCL.YAML.Messages;
+with Suite_Support; use Suite_Support;
 
 package body RCL.YAML.Tests is
 
@@ -16,13 +15,7 @@ package body RCL.YAML.Tests is
    use type ROSIDL.UInt8;
    use type ROSIDL.Int32;
 
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
-
    LF : constant Character := ASCII.LF;
-
-   function Contains (S, Part : String) return Boolean is
-     (Ada.Strings.Fixed.Index (S, Part) > 0);
 
    function Parse_Error_Of (Parsing : not null access procedure) return String is
       --  The message of the Parse_Error that Parsing raises, "" when none.

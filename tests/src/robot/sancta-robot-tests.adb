@@ -1,7 +1,5 @@
 with Ada.Numerics.Generic_Elementary_Functions;
 with AUnit.Assertions;   use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Geometry;    use Sancta.Geometry;
 with Sancta.Robot.Aligners;
 with Sancta.Robot.Controllers;
@@ -18,6 +16,7 @@ with Sancta.Robot.Sensors;
 with Sancta.Simulation.Demos;
 with Sancta.Simulation.Simulators;
 with Sancta.Simulation.Worlds;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Robot.Tests is
 
@@ -25,10 +24,6 @@ package body Sancta.Robot.Tests is
    use Sancta.Simulation.Simulators;
 
    package Math is new Ada.Numerics.Generic_Elementary_Functions (Real);
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Img (X : Real) return String is (Real'Image (X));
 

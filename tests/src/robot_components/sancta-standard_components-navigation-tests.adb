@@ -3,8 +3,6 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with Sancta.Standard_Components.All_Standard;
@@ -25,6 +23,7 @@ with Sancta.Runtime.Values;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Robot_Lists;
 with Sancta.Simulation.Simulators;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Standard_Components.Navigation.Tests is
 
@@ -43,10 +42,6 @@ package body Sancta.Standard_Components.Navigation.Tests is
    package RC renames Sancta.Runtime.Components;
    package RM renames Sancta.Standard_Components.Robot_Messages;
    package Sims renames Sancta.Simulation.Simulators;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Img (X : Real) return String is (Values.Real_Image (Long_Float (X)));
 
@@ -197,7 +192,7 @@ package body Sancta.Standard_Components.Navigation.Tests is
          Assert (Sim.Collision_Count (Id) = 0, "collisions" & Summary);
          Assert (Values.Integer_Value (N.Database.Get ("completed")).Data = 2, "completed");
          Assert (Values.Real_Value (N.Database.Get ("progress")).Data = 1.0, "progress");
-         Assert (Ada.Strings.Fixed.Index (Status, "done 2 / 2") > 0, "status " & Status);
+         Assert (Contains (Status, "done 2 / 2"), "status " & Status);
          Assert (Position_Error (Pose_At (N, "pose"), (7.0, 4.0, 0.0)) <= 0.3,
                  "the estimated pose is at the last goal" & Summary);
          Assert (Distance (Position (Truth), (7.0, 4.0)) < 1.5, "near the last goal" & Summary);
@@ -306,9 +301,9 @@ package body Sancta.Standard_Components.Navigation.Tests is
       declare
          Text : constant String := Configurations.Image (Config.Diagnostics.First_Element);
       begin
-         Assert (Ada.Strings.Fixed.Index (Text, "bad-robot-goals.xml:4:32:") > 0
-                   and then Ada.Strings.Fixed.Index (Text, "goal 2") > 0
-                   and then Ada.Strings.Fixed.Index (Text, """x,y""") > 0,
+         Assert (Contains (Text, "bad-robot-goals.xml:4:32:")
+                   and then Contains (Text, "goal 2")
+                   and then Contains (Text, """x,y"""),
                  "positioned goal error: " & Text);
       end;
    end Bad_Goal_Option;
@@ -364,7 +359,7 @@ package body Sancta.Standard_Components.Navigation.Tests is
       Assert (RM.Goals_Problem ("a,1") /= "", "letters accepted");
       Assert (RM.Goals_Problem ("1 2") /= "", "no comma accepted");
       Assert (RM.Goals_Problem ("1,2;3,1e400") /= "", "overflow accepted");
-      Assert (Ada.Strings.Fixed.Index (RM.Goals_Problem ("1,2; x,3"), "goal 2") > 0,
+      Assert (Contains (RM.Goals_Problem ("1,2; x,3"), "goal 2"),
               RM.Goals_Problem ("1,2; x,3"));
    end Message_Conversions;
 
@@ -400,11 +395,11 @@ package body Sancta.Standard_Components.Navigation.Tests is
               & " the line", Error_Of ("r2 0 0"));
       Assert (Ada.Strings.Fixed.Index (Error_Of ("r2 0 0 0 beams=0"), "robots.txt:7:16:") = 1,
               Error_Of ("r2 0 0 0 beams=0"));
-      Assert (Ada.Strings.Fixed.Index (Error_Of ("r2 0 0 0 wheels=3"), "unknown key ""wheels""")
-              > 0, Error_Of ("r2 0 0 0 wheels=3"));
-      Assert (Ada.Strings.Fixed.Index (Error_Of ("r2 0 0 0 radius=-1"), "invalid robot") > 0,
+      Assert (Contains (Error_Of ("r2 0 0 0 wheels=3"), "unknown key ""wheels"""),
+              Error_Of ("r2 0 0 0 wheels=3"));
+      Assert (Contains (Error_Of ("r2 0 0 0 radius=-1"), "invalid robot"),
               Error_Of ("r2 0 0 0 radius=-1"));
-      Assert (Ada.Strings.Fixed.Index (Error_Of ("r-2 0 0 0"), "expected a robot name") > 0,
+      Assert (Contains (Error_Of ("r-2 0 0 0"), "expected a robot name"),
               Error_Of ("r-2 0 0 0"));
       begin
          Load ("no/such/robots.txt", L);

@@ -1,7 +1,5 @@
 with Ada.Real_Time;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
@@ -11,15 +9,12 @@ with RCL.QoS;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Schedulers;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Standard_Components.ROS_Clocks.Tests is
 
    use AUnit.Assertions;
    use Ada.Real_Time;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    --  Counts its calls; period 100 ms.
    type Counter is new Runtime.Components.Component with record

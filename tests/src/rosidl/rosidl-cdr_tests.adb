@@ -1,8 +1,5 @@
 with Ada.Exceptions;
-with Ada.Strings.Fixed;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Ada.Streams;
 with ROSIDL.CDR; use ROSIDL.CDR;
 with ROSIDL.CDR_Samples;
@@ -11,6 +8,7 @@ with ROSIDL.Definitions;
 with ROSIDL.Dynamic_Tests;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with Suite_Support; use Suite_Support;
 
 package body ROSIDL.CDR_Tests is
 
@@ -23,13 +21,6 @@ package body ROSIDL.CDR_Tests is
    use ROSIDL.Dynamic;
    use ROSIDL.Typesupport;
    use type UInt64;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
-
-   function Contains (Text, Part : String) return Boolean is
-     (Ada.Strings.Fixed.Index (Text, Part) > 0);
 
    function Message_Of (E : Ada.Exceptions.Exception_Occurrence) return String
      renames Ada.Exceptions.Exception_Message;

@@ -1,13 +1,11 @@
 with Ada.Exceptions;
 with Ada.Streams;
-with Ada.Strings.Fixed;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.CDR;
 with ROSIDL.CDR_Samples;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
+with Suite_Support; use Suite_Support;
 
 package body ROSIDL.Dynamic_Tests is
 
@@ -16,13 +14,6 @@ package body ROSIDL.Dynamic_Tests is
    use ROSIDL.Typesupport;
    use type Int8, Int16, Int32, Int64, UInt32, Float32, Float64;
    use type Ada.Streams.Stream_Element_Offset;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
-
-   function Contains (Text, Part : String) return Boolean is
-     (Ada.Strings.Fixed.Index (Text, Part) > 0);
 
    function Text_Of (E : Ada.Exceptions.Exception_Occurrence) return String
      renames Ada.Exceptions.Exception_Message;

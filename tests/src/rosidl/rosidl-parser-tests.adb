@@ -2,16 +2,14 @@ with Ada.Containers;
 with Ada.Directories;
 with Ada.Environment_Variables;
 with Ada.Exceptions;
-with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.Parser.Literals;
 with ROSIDL.Typesupport;
+with Suite_Support; use Suite_Support;
 
 package body ROSIDL.Parser.Tests is
 
@@ -19,13 +17,9 @@ package body ROSIDL.Parser.Tests is
    use Ada.Strings.Unbounded;
    use type Ada.Containers.Count_Type;
 
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
    overriding procedure Tear_Down (Unused : in out Fixture);
    --  Takes the test folders off the search path, so that suites run later
    --  (which may walk every package on the path) see the bundled ones only.
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    type Message_Access_List is array (Positive range <>) of Message_Access;
 
@@ -76,9 +70,6 @@ package body ROSIDL.Parser.Tests is
       when E : Definition_Error =>
          return Ada.Exceptions.Exception_Message (E);
    end Error_Of;
-
-   function Contains (S, Pattern : String) return Boolean is
-     (Ada.Strings.Fixed.Index (S, Pattern) > 0);
 
    function Field_Of (M : Message_Access; Name : String) return Field is
       I : constant Natural := Field_Index (M.all, Name);

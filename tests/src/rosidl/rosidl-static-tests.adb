@@ -6,8 +6,6 @@ with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.CDR;
 with ROSIDL.CDR_Samples;
 with ROSIDL.Dynamic;
@@ -23,6 +21,7 @@ with ROSIDL.Static.Sensor_Msgs.Messages.NavSatStatus;
 with ROSIDL.Static.Visualization_Msgs.Messages.Marker;
 with ROSIDL.Type_Hashes;
 with ROSIDL.Typesupport;
+with Suite_Support; use Suite_Support;
 
 package body ROSIDL.Static.Tests is
 
@@ -32,11 +31,7 @@ package body ROSIDL.Static.Tests is
    use ROSIDL.Static.Registries;
    use type ROSIDL.Int32, ROSIDL.UInt64, ROSIDL.Float32, ROSIDL.Float64;
 
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
    type Stream_Element_Offset_Array is array (Positive range <>) of Stream_Element_Offset;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    package Entry_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Type_Entry);
 
@@ -267,8 +262,8 @@ package body ROSIDL.Static.Tests is
          Assert (False, "a count of 2**31 was accepted");
       exception
          when E : ROSIDL.Decode_Error =>
-            Assert (Ada.Strings.Fixed.Index (Message_Of (E), "sensor_msgs/msg/LaserScan.ranges") > 0
-                    and then Ada.Strings.Fixed.Index (Message_Of (E), "at byte offset 52") > 0,
+            Assert (Contains (Message_Of (E), "sensor_msgs/msg/LaserScan.ranges")
+                    and then Contains (Message_Of (E), "at byte offset 52"),
                     "error message: " & Message_Of (E));
       end;
 
@@ -292,8 +287,8 @@ package body ROSIDL.Static.Tests is
          Assert (False, "a string without NUL was accepted");
       exception
          when E : ROSIDL.Decode_Error =>
-            Assert (Ada.Strings.Fixed.Index (Message_Of (E), "NUL") > 0
-                    and then Ada.Strings.Fixed.Index (Message_Of (E), "std_msgs/msg/Header") > 0,
+            Assert (Contains (Message_Of (E), "NUL")
+                    and then Contains (Message_Of (E), "std_msgs/msg/Header"),
                     "error message: " & Message_Of (E));
       end;
 
@@ -369,7 +364,7 @@ package body ROSIDL.Static.Tests is
             Assert (Cut < Size, Name & ": Encode_Error with" & Cut'Image & " of"
                     & Size'Image & " bytes: " & Message_Of (E));
             Assert (Ada.Strings.Fixed.Index (Message_Of (E), Name & ":") = 1
-                    and then Ada.Strings.Fixed.Index (Message_Of (E), "needs" & Size'Image) > 0,
+                    and then Contains (Message_Of (E), "needs" & Size'Image),
                     Name & ": error message: " & Message_Of (E));
             Assert (Space (Cut + 1 .. Space'Last) = [1 .. 16 => Guard],
                     Name & ": wrote past a buffer of" & Cut'Image & " bytes");

@@ -1,17 +1,12 @@
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.Definitions;
 with ROSIDL.Interfaces;
 with ROSIDL.Parser;
+with Suite_Support; use Suite_Support;
 
 package body ROSIDL.Type_Hashes.Tests is
 
    use AUnit.Assertions;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Check (Full_Name, Expected_Hex : String) is
       Got : constant String := Hash (ROSIDL.Interfaces.Message (Full_Name));

@@ -1,17 +1,11 @@
 with Ada.Directories;
-with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Logging.Tests is
 
    use AUnit.Assertions;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Levels_And_File (Unused : in out Fixture) is
       Name   : constant String := "out/test/logging.txt";
@@ -47,9 +41,9 @@ package body Sancta.Logging.Tests is
       begin
          Assert (Ada.Text_IO.End_Of_File (F), "three lines");
          Ada.Text_IO.Close (F);
-         Assert (Ada.Strings.Fixed.Index (L1, " ERROR [quiet] printed 1") > 0, L1);
-         Assert (Ada.Strings.Fixed.Index (L2, " DEBUG [chatty] printed 2") > 0, L2);
-         Assert (Ada.Strings.Fixed.Index (L3, " INFO  [other] printed 3") > 0, L3);
+         Assert (Contains (L1, " ERROR [quiet] printed 1"), L1);
+         Assert (Contains (L2, " DEBUG [chatty] printed 2"), L2);
+         Assert (Contains (L3, " INFO  [other] printed 3"), L3);
       end;
    end Levels_And_File;
 

@@ -4,14 +4,13 @@ with Ada.Numerics.Discrete_Random;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Standard_Components.All_Standard;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Factory;
 with Sancta.Runtime.Component_Hosts;
 with Sancta.Runtime.Values;
 with Sancta.Geometry;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Runtime.Configurations.Tests is
 
@@ -19,10 +18,6 @@ package body Sancta.Runtime.Configurations.Tests is
 
    use AUnit.Assertions;
    use type Sancta.Geometry.Pose;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Data_Dir : constant String := "tests/data/config";
 
@@ -126,10 +121,10 @@ package body Sancta.Runtime.Configurations.Tests is
       Load ("share/config/listing-1.1.xml", Config);
       Assert (Error_Count (Config) = 0, "errors:" & ASCII.LF & Diagnostics_Text (Config));
       Assert (Warning_Count (Config) = 1, "one warning expected:" & Diagnostics_Text (Config));
-      Assert (Ada.Strings.Fixed.Index
+      Assert (Contains
                 (Image (Config.Diagnostics.First_Element),
                  "listing-1.1.xml:14:7: warning: output 'corrected_pose' of scan_matching#2"
-                 & " is not used") > 0,
+                 & " is not used"),
               Diagnostics_Text (Config));
       Assert (Config.Name = "config_example", "root name");
       Assert (Natural (Config.Agents.Length) = 1, "one agent");

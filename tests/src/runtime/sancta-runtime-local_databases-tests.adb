@@ -2,19 +2,14 @@ with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Logging;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Runtime.Local_Databases.Tests is
 
    use AUnit.Assertions;
    use Ada.Strings.Unbounded;
    use Sancta.Runtime.Values;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    procedure Basics (Unused : in out Fixture) is
       DB : Database;
@@ -208,7 +203,7 @@ package body Sancta.Runtime.Local_Databases.Tests is
       Logging.Set_Console (True);
       Assert (Good.Count.Get = 1, "the other listener ran once (no duplicates)");
       Assert (Logging.Printed (Logging.Error) = Before + 1, "the failure was logged");
-      Assert (Ada.Strings.Fixed.Index (Logging.Last_Message, "listener failing of key 'k'") > 0,
+      Assert (Contains (Logging.Last_Message, "listener failing of key 'k'"),
               Logging.Last_Message);
    end Failing_Listeners;
 

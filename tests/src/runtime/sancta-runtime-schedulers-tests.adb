@@ -1,20 +1,14 @@
-with Ada.Strings.Fixed;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Logging;
 with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Runtime.Schedulers.Tests is
 
    use AUnit.Assertions;
    use Ada.Strings.Unbounded;
    use type Clocks.Time;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Trace : Unbounded_String;
    --  "A@0 B@0 ..." : component name and milliseconds since the epoch.
@@ -177,8 +171,8 @@ package body Sancta.Runtime.Schedulers.Tests is
       Assert (S.Stats (Retried).Failures = 2, "two failures");
       Assert (not Retried.Failed and then Stopped.Failed, "policies");
       Assert (Logging.Printed (Logging.Error) = Errors + 3, "each failure logged");
-      Assert (Ada.Strings.Fixed.Index (Logging.Last_Message, "component R of agent Test failed")
-              > 0, Logging.Last_Message);
+      Assert (Contains (Logging.Last_Message, "component R of agent Test failed"),
+              Logging.Last_Message);
    end Failure_Policies;
 
    --  An event-driven component: doubles each stored input.
@@ -244,10 +238,10 @@ package body Sancta.Runtime.Schedulers.Tests is
       Logging.Set_Console (True);
       Assert (E.Failed, "wrong output type is a failure of the component");
       Assert (Values.Real_Value (DB.Get ("y")).Data = 4.0, "nothing stored");
-      Assert (Ada.Strings.Fixed.Index
+      Assert (Contains
                 (Logging.Last_Message,
                  "output 'output' of typed is of type types.integer, but a value of type "
-                 & "types.real was written") > 0, Logging.Last_Message);
+                 & "types.real was written"), Logging.Last_Message);
    end Event_Driven;
 
    --  A component counting its inputs without protection of its own: the

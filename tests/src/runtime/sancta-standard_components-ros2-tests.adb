@@ -1,12 +1,11 @@
 with Ada.Exceptions;
 with Ada.Numerics;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
 with Sancta.Geometry;
 with Sancta.Runtime.Values;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Standard_Components.ROS2.Tests is
 
@@ -14,10 +13,6 @@ package body Sancta.Standard_Components.ROS2.Tests is
    use ROSIDL.Dynamic;
    use Sancta.Runtime;
    use type Geometry.Real;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Empty (Pkg, Name : String) return Message is
      (Init (ROSIDL.Typesupport.Get_Message_Support (Pkg, Name)));

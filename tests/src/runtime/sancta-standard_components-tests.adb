@@ -4,8 +4,6 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Standard_Components.All_Standard;
 with Sancta.Geometry;
 with Sancta.Logging;
@@ -16,6 +14,7 @@ with Sancta.Runtime.Component_Hosts;
 with Sancta.Runtime.Shutdown;
 with Sancta.Runtime.Tasks;
 with Sancta.Runtime.Values;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Standard_Components.Tests is
 
@@ -27,10 +26,6 @@ package body Sancta.Standard_Components.Tests is
    use type Ada.Real_Time.Time;
    use type Sancta.Geometry.Real;
    package RC renames Sancta.Runtime.Components;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function File_Text (Name : String) return String is
       F      : Ada.Text_IO.File_Type;

@@ -1,10 +1,9 @@
 with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with AUnit.Assertions;   use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Simulation.Deflate;  use Sancta.Simulation.Deflate;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Simulation.Map_Files.Tests is
 
@@ -14,17 +13,10 @@ package body Sancta.Simulation.Map_Files.Tests is
 
    subtype Byte is Deflate.Byte;
 
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
-
    Dir : constant String := "tests/data/simulation/";
 
    function Bytes (S : String) return Byte_Array is
      [for K in S'Range => Byte (Character'Pos (S (K)))];
-
-   function Contains (S, Pattern : String) return Boolean is
-     (Ada.Strings.Fixed.Index (S, Pattern) > 0);
 
    --------------------------------------------------------------------
 

@@ -1,23 +1,17 @@
 with Ada.Directories;
 with Ada.Exceptions;
-with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;   use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Robot.Grids;
 with Sancta.Simulation.Glyphs;
 with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Simulation.Rendering.Tests is
 
    use Raster_Images;
    use type Robot.Grids.Frame;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Dir : constant String := "obj/test-output/";
 
@@ -92,10 +86,10 @@ package body Sancta.Simulation.Rendering.Tests is
       declare
          T : constant String := Ada.Strings.Unbounded.To_String (Text);
       begin
-         Assert (Ada.Strings.Fixed.Index (T, "<svg") > 0, "an SVG document");
-         Assert (Ada.Strings.Fixed.Index (T, "points=""20.00,30.00 60.00,30.00 """) > 0,
+         Assert (Contains (T, "<svg"), "an SVG document");
+         Assert (Contains (T, "points=""20.00,30.00 60.00,30.00 """),
                  "the trajectory in pixels (y flipped)");
-         Assert (Ada.Strings.Fixed.Index (T, ">dock</text>") > 0, "the label");
+         Assert (Contains (T, ">dock</text>"), "the label");
       end;
       Write_Trajectories (Sample_Scene.Trajectories, Dir & "paths.csv");
       Paths := Read_Trajectories (Dir & "paths.csv");
@@ -111,8 +105,7 @@ package body Sancta.Simulation.Rendering.Tests is
          Assert (False, "bad CSV accepted");
       exception
          when E : Format_Error =>
-            Assert (Ada.Strings.Fixed.Index
-                      (Ada.Exceptions.Exception_Message (E), "bad.csv:3:") > 0,
+            Assert (Contains (Ada.Exceptions.Exception_Message (E), "bad.csv:3:"),
                     "error names the line: " & Ada.Exceptions.Exception_Message (E));
       end;
    end SVG_And_CSV;

@@ -1,21 +1,16 @@
 with AUnit.Assertions;   use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Interfaces;
 with Sancta.Geometry;    use Sancta.Geometry;
 with Sancta.Robot.Grids;
 with Sancta.Robot.Sensors;
 with Sancta.Simulation.Simulators;
 with Sancta.Simulation.Worlds;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Simulation.Tests is
 
    use Sancta.Robot;
    use Simulators;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    function Near (A, B : Real; Tolerance : Real := 1.0E-6) return Boolean is
      (abs (A - B) <= Tolerance);

@@ -4,8 +4,6 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;  use Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with AUnit.Assertions;        use AUnit.Assertions;
-with AUnit.Test_Caller;
-with AUnit.Test_Fixtures;
 with Sancta.Geometry;
 with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Values;
@@ -19,6 +17,7 @@ with Sancta.Robot.Grids;
 with Sancta.Team.Missions;
 with Sancta.Team.Networks;
 with Sancta.Team.Plans;
+with Suite_Support; use Suite_Support;
 
 package body Sancta.Team.Tests is
 
@@ -26,9 +25,6 @@ package body Sancta.Team.Tests is
    use Sancta.Team.Replicated_Databases;
    use type Ada.Containers.Count_Type;
    use type Plans.Tour_Vectors.Vector;
-
-   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
-   package Caller is new AUnit.Test_Caller (Fixture);
 
    Lease : constant Duration := 0.5;
    subtype Real is Sancta.Geometry.Real;
@@ -99,11 +95,11 @@ package body Sancta.Team.Tests is
         (A.Net.Members.Length = 3 and then B.Net.Members.Length = 3
          and then C.Net.Members.Length = 3);
       function Delivered return Boolean is
-        (Ada.Strings.Fixed.Index (To_String (RA.Log), "last") > 0
-         and then Ada.Strings.Fixed.Index (To_String (RB.Log), "last") > 0
-         and then Ada.Strings.Fixed.Index (To_String (RC.Log), "last") > 0);
+        (Contains (To_String (RA.Log), "last")
+         and then Contains (To_String (RB.Log), "last")
+         and then Contains (To_String (RC.Log), "last"));
       function Has (R : Recorder; Text : String) return Boolean is
-        (Ada.Strings.Fixed.Index (To_String (R.Log), Text) > 0);
+        (Contains (To_String (R.Log), Text));
    begin
       A.Net.Subscribe ("chat", RA'Unchecked_Access);
       B.Net.Subscribe ("chat", RB'Unchecked_Access);
@@ -154,9 +150,9 @@ package body Sancta.Team.Tests is
       B : constant Node := Make ("t_pres", "b");
       W : aliased Watcher;
       function Met return Boolean is (A.Net.Is_Member ("b"));
-      function Gone return Boolean is (Ada.Strings.Fixed.Index (To_String (W.Lost), "b;") > 0);
+      function Gone return Boolean is (Contains (To_String (W.Lost), "b;"));
       function Joined return Boolean is
-        (Ada.Strings.Fixed.Index (To_String (W.Joined), "b;") > 0);
+        (Contains (To_String (W.Joined), "b;"));
       --  (The listener hears of the join just after Is_Member turns True.)
    begin
       A.Net.Add_Membership_Listener (W'Unchecked_Access);
@@ -392,8 +388,7 @@ package body Sancta.Team.Tests is
          end;
       exception
          when E : Missions.Format_Error =>
-            Assert (Ada.Strings.Fixed.Index (Ada.Exceptions.Exception_Message (E),
-                                             File & ":3:") > 0,
+            Assert (Contains (Ada.Exceptions.Exception_Message (E), File & ":3:"),
                     "error not positioned: " & Ada.Exceptions.Exception_Message (E));
       end;
       declare
@@ -465,7 +460,6 @@ package body Sancta.Team.Tests is
                  "makespan with doubled legs");
       end;
    end Test_Plans;
-
 
    --  A re-plan's start: the previous plan carried over to the new round.
    procedure Test_Carried_Over (T : in out Fixture) is
