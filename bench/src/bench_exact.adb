@@ -62,7 +62,7 @@ procedure Bench_Exact is
          declare
             Stats : Local_Search.Statistics;
          begin
-            Local_Search.Improve (P.all, Start, 2.0, 1, Stats);
+            Local_Search.Improve (P.all, Start, (Time_Limit => 2.0, others => <>), Stats);
          end;
       else
          declare

@@ -55,7 +55,7 @@ package body Sancta.Allocation.Branch_And_Cut.Tests is
    begin
       if Local_Search.Applies (P) then
          --  A good first tour, as sancta plan has from its anneal.
-         Local_Search.Improve (P, Start, 0.5, 1, Search);
+         Local_Search.Improve (P, Start, (Time_Limit => 0.5, others => <>), Search);
       end if;
       return R : Result (P.Robots, P.Tasks) do
          Solve (P, Start, Limit, R);
@@ -465,7 +465,7 @@ package body Sancta.Allocation.Branch_And_Cut.Tests is
          (Best_Bound => False, Purge => False, others => <>),
          (CPU_Time_Limit => True, others => <>)];
    begin
-      Local_Search.Improve (P.all, Start, 0.5, 1, Search);
+      Local_Search.Improve (P.all, Start, (Time_Limit => 0.5, others => <>), Search);
       for I in Variants'Range loop
          declare
             R : Result (P.Robots, P.Tasks);
