@@ -502,18 +502,69 @@ def fuzz_reader(reader, rng, cases, keep, log):
     return counts, findings
 
 
+RICH_TYPES = re.compile(r"^(cdr_test_msgs|sancta_test_msgs)::|::(LaserScan|PointCloud2?|Image|"
+                        r"CompressedImage|JointState|Marker|MarkerArray|InteractiveMarker\w*|"
+                        r"OccupancyGrid|Path|GetPlan_\w+|ParameterDescriptor|ParameterValue|"
+                        r"SetParameters\w*|DiagnosticArray|MultiArrayLayout|\w+MultiArray|"
+                        r"WString|GoalStatusArray|Odometry|PoseArray|PolygonStamped)_$")
+# Types with strings, bounded and unbounded sequences, nested arrays and wide
+# strings: half of the typed reader's cases mutate one of them.
+
+
+def m_cdr_shift(rng, data, kind):
+    """Four bytes inserted or removed at an aligned offset: every later field
+    is read from the wrong place (counts become data and data counts)."""
+    i = rng.randrange(len(data) // 4 + 1) * 4
+    if rng.random() < 0.5 and len(data) >= i + 4:
+        return data[:i] + data[i + 4:], f"4 bytes removed at {i}"
+    v = rng.choice(INTERESTING_32)
+    return data[:i] + v.to_bytes(4, "little") + data[i:], f"u32 {v:#x} inserted at {i}"
+
+
+CDR_MUTATORS = [m_flip, m_truncate, m_word, m_word, m_word, m_delete]
+TYPED_MUTATORS = CDR_MUTATORS + [m_cdr_shift, m_cdr_shift]
+
+
+def cdr_seeds(user=False):
+    """(dds_name, payload) of every type: random messages of seeds 1 and 2
+    (cdr_tool random), little-endian."""
+    seeds = []
+    for s in (1, 2):
+        out = subprocess.run([str(BIN / "cdr_tool"), "random", str(s)] + (["user"] if user else []),
+                             capture_output=True, text=True, check=True, env=env()).stdout
+        seeds += [(line.split(" ")[0], bytes.fromhex(line.split(" ")[1]))
+                  for line in out.splitlines()]
+    return seeds
+
+
+def mutate_cdr(rng, seed_data, mutators):
+    """Mutations of the body (after the 4-byte encapsulation header); one
+    case in ten also gets another header."""
+    data = seed_data
+    hows = []
+    for _ in range(rng.choice([1, 1, 2, 3])):
+        body, how = rng.choice(mutators)(rng, data[4:], "binary")
+        data = data[:4] + body
+        hows.append(how)
+    if len(data) >= 4 and rng.random() < 0.1:
+        # Big-endian (the body is read with the other byte order), other
+        # representations (PL_CDR, XCDR2, unknown), options bits.
+        header = rng.choice([b"\x00\x00\x00\x00", b"\x00\x00\x00\x00", b"\x00\x01\x00\x03",
+                             b"\x00\x02\x00\x00", b"\x00\x03\x00\x00", b"\x00\x06\x00\x00",
+                             b"\x00\x07\x00\x00", b"\x00\x0a\x00\x00", b"\x01\x01\x00\x00",
+                             b"\xff\xff\xff\xff"])
+        data = header + data[4:]
+        hows.append(f"header {header.hex()}")
+    return data, "; ".join(hows)
+
+
 def fuzz_cdr(rng, cases, keep, log):
     """CDR payloads of every bundled type (cdr_tool random), mutated and
     decoded by the dynamic decoder in batches (cdr_tool reencode): a line
     must re-encode or say ERROR (Decode_Error) with a byte offset; INTERNAL,
     a crash or a hang is a finding."""
     tool = str(BIN / "cdr_tool")
-    seeds = []
-    for s in (1, 2):
-        out = subprocess.run([tool, "random", str(s)], capture_output=True, text=True,
-                             check=True).stdout
-        seeds += [(line.split(" ")[0], bytes.fromhex(line.split(" ")[1]))
-                  for line in out.splitlines()]
+    seeds = cdr_seeds()
     counts = {}
     findings = []
     batch = []
@@ -539,27 +590,103 @@ def fuzz_cdr(rng, cases, keep, log):
         batch.clear()
 
     def record(v, name, data, how, text):
-        counts[v or "ok"] = counts.get(v or "ok", 0) + 1
-        if v:
-            findings.append((v, name, how, [text.strip()[:300]]))
-            log.write(f"cdr {v}: {name} {data.hex()} ({how})\n   {text.strip()[:300]}\n")
-            log.flush()
-            if keep:
-                d = keep / "cdr"
-                d.mkdir(parents=True, exist_ok=True)
-                with open(d / "findings.txt", "a") as f:
-                    f.write(f"{name} {data.hex()}\n# {how}: {text.strip()[:300]}\n")
+        record_cdr_case(counts, findings, keep, log, "cdr", v, name, data, how, text)
 
     for n in range(cases):
         name, seed_data = seeds[rng.randrange(len(seeds))]
-        data = seed_data
-        hows = []
-        for _ in range(rng.choice([1, 1, 2, 3])):
-            mut = rng.choice([m_flip, m_truncate, m_word, m_word, m_word, m_delete])
-            body, how = mut(rng, data[4:], "binary")
-            data = data[:4] + body
-            hows.append(how)
-        batch.append((name, data, "; ".join(hows)))
+        data, how = mutate_cdr(rng, seed_data, CDR_MUTATORS)
+        batch.append((name, data, how))
+        if len(batch) == 500:
+            flush()
+    if batch:
+        flush()
+    return counts, findings
+
+
+def record_cdr_case(counts, findings, keep, log, reader, v, name, data, how, text):
+    # "ok" splits into refused and re-encoded (how much of the decoders the
+    # cases reach).
+    ok = "refused" if " ERROR " in text else "decoded"
+    counts[v or ok] = counts.get(v or ok, 0) + 1
+    if v:
+        findings.append((v, name, how, [text.strip()[:300]]))
+        log.write(f"{reader} {v}: {name} {data.hex()} ({how})\n   {text.strip()[:300]}\n")
+        log.flush()
+        if keep:
+            d = keep / reader
+            d.mkdir(parents=True, exist_ok=True)
+            with open(d / "findings.txt", "a") as f:
+                f.write(f"{name} {data.hex()}\n# {how}: {text.strip()[:300]}\n")
+
+
+TYPED_REFUSAL = re.compile(r"^\S+ ERROR (\w+/(msg|srv|action)/\w+[.:].* at byte offset \d+"
+                           r"|.*encapsulation.* at byte offset 0$)")
+# "NAME ERROR pkg/msg/Type.field: problem at byte offset N", or a refused
+# encapsulation header (the same words as the dynamic decoder's).
+
+
+def typed_verdict(typed, dynamic):
+    """Compares one payload's lines from `cdr_tool reencode typed` (the
+    generated codecs) and `cdr_tool reencode user` (the dynamic codec, the
+    reference): the same answer (same re-encoding, or both refuse), and a
+    typed refusal names the type, the field and the byte offset."""
+    if TRACE.search(typed):
+        return "exception"
+    t_refused, d_refused = " ERROR " in typed, " ERROR " in dynamic
+    if t_refused and not TYPED_REFUSAL.search(typed):
+        return "no location"
+    if t_refused != d_refused:
+        return "typed refused only" if t_refused else "typed accepted only"
+    if not t_refused and typed != dynamic:
+        return "differ"
+    return None
+
+
+def fuzz_typed(rng, cases, keep, log):
+    """The generated (typed) codecs: mutated payloads of every generated
+    type, half of them of types with strings, sequences, nested arrays or
+    wide strings, decoded through ROSIDL.Static (cdr_tool reencode typed) and
+    compared with the dynamic decoder on the same bytes."""
+    tool = str(BIN / "cdr_tool")
+    seeds = cdr_seeds(user=True)
+    rich = [s for s in seeds if RICH_TYPES.search(s[0])]
+    counts = {}
+    findings = []
+    batch = []
+
+    def decode(mode, lines, timeout):
+        rc, text, hung, _ = run([tool, "reencode", mode], timeout, stdin=lines)
+        return rc, text.splitlines(), hung
+
+    def flush():
+        lines = "".join(f"{name} {data.hex()}\n" for name, data, _ in batch).encode()
+        rc_t, typed, hung_t = decode("typed", lines, 120)
+        rc_d, dynamic, hung_d = decode("user", lines, 120)
+        if (rc_t != 0 or hung_t or len(typed) != len(batch)
+                or rc_d != 0 or hung_d or len(dynamic) != len(batch)):
+            for name, data, how in batch:
+                one = f"{name} {data.hex()}\n".encode()
+                rc1, t1, h1 = decode("typed", one, 10)
+                _, d1, _ = decode("user", one, 10)
+                v = ("hang" if h1 else f"signal {-rc1}" if rc1 < 0 else
+                     "exception" if rc1 != 0 or len(t1) != 1 else
+                     typed_verdict(t1[0], d1[0] if d1 else ""))
+                record(v, name, data, how, " / ".join(t1 + d1))
+        else:
+            for (name, data, how), t, d in zip(batch, typed, dynamic):
+                v = typed_verdict(t, d)
+                record(v, name, data, how, t if v in (None, "exception", "no location")
+                       else f"typed: {t[:150]} / dynamic: {d[:150]}")
+        batch.clear()
+
+    def record(v, name, data, how, text):
+        record_cdr_case(counts, findings, keep, log, "typed", v, name, data, how, text)
+
+    for n in range(cases):
+        pool = rich if rich and n % 2 == 0 else seeds
+        name, seed_data = pool[rng.randrange(len(pool))]
+        data, how = mutate_cdr(rng, seed_data, TYPED_MUTATORS)
+        batch.append((name, data, how))
         if len(batch) == 500:
             flush()
     if batch:
@@ -585,16 +712,18 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + [None]:
-            name = "cdr" if reader is None else reader.name
+        for reader in readers + ["cdr", "typed"]:
+            name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
             rng = random.Random(f"{args.seed}/{name}")
             if wanted is not None and name not in wanted:
                 continue
             began = time.monotonic()
-            if reader is None:
+            if reader == "cdr":
                 counts, findings = fuzz_cdr(rng, args.cases, args.keep, log)
+            elif reader == "typed":
+                counts, findings = fuzz_typed(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)
