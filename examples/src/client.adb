@@ -4,6 +4,7 @@
 --  Exit status 1 when the service does not answer within TIMEOUT seconds.
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Example_Support; use Example_Support;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Logging;
@@ -15,9 +16,6 @@ procedure Client is
    use RCL;
    package CL renames Ada.Command_Line;
 
-   function Arg (N : Positive; Default : String) return String is
-     (if CL.Argument_Count >= N then CL.Argument (N) else Default);
-
    Support : constant ROSIDL.Typesupport.Service_Support :=
      ROSIDL.Typesupport.Get_Service_Support ("example_interfaces", "AddTwoInts");
 
@@ -27,15 +25,15 @@ procedure Client is
    Timeout : Duration;
 
 begin
-   Request ("a").As_Int64 := ROSIDL.Int64'Value (Arg (1, "2"));
-   Request ("b").As_Int64 := ROSIDL.Int64'Value (Arg (2, "3"));
-   Timeout := Duration'Value (Arg (3, "10"));
+   Request ("a").As_Int64 := ROSIDL.Int64'Value (Argument (1, "2"));
+   Request ("b").As_Int64 := ROSIDL.Int64'Value (Argument (2, "3"));
+   Timeout := Duration'Value (Argument (3, "10"));
    if Timeout < 0.0 then
       raise Constraint_Error;  --  A usage error.
    end if;
    declare
       Response : constant ROSIDL.Dynamic.Message :=
-        Node.Client_Call (Support, Arg (4, "add_two_ints"), Request, Timeout);
+        Node.Client_Call (Support, Argument (4, "add_two_ints"), Request, Timeout);
    begin
       Logging.Info ("Got answer:" & ROSIDL.Int64'Image (Response ("sum").As_Int64));
    end;

@@ -5,8 +5,7 @@
 --  Negative orders are rejected; canceled goals end with the sequence so
 --  far. Several goals run at once.
 --     fibonacci_server [ACTION_NAME [STEP]]     (default fibonacci 0.1)
-with Ada.Command_Line;
-with Ada.Exceptions;
+with Example_Support; use Example_Support;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
 with RCL.Arguments;
@@ -20,8 +19,6 @@ procedure Fibonacci_Server is
    use RCL.Actions;
    use RCL.Actions.Servers;
    use type ROSIDL.Int32;
-
-   package CL renames Ada.Command_Line;
 
    Support : constant Action_Support := Get_Action_Support ("example_interfaces", "Fibonacci");
 
@@ -88,12 +85,8 @@ procedure Fibonacci_Server is
 begin
    RCL.Arguments.Load;
    declare
-      Name   : constant String := (if CL.Argument_Count >= 1
-                                   and then CL.Argument (1) /= "--ros-args"
-                                   then CL.Argument (1) else "fibonacci");
-      Period : constant Duration := (if CL.Argument_Count >= 2
-                                     and then CL.Argument (2) /= "--ros-args"
-                                     then Duration'Value (CL.Argument (2)) else 0.1);
+      Name   : constant String := Argument (1, "fibonacci");
+      Period : constant Duration := Duration'Value (Argument (2, "0.1"));
       Node   : Nodes.Node := Nodes.Init ("fibonacci_server");
       Server : Servers.Server;
    begin
@@ -104,6 +97,5 @@ begin
    end;
 exception
    when E : RCL.Arguments.Argument_Error | Constraint_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      CL.Set_Exit_Status (2);
+      Fail (E);
 end Fibonacci_Server;

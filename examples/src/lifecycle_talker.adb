@@ -4,8 +4,7 @@
 --  (then activate, deactivate, cleanup, shutdown) or "ros2 lifecycle".
 --  Configuring fails while the parameter fail_configure is true.
 --     lifecycle_talker [--ros-args ...]
-with Ada.Command_Line;
-with Ada.Exceptions;
+with Example_Support; use Example_Support;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Arguments;
@@ -80,6 +79,5 @@ begin
    end;
 exception
    when E : RCL.Arguments.Argument_Error | RCL.Parameters.Parameter_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      Ada.Command_Line.Set_Exit_Status (2);
+      Fail (E);
 end Lifecycle_Talker;

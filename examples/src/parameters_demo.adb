@@ -4,9 +4,8 @@
 --  "rate" (integer, 1 .. 100), "name" (string), "gain" (double), "ids"
 --  (integer array), "frozen" (read-only boolean). Every change is logged as
 --  "parameter <name> = <value>".
-with Ada.Command_Line;
-with Ada.Exceptions;
 with Ada.Strings.Unbounded;
+with Example_Support; use Example_Support;
 with RCL.Arguments;
 with RCL.Logging;
 with RCL.Nodes;
@@ -72,6 +71,5 @@ begin
    end;
 exception
    when E : Parameter_Error | RCL.YAML.Parse_Error | RCL.Arguments.Argument_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      Ada.Command_Line.Set_Exit_Status (2);
+      Fail (E);
 end Parameters_Demo;

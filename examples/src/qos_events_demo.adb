@@ -5,14 +5,12 @@
 --                     [by_reception|by_source]
 --  DEADLINE, LEASE: seconds, 0 for none (LEASE: manual-by-topic liveliness);
 --  by_source: destination order by source timestamp (older samples lost).
-with Ada.Command_Line;
-with Ada.Exceptions;
 with Ada.Text_IO;
+with Example_Support; use Example_Support;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Arguments;
 with RCL.Events;
-with RCL.Logging;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
@@ -21,14 +19,9 @@ with RCL.Timers;
 procedure QoS_Events_Demo is
 
    use RCL;
-   package CL renames Ada.Command_Line;
 
    Support : constant ROSIDL.Typesupport.Message_Support :=
      ROSIDL.Typesupport.Get_Message_Support ("std_msgs", "String");
-
-   function Arg (I : Positive; Default : String) return String is
-     (if CL.Argument_Count >= I and then CL.Argument (I) /= "--ros-args" then CL.Argument (I)
-      else Default);
 
    procedure On_Event (Node : in out Nodes.Node'Class; E : Events.Event) is
       pragma Unreferenced (Node);
@@ -50,20 +43,20 @@ procedure QoS_Events_Demo is
 begin
    RCL.Arguments.Load;
    declare
-      Role     : constant String := Arg (1, "sub");
-      Topic    : constant String := Arg (2, "qos_events");
-      Deadline : constant Duration := Duration'Value (Arg (4, "0"));
-      Period   : constant Duration := Duration'Value (Arg (5, "1.0"));
-      Lease    : constant Duration := Duration'Value (Arg (6, "0"));
+      Role     : constant String := Argument (1, "sub");
+      Topic    : constant String := Argument (2, "qos_events");
+      Deadline : constant Duration := Duration'Value (Argument (4, "0"));
+      Period   : constant Duration := Duration'Value (Argument (5, "1.0"));
+      Lease    : constant Duration := Duration'Value (Argument (6, "0"));
       Profile  : constant RCL.QoS.Profile :=
         (RCL.QoS.Default with delta
-           Reliability => (if Arg (3, "reliable") = "best_effort" then RCL.QoS.Best_Effort
+           Reliability => (if Argument (3, "reliable") = "best_effort" then RCL.QoS.Best_Effort
                            else RCL.QoS.Reliable),
            Deadline    => Deadline,
            Liveliness  => (if Lease > 0.0 then RCL.QoS.Manual_By_Topic else RCL.QoS.Automatic),
            Lease       => (if Lease > 0.0 then Lease else RCL.QoS.Infinite),
            Destination_Order =>
-             (if Arg (7, "by_reception") = "by_source" then RCL.QoS.By_Source_Timestamp
+             (if Argument (7, "by_reception") = "by_source" then RCL.QoS.By_Source_Timestamp
               else RCL.QoS.By_Reception_Timestamp));
       Node     : Nodes.Node := Nodes.Init ("qos_events_" & Role);
    begin
@@ -102,6 +95,5 @@ begin
    end;
 exception
    when E : RCL.Arguments.Argument_Error | Constraint_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      CL.Set_Exit_Status (2);
+      Fail (E);
 end QoS_Events_Demo;

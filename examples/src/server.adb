@@ -3,6 +3,7 @@
 --     server [SERVICE_NAME]
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Example_Support; use Example_Support;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Logging;
@@ -39,9 +40,7 @@ procedure Server is
       Logging.Info ("Incoming request a:" & A'Image & " b:" & B'Image);
    end Adder;
 
-   Name : constant String :=
-     (if Ada.Command_Line.Argument_Count >= 1 then Ada.Command_Line.Argument (1)
-      else "add_two_ints");
+   Name : constant String := Argument (1, "add_two_ints");
 
 begin
    Node.Serve (Support, Name, Adder'Access);

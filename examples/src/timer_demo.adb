@@ -3,13 +3,11 @@
 --  task of its own prints "rate N at T". With --ros-args -p
 --  use_sim_time:=true both follow /clock (they wait while it stands still).
 --     timer_demo [PERIOD] [--ros-args ...]        (default 1.0)
-with Ada.Command_Line;
-with Ada.Exceptions;
 with Ada.Text_IO;
+with Example_Support; use Example_Support;
 with RCL.Arguments;
 with RCL.Clocks;
 with RCL.Contexts;
-with RCL.Logging;
 with RCL.Nodes;
 with RCL.Rates;
 with RCL.Timers;
@@ -17,7 +15,6 @@ with RCL.Timers;
 procedure Timer_Demo is
 
    use RCL;
-   package CL renames Ada.Command_Line;
 
    Ticks : Natural := 0;
 
@@ -39,9 +36,7 @@ procedure Timer_Demo is
 begin
    RCL.Arguments.Load;
    declare
-      Period : constant Duration :=
-        (if CL.Argument_Count >= 1 and then CL.Argument (1) /= "--ros-args"
-         then Duration'Value (CL.Argument (1)) else 1.0);
+      Period : constant Duration := Duration'Value (Argument (1, "1.0"));
       Node   : Nodes.Node := Nodes.Init ("timer_demo");
 
       task Looper;
@@ -62,6 +57,5 @@ begin
    end;
 exception
    when E : RCL.Arguments.Argument_Error | Constraint_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      CL.Set_Exit_Status (2);
+      Fail (E);
 end Timer_Demo;

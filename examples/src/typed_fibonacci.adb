@@ -10,7 +10,7 @@
 --  sends one goal, prints every feedback and the result; exit status 1 when
 --  the goal is rejected or does not succeed within TIMEOUT (default 30 s).
 with Ada.Command_Line;
-with Ada.Exceptions;
+with Example_Support; use Example_Support;
 with RCL.Actions.Clients;
 with RCL.Actions.Servers;
 with RCL.Actions.Typed;
@@ -30,10 +30,6 @@ procedure Typed_Fibonacci is
    package Fib renames ROSIDL.Static.Example_Interfaces.Actions.Fibonacci;
    package Fibs is new RCL.Actions.Typed (Fib.Handling);
    package Int32_Sequences renames ROSIDL.Static.Sequences.Int32_Sequences;
-
-   function Arg (N : Positive; Default : String) return String is
-     (if CL.Argument_Count >= N and then CL.Argument (N) /= "--ros-args"
-      then CL.Argument (N) else Default);
 
    function Image (S : Int32_Sequences.Sequence) return String is
       function From (I : Natural) return String is
@@ -101,8 +97,8 @@ procedure Typed_Fibonacci is
    procedure Serve is
       Node : Nodes.Node := Nodes.Init ("typed_fibonacci_server");
    begin
-      Fib_Server.Init (Node, Arg (2, "fibonacci"));
-      Node.Timer_Add (Duration'Value (Arg (3, "0.1")), Running.Step'Access);
+      Fib_Server.Init (Node, Argument (2, "fibonacci"));
+      Node.Timer_Add (Duration'Value (Argument (3, "0.1")), Running.Step'Access);
       Logging.Info ("action " & Fib_Server.Name & " ready", Node.Logger_Name);
       Node.Spin;
    end Serve;
@@ -136,13 +132,13 @@ procedure Typed_Fibonacci is
 
    procedure Ask is
       Node    : aliased Nodes.Node := Nodes.Init ("typed_fibonacci_client");
-      Order   : constant ROSIDL.Int32 := ROSIDL.Int32'Value (Arg (2, "10"));
-      Timeout : constant Duration := Duration'Value (Arg (4, "30.0"));
+      Order   : constant ROSIDL.Int32 := ROSIDL.Int32'Value (Argument (2, "10"));
+      Timeout : constant Duration := Duration'Value (Argument (4, "30.0"));
       Id      : Goal_Id;
       Status  : Goal_Status;
       Outcome : Fib.Result.Message;
    begin
-      Fib_Client.Init (Node, Arg (3, "fibonacci"));
+      Fib_Client.Init (Node, Argument (3, "fibonacci"));
       Fib_Client.Wait_For_Server (Timeout);
       declare
          Feedback_Spinner : Spinner (Node'Access);
@@ -168,9 +164,9 @@ procedure Typed_Fibonacci is
    end Ask;
 
 begin
-   if Arg (1, "") = "server" then
+   if Argument (1, "") = "server" then
       Serve;
-   elsif Arg (1, "") = "client" then
+   elsif Argument (1, "") = "client" then
       Ask;
    else
       Logging.Error ("usage: typed_fibonacci server [NAME [STEP]] | client ORDER [NAME [TIMEOUT]]");
@@ -178,6 +174,5 @@ begin
    end if;
 exception
    when E : RCL.RCL_Timeout | Constraint_Error =>
-      Logging.Error (Ada.Exceptions.Exception_Message (E));
-      CL.Set_Exit_Status (1);
+      Fail (E, Status => 1);
 end Typed_Fibonacci;

@@ -2,7 +2,7 @@
 --  example_interfaces/srv/AddTwoInts as "add_two_ints" (or the name given)
 --  and answers until Ctrl-C.
 --     typed_server [SERVICE_NAME]
-with Ada.Command_Line;
+with Example_Support; use Example_Support;
 with RCL.Logging;
 with RCL.Nodes;
 with RCL.Services.Typed;
@@ -35,9 +35,7 @@ procedure Typed_Server is
    package Adder_Server is new Adding.Server (Adder);
 
    Node : Nodes.Node := Nodes.Init ("add_two_ints_server");
-   Name : constant String :=
-     (if Ada.Command_Line.Argument_Count >= 1 then Ada.Command_Line.Argument (1)
-      else "add_two_ints");
+   Name : constant String := Argument (1, "add_two_ints");
 
 begin
    Adder_Server.Serve (Node, Name);

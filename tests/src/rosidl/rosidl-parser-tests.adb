@@ -5,11 +5,13 @@ with Ada.Exceptions;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with AUnit.Assertions;
+with AUnit.Test_Caller;
+with AUnit.Test_Fixtures;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.Parser.Literals;
 with ROSIDL.Typesupport;
-with Suite_Support; use Suite_Support;
+with Suite_Support;
 
 package body ROSIDL.Parser.Tests is
 
@@ -17,9 +19,15 @@ package body ROSIDL.Parser.Tests is
    use Ada.Strings.Unbounded;
    use type Ada.Containers.Count_Type;
 
+   type Fixture is new AUnit.Test_Fixtures.Test_Fixture with null record;
+
    overriding procedure Tear_Down (Unused : in out Fixture);
    --  Takes the test folders off the search path, so that suites run later
    --  (which may walk every package on the path) see the bundled ones only.
+
+   package Caller is new AUnit.Test_Caller (Fixture);
+
+   function Contains (Text, Part : String) return Boolean renames Suite_Support.Contains;
 
    type Message_Access_List is array (Positive range <>) of Message_Access;
 
