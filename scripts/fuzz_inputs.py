@@ -694,6 +694,200 @@ def fuzz_typed(rng, cases, keep, log):
     return counts, findings
 
 
+# ---------------------------------------------------------------- command lines
+
+def cpu_seconds(pid):
+    """User + system CPU time of a running process (Linux /proc)."""
+    try:
+        fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
+def run_until_ready(argv, timeout, ready, quiet_after=None):
+    """Runs argv until it ends, prints a line matching `ready` (then it is
+    stopped with SIGINT, SIGKILL after 3 s: a node that spins) or the time
+    limit (a hang). With quiet_after, a program still running and idle
+    after that many seconds counts as ready (its log may be off or its
+    level above info: nothing to match).
+    (exit status, output, hung, was ready)."""
+    import select
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         stdin=subprocess.DEVNULL, env=env(), start_new_session=True)
+    out = b""
+    began = time.monotonic()
+    was_ready = ended = False
+    while not (was_ready or ended):
+        left = began + timeout - time.monotonic()
+        if left <= 0:
+            break
+        r, _, _ = select.select([p.stdout], [], [], min(left, 0.2))
+        if r:
+            chunk = os.read(p.stdout.fileno(), 65536)
+            out += chunk
+            ended = not chunk
+            if ready.search(out.decode("utf-8", "replace")):
+                was_ready = True
+                time.sleep(0.1)  # the first lines after "ready"
+        if quiet_after is not None and time.monotonic() - began > quiet_after:
+            # Still running, silent: ready when idle (a node waiting for
+            # work), a hang when busy (over half a CPU since it started).
+            was_ready = p.poll() is None and cpu_seconds(p.pid) < 0.5 * quiet_after
+            break
+    if not ended:
+        try:
+            os.killpg(p.pid, signal.SIGINT)
+        except ProcessLookupError:
+            pass
+    try:
+        rest, _ = p.communicate(timeout=3)
+        hung = not (was_ready or ended)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        rest, _ = p.communicate()
+        hung = True  # ended its output, or was asked to stop, but did not exit
+    out += rest
+    return p.returncode, out.decode("utf-8", "replace"), hung, was_ready
+
+
+ROS_FLAGS = ["--ros-args", "--", "-r", "--remap", "-p", "--param", "--params-file", "-e",
+             "--enclave", "--log-level", "--enable-rosout-logs", "--disable-rosout-logs",
+             "--enable-stdout-logs", "--disable-stdout-logs", "--log-config-file", "-x",
+             "--ros-arg", "-pp", "--remap="]
+ROS_VALUES = ["a:=b", "__node:=", "__node:=x", "__ns:=", "__ns:=/a/b", "__name:=n", "__other:=1",
+              ":=", "x:=", "rostopic://", "rostopic://a:=b", "rosservice://a:=b", "http://a:=b",
+              "n:p:=1", "parameters_demo:rate:=7", "other:rate:=7", "a.b.c:=1", "a..b:=1",
+              ".a:=1", "a.:=1", "~/x:=y", "{node}:=z", "{ns}/a:=b", "/a/b:=/c", "1abc:=2",
+              "x:=[1,2", "x:={a: 1}", "x:=!!str 1", "x:='", "x:=nan", "x:=-.inf", "x:=0x1F",
+              "x:=1_000", "rate:=0", "rate:=101", "rate:=abc", "ids:=[]", "ids:=[1, 'a']",
+              "frozen:=false", "gain:=1e400", "debug", "DEBUG", "Fatal", "x:=bogus", "/", "//",
+              "", " ", "a b:=1", "n:=", "-p", "--", "parameters_demo:=warn", ":=info"]
+
+
+def args_seeds():
+    """(argument list, parameter file text): {input} is the parameter file."""
+    return [
+        (["--ros-args", "-p", "rate:=20", "-p", "name:=robot", "-p", "gain:=2.5", "-p",
+          "ids:=[4, 5]", "--params-file", "{input}", "--"],
+         "parameters_demo:\n  ros__parameters:\n    rate: 15\n    name: \"yaml\"\n"
+         "    gain: 0.5\n    ids: [7, 8, 9]\n"),
+        (["--ros-args", "-r", "__node:=demo2", "-r", "__ns:=/fuzz", "-r",
+          "parameter_events:=events", "--log-level", "warn", "--log-level",
+          "fuzz.demo2:=info", "-e", "/enclave", "--params-file", "{input}"],
+         "/**:\n  ros__parameters:\n    rate: 12\n    frozen: true\n    nested:\n"
+         "      depth: 4\n"),
+        (["first", "--ros-args", "-r", "rostopic://chatter:=news", "-r",
+          "parameters_demo:rosservice://x:=y", "--disable-rosout-logs", "--enable-stdout-logs",
+          "--params-file", "{input}", "-p", "parameters_demo:rate:=30", "--", "last"],
+         "{/fuzz/parameters_demo: {ros__parameters: {gain: -0.5e3, name: 'flow', "
+         "ids: [1, 2]}}}\n"),
+    ]
+
+
+def m_args(rng, args):
+    """One change to an argument list."""
+    args = list(args)
+    what = rng.randrange(8)
+    i = rng.randrange(len(args) + 1)
+    if what == 0 and args:
+        i = min(i, len(args) - 1)
+        del args[i]
+        return args, f"argument {i} dropped"
+    if what == 1 and args:
+        i = min(i, len(args) - 1)
+        args.insert(i, args[i])
+        return args, f"argument {i} doubled"
+    if what == 2 and len(args) > 1:
+        a, b = rng.randrange(len(args)), rng.randrange(len(args))
+        args[a], args[b] = args[b], args[a]
+        return args, f"arguments {a} and {b} swapped"
+    if what == 3:
+        f = rng.choice(ROS_FLAGS)
+        args.insert(i, f)
+        return args, f"flag {f!r} inserted at {i}"
+    if what == 4:
+        v = rng.choice(ROS_VALUES)
+        args.insert(i, v)
+        return args, f"value {v!r} inserted at {i}"
+    if not args:
+        return args, "no argument"
+    # The text of one argument ({input} is the file: left alone).
+    i = min(i, len(args) - 1)
+    if args[i] == "{input}":
+        return args, "file argument kept"
+    data, how = rng.choice([m_flip, m_truncate, m_delete, m_insert_token, m_number,
+                            m_number, m_long_line])(rng, args[i].encode(), "args")
+    # An argument holds no NUL and at most 128 KB (execve's limit).
+    text = data.replace(b"\x00", b"").decode("utf-8", "replace")[:100000]
+    args[i] = text
+    return args, f"argument {i}: {how}"
+
+
+ARGS_LOCATED = re.compile(r"--ros-args|input\.yaml:\d+")
+# A refusal names the argument ("--ros-args: argument 3 ...", "--ros-args -p
+# rate ...") or the parameter file's line ("input.yaml:4:11: ...").
+ARGS_UNLOCATED_OK = re.compile(r": no such file|cannot be opened|cannot read")
+
+
+def fuzz_args(rng, cases, keep, log):
+    """--ros-args and --params-file through the argument parser of a node
+    program (parameters_demo): mutated argument lists and parameter files.
+    A case runs until the node says 'parameters ready' (then it is stopped:
+    accepted) or ends; a refusal must name the argument or file:line."""
+    seeds = args_seeds()
+    ready = re.compile(r"parameters ready")
+    counts = {}
+    findings = []
+    for n in range(cases):
+        args, text = seeds[n % len(seeds)]
+        hows = []
+        for _ in range(rng.choice([1, 1, 2, 3])):
+            args, how = m_args(rng, args)
+            hows.append(how)
+        data = text.encode()
+        if rng.random() < 0.3:
+            data, how = rng.choice(TEXT_MUTATORS)(rng, data, "yaml")
+            hows.append("file: " + how)
+        how = "; ".join(hows)
+        with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
+            folder = pathlib.Path(tmp)
+            (folder / "input.yaml").write_bytes(data)
+            argv = ([str(BIN / "parameters_demo")]
+                    + [a.replace("{input}", str(folder / "input.yaml")) for a in args])
+            rc, out, hung, was_ready = run_until_ready(argv, 15.0, ready, quiet_after=4.0)
+            if hung:
+                verdict = "hang"
+            elif rc is not None and rc < 0 and not was_ready:
+                verdict = f"signal {-rc}"
+            elif TRACE.search(out):
+                verdict = "exception"
+            elif was_ready or rc == 0:
+                verdict = None
+            elif ARGS_LOCATED.search(out) or ARGS_UNLOCATED_OK.search(out):
+                verdict = None
+            else:
+                verdict = "no location"
+            ok = "accepted" if was_ready or rc == 0 else "refused"
+            counts[verdict or ok] = counts.get(verdict or ok, 0) + 1
+            lines = out.strip().splitlines()
+            if VERBOSE:
+                log.write(f"args #{n} exit {rc} {verdict or ok}: {how[:120]}\n   "
+                          + (lines[-1][:200] if lines else "") + "\n")
+            if verdict:
+                findings.append((verdict, "args", how, lines[-3:]))
+                log.write(f"args #{n} {verdict}: {how}\n   argv {argv[1:]!r}"[:600] + "\n   "
+                          + " | ".join(lines[-3:])[:400] + "\n")
+                log.flush()
+                if keep:
+                    d = keep / "args" / f"{n:05d}-{verdict.replace(' ', '_')}"
+                    d.mkdir(parents=True, exist_ok=True)
+                    shutil.copytree(folder, d, dirs_exist_ok=True)
+                    (d / "CASE.txt").write_text(f"mutation {how}\nargv {argv}\nexit {rc}\n"
+                                                f"--- output\n{out}")
+    return counts, findings
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--seed", type=int, default=1)
@@ -712,7 +906,7 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + ["cdr", "typed"]:
+        for reader in readers + ["cdr", "typed", "args"]:
             name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
@@ -724,6 +918,8 @@ def main():
                 counts, findings = fuzz_cdr(rng, args.cases, args.keep, log)
             elif reader == "typed":
                 counts, findings = fuzz_typed(rng, args.cases, args.keep, log)
+            elif reader == "args":
+                counts, findings = fuzz_args(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)

@@ -1,14 +1,16 @@
 """A short, deterministic run of scripts/fuzz_inputs.py (fixed seed, a dozen
 mutated inputs per reader, no DDS): every reader refuses its mutated inputs
 with a located error or accepts them, and nothing crashes, hangs or prints
-an exception. The long runs and their findings: /work/notes/fuzz-s8.md."""
+an exception; the typed reader also compares the generated codecs with the
+dynamic decoder on the same payloads. The long runs and their findings:
+/work/notes/fuzz-s8.md."""
 import pathlib
 import subprocess
 import sys
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,definition,params,mcap,"
-           "mcap-recover,cdr")
+           "mcap-recover,cdr,typed")
 
 
 def test_fuzz_smoke():
