@@ -30,8 +30,7 @@ procedure Bench_Exact is
    use type Ada.Execution_Time.CPU_Time;
    use type BC.Cut_Class;
 
-   Config : BC.Settings := (CPU_Time_Limit => True, others => <>);
-   Limit : Duration := 60.0;
+   Config : BC.Settings := (Time_Limit => 60.0, CPU_Time_Limit => True, others => <>);
    CSV : File_Type;
    Has_CSV : Boolean := False;
 
@@ -62,7 +61,7 @@ procedure Bench_Exact is
          declare
             Stats : Local_Search.Statistics;
          begin
-            Local_Search.Improve (P.all, Start, 2.0, 1, Stats);
+            Local_Search.Improve (P.all, Start, (Time_Limit => 2.0, others => <>), Stats);
          end;
       else
          declare
@@ -74,7 +73,7 @@ procedure Bench_Exact is
          end;
       end if;
       Heuristic_CPU := Ada.Real_Time.To_Duration (Ada.Execution_Time.Clock - Heuristic_Started);
-      BC.Solve (P.all, Start, Limit, Outcome, Config);
+      BC.Solve (P.all, Start, Outcome, Config);
       declare
          Gap : constant Long_Float :=
            100.0 * Long_Float (Outcome.Upper - Outcome.Lower) / Long_Float (Outcome.Upper);
@@ -117,7 +116,7 @@ begin
          A : constant String := Argument (I);
       begin
          if A = "--time" and then I < Argument_Count then
-            Limit := Duration'Value (Argument (I + 1));
+            Config.Time_Limit := Duration'Value (Argument (I + 1));
             I := I + 1;
          elsif A = "--strong" and then I < Argument_Count then
             Config.Strong_Branching := Natural'Value (Argument (I + 1));
@@ -152,7 +151,8 @@ begin
       end;
       I := I + 1;
    end loop;
-   Put_Line ("Branch and cut, CPU-time limit" & Duration'Image (Limit) & " s per instance"
+   Put_Line ("Branch and cut, CPU-time limit" & Duration'Image (Config.Time_Limit)
+             & " s per instance"
              & (if Config.CPU_Time_Limit then "" else " (wall)"));
    Put_Line ("      instance    n    tour      root  root%   lower   gap%  cpu s  wall s"
              & "  nodes   sub  blos  comb purged  fixed  edges heur s");

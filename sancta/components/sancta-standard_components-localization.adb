@@ -10,9 +10,6 @@ with Sancta.Robot.Mappers;
 with Sancta.Robot.Scan_Matchers;
 with Sancta.Robot.Sensors;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Localization is
 

@@ -4,9 +4,6 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Sancta.Logging;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Logger is
 

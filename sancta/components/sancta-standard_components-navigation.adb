@@ -8,9 +8,6 @@ with Sancta.Robot.Controllers;
 with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Path_Costs;
 with Sancta.Robot.Sensors;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Worlds;
 

@@ -1,7 +1,4 @@
 with Ada.Strings.Unbounded;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Plumbing is
 

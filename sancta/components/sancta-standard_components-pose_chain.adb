@@ -3,9 +3,6 @@ with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Pose_Chain is
 

@@ -3,7 +3,6 @@ with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Strings.Fixed;
 with ROSIDL;
 with ROSIDL.Typesupport;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Robot_Messages is
 

@@ -14,8 +14,6 @@ with ROSIDL.Interfaces;
 with ROSIDL.Typesupport;
 with Sancta.Geometry;
 with Sancta.Logging;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
 with Sancta.Runtime.Shutdown;
 with Sancta.Runtime.Tasks;
 

@@ -35,7 +35,6 @@
 --  the task that stored its input. The ROS 2 context's Ctrl-C handling
 --  (RCL.Contexts) also requests the SANCTA shutdown.
 with ROSIDL.Dynamic;
-with Sancta.Runtime.Values;
 
 package Sancta.Standard_Components.ROS2 is
 

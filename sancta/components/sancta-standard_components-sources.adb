@@ -3,9 +3,6 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Sancta.Geometry;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Sources is
 

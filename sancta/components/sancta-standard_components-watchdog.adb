@@ -2,10 +2,7 @@ with Ada.Real_Time;
 with Ada.Strings.Unbounded;
 with Sancta.Logging;
 with Sancta.Runtime.Clocks;
-with Sancta.Runtime.Components;
-with Sancta.Runtime.Factory;
 with Sancta.Runtime.Shutdown;
-with Sancta.Runtime.Values;
 
 package body Sancta.Standard_Components.Watchdog is
 

@@ -7,6 +7,15 @@
 --     Pose_Chain  "odometry", "scan_matching" (PARTIAL, see there), "transform"
 --     ROS2        "ros2_subscriber", "ros2_publisher" (ROS 2 bridges)
 --  A program gets them all with "with Sancta.Standard_Components.All_Standard;".
+--
+--  Every component here is written against the runtime's component API
+--  (components, their factory, values): the with_clauses below are for the
+--  child units, in whose scope they are.
+pragma Warnings (Off, "unit * is not referenced");
+with Sancta.Runtime.Components;
+with Sancta.Runtime.Factory;
+with Sancta.Runtime.Values;
+pragma Warnings (On, "unit * is not referenced");
+
 package Sancta.Standard_Components is
-   pragma Pure;
 end Sancta.Standard_Components;

@@ -4,30 +4,6 @@ package body Sancta.Runtime.Components is
 
    use type Ada.Task_Identification.Task_Id;
 
-   function In_Port (Data, Type_Name : String; Optional : Boolean := False; Doc : String := "")
-     return Port is
-     ((Data => To_Unbounded_String (Data), Direction => Input,
-       Type_Name => To_Unbounded_String (Type_Name), Optional => Optional,
-       Doc => To_Unbounded_String (Doc)));
-
-   function Out_Port (Data, Type_Name : String; Doc : String := "") return Port is
-     ((Data => To_Unbounded_String (Data), Direction => Output,
-       Type_Name => To_Unbounded_String (Type_Name), Optional => True,
-       Doc => To_Unbounded_String (Doc)));
-
-   function Make_Option
-     (Name     : String;
-      Kind     : Option_Kind;
-      Default  : String := "";
-      Required : Boolean := False;
-      Choices  : String := "";
-      Doc      : String := "";
-      Check    : Option_Check := null) return Option_Spec is
-     ((Name => To_Unbounded_String (Name), Kind => Kind,
-       Default => To_Unbounded_String (Default), Required => Required,
-       Choices => To_Unbounded_String (Choices), Doc => To_Unbounded_String (Doc),
-       Check => Check));
-
    function Is_Word_Of (Word, Words : String) return Boolean is
       Padded : constant String := " " & Words & " ";
    begin

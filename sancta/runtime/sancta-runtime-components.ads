@@ -57,8 +57,14 @@ package Sancta.Runtime.Components is
    end record;
 
    function In_Port (Data, Type_Name : String; Optional : Boolean := False; Doc : String := "")
-     return Port;
-   function Out_Port (Data, Type_Name : String; Doc : String := "") return Port;
+     return Port is
+     ((Data => To_Unbounded_String (Data), Direction => Input,
+       Type_Name => To_Unbounded_String (Type_Name), Optional => Optional,
+       Doc => To_Unbounded_String (Doc)));
+   function Out_Port (Data, Type_Name : String; Doc : String := "") return Port is
+     ((Data => To_Unbounded_String (Data), Direction => Output,
+       Type_Name => To_Unbounded_String (Type_Name), Optional => True,
+       Doc => To_Unbounded_String (Doc)));
 
    type Option_Kind is (Text_Option, Integer_Option, Real_Option, Boolean_Option,
                         Duration_Option, Choice_Option);
@@ -91,7 +97,11 @@ package Sancta.Runtime.Components is
       Required : Boolean := False;
       Choices  : String := "";
       Doc      : String := "";
-      Check    : Option_Check := null) return Option_Spec;
+      Check    : Option_Check := null) return Option_Spec is
+     ((Name => To_Unbounded_String (Name), Kind => Kind,
+       Default => To_Unbounded_String (Default), Required => Required,
+       Choices => To_Unbounded_String (Choices), Doc => To_Unbounded_String (Doc),
+       Check => Check));
 
    function Check_Value (Item : Option_Spec; Text : String) return String;
    --  "" when Text is a valid value of the option, else what is wrong

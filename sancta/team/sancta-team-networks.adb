@@ -418,11 +418,11 @@ package body Sancta.Team.Networks is
             return;
          end if;
          Net.States.On_State
-           (Key        => Key,
-            Value_Type => Value_Type,
-            Value      => Value,
-            Revision   => Long_Long_Integer (Wire_Rev),
-            Writer     => Writer);
+           ((Key        => To_Unbounded_String (Key),
+             Value_Type => To_Unbounded_String (Value_Type),
+             Value      => To_Unbounded_String (Value),
+             Revision   => Long_Long_Integer (Wire_Rev),
+             Writer     => To_Unbounded_String (Writer)));
       exception
          when E : Malformed_Data | Constraint_Error =>
             Drop (Net.all, "state entry " & Quoted (Key), Ada.Exceptions.Exception_Message (E));
@@ -562,14 +562,8 @@ package body Sancta.Team.Networks is
       While_Sending (This, Number_And_Publish'Access);
    end Send;
 
-   procedure Publish_State
-     (This       : in out Network;
-      Key        : String;
-      Value_Type : String;
-      Value      : String;
-      Revision   : Long_Long_Integer;
-      Writer     : String)
-   is
+   procedure Publish_State (This : in out Network; Item : State_Entry) is
+      Key : constant String := To_String (Item.Key);
       Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support ("DbEntry"));
 
       procedure Publish_Entry is
@@ -602,10 +596,10 @@ package body Sancta.Team.Networks is
          return;
       end if;
       Msg ("key").Set_String (Key);
-      Msg ("value_type").Set_String (Value_Type);
-      Msg ("value").Set_String (Value);
-      Msg ("revision").As_UInt64.Element.all := ROSIDL.UInt64 (Revision);
-      Msg ("writer").Set_String (Writer);
+      Msg ("value_type").Set_String (To_String (Item.Value_Type));
+      Msg ("value").Set_String (To_String (Item.Value));
+      Msg ("revision").As_UInt64.Element.all := ROSIDL.UInt64 (Item.Revision);
+      Msg ("writer").Set_String (To_String (Item.Writer));
       While_Sending (This, Publish_Entry'Access);
    end Publish_State;
 

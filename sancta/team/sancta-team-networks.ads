@@ -73,15 +73,20 @@ package Sancta.Team.Networks is
    procedure On_Joined (This : in out Membership_Listener; Member : String) is abstract;
    procedure On_Lost (This : in out Membership_Listener; Member : String) is abstract;
 
+   type State_Entry is record
+      Key        : Unbounded_String;
+      Value_Type : Unbounded_String;
+      Value      : Unbounded_String;
+      Revision   : Long_Long_Integer := 0;
+      Writer     : Unbounded_String;
+   end record;
+   --  One entry of the replicated state, as a sancta_msgs/DbEntry carries
+   --  it: Key's Value (the image of a value of type Value_Type, e.g.
+   --  "types.string"), at Revision, written by member Writer.
+
    type State_Consumer is limited interface;
    type State_Consumer_Access is access all State_Consumer'Class;
-   procedure On_State
-     (This       : in out State_Consumer;
-      Key        : String;
-      Value_Type : String;
-      Value      : String;
-      Revision   : Long_Long_Integer;
-      Writer     : String) is abstract;
+   procedure On_State (This : in out State_Consumer; Item : State_Entry) is abstract;
 
    --  Data from outside ----------------------------------------------------------
    --
@@ -164,13 +169,7 @@ package Sancta.Team.Networks is
       Payload : String);
    --  Also delivered locally when the destination includes the sender.
 
-   procedure Publish_State
-     (This       : in out Network;
-      Key        : String;
-      Value_Type : String;
-      Value      : String;
-      Revision   : Long_Long_Integer;
-      Writer     : String);
+   procedure Publish_State (This : in out Network; Item : State_Entry);
 
    procedure Isolate (This : in out Network; Cut : Boolean);
    function Is_Isolated (This : Network) return Boolean;

@@ -6,6 +6,14 @@ package body Sancta.Team.Replicated_Databases is
      (Rev > Than.Revision
       or else (Rev = Than.Revision and then Writer > To_String (Than.Writer)));
 
+   function State_Entry
+     (Key : String; Item : Value'Class; Revision : Long_Long_Integer; Writer : String)
+      return Networks.State_Entry is
+     ((Key => To_Unbounded_String (Key), Value_Type => To_Unbounded_String (Item.Type_Name),
+       Value => To_Unbounded_String (Item.Image), Revision => Revision,
+       Writer => To_Unbounded_String (Writer)));
+   --  Key's Item as the network carries it (its type's name and its image).
+
    protected body Store is
       procedure Write_Local
         (Key : String; Item : Value'Class; Self : String; Rev : out Long_Long_Integer)
@@ -79,7 +87,7 @@ package body Sancta.Team.Replicated_Databases is
       Rev : Long_Long_Integer;
    begin
       This.Data.Write_Local (Key, Item, This.Net.Id, Rev);
-      This.Net.Publish_State (Key, Item.Type_Name, Item.Image, Rev, This.Net.Id);
+      This.Net.Publish_State (State_Entry (Key, Item, Rev, This.Net.Id));
       Settle (This, Key, Item);
    end Put;
 
@@ -169,8 +177,7 @@ package body Sancta.Team.Replicated_Databases is
               or else not This.Net.Is_Member (Writer)
             then
                This.Net.Publish_State
-                 (Meta_Maps.Key (C), M.Item.Element.Type_Name, M.Item.Element.Image,
-                  M.Revision, Writer);
+                 (State_Entry (Meta_Maps.Key (C), M.Item.Element, M.Revision, Writer));
                Sent := Sent + 1;
             end if;
          end;
@@ -184,20 +191,15 @@ package body Sancta.Team.Replicated_Databases is
                         else Name_Sets.To_Set (Joined)));
    end Resynchronise;
 
-   overriding procedure On_State
-     (This       : in out Team_Database;
-      Key        : String;
-      Value_Type : String;
-      Value      : String;
-      Revision   : Long_Long_Integer;
-      Writer     : String)
-   is
-      Item     : constant Runtime.Values.Value'Class := Decode (Value_Type, Value);
+   overriding procedure On_State (This : in out Team_Database; Item : Networks.State_Entry) is
+      Key      : constant String := To_String (Item.Key);
+      Decoded  : constant Runtime.Values.Value'Class :=
+        Decode (To_String (Item.Value_Type), To_String (Item.Value));
       Accepted : Boolean;
    begin
-      This.Data.Offer (Key, Item, Revision, Writer, Accepted);
+      This.Data.Offer (Key, Decoded, Item.Revision, To_String (Item.Writer), Accepted);
       if Accepted then
-         Settle (This, Key, Item);
+         Settle (This, Key, Decoded);
       end if;
    end On_State;
 

@@ -95,13 +95,7 @@ package Sancta.Team.Replicated_Databases is
 
    Catch_Up_Delay : constant Duration := 2.0;
 
-   overriding procedure On_State
-     (This       : in out Team_Database;
-      Key        : String;
-      Value_Type : String;
-      Value      : String;
-      Revision   : Long_Long_Integer;
-      Writer     : String);
+   overriding procedure On_State (This : in out Team_Database; Item : Networks.State_Entry);
    overriding procedure On_Joined (This : in out Team_Database; Member : String);
    overriding procedure On_Lost (This : in out Team_Database; Member : String) is null;
 

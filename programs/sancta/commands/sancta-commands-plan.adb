@@ -411,7 +411,8 @@ package body Sancta.Commands.Plan is
       O.Convergence := 0;
       Annealers.Solve (P, O, Result, Stats);
       Sancta.Allocation.Branch_And_Cut.Solve
-        (P, Result, Duration'Max (0.01, Budget - Stats.Elapsed), Outcome);
+        (P, Result, Outcome,
+         (Time_Limit => Duration'Max (0.01, Budget - Stats.Elapsed), others => <>));
       Result := Outcome.Best;
       Proven := Outcome.Proven;
       Lower_Bound := Outcome.Lower;

@@ -469,8 +469,10 @@ package body Sancta.Allocation.Annealers.Searches is
       X.Tries := X.Tries + 1;
       Store (S, This.Backup);
       Local_Search.Polish_Routes
-        (P, This.Backup, Time_Left, This.Opts.Seed, Found,
-         Check => This.Opts.Check, Kicks => False, Budget_Clock => This.Opts.Budget_Clock);
+        (P, This.Backup,
+         (Time_Limit => Time_Left, Budget_Clock => This.Opts.Budget_Clock,
+          Seed => This.Opts.Seed, Kicks => False, Check => This.Opts.Check, others => <>),
+         Found);
       if Found.After >= Found.Before then
          return;
       end if;

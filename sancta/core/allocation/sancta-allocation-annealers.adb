@@ -39,6 +39,12 @@ package body Sancta.Allocation.Annealers is
       end return;
    end Greedy_Start;
 
+   --  The route search's options from the annealer's, for Time_Limit.
+   function Route_Search_Options (Opts : Options; Time_Limit : Duration)
+     return Local_Search.Search_Options is
+     ((Time_Limit => Time_Limit, Budget_Clock => Opts.Budget_Clock, Seed => Opts.Seed,
+       Neighbours => Opts.Neighbours, Check => Opts.Check, others => <>));
+
    --  The local search after the anneal, in the rest of the budget.
    procedure Improve_Tour
      (P : Problem; Opts : Options; Best : in out Assignment; Stats : in out Progress)
@@ -49,10 +55,11 @@ package body Sancta.Allocation.Annealers is
         (if Opts.Target > 0.0 then Cost (Long_Float'Floor (Long_Float'Min (Opts.Target, 1.0E15)))
          else 0);
    begin
-      Local_Search.Improve (P, Best, Duration'Max (0.0, Opts.Time_Limit - Before), Opts.Seed,
-                            Search, Neighbours => Opts.Neighbours, Check => Opts.Check,
-                            Budget_Clock => Opts.Budget_Clock,
-                            Target => Tour_Target);
+      Local_Search.Improve
+        (P, Best,
+         (Route_Search_Options (Opts, Duration'Max (0.0, Opts.Time_Limit - Before))
+          with delta Target => Tour_Target),
+         Search);
       Stats.Elapsed := Before + Search.Elapsed;
       if Search.After < Search.Before then
          Stats.Best := Evaluate (P, Best, Opts.Criterion).Value;
@@ -74,9 +81,8 @@ package body Sancta.Allocation.Annealers is
       Search : Local_Search.Statistics;
       Before : constant Duration := Stats.Elapsed;
    begin
-      Local_Search.Polish_Routes (P, Best, Budget, Opts.Seed, Search,
-                                  Neighbours => Opts.Neighbours, Check => Opts.Check,
-                                  Kicks => Kicks, Budget_Clock => Opts.Budget_Clock);
+      Local_Search.Polish_Routes
+        (P, Best, (Route_Search_Options (Opts, Budget) with delta Kicks => Kicks), Search);
       Stats.Elapsed := Before + Search.Elapsed;
       if Search.After < Search.Before then
          declare

@@ -119,16 +119,15 @@ package body Sancta.Allocation.Branch_And_Cut is
    --  rounds closed less than this share of the gap to the upper bound.
 
    procedure Solve
-     (P          : Problem;
-      Start      : Assignment;
-      Time_Limit : Duration;
-      Outcome    : out Result;
-      Config     : Settings := Default_Settings)
+     (P       : Problem;
+      Start   : Assignment;
+      Outcome : out Result;
+      Config  : Settings := Default_Settings)
    is
       use Separation;
       Started  : constant Time := Clock;
       CPU_Started : constant Ada.Execution_Time.CPU_Time := Ada.Execution_Time.Clock;
-      Deadline : constant Time := Started + To_Time_Span (Time_Limit);
+      Deadline : constant Time := Started + To_Time_Span (Config.Time_Limit);
       Base     : constant Positive := P.Tasks + P.Robots;
       --  Nodes of the directed cycle.
       Symmetric : Boolean := True;
@@ -164,7 +163,7 @@ package body Sancta.Allocation.Branch_And_Cut is
       function Time_Up return Boolean is
         (if Config.CPU_Time_Limit
          then Ada.Execution_Time."-" (Ada.Execution_Time.Clock, CPU_Started)
-              >= To_Time_Span (Time_Limit)
+              >= To_Time_Span (Config.Time_Limit)
          else Clock >= Deadline);
 
       function Ms_Left return Natural is

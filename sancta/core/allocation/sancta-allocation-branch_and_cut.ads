@@ -18,7 +18,7 @@
 --  in/out pair joined by a fixed edge).
 --
 --     R : Result (P.Robots, P.Tasks);
---     Solve (P.all, Start => Greedy, Time_Limit => 60.0, Outcome => R);
+--     Solve (P.all, Start => Greedy, Outcome => R, Config => (Time_Limit => 60.0, others => <>));
 --     --  R.Proven, R.Upper, R.Lower, R.Best
 --
 --  Supported (Supports returns ""): the MinSum criterion (for one robot
@@ -59,6 +59,8 @@ package Sancta.Allocation.Branch_And_Cut is
       --  The open node of least bound next; False: depth first.
       Purge              : Boolean := True;
       --  Cuts slack for 3 rounds leave the LP for a pool (checked first).
+      Time_Limit         : Duration := 60.0;
+      --  At the limit, the best tour so far and the lower bound reached.
       CPU_Time_Limit     : Boolean := False;
       --  Time_Limit counts the calling task's CPU time (benchmarks on a
       --  shared machine), not wall-clock time.
@@ -94,11 +96,10 @@ package Sancta.Allocation.Branch_And_Cut is
    end record;
 
    procedure Solve
-     (P          : Problem;
-      Start      : Assignment;
-      Time_Limit : Duration;
-      Outcome    : out Result;
-      Config     : Settings := Default_Settings)
+     (P       : Problem;
+      Start   : Assignment;
+      Outcome : out Result;
+      Config  : Settings := Default_Settings)
      with Pre => Supports (P) = "" and then Start.Robots = P.Robots
                  and then Start.Tasks = P.Tasks
                  and then Outcome.Robots = P.Robots and then Outcome.Tasks = P.Tasks;

@@ -30,17 +30,10 @@ package body Sancta.Allocation.Local_Search is
       End_Location   : Natural;
       Route          : in out Count_Array;
       Route_Location : Count_Array;
-      Time_Limit     : Duration;
-      Seed           : Interfaces.Unsigned_64;
-      Stats          : in out Statistics;
-      Neighbours     : Positive;
-      Check          : Boolean;
-      Kicks          : Boolean := True;
-      Budget_Clock   : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
-      Target         : Cost := 0)
+      Opts           : Search_Options;
+      Stats          : in out Statistics)
    is
-      --  Target > 0: stop as soon as the route is no longer than Target
-      --  (closed routes only).
+      --  Opts.Target > 0: closed routes only.
       M : constant Natural := Route'Length;
       Route_In : constant Count_Array (1 .. M) := Route;
       N : constant Positive := M + 1 + (if Has_End then 1 else 0);
@@ -49,7 +42,7 @@ package body Sancta.Allocation.Local_Search is
       subtype Node is Natural range 0 .. N - 1;
       type Node_Array is array (Node) of Node;
       type Flag_Array is array (Node) of Boolean;
-      K : constant Positive := Positive'Min (Neighbours, N - 2);
+      K : constant Positive := Positive'Min (Opts.Neighbours, N - 2);
       type Near_Matrix is array (Node, 1 .. K) of Node;
       type Near_Access is access Near_Matrix;
       Location : constant array (Node) of Natural :=
@@ -64,9 +57,9 @@ package body Sancta.Allocation.Local_Search is
       Queued : Flag_Array := [others => False];
       Head, Count : Natural := 0;
       Length, Saved_Length : Cost := 0;
-      G : Random.Generator := Random.Seeded (Seed);
-      Started  : constant Time := Budget_Clocks.Clock (Budget_Clock);
-      Deadline : constant Time := Started + To_Time_Span (Time_Limit);
+      G : Random.Generator := Random.Seeded (Opts.Seed);
+      Started  : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
+      Deadline : constant Time := Started + To_Time_Span (Opts.Time_Limit);
 
       function Forced (U, V : Node) return Boolean is
         (Has_End and then ((U = 0 and then V = Last) or else (V = 0 and then U = Last)))
@@ -151,7 +144,7 @@ package body Sancta.Allocation.Local_Search is
 
       procedure Verify is
       begin
-         if Check and then Length /= Tour_Length then
+         if Opts.Check and then Length /= Tour_Length then
             raise Program_Error with "local search: length" & Length'Image
               & " /= recomputed" & Tour_Length'Image;
          end if;
@@ -353,9 +346,9 @@ package body Sancta.Allocation.Local_Search is
       begin
          while Count > 0 loop
             Pops := Pops + 1;
-            exit when Time_Limit > 0.0 and then Pops mod 128 = 0
-              and then Budget_Clocks.Clock (Budget_Clock) >= Deadline;
-            exit when Target > 0 and then Length <= Target;
+            exit when Opts.Time_Limit > 0.0 and then Pops mod 128 = 0
+              and then Budget_Clocks.Clock (Opts.Budget_Clock) >= Deadline;
+            exit when Opts.Target > 0 and then Length <= Opts.Target;
             declare
                V : constant Node := Queue (Head);
             begin
@@ -440,8 +433,8 @@ package body Sancta.Allocation.Local_Search is
       --  forced arc's other end); O (M^2): past the deadline, the route is
       --  left as it is.
       for U in Node loop
-         if Time_Limit > 0.0 and then U mod 64 = 63
-           and then Budget_Clocks.Clock (Budget_Clock) >= Deadline
+         if Opts.Time_Limit > 0.0 and then U mod 64 = 63
+           and then Budget_Clocks.Clock (Opts.Budget_Clock) >= Deadline
          then
             Free (Near);
             return;
@@ -486,17 +479,17 @@ package body Sancta.Allocation.Local_Search is
       Stats.Before := Stats.Before + Length + (if Has_End then Bound else 0);
       Descend;
       if Length < Started_Length then
-         Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
+         Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
       end if;
-      if Time_Limit > 0.0 and then Kicks
-        and then not (Target > 0 and then Length <= Target)
+      if Opts.Time_Limit > 0.0 and then Opts.Kicks
+        and then not (Opts.Target > 0 and then Length <= Opts.Target)
       then
          Saved_Order := Order;
          Saved_Position := Position;
          Saved_Length := Length;
          for Kick_Number in Long_Long_Integer range 0 .. Long_Long_Integer'Last loop
             if Kick_Number mod 16 = 0
-              and then Budget_Clocks.Clock (Budget_Clock) >= Deadline
+              and then Budget_Clocks.Clock (Opts.Budget_Clock) >= Deadline
             then
                exit;
             end if;
@@ -505,13 +498,14 @@ package body Sancta.Allocation.Local_Search is
             Descend;
             if Length < Saved_Length then
                Stats.Improving := Stats.Improving + 1;
-               Stats.Time_To_Best := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
+               Stats.Time_To_Best :=
+                 To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
             end if;
             if Length <= Saved_Length then
                Saved_Order := Order;
                Saved_Position := Position;
                Saved_Length := Length;
-               exit when Target > 0 and then Length <= Target;
+               exit when Opts.Target > 0 and then Length <= Opts.Target;
             else
                Order := Saved_Order;
                Position := Saved_Position;
@@ -535,28 +529,18 @@ package body Sancta.Allocation.Local_Search is
    end Search_Route;
 
    procedure Improve
-     (P          : Problem;
-      A          : in out Assignment;
-      Time_Limit : Duration;
-      Seed       : Interfaces.Unsigned_64;
-      Stats      : out Statistics;
-      Neighbours : Positive := 8;
-      Check      : Boolean := False;
-      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
-      Target     : Cost := 0)
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
    is
-      Started : constant Time := Budget_Clocks.Clock (Budget_Clock);
+      Started : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
       Route : Count_Array (1 .. P.Tasks) := [for I in 1 .. P.Tasks => A.Tour (1, I)];
    begin
       Stats := (others => <>);
       Search_Route (P, 1, P.Start (1), False, 0, Route,
-                    [for I in 1 .. P.Tasks => Location_Of (P, Route (I))],
-                    Time_Limit, Seed, Stats, Neighbours, Check,
-                    Budget_Clock => Budget_Clock, Target => Target);
+                    [for I in 1 .. P.Tasks => Location_Of (P, Route (I))], Opts, Stats);
       for I in Route'Range loop
          A.Tour (1, I) := Route (I);
       end loop;
-      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
+      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
    end Improve;
 
    function Nearest_Neighbour_Tour (P : Problem) return Assignment is
@@ -608,18 +592,10 @@ package body Sancta.Allocation.Local_Search is
    end Symmetric_For;
 
    procedure Polish_Routes
-     (P          : Problem;
-      A          : in out Assignment;
-      Time_Limit : Duration;
-      Seed       : Interfaces.Unsigned_64;
-      Stats      : out Statistics;
-      Neighbours : Positive := 8;
-      Check      : Boolean := False;
-      Kicks      : Boolean := True;
-      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
    is
       use type Interfaces.Unsigned_64;
-      Started : constant Time := Budget_Clocks.Clock (Budget_Clock);
+      Started : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
       Free_Tasks : Natural := 0;
    begin
       Stats := (others => <>);
@@ -640,14 +616,15 @@ package body Sancta.Allocation.Local_Search is
                      else Location_Of (P, A.Tour (R, F), A.Choice (A.Tour (R, F))));
                   Closed_At_Depot : constant Boolean := P.Finish (R) = Depot;
                   Share : constant Duration :=
-                    (if Time_Limit = 0.0 then 0.0
-                     else Time_Limit * Free / Free_Tasks);
+                    (if Opts.Time_Limit = 0.0 then 0.0
+                     else Opts.Time_Limit * Free / Free_Tasks);
                begin
                   Search_Route
                     (P, R, Depot, not Closed_At_Depot, P.Finish (R), Route,
                      [for I in 1 .. Free => Location_Of (P, Route (I), A.Choice (Route (I)))],
-                     Share, Seed + Interfaces.Unsigned_64 (R), Stats, Neighbours, Check,
-                     Kicks, Budget_Clock);
+                     (Opts with delta Time_Limit => Share,
+                                      Seed => Opts.Seed + Interfaces.Unsigned_64 (R)),
+                     Stats);
                   for I in 1 .. Free loop
                      A.Tour (R, F + I) := Route (I);
                   end loop;
@@ -655,7 +632,7 @@ package body Sancta.Allocation.Local_Search is
             end if;
          end;
       end loop;
-      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Budget_Clock) - Started);
+      Stats.Elapsed := To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
    end Polish_Routes;
 
 end Sancta.Allocation.Local_Search;

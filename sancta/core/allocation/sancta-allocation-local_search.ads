@@ -8,9 +8,9 @@
 --  shorter side); distances come from the problem's matrix.
 --
 --     if Applies (P.all) then
---        Improve (P.all, A, Time_Limit => 5.0, Seed => 1);   --  A: one robot's tour
+--        Improve (P.all, A, (Time_Limit => 5.0, others => <>), Stats);   --  one robot's tour
 --     end if;
---     Polish_Routes (P.all, A, 0.0, 1, Stats);   --  any team: each route shortened
+--     Polish_Routes (P.all, A, (others => <>), Stats);   --  any team: each route shortened
 --
 --  Polish_Routes works on every robot's own route (after its frozen
 --  prefix, to its end: its start, another depot or anywhere): route
@@ -38,23 +38,30 @@ package Sancta.Allocation.Local_Search is
       --  Since the call: the whole search, the last improvement.
    end record;
 
-   procedure Improve
-     (P          : Problem;
-      A          : in out Assignment;
-      Time_Limit : Duration;
-      Seed       : Interfaces.Unsigned_64;
-      Stats      : out Statistics;
-      Neighbours : Positive := 8;
-      Check      : Boolean := False;
+   type Search_Options is record
+      Time_Limit   : Duration := 0.0;
+      --  0.0: one descent, no kicks, however long it takes.
       Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time;
-      Target     : Cost := 0)
+      --  The clock Time_Limit is measured on.
+      Seed         : Interfaces.Unsigned_64 := 1;
+      --  Of the kicks' random choices.
+      Neighbours   : Positive := 8;
+      --  Length of each task's candidate list (its nearest tasks).
+      Kicks        : Boolean := True;
+      --  False: descents only, each stopped at the end of the budget.
+      Target       : Cost := 0;
+      --  > 0: stop as soon as the tour is no longer than Target.
+      Check        : Boolean := False;
+      --  After every move the tour length is recomputed and compared with
+      --  the incremental one (Program_Error on a difference).
+   end record;
+
+   procedure Improve
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
      with Pre => Applies (P) and then A.Robots = 1 and then A.Tasks = P.Tasks
                  and then A.Length (1) = P.Tasks;
-   --  A's tour improved for Time_Limit on Budget_Clock (0.0: one descent,
-   --  no kicks), the descents included; Target > 0: stops as soon as the
-   --  tour is no longer than Target (Stats.Time_To_Best: when it got there).
-   --  Check: after every move the tour length is recomputed and compared
-   --  with the incremental one (Program_Error on a difference).
+   --  A's tour improved for Opts.Time_Limit, the descents included
+   --  (Stats.Time_To_Best: when it got to its best, or to Opts.Target).
 
    Direct_Size : constant := 1_000;
    --  Above this many tasks, a single tour (Applies) is not annealed first:
@@ -67,24 +74,16 @@ package Sancta.Allocation.Local_Search is
    --  (O (n^2) distance reads, no matrix of its own).
 
    procedure Polish_Routes
-     (P          : Problem;
-      A          : in out Assignment;
-      Time_Limit : Duration;
-      Seed       : Interfaces.Unsigned_64;
-      Stats      : out Statistics;
-      Neighbours : Positive := 8;
-      Check      : Boolean := False;
-      Kicks      : Boolean := True;
-      Budget_Clock : Budget_Clocks.Clock_Kind := Budget_Clocks.Wall_Time)
-     with Pre => A.Robots = P.Robots and then A.Tasks = P.Tasks;
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
+     with Pre => A.Robots = P.Robots and then A.Tasks = P.Tasks and then Opts.Target = 0;
    --  Each route of A with at least 5 free tasks and symmetric distances
    --  for its robot (the shared matrix, or its own on the route's
-   --  locations) improved by the same search, Time_Limit shared among the
-   --  routes by their task counts (0.0: one descent each, unbounded; not
-   --  Kicks: descents only, each stopped at its share; a route whose
-   --  candidate lists, O (M^2) for M tasks, are not built within its share
-   --  is left as it is). Tasks, their robots,
-   --  choices and frozen prefixes stay; Stats.Before / After are the sums
-   --  of the searched routes' base lengths.
+   --  locations) improved by the same search, Opts.Time_Limit shared among
+   --  the routes by their task counts (0.0: one descent each, unbounded;
+   --  a route whose candidate lists, O (M^2) for M tasks, are not built
+   --  within its share is left as it is); route R's kicks draw from seed
+   --  Opts.Seed + R. Tasks, their robots, choices and frozen prefixes stay;
+   --  Stats.Before / After are the sums of the searched routes' base
+   --  lengths.
 
 end Sancta.Allocation.Local_Search;

@@ -211,11 +211,10 @@ package body Sancta.Allocation.Replanning is
    end Record_Progress;
 
    procedure Improve
-     (Q       : aliased Problem;
-      Plan    : in out Assignment;
-      Opts    : Annealers.Options;
-      Trace   : out Sample_Array;
-      Last    : out Natural)
+     (Q     : aliased Problem;
+      Plan  : in out Assignment;
+      Opts  : Annealers.Options;
+      Trace : out Quality_Trace)
    is
       use Ada.Real_Time;
       Started : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
@@ -223,13 +222,13 @@ package body Sancta.Allocation.Replanning is
       Stats : Annealers.Progress;
       Box : aliased Annealers.Best_Box (Q.Robots, Q.Tasks);
    begin
-      Trace := [others => (others => <>)];
+      Trace.Samples := [others => (others => <>)];
       Recorder.Seize;
       Current_Problem := Q'Unchecked_Access;
       Current_Box := Box'Unchecked_Access;
       Current_Criterion := Opts.Criterion;
       O.Box := Box'Unchecked_Access;
-      Recorder.Start (Trace'Length);
+      Recorder.Start (Trace.Capacity);
       Recorder.Add ((0.0, Evaluate (Q, Plan, Opts.Criterion).Value));
       O.Initial := True;
       O.Report_Every := Duration'Min (Opts.Report_Every, Opts.Time_Limit / 10);
@@ -244,9 +243,9 @@ package body Sancta.Allocation.Replanning is
       end;
       Recorder.Add ((To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started),
                      Evaluate (Q, Plan, Opts.Criterion).Value));
-      Last := Natural'Min (Recorder.Count, Trace'Length);
-      for I in 1 .. Last loop
-         Trace (Trace'First + I - 1) := Recorder.Get (I);
+      Trace.Last := Natural'Min (Recorder.Count, Trace.Capacity);
+      for I in 1 .. Trace.Last loop
+         Trace.Samples (I) := Recorder.Get (I);
       end loop;
       Recorder.Release;
    end Improve;

@@ -8,7 +8,7 @@
 --     Kept : constant Count_Array := Remaining_Tasks (P.all, A, Lost => 2, Done => D);
 --     Q : constant Problem_Access := Without_Robot (P.all, A, 2, D, Kept);
 --     S : Assignment := Carried_Over (P.all, Q.all, A, 2, D, Kept, Min_Max);
---     Improve (Q.all, S, Opts, T, Last);   --  T (1 .. Last): (seconds, value)
+--     Improve (Q.all, S, Opts, T);   --  T.Samples (1 .. T.Last): (seconds, value)
 --
 --  Known limit: problems with a plan tree are not handled (the tree would
 --  have to be renumbered with the tasks).
@@ -53,21 +53,25 @@ package Sancta.Allocation.Replanning is
       Value   : Long_Float := 0.0;
    end record;
    type Sample_Array is array (Positive range <>) of Sample;
-   --  The best value of the criterion over time.
+
+   type Quality_Trace (Capacity : Positive) is record
+      Samples : Sample_Array (1 .. Capacity);
+      Last    : Natural := 0;
+   end record;
+   --  The best value of the criterion over time: Samples (1 .. Last).
 
    procedure Improve
-     (Q       : aliased Problem;
-      Plan    : in out Assignment;
-      Opts    : Annealers.Options;
-      Trace   : out Sample_Array;
-      Last    : out Natural)
+     (Q     : aliased Problem;
+      Plan  : in out Assignment;
+      Opts  : Annealers.Options;
+      Trace : out Quality_Trace)
      with Pre => Plan.Robots = Q.Robots and then Plan.Tasks = Q.Tasks
-                 and then Opts.Time_Limit >= 0.05 and then Trace'Length >= 2;
+                 and then Opts.Time_Limit >= 0.05 and then Trace.Capacity >= 2;
    --  Plan improved by the annealer started from it (budget
    --  Opts.Time_Limit, at least 50 ms; reports every tenth of it), its
    --  value at 0 s, the value of the annealer's best plan at every report
-   --  and the final value in Trace (1 .. Last) (samples beyond
-   --  Trace'Length are dropped but for the last). The annealer ranks plans
+   --  and the final value in Trace (samples beyond its capacity are
+   --  dropped but for the last). The annealer ranks plans
    --  by its search objective, which for a makespan adds a small share of
    --  the total cost: the makespan may rise a little between samples.
    --  Re-plans run one at a time (the reports go through one recorder).

@@ -39,34 +39,37 @@ package body Sancta.Robot.Path_Costs is
       F     : constant Frame := Frame_Of (Occupancy);
       N     : constant Natural := F.Width * F.Height;
       Reach : constant Integer := Integer (Real'Ceiling (Robot_Radius / F.Resolution));
+
+      --  A cell is blocked when its centre is closer than the radius to an
+      --  occupied cell (its nearest point): the cells around occupied (I, J).
+      procedure Block_Around (I, J : Integer) is
+      begin
+         for DI in -Reach .. Reach loop
+            for DJ in -Reach .. Reach loop
+               if Contains (F, I + DI, J + DJ) then
+                  declare
+                     GX : constant Real := Real'Max (0.0, Real (abs DI) - 0.5) * F.Resolution;
+                     GY : constant Real := Real'Max (0.0, Real (abs DJ) - 0.5) * F.Resolution;
+                  begin
+                     if GX * GX + GY * GY < Robot_Radius * Robot_Radius
+                       or else (DI = 0 and then DJ = 0)
+                     then
+                        This.Blocked (I + DI, J + DJ) := True;
+                     end if;
+                  end;
+               end if;
+            end loop;
+         end loop;
+      end Block_Around;
    begin
       Finalize (This);
       This.Frame := F;
       This.Connect := Connect;
       This.Blocked := new Boolean_Matrix'(0 .. F.Width - 1 => [0 .. F.Height - 1 => False]);
-      --  A cell is blocked when its centre is closer than the radius to an
-      --  occupied cell (its nearest point).
       for I in 0 .. F.Width - 1 loop
          for J in 0 .. F.Height - 1 loop
             if Occupancy.Occupied (I, J) then
-               for DI in -Reach .. Reach loop
-                  for DJ in -Reach .. Reach loop
-                     if Contains (F, I + DI, J + DJ) then
-                        declare
-                           GX : constant Real :=
-                             Real'Max (0.0, Real (abs DI) - 0.5) * F.Resolution;
-                           GY : constant Real :=
-                             Real'Max (0.0, Real (abs DJ) - 0.5) * F.Resolution;
-                        begin
-                           if GX * GX + GY * GY < Robot_Radius * Robot_Radius
-                             or else (DI = 0 and then DJ = 0)
-                           then
-                              This.Blocked (I + DI, J + DJ) := True;
-                           end if;
-                        end;
-                     end if;
-                  end loop;
-               end loop;
+               Block_Around (I, J);
             end if;
          end loop;
       end loop;

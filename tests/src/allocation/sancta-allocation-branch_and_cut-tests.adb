@@ -55,10 +55,10 @@ package body Sancta.Allocation.Branch_And_Cut.Tests is
    begin
       if Local_Search.Applies (P) then
          --  A good first tour, as sancta plan has from its anneal.
-         Local_Search.Improve (P, Start, 0.5, 1, Search);
+         Local_Search.Improve (P, Start, (Time_Limit => 0.5, others => <>), Search);
       end if;
       return R : Result (P.Robots, P.Tasks) do
-         Solve (P, Start, Limit, R);
+         Solve (P, Start, R, (Time_Limit => Limit, others => <>));
       end return;
    end Solved;
 
@@ -465,12 +465,12 @@ package body Sancta.Allocation.Branch_And_Cut.Tests is
          (Best_Bound => False, Purge => False, others => <>),
          (CPU_Time_Limit => True, others => <>)];
    begin
-      Local_Search.Improve (P.all, Start, 0.5, 1, Search);
+      Local_Search.Improve (P.all, Start, (Time_Limit => 0.5, others => <>), Search);
       for I in Variants'Range loop
          declare
             R : Result (P.Robots, P.Tasks);
          begin
-            Solve (P.all, Start, 120.0, R, Variants (I));
+            Solve (P.all, Start, R, (Variants (I) with delta Time_Limit => 120.0));
             Assert (R.Proven and then R.Upper = 21_282,
                     "variant" & I'Image & ": proven " & R.Proven'Image & R.Upper'Image);
             Assert (R.Root_Bound <= 21_282.0 + 1.0E-6, "variant" & I'Image & ": root bound");

@@ -21,7 +21,7 @@ package body Sancta.Allocation.Local_Search.Tests is
             Optimum : constant Cost :=
               Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Sum;
          begin
-            Improve (P.all, A, 0.05, Seed, S, Check => True);
+            Improve (P.all, A, (Time_Limit => 0.05, Seed => Seed, Check => True, others => <>), S);
             Assert (Validate (P.all, A) = "", Validate (P.all, A));
             Assert (Evaluate (P.all, A, Min_Sum).Sum = S.After, "reported length");
             Assert (S.After <= S.Before, "longer after the search");
@@ -34,7 +34,7 @@ package body Sancta.Allocation.Local_Search.Tests is
          A : Assignment := Annealers.Greedy_Start (P.all, Min_Sum, 1);
          S : Statistics;
       begin
-         Improve (P.all, A, 0.3, 1, S, Check => True);
+         Improve (P.all, A, (Time_Limit => 0.3, Check => True, others => <>), S);
          Assert (Validate (P.all, A) = "", "300 tasks: " & Validate (P.all, A));
          Assert (Evaluate (P.all, A, Min_Sum).Sum = S.After, "300 tasks: reported length");
       end;
@@ -48,7 +48,7 @@ package body Sancta.Allocation.Local_Search.Tests is
    begin
       --  The optimum is 21282; a release build reaches it in well under
       --  a second, a loaded debug build at least comes within 2%.
-      Improve (P.all, A, 2.0, 1, S);
+      Improve (P.all, A, (Time_Limit => 2.0, others => <>), S);
       Assert (Validate (P.all, A) = "", Validate (P.all, A));
       Assert (S.After >= 21_282, "kroA100: shorter than the optimum:" & S.After'Image);
       Assert (S.After <= 21_282 * 102 / 100, "kroA100:" & S.After'Image & " > 2% above 21282");
@@ -60,8 +60,8 @@ package body Sancta.Allocation.Local_Search.Tests is
       B : Assignment := A;
       S : Statistics;
    begin
-      Improve (P.all, A, 0.0, 1, S);
-      Improve (P.all, B, 0.0, 1, S);
+      Improve (P.all, A, (others => <>), S);
+      Improve (P.all, B, (others => <>), S);
       Assert (A = B, "one descent is not deterministic");
    end Deterministic_Descent;
 
@@ -116,7 +116,7 @@ package body Sancta.Allocation.Local_Search.Tests is
          Frozen_Task : constant Positive := A.Tour (2, 1);
          Lengths : constant Count_Array := A.Length;
       begin
-         Polish_Routes (P.all, A, 0.2, 1, S, Check => True);
+         Polish_Routes (P.all, A, (Time_Limit => 0.2, Check => True, others => <>), S);
          After := Evaluate (P.all, A, Min_Sum);
          Assert (Validate (P.all, A) = "", Validate (P.all, A));
          Assert (A.Tour (2, 1) = Frozen_Task and then A.Length = Lengths,
@@ -155,7 +155,8 @@ package body Sancta.Allocation.Local_Search.Tests is
                   Append (A, 1, T);
                end if;
             end loop;
-            Polish_Routes (P.all, A, 0.05, Seed, S, Check => True);
+            Polish_Routes
+              (P.all, A, (Time_Limit => 0.05, Seed => Seed, Check => True, others => <>), S);
             declare
                Optimum : constant Cost :=
                  Evaluate (P.all, Exact.Solve (P.all, Min_Sum), Min_Sum).Sum;
@@ -175,8 +176,8 @@ package body Sancta.Allocation.Local_Search.Tests is
       B : Assignment := A;
       S : Statistics;
    begin
-      Polish_Routes (P.all, A, 0.0, 1, S);
-      Polish_Routes (P.all, B, 0.0, 1, S);
+      Polish_Routes (P.all, A, (others => <>), S);
+      Polish_Routes (P.all, B, (others => <>), S);
       Assert (A = B, "one polish is not deterministic");
    end Deterministic_Route_Polish;
 
@@ -211,22 +212,24 @@ package body Sancta.Allocation.Local_Search.Tests is
       S : Statistics;
       Descent_Length : Cost;
    begin
-      Improve (P.all, Descended, 0.0, 1, S);
+      Improve (P.all, Descended, (others => <>), S);
       Descent_Length := S.After;
       Assert (Descent_Length < Start_Length - 100, "the descent gains too little to test");
-      Improve (P.all, Near, 30.0, 1, S, Target => Start_Length - 1,
-               Budget_Clock => Budget_Clocks.CPU_Time, Check => True);
+      Improve (P.all, Near, (Time_Limit => 30.0, Target => Start_Length - 1,
+                              Budget_Clock => Budget_Clocks.CPU_Time, Check => True,
+                              others => <>), S);
       Assert (S.After <= Start_Length - 1 and then S.After > Descent_Length,
               "target just below the start:" & S.After'Image & ", start" & Start_Length'Image
               & ", descent" & Descent_Length'Image);
       Assert (S.Kicks = 0, "kicked after reaching the target");
       Assert (Evaluate (P.all, Near, Min_Sum).Sum = S.After, "reported length");
-      Improve (P.all, Passed, 30.0, 1, S, Target => Descent_Length + 1,
-               Budget_Clock => Budget_Clocks.CPU_Time);
+      Improve (P.all, Passed, (Time_Limit => 30.0, Target => Descent_Length + 1,
+                                Budget_Clock => Budget_Clocks.CPU_Time, others => <>), S);
       Assert (S.After <= Descent_Length + 1 and then S.Kicks = 0,
               "target reached by the descent:" & S.After'Image & S.Kicks'Image & " kicks");
       Assert (S.Time_To_Best <= S.Elapsed, "time to the target after the end");
-      Improve (P.all, Kicked, 0.05, 1, S, Budget_Clock => Budget_Clocks.CPU_Time);
+      Improve (P.all, Kicked, (Time_Limit => 0.05, Budget_Clock => Budget_Clocks.CPU_Time,
+                                others => <>), S);
       Assert (S.Kicks > 0, "no kick without a target");
    end Stops_At_Target;
 
@@ -253,8 +256,8 @@ package body Sancta.Allocation.Local_Search.Tests is
       for T in 1 .. Tasks loop
          Append (A, 1 + (T - 1) mod 3, T);
       end loop;
-      Polish_Routes (P.all, A, Limit, 1, S, Kicks => False,
-                     Budget_Clock => Budget_Clocks.CPU_Time);
+      Polish_Routes (P.all, A, (Time_Limit => Limit, Kicks => False,
+                                Budget_Clock => Budget_Clocks.CPU_Time, others => <>), S);
       Assert (S.Elapsed <= Limit + 0.05, "route polish took" & S.Elapsed'Image & " s for"
               & Limit'Image & " s");
       Assert (Validate (P.all, A) = "", Validate (P.all, A));

@@ -31,8 +31,7 @@ package body Sancta.Allocation.Replanning.Tests is
          Kept : constant Count_Array := Remaining_Tasks (P.all, Current, 2, Done);
          Q : constant Problem_Access := Without_Robot (P.all, Current, 2, Done, Kept);
          Start : Assignment := Carried_Over (P.all, Q.all, Current, 2, Done, Kept, Min_Max);
-         Trace : Sample_Array (1 .. 100);
-         Last : Natural;
+         Trace : Quality_Trace (Capacity => 100);
          Number : Count_Array (1 .. 40) := [others => 0];
          Began : constant Time := Clock;
          Took : Duration;
@@ -54,21 +53,22 @@ package body Sancta.Allocation.Replanning.Tests is
             end;
          end loop;
          Improve (Q.all, Start, (Criterion => Min_Max, Seed => 2, Time_Limit => 0.05,
-                                 others => <>), Trace, Last);
+                                 others => <>), Trace);
          Took := To_Duration (Clock - Began);
          Assert (Validate (Q.all, Start) = "", "re-plan: " & Validate (Q.all, Start));
          for R in 1 .. 2 loop
             Assert (Start.Tour (R, 1) = Q.Frozen (R, 1)
                     and then Start.Tour (R, 2) = Q.Frozen (R, 2), "a frozen prefix moved");
          end loop;
-         Assert (Last >= 2, "no trace");
-         Assert (Trace (1).Elapsed = 0.0, "the trace starts at 0 s");
-         for I in 2 .. Last loop
-            Assert (Trace (I).Elapsed >= Trace (I - 1).Elapsed,
+         Assert (Trace.Last >= 2, "no trace");
+         Assert (Trace.Samples (1).Elapsed = 0.0, "the trace starts at 0 s");
+         for I in 2 .. Trace.Last loop
+            Assert (Trace.Samples (I).Elapsed >= Trace.Samples (I - 1).Elapsed,
                     "the samples' times go back at sample" & I'Image);
          end loop;
-         Assert (Trace (Last).Value <= Trace (1).Value, "the re-plan is worse than its start");
-         Assert (Trace (Last).Value = Evaluate (Q.all, Start, Min_Max).Value,
+         Assert (Trace.Samples (Trace.Last).Value <= Trace.Samples (1).Value,
+                 "the re-plan is worse than its start");
+         Assert (Trace.Samples (Trace.Last).Value = Evaluate (Q.all, Start, Min_Max).Value,
                  "the last sample is not the plan's value");
          Assert (Took < 1.0, "a 50 ms re-plan took" & Took'Image & " s");
       end;
