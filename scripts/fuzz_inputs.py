@@ -209,13 +209,17 @@ class Reader:
     file (the input was read)."""
 
     def __init__(self, name, seeds, argv, kind, where, mutators, timeout=10.0,
-                 unlocated_ok=None, prepare=None, name_of=None, must_refuse=None):
+                 unlocated_ok=None, prepare=None, name_of=None, must_refuse=None,
+                 session=False):
         self.name, self.seeds, self.argv, self.kind = name, seeds, argv, kind
         self.where, self.mutators, self.timeout = where, mutators, timeout
         self.unlocated_ok = unlocated_ok
         self.prepare = prepare or (lambda seed, folder: None)
         self.name_of = name_of or (lambda seed: "input" + seed.suffix)
         self.must_refuse = must_refuse or (lambda seed_data, data, how: False)
+        self.session = session
+        # session: the program starts others (sancta demo): run in the
+        # repository, each case in a session whose leftovers are a finding.
 
 
 def located_in(file_name):
@@ -307,6 +311,11 @@ def params_seeds(folder):
         (folder / name).write_text(text)
         out.append(folder / name)
     return out
+
+
+def config_prepare(seed, folder):
+    # Includes are relative to the including file.
+    shutil.copytree(SHARE / "config" / "parts", folder / "parts")
 
 
 def world_prepare(seed, folder):
@@ -402,6 +411,24 @@ def build_readers(seed_folder):
                None, BINARY_MUTATORS + [m_mcap_length] * 4, timeout=20.0,
                must_refuse=mcap_must_refuse),
     ]
+    # Configurations that run: each agent for a second (sancta run), the team
+    # demo with sancta-sim and an agent process per robot (sancta demo).
+    run_seeds = [SHARE / "config" / n for n in ("listing-1.1.xml", "robot-ros2.xml", "team.xml",
+                                                "sim-robot.xml", "sim-corridor.xml")]
+    readers += [
+        Reader("run", run_seeds, ["sancta", "run", "{input}", "--all", "--for", "1"], "xml",
+               None, TEXT_MUTATORS, timeout=20.0, must_refuse=xml_must_refuse,
+               prepare=config_prepare, session=True,
+               unlocated_ok=re.compile(r"cannot be opened|no such file|not found|does not exist",
+                                       re.I)),
+        Reader("demo", [SHARE / "config" / "sim-team.xml"],
+               ["sancta", "demo", "{input}", "--max", "3", "--max-wall", "10", "--no-record",
+                "--no-kill", "--quiet", "--out", "{dir}/out"], "xml", None, TEXT_MUTATORS,
+               timeout=40.0, must_refuse=xml_must_refuse, prepare=config_prepare, session=True,
+               # Ran: the summary (exit 1 when tasks are left at --max).
+               unlocated_ok=re.compile(r"cannot be opened|no such file|not found|does not exist|"
+                                       r"== summary ==", re.I)),
+    ]
     del xml_where
     return readers
 
@@ -430,6 +457,53 @@ def run(argv, timeout, stdin=None):
         hung = True
     text = (out + err).decode("utf-8", "replace")
     return p.returncode, text, hung, time.monotonic() - began
+
+
+def session_members(sid):
+    """Processes of session sid still alive (a program started with
+    start_new_session=True is its session's leader: its descendants stay in
+    the session unless they leave it)."""
+    members = []
+    for d in pathlib.Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                fields = (d / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[3]) == sid and fields[0] != "Z":
+                members.append(int(d.name))
+    return members
+
+
+def run_session(argv, timeout, cwd=None):
+    """Runs argv in a session of its own, output to a file (children that
+    outlive it cannot hold a pipe open). After it ends or the time limit,
+    every process left in the session is killed. (exit status, output, hung,
+    how many processes it left behind)."""
+    with tempfile.TemporaryFile() as out:
+        p = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                             env=env(), start_new_session=True, cwd=cwd)
+        try:
+            p.wait(timeout=timeout)
+            hung = False
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGINT)
+            try:
+                p.wait(timeout=3)
+            except subprocess.TimeoutExpired:
+                pass
+            hung = True
+        time.sleep(0.2)  # children stopping with their parent
+        left = [pid for pid in session_members(p.pid) if pid != p.pid]
+        for pid in session_members(p.pid):
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        p.wait()
+        out.seek(0)
+        text = out.read().decode("utf-8", "replace")
+    return p.returncode, text, hung, len(left)
 
 
 def judge(reader, rc, text, hung, data, seed_data, how, file_name):
@@ -481,9 +555,19 @@ def fuzz_reader(reader, rng, cases, keep, log):
             argv = [a.replace("{input}", str(folder / file_name)).replace("{dir}", str(folder))
                     for a in reader.argv]
             argv[0] = str(BIN / argv[0])
-            rc, text, hung, took = run(argv, reader.timeout)
+            if reader.session:
+                rc, text, hung, left = run_session(argv, reader.timeout, cwd=REPO)
+            else:
+                (rc, text, hung, _), left = run(argv, reader.timeout), 0
             verdict = judge(reader, rc, text, hung, data, seed_data if len(hows) == 1 else b"",
                             how, file_name)
+            if left and not verdict:
+                verdict = "left processes"
+            # The processes a demo starts log into its out/ folder.
+            logs = "".join(f.read_text(errors="replace") for f in sorted(folder.glob("out/*.log")))
+            if not verdict and TRACE.search(logs):
+                verdict = "exception in a log"
+                text += "\n--- logs\n" + logs
             counts[verdict or "ok"] = counts.get(verdict or "ok", 0) + 1
             if VERBOSE:
                 log.write(f"{reader.name} #{n} exit {rc} {verdict or 'ok'}: {how[:100]}\n   "
