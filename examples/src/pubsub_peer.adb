@@ -11,7 +11,7 @@
 --  sensor_msgs/LaserScan, nav_msgs/Odometry (the Python test expects the
 --  same values).
 with Ada.Command_Line;
-with Ada.Text_IO;
+with Echo_Peers; use Echo_Peers;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Nodes;
@@ -105,7 +105,6 @@ begin
       declare
          Out_Topic : constant String := Argument (5);
          Pub       : RCL.Publishers.Publisher := Node.Publish (Support, Out_Topic, Profile);
-         Echoed    : Natural := 0 with Atomic;
 
          procedure Echo
            (Node : in out RCL.Nodes.Node'Class;
@@ -119,12 +118,7 @@ begin
          end Echo;
       begin
          Node.Subscribe (Support, Topic, Echo'Access, Profile);
-         Ada.Text_IO.Put_Line ("ready");
-         while Echoed < Count loop
-            Node.Spin (Once => True, During => 0.5);
-         end loop;
-         --  Let the last echoes leave before the writer goes away.
-         Node.Spin (During => 0.3);
+         Spin_Until_Echoed (Node, Count);
       end;
    else
       raise Program_Error with "pubsub_peer: mode pub or echo expected, found " & Mode;

@@ -12,7 +12,7 @@
 --  Python test expects the same values.
 with Ada.Command_Line;
 with Ada.Strings.Unbounded;
-with Ada.Text_IO;
+with Echo_Peers; use Echo_Peers;
 with RCL.Nodes.Typed;
 with RCL.Publishers;
 with ROSIDL.Static.Message_Support;
@@ -116,8 +116,7 @@ procedure Typed_Peer is
          end;
       elsif Mode = "echo" then
          declare
-            Pub    : constant RCL.Publishers.Publisher := Topics.Publish (Node, Argument (4));
-            Echoed : Natural := 0 with Atomic;
+            Pub : constant RCL.Publishers.Publisher := Topics.Publish (Node, Argument (4));
 
             procedure Echo
               (Node : in out RCL.Nodes.Node'Class;
@@ -131,11 +130,7 @@ procedure Typed_Peer is
             end Echo;
          begin
             Topics.Subscribe (Node, Topic, Echo'Access);
-            Ada.Text_IO.Put_Line ("ready");
-            while Echoed < Count loop
-               Node.Spin (Once => True, During => 0.5);
-            end loop;
-            Node.Spin (During => 0.3);
+            Spin_Until_Echoed (Node, Count);
          end;
       else
          raise Program_Error with "typed_peer: mode pub or echo expected, found " & Mode;

@@ -27,7 +27,7 @@ with ROSIDL.Type_Hashes.Tests;
 with Sancta.Allocation.Branch_And_Cut.Tests;
 with Sancta.Allocation.Local_Search.Tests;
 with Sancta.Allocation.Replanning.Tests;
-with Sancta.Allocation.Plan_Tests;
+with Sancta.Allocation.Test_Support.Plan_Tests;
 with Sancta.Allocation.Tests;
 with Sancta.Team.Tests;
 
@@ -65,7 +65,7 @@ package body All_Suites is
       Result.Add_Test (RCL.MCAP.Writers.Contract_Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);
-      Result.Add_Test (Sancta.Allocation.Plan_Tests.Suite);
+      Result.Add_Test (Sancta.Allocation.Test_Support.Plan_Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Branch_And_Cut.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Local_Search.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Replanning.Tests.Suite);

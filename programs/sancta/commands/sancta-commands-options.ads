@@ -1,23 +1,22 @@
 --  Command-line helpers shared by the runtime commands (a private child).
+with Command_Line_Options;
 with Sancta.Runtime.Components;
 with Sancta.Runtime.Configurations;
 
 private package Sancta.Commands.Options is
 
-   Usage_Error : exception;
+   Usage_Error : exception renames Command_Line_Options.Usage_Error;
 
    procedure Parse_Set
      (Text : String; Into : in out Sancta.Runtime.Components.String_Maps.Map);
    --  "name=value" (name with or without "$") into Into; Usage_Error when
    --  malformed.
 
-   function Next_Value (Index : in out Positive) return String;
-   --  The value following the option at Ada.Command_Line.Argument (Index);
-   --  Index then designates that value. Usage_Error "option X needs a value"
-   --  when the command line ends there.
+   function Next_Value (Index : in out Positive) return String
+     renames Command_Line_Options.Next_Value;
 
-   function Number (Option, Text : String) return Long_Float;
-   --  Text as a number; Usage_Error "option X: "T" is not a number".
+   function Number (Option, Text : String) return Long_Float
+     renames Command_Line_Options.Number;
 
    function Number_Value (Index : in out Positive) return Long_Float;
    --  Number (Argument (Index), Next_Value (Index)): the number following

@@ -3,6 +3,7 @@ with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
+with Command_Line_Options; use Command_Line_Options;
 with RCL.Contexts;
 with Sancta.Views.Drawing;
 with Sancta.Views.Feeds;
@@ -13,8 +14,6 @@ procedure Sancta.Views.Main is
 
    use Ada.Strings.Unbounded;
    use Ada.Text_IO;
-
-   Usage_Error : exception;
 
    Help : constant String :=
      "usage: sancta-view [options]" & ASCII.LF
@@ -48,14 +47,6 @@ procedure Sancta.Views.Main is
    Window   : Windows.Window_Config;
    Snapshot : Unbounded_String;
    After    : Duration := 5.0;
-
-   function Number (Option, Text : String) return Long_Float is
-   begin
-      return Long_Float'Value (Text);
-   exception
-      when Constraint_Error =>
-         raise Usage_Error with "option " & Option & ": """ & Text & """ is not a number";
-   end Number;
 
    function Seconds (Option, Text : String) return Duration is
       Value : constant Long_Float := Number (Option, Text);
@@ -91,14 +82,7 @@ procedure Sancta.Views.Main is
    procedure Parse is
       use Ada.Command_Line;
       I : Positive := 1;
-      function Value return String is
-      begin
-         if I = Argument_Count then
-            raise Usage_Error with "option " & Argument (I) & " needs a value";
-         end if;
-         I := I + 1;
-         return Argument (I);
-      end Value;
+      function Value return String is (Next_Value (I));
    begin
       while I <= Argument_Count loop
          declare

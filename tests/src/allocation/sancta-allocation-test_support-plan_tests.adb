@@ -1,16 +1,11 @@
 with Ada.Directories;
 with AUnit.Assertions;        use AUnit.Assertions;
-with Interfaces;
-with Sancta.Allocation.Annealers;
-with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
-with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
-with Sancta.Allocation.Test_Support; use Sancta.Allocation.Test_Support;
 with Sancta.Geometry;
 with Suite_Support; use Suite_Support;
 
-package body Sancta.Allocation.Plan_Tests is
+package body Sancta.Allocation.Test_Support.Plan_Tests is
 
    use type Interfaces.Unsigned_64;
 
@@ -315,4 +310,4 @@ package body Sancta.Allocation.Plan_Tests is
       return Result;
    end Suite;
 
-end Sancta.Allocation.Plan_Tests;
+end Sancta.Allocation.Test_Support.Plan_Tests;
