@@ -500,6 +500,17 @@ case("fuzz-params-file-override-rejected", f"parameters_demo --ros-args --params
 case("fuzz-ros-args-override-rejected", "parameters_demo --ros-args -p rate:=0", 2,
      "--ros-args -p rate: parameter 'rate'", "rate must be within 1 .. 100")
 
+# Found by the fuzzer's run reader (session 9): a group used twice by one
+# agent is refused at the second <use> (its components' keys were reported
+# as provided twice at the group's lines, possibly in an included file).
+g = write("config/group-used-twice.xml",
+          '<team>\n  <group name="base">\n    ' + ODO + '\n  </group>\n'
+          '  <agent id="a1" kind="robot">\n    <use group="base"/>\n    <use group="base"/>\n'
+          '  </agent>\n</team>\n')
+case("fuzz-config-group-used-twice", f"sancta check {g}", 1,
+     "group-used-twice.xml:9:", "group 'base' is used twice in agent 'a1'",
+     "(first at ", "group-used-twice.xml:8:")
+
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
               "#   id | command line | expected exit (a number, or !0) | substrings ;; ...\n"
