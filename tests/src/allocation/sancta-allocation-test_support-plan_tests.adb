@@ -54,8 +54,8 @@ package body Sancta.Allocation.Test_Support.Plan_Tests is
 
       procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      Check_All (Variants, Some_Criteria, Tasks => 19, Robots => 3, First_Seed => 3100,
-                 Plan_Trees => True);
+      Check_All (Variants, Some_Criteria,
+                 (Tasks => 19, Robots => 3, First_Seed => 3100, Plan_Trees => True));
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
@@ -66,7 +66,7 @@ package body Sancta.Allocation.Test_Support.Plan_Tests is
           others => <>)];
    begin
       Check_Exact_Equals_Brute_Force
-        (Variants, Tasks => 6, Robots => 2, First_Seed => 3500, Plan_Trees => True);
+        (Variants, (Tasks => 6, Robots => 2, First_Seed => 3500, Plan_Trees => True));
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
@@ -77,8 +77,8 @@ package body Sancta.Allocation.Test_Support.Plan_Tests is
          (Alternatives => True, Frozen => Robot_1, Own_Callback => True, others => <>)];
    begin
       Check_Annealer_Reaches_Optimum
-        (Variants, Tasks => 10, Robots => 3, First_Seed => 3900, Iterations => 60_000,
-         Plan_Trees => True);
+        (Variants, (Tasks => 10, Robots => 3, First_Seed => 3900, Plan_Trees => True),
+         Iterations => 60_000);
    end Annealer_Reaches_Optimum;
 
    --  One robot at (0, 0); OR: task 1 alone at (90, 0), or the compound

@@ -258,22 +258,20 @@ package body Sancta.Allocation.Test_Support is
    end Print_Mismatch;
 
    procedure For_Each_Random_Problem
-     (Variants   : Variant_Array;
-      Criteria   : Criterion_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Plan_Trees : Boolean := False)
+     (Variants : Variant_Array;
+      Criteria : Criterion_Array;
+      Problems : Random_Problems)
    is
       use type Interfaces.Unsigned_64;
-      Seed : Interfaces.Unsigned_64 := First_Seed;
+      Seed : Interfaces.Unsigned_64 := Problems.First_Seed;
    begin
       for V of Variants loop
          for C of Criteria loop
             Seed := Seed + 1;
             declare
                P : constant Problem_Access :=
-                 Random_Problem (Tasks, Robots, (V with delta Plan_Trees => Plan_Trees), Seed);
+                 Random_Problem (Problems.Tasks, Problems.Robots,
+                                 (V with delta Plan_Trees => Problems.Plan_Trees), Seed);
             begin
                Check (P.all, V, C, Seed);
             end;
@@ -283,11 +281,8 @@ package body Sancta.Allocation.Test_Support is
 
    procedure Check_Annealer_Reaches_Optimum
      (Variants   : Variant_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Iterations : Long_Long_Integer;
-      Plan_Trees : Boolean := False)
+      Problems   : Random_Problems;
+      Iterations : Long_Long_Integer)
    is
       procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
       is
@@ -318,15 +313,11 @@ package body Sancta.Allocation.Test_Support is
 
       procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      Check_All (Variants, Pure_Criteria, Tasks, Robots, First_Seed, Plan_Trees);
+      Check_All (Variants, Pure_Criteria, Problems);
    end Check_Annealer_Reaches_Optimum;
 
    procedure Check_Exact_Equals_Brute_Force
-     (Variants   : Variant_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Plan_Trees : Boolean := False)
+     (Variants : Variant_Array; Problems : Random_Problems)
    is
       procedure Check_One (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64)
       is
@@ -334,7 +325,8 @@ package body Sancta.Allocation.Test_Support is
          A : constant Assignment := Exact.Solve (P, C);
          B : constant Long_Float := Brute_Force (P, C);
       begin
-         Assert (not Plan_Trees or else Or_Count (P) > 0, "no OR node in the test problem");
+         Assert (not Problems.Plan_Trees or else Or_Count (P) > 0,
+                 "no OR node in the test problem");
          Assert (Validate (P, A) = "", "exact invalid: " & Validate (P, A));
          Assert (Evaluate (P, A, C).Value = B,
                  "exact" & Img (Evaluate (P, A, C).Value) & " /= brute force" & Img (B)
@@ -343,7 +335,7 @@ package body Sancta.Allocation.Test_Support is
 
       procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      Check_All (Variants, Pure_Criteria, Tasks, Robots, First_Seed, Plan_Trees);
+      Check_All (Variants, Pure_Criteria, Problems);
    end Check_Exact_Equals_Brute_Force;
 
    procedure Write (File, Text : String) is

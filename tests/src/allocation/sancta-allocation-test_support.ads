@@ -82,38 +82,37 @@ package Sancta.Allocation.Test_Support is
 
    type Variant_Array is array (Positive range <>) of Variant;
 
+   type Random_Problems is record
+      Tasks, Robots : Positive;
+      First_Seed    : Interfaces.Unsigned_64;
+      Plan_Trees    : Boolean;
+   end record;
+   --  The random problems a check makes: Tasks tasks and Robots robots
+   --  each, seeds First_Seed + 1, + 2, ..., tasks 1 .. Tasks - 1 in AND/OR
+   --  plan trees or not.
+   --  Example: (Tasks => 5, Robots => 2, First_Seed => 500, Plan_Trees => False)
+
    generic
       with procedure Check (P : Problem; V : Variant; C : Criterion; Seed : Interfaces.Unsigned_64);
    procedure For_Each_Random_Problem
-     (Variants   : Variant_Array;
-      Criteria   : Criterion_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Plan_Trees : Boolean := False);
-   --  Check, for every variant V (with plan trees if Plan_Trees) and every
-   --  criterion C in turn, one random problem P made with seed First_Seed +
-   --  1, + 2, ... (Seed).
+     (Variants : Variant_Array;
+      Criteria : Criterion_Array;
+      Problems : Random_Problems);
+   --  Check, for every variant V and every criterion C in turn, the next
+   --  of Problems (P, made with seed Seed).
 
    procedure Check_Annealer_Reaches_Optimum
      (Variants   : Variant_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Iterations : Long_Long_Integer;
-      Plan_Trees : Boolean := False);
+      Problems   : Random_Problems;
+      Iterations : Long_Long_Integer);
    --  For_Each_Random_Problem with the pure criteria: the annealer's result
    --  after Iterations moves is valid and reaches the exact solver's optimum
    --  (else both tours of each robot are printed and the test fails); every
    --  baseline's result is valid and no better.
 
    procedure Check_Exact_Equals_Brute_Force
-     (Variants   : Variant_Array;
-      Tasks      : Positive;
-      Robots     : Positive;
-      First_Seed : Interfaces.Unsigned_64;
-      Plan_Trees : Boolean := False);
-   --  For_Each_Random_Problem with the pure criteria (with Plan_Trees, each
+     (Variants : Variant_Array; Problems : Random_Problems);
+   --  For_Each_Random_Problem with the pure criteria (with plan trees, each
    --  problem has an OR node): the exact solver's result is valid and as
    --  good as Brute_Force's optimum.
 

@@ -52,7 +52,8 @@ package body Sancta.Allocation.Tests is
 
       procedure Check_All is new For_Each_Random_Problem (Check_One);
    begin
-      Check_All (Variants, Some_Criteria, Tasks => 18, Robots => 3, First_Seed => 100);
+      Check_All (Variants, Some_Criteria,
+                 (Tasks => 18, Robots => 3, First_Seed => 100, Plan_Trees => False));
    end Incremental_Equals_Recomputed;
 
    procedure Exact_Equals_Brute_Force (Unused : in out Fixture) is
@@ -62,7 +63,8 @@ package body Sancta.Allocation.Tests is
          (Alternatives => True, Heterogeneous => True, others => <>),
          (Infeasible => True, Min_Tasks => 1, others => <>)];
    begin
-      Check_Exact_Equals_Brute_Force (Variants, Tasks => 5, Robots => 2, First_Seed => 500);
+      Check_Exact_Equals_Brute_Force
+        (Variants, (Tasks => 5, Robots => 2, First_Seed => 500, Plan_Trees => False));
    end Exact_Equals_Brute_Force;
 
    procedure Annealer_Reaches_Optimum (Unused : in out Fixture) is
@@ -73,7 +75,8 @@ package body Sancta.Allocation.Tests is
          (Alternatives => True, Frozen => Robots_1_And_2, others => <>)];
    begin
       Check_Annealer_Reaches_Optimum
-        (Variants, Tasks => 9, Robots => 3, First_Seed => 900, Iterations => 40_000);
+        (Variants, (Tasks => 9, Robots => 3, First_Seed => 900, Plan_Trees => False),
+         Iterations => 40_000);
    end Annealer_Reaches_Optimum;
 
    procedure Baselines_Valid_On_Larger (Unused : in out Fixture) is
