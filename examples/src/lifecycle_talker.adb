@@ -57,6 +57,8 @@ begin
                     On_Shutdown   => On_Shutdown'Access);
       declare
          Pub   : Lifecycle_Publisher := Managed.Publish (Support, "lifecycle_chatter");
+         Msg   : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
+         --  One message, refilled by every tick (as talker's).
          Count : Natural := 0;
 
          procedure Tick
@@ -65,7 +67,6 @@ begin
             Elapsed : Duration)
          is
             pragma Unreferenced (Node, Timer, Elapsed);
-            Msg : constant ROSIDL.Dynamic.Message := ROSIDL.Dynamic.Init (Support);
             Img : constant String := Natural'Image (Count + 1);
          begin
             Count := Count + 1;

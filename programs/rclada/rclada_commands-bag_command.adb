@@ -48,20 +48,7 @@ procedure Bag_Command (Args : Arguments) is
    end Value_Of;
 
    function Number (Short, Long, Default : String; Low, High : Long_Float) return Long_Float is
-      Text  : constant String := Value_Of (Short, Long, Default);
-      Value : Long_Float;
-   begin
-      begin
-         Value := Long_Float'Value (Text);
-      exception
-         when Constraint_Error =>
-            raise Usage_Error with Long & ": '" & Text & "' is not a number";
-      end;
-      if not (Value >= Low and then Value <= High) then
-         raise Usage_Error with Long & ": " & Text & " is out of range";
-      end if;
-      return Value;
-   end Number;
+     (Long_Float_Number (Long, Value_Of (Short, Long, Default), Low, High));
 
    function Flag (Short, Long : String) return Boolean is
      (for some A of Args => A = Short or else A = Long);

@@ -149,27 +149,29 @@ package body Rclada_Commands is
       return Default;
    end Option;
 
-   function Number_Option
-     (Args : Arguments; Name : String; Default : String;
-      Low  : Float := 0.0; High : Float := 1.0e6) return Float
-   is
-      --  The value of option Name (Default when absent); Usage_Error unless it is a
-      --  number in Low .. High (so no infinity, NaN or value the caller cannot convert).
-      Image : constant String := Option (Args, Name, Default);
-      Value : Float;
+   generic
+      type Real is digits <>;
+   function Number_In (Name, Image : String; Low, High : Real) return Real;
+   --  Image, the value of option Name, as a number in Low .. High (so no
+   --  infinity, NaN or value the caller cannot convert); Usage_Error
+   --  "NAME: 'IMAGE' is not a number" or "NAME: IMAGE is out of range (LOW .. HIGH)".
 
-      function Bound (X : Float) return String is
-         Text : String (1 .. 20);
+   function Number_In (Name, Image : String; Low, High : Real) return Real is
+      package Real_IO is new Ada.Text_IO.Float_IO (Real);
+      Value : Real;
+
+      function Bound (X : Real) return String is
+         Text : String (1 .. 40);
       begin
-         if X = Float'Floor (X) and then abs X < 1.0e9 then
+         if X = Real'Floor (X) and then abs X < 1.0e9 then
             return Ada.Strings.Fixed.Trim (Long_Long_Integer (X)'Image, Ada.Strings.Left);
          end if;
-         Ada.Float_Text_IO.Put (Text, X, Aft => 3, Exp => 0);
+         Real_IO.Put (Text, X, Aft => 3, Exp => (if abs X < 0.001 then 2 else 0));
          return Ada.Strings.Fixed.Trim (Text, Ada.Strings.Left);
       end Bound;
    begin
       begin
-         Value := Float'Value (Image);
+         Value := Real'Value (Image);
          if not Value'Valid then
             raise Constraint_Error;  --  An infinity or NaN.
          end if;
@@ -182,7 +184,16 @@ package body Rclada_Commands is
            & Bound (Low) & " .. " & Bound (High) & ")";
       end if;
       return Value;
-   end Number_Option;
+   end Number_In;
+
+   function Float_Number is new Number_In (Float);
+   function Long_Float_Number is new Number_In (Long_Float);
+
+   function Number_Option
+     (Args : Arguments; Name : String; Default : String;
+      Low  : Float := 0.0; High : Float := 1.0e6) return Float
+   is (Float_Number (Name, Option (Args, Name, Default), Low, High));
+   --  The value of option Name (Default when absent), a number in Low .. High.
 
    Valued_Options : constant array (1 .. 7) of Unbounded_String :=
      [To_Unbounded_String ("--spin-time"), To_Unbounded_String ("--count"),

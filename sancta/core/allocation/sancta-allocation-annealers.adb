@@ -113,10 +113,14 @@ package body Sancta.Allocation.Annealers is
       Route_Polish : constant Boolean := Opts.Polish and then Opts.Criterion.Ave_Weight = 0.0;
       One_Route : constant Boolean :=
         Route_Polish and then P.Robots = 1 and then not Has_Plan (P)
-        and then (for all T in 1 .. P.Tasks => P.Alt_Count (T) = 1);
+        and then (for all T in 1 .. P.Tasks => P.Alt_Count (T) = 1)
+        and then (P.Symmetric or else Has_Own_Costs (P, 1));
       --  One robot, nothing to choose but the order (open, frozen, other
       --  depot): the route search is the whole problem. With several
       --  robots, the anneal keeps the budget and the routes get one descent.
+      --  Shared asymmetric costs (ATSP): the route search does not apply
+      --  (Local_Search.Polish_Routes), so the anneal keeps the budget; a
+      --  robot's own costs are checked on its route (symmetric or not).
       Share : constant Long_Float :=
         (if Opts.Local_Search > 0.0 and then Opts.Time_Limit > 0.0
            and then (Single_Tour or else One_Route)
