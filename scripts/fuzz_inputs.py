@@ -209,13 +209,17 @@ class Reader:
     file (the input was read)."""
 
     def __init__(self, name, seeds, argv, kind, where, mutators, timeout=10.0,
-                 unlocated_ok=None, prepare=None, name_of=None, must_refuse=None):
+                 unlocated_ok=None, prepare=None, name_of=None, must_refuse=None,
+                 session=False):
         self.name, self.seeds, self.argv, self.kind = name, seeds, argv, kind
         self.where, self.mutators, self.timeout = where, mutators, timeout
         self.unlocated_ok = unlocated_ok
         self.prepare = prepare or (lambda seed, folder: None)
         self.name_of = name_of or (lambda seed: "input" + seed.suffix)
         self.must_refuse = must_refuse or (lambda seed_data, data, how: False)
+        self.session = session
+        # session: the program starts others (sancta demo): run in the
+        # repository, each case in a session whose leftovers are a finding.
 
 
 def located_in(file_name):
@@ -307,6 +311,11 @@ def params_seeds(folder):
         (folder / name).write_text(text)
         out.append(folder / name)
     return out
+
+
+def config_prepare(seed, folder):
+    # Includes are relative to the including file.
+    shutil.copytree(SHARE / "config" / "parts", folder / "parts")
 
 
 def world_prepare(seed, folder):
@@ -402,6 +411,24 @@ def build_readers(seed_folder):
                None, BINARY_MUTATORS + [m_mcap_length] * 4, timeout=20.0,
                must_refuse=mcap_must_refuse),
     ]
+    # Configurations that run: each agent for a second (sancta run), the team
+    # demo with sancta-sim and an agent process per robot (sancta demo).
+    run_seeds = [SHARE / "config" / n for n in ("listing-1.1.xml", "robot-ros2.xml", "team.xml",
+                                                "sim-robot.xml", "sim-corridor.xml")]
+    readers += [
+        Reader("run", run_seeds, ["sancta", "run", "{input}", "--all", "--for", "1"], "xml",
+               None, TEXT_MUTATORS, timeout=20.0, must_refuse=xml_must_refuse,
+               prepare=config_prepare, session=True,
+               unlocated_ok=re.compile(r"cannot be opened|no such file|not found|does not exist",
+                                       re.I)),
+        Reader("demo", [SHARE / "config" / "sim-team.xml"],
+               ["sancta", "demo", "{input}", "--max", "3", "--max-wall", "10", "--no-record",
+                "--no-kill", "--quiet", "--out", "{dir}/out"], "xml", None, TEXT_MUTATORS,
+               timeout=40.0, must_refuse=xml_must_refuse, prepare=config_prepare, session=True,
+               # Ran: the summary (exit 1 when tasks are left at --max).
+               unlocated_ok=re.compile(r"cannot be opened|no such file|not found|does not exist|"
+                                       r"== summary ==", re.I)),
+    ]
     del xml_where
     return readers
 
@@ -430,6 +457,53 @@ def run(argv, timeout, stdin=None):
         hung = True
     text = (out + err).decode("utf-8", "replace")
     return p.returncode, text, hung, time.monotonic() - began
+
+
+def session_members(sid):
+    """Processes of session sid still alive (a program started with
+    start_new_session=True is its session's leader: its descendants stay in
+    the session unless they leave it)."""
+    members = []
+    for d in pathlib.Path("/proc").iterdir():
+        if d.name.isdigit():
+            try:
+                fields = (d / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[3]) == sid and fields[0] != "Z":
+                members.append(int(d.name))
+    return members
+
+
+def run_session(argv, timeout, cwd=None):
+    """Runs argv in a session of its own, output to a file (children that
+    outlive it cannot hold a pipe open). After it ends or the time limit,
+    every process left in the session is killed. (exit status, output, hung,
+    how many processes it left behind)."""
+    with tempfile.TemporaryFile() as out:
+        p = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                             env=env(), start_new_session=True, cwd=cwd)
+        try:
+            p.wait(timeout=timeout)
+            hung = False
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGINT)
+            try:
+                p.wait(timeout=3)
+            except subprocess.TimeoutExpired:
+                pass
+            hung = True
+        time.sleep(0.2)  # children stopping with their parent
+        left = [pid for pid in session_members(p.pid) if pid != p.pid]
+        for pid in session_members(p.pid):
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        p.wait()
+        out.seek(0)
+        text = out.read().decode("utf-8", "replace")
+    return p.returncode, text, hung, len(left)
 
 
 def judge(reader, rc, text, hung, data, seed_data, how, file_name):
@@ -481,9 +555,19 @@ def fuzz_reader(reader, rng, cases, keep, log):
             argv = [a.replace("{input}", str(folder / file_name)).replace("{dir}", str(folder))
                     for a in reader.argv]
             argv[0] = str(BIN / argv[0])
-            rc, text, hung, took = run(argv, reader.timeout)
+            if reader.session:
+                rc, text, hung, left = run_session(argv, reader.timeout, cwd=REPO)
+            else:
+                (rc, text, hung, _), left = run(argv, reader.timeout), 0
             verdict = judge(reader, rc, text, hung, data, seed_data if len(hows) == 1 else b"",
                             how, file_name)
+            if left and not verdict:
+                verdict = "left processes"
+            # The processes a demo starts log into its out/ folder.
+            logs = "".join(f.read_text(errors="replace") for f in sorted(folder.glob("out/*.log")))
+            if not verdict and TRACE.search(logs):
+                verdict = "exception in a log"
+                text += "\n--- logs\n" + logs
             counts[verdict or "ok"] = counts.get(verdict or "ok", 0) + 1
             if VERBOSE:
                 log.write(f"{reader.name} #{n} exit {rc} {verdict or 'ok'}: {how[:100]}\n   "
@@ -502,18 +586,69 @@ def fuzz_reader(reader, rng, cases, keep, log):
     return counts, findings
 
 
+RICH_TYPES = re.compile(r"^(cdr_test_msgs|sancta_test_msgs)::|::(LaserScan|PointCloud2?|Image|"
+                        r"CompressedImage|JointState|Marker|MarkerArray|InteractiveMarker\w*|"
+                        r"OccupancyGrid|Path|GetPlan_\w+|ParameterDescriptor|ParameterValue|"
+                        r"SetParameters\w*|DiagnosticArray|MultiArrayLayout|\w+MultiArray|"
+                        r"WString|GoalStatusArray|Odometry|PoseArray|PolygonStamped)_$")
+# Types with strings, bounded and unbounded sequences, nested arrays and wide
+# strings: half of the typed reader's cases mutate one of them.
+
+
+def m_cdr_shift(rng, data, kind):
+    """Four bytes inserted or removed at an aligned offset: every later field
+    is read from the wrong place (counts become data and data counts)."""
+    i = rng.randrange(len(data) // 4 + 1) * 4
+    if rng.random() < 0.5 and len(data) >= i + 4:
+        return data[:i] + data[i + 4:], f"4 bytes removed at {i}"
+    v = rng.choice(INTERESTING_32)
+    return data[:i] + v.to_bytes(4, "little") + data[i:], f"u32 {v:#x} inserted at {i}"
+
+
+CDR_MUTATORS = [m_flip, m_truncate, m_word, m_word, m_word, m_delete]
+TYPED_MUTATORS = CDR_MUTATORS + [m_cdr_shift, m_cdr_shift]
+
+
+def cdr_seeds(user=False):
+    """(dds_name, payload) of every type: random messages of seeds 1 and 2
+    (cdr_tool random), little-endian."""
+    seeds = []
+    for s in (1, 2):
+        out = subprocess.run([str(BIN / "cdr_tool"), "random", str(s)] + (["user"] if user else []),
+                             capture_output=True, text=True, check=True, env=env()).stdout
+        seeds += [(line.split(" ")[0], bytes.fromhex(line.split(" ")[1]))
+                  for line in out.splitlines()]
+    return seeds
+
+
+def mutate_cdr(rng, seed_data, mutators):
+    """Mutations of the body (after the 4-byte encapsulation header); one
+    case in ten also gets another header."""
+    data = seed_data
+    hows = []
+    for _ in range(rng.choice([1, 1, 2, 3])):
+        body, how = rng.choice(mutators)(rng, data[4:], "binary")
+        data = data[:4] + body
+        hows.append(how)
+    if len(data) >= 4 and rng.random() < 0.1:
+        # Big-endian (the body is read with the other byte order), other
+        # representations (PL_CDR, XCDR2, unknown), options bits.
+        header = rng.choice([b"\x00\x00\x00\x00", b"\x00\x00\x00\x00", b"\x00\x01\x00\x03",
+                             b"\x00\x02\x00\x00", b"\x00\x03\x00\x00", b"\x00\x06\x00\x00",
+                             b"\x00\x07\x00\x00", b"\x00\x0a\x00\x00", b"\x01\x01\x00\x00",
+                             b"\xff\xff\xff\xff"])
+        data = header + data[4:]
+        hows.append(f"header {header.hex()}")
+    return data, "; ".join(hows)
+
+
 def fuzz_cdr(rng, cases, keep, log):
     """CDR payloads of every bundled type (cdr_tool random), mutated and
     decoded by the dynamic decoder in batches (cdr_tool reencode): a line
     must re-encode or say ERROR (Decode_Error) with a byte offset; INTERNAL,
     a crash or a hang is a finding."""
     tool = str(BIN / "cdr_tool")
-    seeds = []
-    for s in (1, 2):
-        out = subprocess.run([tool, "random", str(s)], capture_output=True, text=True,
-                             check=True).stdout
-        seeds += [(line.split(" ")[0], bytes.fromhex(line.split(" ")[1]))
-                  for line in out.splitlines()]
+    seeds = cdr_seeds()
     counts = {}
     findings = []
     batch = []
@@ -539,31 +674,301 @@ def fuzz_cdr(rng, cases, keep, log):
         batch.clear()
 
     def record(v, name, data, how, text):
-        counts[v or "ok"] = counts.get(v or "ok", 0) + 1
-        if v:
-            findings.append((v, name, how, [text.strip()[:300]]))
-            log.write(f"cdr {v}: {name} {data.hex()} ({how})\n   {text.strip()[:300]}\n")
-            log.flush()
-            if keep:
-                d = keep / "cdr"
-                d.mkdir(parents=True, exist_ok=True)
-                with open(d / "findings.txt", "a") as f:
-                    f.write(f"{name} {data.hex()}\n# {how}: {text.strip()[:300]}\n")
+        record_cdr_case(counts, findings, keep, log, "cdr", v, name, data, how, text)
 
     for n in range(cases):
         name, seed_data = seeds[rng.randrange(len(seeds))]
-        data = seed_data
-        hows = []
-        for _ in range(rng.choice([1, 1, 2, 3])):
-            mut = rng.choice([m_flip, m_truncate, m_word, m_word, m_word, m_delete])
-            body, how = mut(rng, data[4:], "binary")
-            data = data[:4] + body
-            hows.append(how)
-        batch.append((name, data, "; ".join(hows)))
+        data, how = mutate_cdr(rng, seed_data, CDR_MUTATORS)
+        batch.append((name, data, how))
         if len(batch) == 500:
             flush()
     if batch:
         flush()
+    return counts, findings
+
+
+def record_cdr_case(counts, findings, keep, log, reader, v, name, data, how, text):
+    # "ok" splits into refused and re-encoded (how much of the decoders the
+    # cases reach).
+    ok = "refused" if " ERROR " in text else "decoded"
+    counts[v or ok] = counts.get(v or ok, 0) + 1
+    if v:
+        findings.append((v, name, how, [text.strip()[:300]]))
+        log.write(f"{reader} {v}: {name} {data.hex()} ({how})\n   {text.strip()[:300]}\n")
+        log.flush()
+        if keep:
+            d = keep / reader
+            d.mkdir(parents=True, exist_ok=True)
+            with open(d / "findings.txt", "a") as f:
+                f.write(f"{name} {data.hex()}\n# {how}: {text.strip()[:300]}\n")
+
+
+TYPED_REFUSAL = re.compile(r"^\S+ ERROR (\w+/(msg|srv|action)/\w+[.:].* at byte offset \d+"
+                           r"|.*encapsulation.* at byte offset 0$)")
+# "NAME ERROR pkg/msg/Type.field: problem at byte offset N", or a refused
+# encapsulation header (the same words as the dynamic decoder's).
+
+
+def typed_verdict(typed, dynamic):
+    """Compares one payload's lines from `cdr_tool reencode typed` (the
+    generated codecs) and `cdr_tool reencode user` (the dynamic codec, the
+    reference): the same answer (same re-encoding, or both refuse), and a
+    typed refusal names the type, the field and the byte offset."""
+    if TRACE.search(typed):
+        return "exception"
+    t_refused, d_refused = " ERROR " in typed, " ERROR " in dynamic
+    if t_refused and not TYPED_REFUSAL.search(typed):
+        return "no location"
+    if t_refused != d_refused:
+        return "typed refused only" if t_refused else "typed accepted only"
+    if not t_refused and typed != dynamic:
+        return "differ"
+    return None
+
+
+def fuzz_typed(rng, cases, keep, log):
+    """The generated (typed) codecs: mutated payloads of every generated
+    type, half of them of types with strings, sequences, nested arrays or
+    wide strings, decoded through ROSIDL.Static (cdr_tool reencode typed) and
+    compared with the dynamic decoder on the same bytes."""
+    tool = str(BIN / "cdr_tool")
+    seeds = cdr_seeds(user=True)
+    rich = [s for s in seeds if RICH_TYPES.search(s[0])]
+    counts = {}
+    findings = []
+    batch = []
+
+    def decode(mode, lines, timeout):
+        rc, text, hung, _ = run([tool, "reencode", mode], timeout, stdin=lines)
+        return rc, text.splitlines(), hung
+
+    def flush():
+        lines = "".join(f"{name} {data.hex()}\n" for name, data, _ in batch).encode()
+        rc_t, typed, hung_t = decode("typed", lines, 120)
+        rc_d, dynamic, hung_d = decode("user", lines, 120)
+        if (rc_t != 0 or hung_t or len(typed) != len(batch)
+                or rc_d != 0 or hung_d or len(dynamic) != len(batch)):
+            for name, data, how in batch:
+                one = f"{name} {data.hex()}\n".encode()
+                rc1, t1, h1 = decode("typed", one, 10)
+                _, d1, _ = decode("user", one, 10)
+                v = ("hang" if h1 else f"signal {-rc1}" if rc1 < 0 else
+                     "exception" if rc1 != 0 or len(t1) != 1 else
+                     typed_verdict(t1[0], d1[0] if d1 else ""))
+                record(v, name, data, how, " / ".join(t1 + d1))
+        else:
+            for (name, data, how), t, d in zip(batch, typed, dynamic):
+                v = typed_verdict(t, d)
+                record(v, name, data, how, t if v in (None, "exception", "no location")
+                       else f"typed: {t[:150]} / dynamic: {d[:150]}")
+        batch.clear()
+
+    def record(v, name, data, how, text):
+        record_cdr_case(counts, findings, keep, log, "typed", v, name, data, how, text)
+
+    for n in range(cases):
+        pool = rich if rich and n % 2 == 0 else seeds
+        name, seed_data = pool[rng.randrange(len(pool))]
+        data, how = mutate_cdr(rng, seed_data, TYPED_MUTATORS)
+        batch.append((name, data, how))
+        if len(batch) == 500:
+            flush()
+    if batch:
+        flush()
+    return counts, findings
+
+
+# ---------------------------------------------------------------- command lines
+
+def cpu_seconds(pid):
+    """User + system CPU time of a running process (Linux /proc)."""
+    try:
+        fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
+def run_until_ready(argv, timeout, ready, quiet_after=None):
+    """Runs argv until it ends, prints a line matching `ready` (then it is
+    stopped with SIGINT, SIGKILL after 3 s: a node that spins) or the time
+    limit (a hang). With quiet_after, a program still running and idle
+    after that many seconds counts as ready (its log may be off or its
+    level above info: nothing to match).
+    (exit status, output, hung, was ready)."""
+    import select
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                         stdin=subprocess.DEVNULL, env=env(), start_new_session=True)
+    out = b""
+    began = time.monotonic()
+    was_ready = ended = False
+    while not (was_ready or ended):
+        left = began + timeout - time.monotonic()
+        if left <= 0:
+            break
+        r, _, _ = select.select([p.stdout], [], [], min(left, 0.2))
+        if r:
+            chunk = os.read(p.stdout.fileno(), 65536)
+            out += chunk
+            ended = not chunk
+            if ready.search(out.decode("utf-8", "replace")):
+                was_ready = True
+                time.sleep(0.1)  # the first lines after "ready"
+        if quiet_after is not None and time.monotonic() - began > quiet_after:
+            # Still running, silent: ready when idle (a node waiting for
+            # work), a hang when busy (over half a CPU since it started).
+            was_ready = p.poll() is None and cpu_seconds(p.pid) < 0.5 * quiet_after
+            break
+    if not ended:
+        try:
+            os.killpg(p.pid, signal.SIGINT)
+        except ProcessLookupError:
+            pass
+    try:
+        rest, _ = p.communicate(timeout=3)
+        hung = not (was_ready or ended)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        rest, _ = p.communicate()
+        hung = True  # ended its output, or was asked to stop, but did not exit
+    out += rest
+    return p.returncode, out.decode("utf-8", "replace"), hung, was_ready
+
+
+ROS_FLAGS = ["--ros-args", "--", "-r", "--remap", "-p", "--param", "--params-file", "-e",
+             "--enclave", "--log-level", "--enable-rosout-logs", "--disable-rosout-logs",
+             "--enable-stdout-logs", "--disable-stdout-logs", "--log-config-file", "-x",
+             "--ros-arg", "-pp", "--remap="]
+ROS_VALUES = ["a:=b", "__node:=", "__node:=x", "__ns:=", "__ns:=/a/b", "__name:=n", "__other:=1",
+              ":=", "x:=", "rostopic://", "rostopic://a:=b", "rosservice://a:=b", "http://a:=b",
+              "n:p:=1", "parameters_demo:rate:=7", "other:rate:=7", "a.b.c:=1", "a..b:=1",
+              ".a:=1", "a.:=1", "~/x:=y", "{node}:=z", "{ns}/a:=b", "/a/b:=/c", "1abc:=2",
+              "x:=[1,2", "x:={a: 1}", "x:=!!str 1", "x:='", "x:=nan", "x:=-.inf", "x:=0x1F",
+              "x:=1_000", "rate:=0", "rate:=101", "rate:=abc", "ids:=[]", "ids:=[1, 'a']",
+              "frozen:=false", "gain:=1e400", "debug", "DEBUG", "Fatal", "x:=bogus", "/", "//",
+              "", " ", "a b:=1", "n:=", "-p", "--", "parameters_demo:=warn", ":=info"]
+
+
+def args_seeds():
+    """(argument list, parameter file text): {input} is the parameter file."""
+    return [
+        (["--ros-args", "-p", "rate:=20", "-p", "name:=robot", "-p", "gain:=2.5", "-p",
+          "ids:=[4, 5]", "--params-file", "{input}", "--"],
+         "parameters_demo:\n  ros__parameters:\n    rate: 15\n    name: \"yaml\"\n"
+         "    gain: 0.5\n    ids: [7, 8, 9]\n"),
+        (["--ros-args", "-r", "__node:=demo2", "-r", "__ns:=/fuzz", "-r",
+          "parameter_events:=events", "--log-level", "warn", "--log-level",
+          "fuzz.demo2:=info", "-e", "/enclave", "--params-file", "{input}"],
+         "/**:\n  ros__parameters:\n    rate: 12\n    frozen: true\n    nested:\n"
+         "      depth: 4\n"),
+        (["first", "--ros-args", "-r", "rostopic://chatter:=news", "-r",
+          "parameters_demo:rosservice://x:=y", "--disable-rosout-logs", "--enable-stdout-logs",
+          "--params-file", "{input}", "-p", "parameters_demo:rate:=30", "--", "last"],
+         "{/fuzz/parameters_demo: {ros__parameters: {gain: -0.5e3, name: 'flow', "
+         "ids: [1, 2]}}}\n"),
+    ]
+
+
+def m_args(rng, args):
+    """One change to an argument list."""
+    args = list(args)
+    what = rng.randrange(8)
+    i = rng.randrange(len(args) + 1)
+    if what == 0 and args:
+        i = min(i, len(args) - 1)
+        del args[i]
+        return args, f"argument {i} dropped"
+    if what == 1 and args:
+        i = min(i, len(args) - 1)
+        args.insert(i, args[i])
+        return args, f"argument {i} doubled"
+    if what == 2 and len(args) > 1:
+        a, b = rng.randrange(len(args)), rng.randrange(len(args))
+        args[a], args[b] = args[b], args[a]
+        return args, f"arguments {a} and {b} swapped"
+    if what == 3:
+        f = rng.choice(ROS_FLAGS)
+        args.insert(i, f)
+        return args, f"flag {f!r} inserted at {i}"
+    if what == 4:
+        v = rng.choice(ROS_VALUES)
+        args.insert(i, v)
+        return args, f"value {v!r} inserted at {i}"
+    if not args:
+        return args, "no argument"
+    # The text of one argument ({input} is the file: left alone).
+    i = min(i, len(args) - 1)
+    if args[i] == "{input}":
+        return args, "file argument kept"
+    data, how = rng.choice([m_flip, m_truncate, m_delete, m_insert_token, m_number,
+                            m_number, m_long_line])(rng, args[i].encode(), "args")
+    # An argument holds no NUL and at most 128 KB (execve's limit).
+    text = data.replace(b"\x00", b"").decode("utf-8", "replace")[:100000]
+    args[i] = text
+    return args, f"argument {i}: {how}"
+
+
+ARGS_LOCATED = re.compile(r"--ros-args|input\.yaml:\d+")
+# A refusal names the argument ("--ros-args: argument 3 ...", "--ros-args -p
+# rate ...") or the parameter file's line ("input.yaml:4:11: ...").
+ARGS_UNLOCATED_OK = re.compile(r": no such file|cannot be opened|cannot read")
+
+
+def fuzz_args(rng, cases, keep, log):
+    """--ros-args and --params-file through the argument parser of a node
+    program (parameters_demo): mutated argument lists and parameter files.
+    A case runs until the node says 'parameters ready' (then it is stopped:
+    accepted) or ends; a refusal must name the argument or file:line."""
+    seeds = args_seeds()
+    ready = re.compile(r"parameters ready")
+    counts = {}
+    findings = []
+    for n in range(cases):
+        args, text = seeds[n % len(seeds)]
+        hows = []
+        for _ in range(rng.choice([1, 1, 2, 3])):
+            args, how = m_args(rng, args)
+            hows.append(how)
+        data = text.encode()
+        if rng.random() < 0.3:
+            data, how = rng.choice(TEXT_MUTATORS)(rng, data, "yaml")
+            hows.append("file: " + how)
+        how = "; ".join(hows)
+        with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
+            folder = pathlib.Path(tmp)
+            (folder / "input.yaml").write_bytes(data)
+            argv = ([str(BIN / "parameters_demo")]
+                    + [a.replace("{input}", str(folder / "input.yaml")) for a in args])
+            rc, out, hung, was_ready = run_until_ready(argv, 15.0, ready, quiet_after=4.0)
+            if hung:
+                verdict = "hang"
+            elif rc is not None and rc < 0 and not was_ready:
+                verdict = f"signal {-rc}"
+            elif TRACE.search(out):
+                verdict = "exception"
+            elif was_ready or rc == 0:
+                verdict = None
+            elif ARGS_LOCATED.search(out) or ARGS_UNLOCATED_OK.search(out):
+                verdict = None
+            else:
+                verdict = "no location"
+            ok = "accepted" if was_ready or rc == 0 else "refused"
+            counts[verdict or ok] = counts.get(verdict or ok, 0) + 1
+            lines = out.strip().splitlines()
+            if VERBOSE:
+                log.write(f"args #{n} exit {rc} {verdict or ok}: {how[:120]}\n   "
+                          + (lines[-1][:200] if lines else "") + "\n")
+            if verdict:
+                findings.append((verdict, "args", how, lines[-3:]))
+                log.write(f"args #{n} {verdict}: {how}\n   argv {argv[1:]!r}"[:600] + "\n   "
+                          + " | ".join(lines[-3:])[:400] + "\n")
+                log.flush()
+                if keep:
+                    d = keep / "args" / f"{n:05d}-{verdict.replace(' ', '_')}"
+                    d.mkdir(parents=True, exist_ok=True)
+                    shutil.copytree(folder, d, dirs_exist_ok=True)
+                    (d / "CASE.txt").write_text(f"mutation {how}\nargv {argv}\nexit {rc}\n"
+                                                f"--- output\n{out}")
     return counts, findings
 
 
@@ -585,16 +990,20 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + [None]:
-            name = "cdr" if reader is None else reader.name
+        for reader in readers + ["cdr", "typed", "args"]:
+            name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
             rng = random.Random(f"{args.seed}/{name}")
             if wanted is not None and name not in wanted:
                 continue
             began = time.monotonic()
-            if reader is None:
+            if reader == "cdr":
                 counts, findings = fuzz_cdr(rng, args.cases, args.keep, log)
+            elif reader == "typed":
+                counts, findings = fuzz_typed(rng, args.cases, args.keep, log)
+            elif reader == "args":
+                counts, findings = fuzz_args(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)

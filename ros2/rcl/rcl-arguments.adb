@@ -61,6 +61,10 @@ package body RCL.Arguments is
 
    function Loaded return Boolean is (Current.Is_Loaded);
 
+   function Quoted (Text : String) return String is ("'" & RCL.Names.Shortened (Text) & "'");
+   --  An argument in a message (shortened: the reason stays within GNAT's
+   --  200 characters of exception message).
+
    function Parse_Severity (Image : String) return RCL.Logging.Severity is
       Lower : constant String := Ada.Characters.Handling.To_Lower (Image);
    begin
@@ -69,8 +73,8 @@ package body RCL.Arguments is
             return S;
          end if;
       end loop;
-      raise Argument_Error with "unknown log level '" & Image
-        & "' (debug, info, warn, error, fatal)";
+      raise Argument_Error with "unknown log level " & Quoted (Image)
+        & " (debug, info, warn, error, fatal)";
    end Parse_Severity;
 
    --  "[node:]from:=to" into a rule; Where names the argument for errors.
@@ -79,7 +83,7 @@ package body RCL.Arguments is
       Sep : constant Natural := Index (Text, ":=");
       function Fail (Why : String) return Remap_Rule is
       begin
-         raise Argument_Error with Where & " '" & Text & "': " & Why;
+         raise Argument_Error with Where & " " & Quoted (Text) & ": " & Why;
          return (Any_Name, others => <>);
       end Fail;
    begin
@@ -159,6 +163,26 @@ package body RCL.Arguments is
       end;
    end Parse_Rule;
 
+   --  "[node:]name:=value" (rcl's form: the value is YAML, read by
+   --  RCL.Parameters); Where names the argument for errors.
+   procedure Check_Parameter_Rule (Text, Where : String) is
+      use Ada.Strings.Fixed;
+      Sep   : constant Natural := Index (Text, ":=");
+      Left  : constant String := (if Sep = 0 then "" else Text (Text'First .. Sep - 1));
+      Colon : constant Natural := Index (Left, ":");
+      Node  : constant String := (if Colon = 0 then "" else Left (Left'First .. Colon - 1));
+      Name  : constant String := (if Colon = 0 then Left else Left (Colon + 1 .. Left'Last));
+      Problem : constant String :=
+        (if Sep = 0 or else Name = "" then "expected [node:]name:=value"
+         elsif Colon > 0 and then RCL.Names.Node_Name_Problem (Node) /= ""
+         then RCL.Names.Node_Name_Problem (Node)
+         else RCL.Names.Parameter_Name_Problem (Name));
+   begin
+      if Problem /= "" then
+         raise Argument_Error with Where & " " & Quoted (Text) & ": " & Problem;
+      end if;
+   end Check_Parameter_Rule;
+
    function Do_Parse (Arguments : Argument_List) return Parsed is
       Result : Parsed;
       In_ROS : Boolean := False;
@@ -197,10 +221,8 @@ package body RCL.Arguments is
                declare
                   Text : constant String := Value_Of (A);
                begin
-                  if A /= "--params-file"
-                    and then Ada.Strings.Fixed.Index (Text, ":=") <= Text'First
-                  then
-                     raise Argument_Error with Where & " '" & Text & "': expected name:=value";
+                  if A /= "--params-file" then
+                     Check_Parameter_Rule (Text, Where);
                   end if;
                   Result.Parameters.Append (A);
                   Result.Parameters.Append (Text);
@@ -210,7 +232,7 @@ package body RCL.Arguments is
                   Text : constant String := Value_Of (A);
                begin
                   if RCL.Names.Namespace_Problem (Text) /= "" then
-                     raise Argument_Error with Where & " '" & Text & "': enclave "
+                     raise Argument_Error with Where & " " & Quoted (Text) & ": enclave "
                        & RCL.Names.Namespace_Problem (Text);
                   end if;
                   Result.Enclave := To_Unbounded_String (Text);
@@ -224,8 +246,8 @@ package body RCL.Arguments is
                      Result.Levels.Append
                        (Level_Setting'(Null_Unbounded_String, Parse_Severity (Text)));
                   elsif Sep = Text'First then
-                     raise Argument_Error with Where & " '" & Text
-                       & "': expected level or logger:=level";
+                     raise Argument_Error with Where & " " & Quoted (Text)
+                       & ": expected level or logger:=level";
                   else
                      Result.Levels.Append
                        (Level_Setting'(To_Unbounded_String (Text (Text'First .. Sep - 1)),
@@ -236,7 +258,7 @@ package body RCL.Arguments is
                      if Ada.Strings.Fixed.Index
                           (Ada.Exceptions.Exception_Message (E), "--ros-args") = 0
                      then
-                        raise Argument_Error with Where & " '" & Text & "': "
+                        raise Argument_Error with Where & " " & Quoted (Text) & ": "
                           & Ada.Exceptions.Exception_Message (E);
                      end if;
                      raise;
@@ -246,8 +268,8 @@ package body RCL.Arguments is
             elsif A in "--enable-stdout-logs" | "--disable-stdout-logs" then
                Result.Stdout := A = "--enable-stdout-logs";
             else
-               raise Argument_Error with "--ros-args: unknown argument '" & A
-                 & "' (argument" & I'Image & "; known: -r/--remap, -p/--param, --params-file, "
+               raise Argument_Error with "--ros-args: unknown argument " & Quoted (A)
+                 & " (argument" & I'Image & "; known: -r/--remap, -p/--param, --params-file, "
                  & "--log-level, -e/--enclave, --enable/--disable-rosout-logs, "
                  & "--enable/--disable-stdout-logs, --)";
             end if;

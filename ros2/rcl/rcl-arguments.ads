@@ -13,7 +13,8 @@
 --                               __node:=name, __ns:=/namespace
 --  --log-level [logger:=]level  debug, info, warn, error, fatal
 --  -e/--enclave /path           the security enclave (participant USER_DATA)
---  -p/--param name:=value, --params-file FILE   (read by RCL.Parameters)
+--  -p/--param [node:]name:=value, --params-file FILE   (read by
+--                               RCL.Parameters; "node:" for that node only)
 --  --enable/--disable-rosout-logs, --enable/--disable-stdout-logs
 --
 --  Anything else after --ros-args is an Argument_Error naming it: nothing

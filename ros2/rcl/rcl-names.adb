@@ -8,11 +8,22 @@ package body RCL.Names is
    function Is_Word_Char (C : Character) return Boolean is
      (C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_');
 
+   function Shortened (Text : String) return String is
+     (if Text'Length <= 40 then Text
+      else Text (Text'First .. Text'First + 29) & "..." & Text (Text'Last - 6 .. Text'Last));
+
+   function Quoted (Name : String) return String is ('"' & Shortened (Name) & '"');
+
+   function Too_Long (What, Name : String; Limit : Positive) return String is
+     (if Name'Length <= Limit then ""
+      else What & " " & Quoted (Name) & ":" & Name'Length'Image
+           & " characters, longer than" & Limit'Image & " (rmw's limit)");
+
    function Position (Name : String; I : Positive) return String is
      (Ada.Strings.Fixed.Trim (Natural'Image (I - Name'First + 1), Ada.Strings.Left));
 
    function Bad_Char (What, Name : String; I : Positive) return String is
-     (What & " """ & Name & """: invalid character '" & Name (I) & "' at position "
+     (What & " " & Quoted (Name) & ": invalid character '" & Name (I) & "' at position "
       & Position (Name, I));
 
    -----------------------
@@ -23,6 +34,8 @@ package body RCL.Names is
    begin
       if Name = "" then
          return "node name is empty";
+      elsif Too_Long ("node name", Name, Node_Name_Limit) /= "" then
+         return Too_Long ("node name", Name, Node_Name_Limit);
       end if;
       for I in Name'Range loop
          if not Is_Word_Char (Name (I)) then
@@ -31,7 +44,7 @@ package body RCL.Names is
          end if;
       end loop;
       if Name (Name'First) in '0' .. '9' then
-         return "node name """ & Name & """: must not start with a digit";
+         return "node name " & Quoted (Name) & ": must not start with a digit";
       end if;
       return "";
    end Node_Name_Problem;
@@ -50,19 +63,19 @@ package body RCL.Names is
       if Name = "" then
          return What & " is empty";
       elsif Name (Name'First) /= '/' then
-         return What & " """ & Name & """: must start with '/'";
+         return What & " " & Quoted (Name) & ": must start with '/'";
       elsif Name = "/" then
          return (if Root_Allowed then "" else What & " ""/"": must have a name after '/'");
       end if;
       for I in Name'Range loop
          if Name (I) = '/' then
             if I < Name'Last and then Name (I + 1) = '/' then
-               return What & " """ & Name & """: repeated '/' at position "
+               return What & " " & Quoted (Name) & ": repeated '/' at position "
                  & Position (Name, I + 1);
             elsif I = Name'Last then
-               return What & " """ & Name & """: must not end with '/'";
+               return What & " " & Quoted (Name) & ": must not end with '/'";
             elsif Name (I + 1) in '0' .. '9' then
-               return What & " """ & Name & """: a token must not start with a digit"
+               return What & " " & Quoted (Name) & ": a token must not start with a digit"
                  & " (position " & Position (Name, I + 1) & ")";
             end if;
          elsif not Is_Word_Char (Name (I)) then
@@ -73,7 +86,9 @@ package body RCL.Names is
    end Path_Problem;
 
    function Namespace_Problem (Namespace : String) return String is
-     (Path_Problem ("namespace", Namespace, Root_Allowed => True));
+     (if Too_Long ("namespace", Namespace, Namespace_Limit) /= ""
+      then Too_Long ("namespace", Namespace, Namespace_Limit)
+      else Path_Problem ("namespace", Namespace, Root_Allowed => True));
 
    function Normalize_Namespace (Namespace : String) return String is
       Result : Unbounded_String := To_Unbounded_String (Namespace);
@@ -95,7 +110,33 @@ package body RCL.Names is
    end Normalize_Namespace;
 
    function Topic_Problem (Name : String) return String is
-     (Path_Problem ("topic name", Name, Root_Allowed => False));
+     (if Too_Long ("topic name", Name, Topic_Name_Limit) /= ""
+      then Too_Long ("topic name", Name, Topic_Name_Limit)
+      else Path_Problem ("topic name", Name, Root_Allowed => False));
+
+   function Parameter_Name_Problem (Name : String) return String is
+      Token_Start : Positive := Name'First;
+   begin
+      if Name = "" then
+         return "parameter name is empty";
+      end if;
+      for I in Name'Range loop
+         if Name (I) = '.' then
+            if I = Token_Start then
+               return "parameter name " & Quoted (Name) & ": empty part before the '.' at position "
+                 & Position (Name, I);
+            end if;
+            Token_Start := I + 1;
+         elsif not (Is_Word_Char (Name (I)) or else Name (I) = '/') then
+            return Bad_Char ("parameter name", Name, I)
+              & " (allowed: letters, digits, '_', '/', '.')";
+         end if;
+      end loop;
+      if Name (Name'Last) = '.' then
+         return "parameter name " & Quoted (Name) & ": must not end with '.'";
+      end if;
+      return "";
+   end Parameter_Name_Problem;
 
    function Fully_Qualified_Node_Name (Node : String; Namespace : String) return String is
      ((if Namespace = "/" then "" else Namespace) & "/" & Node);
@@ -170,7 +211,7 @@ package body RCL.Names is
          begin
             if Problem /= "" then
                raise Name_Error with Problem
-                 & (if Final /= Name then " (expanded from """ & Name & """)" else "");
+                 & (if Final /= Name then " (expanded from " & Quoted (Name) & ")" else "");
             end if;
             return Final;
          end;

@@ -13,21 +13,43 @@ package RCL.Names is
    --  An invalid name; the message quotes the name and names the offending
    --  character and its position (1-based).
 
+   Node_Name_Limit  : constant := 255;
+   Topic_Name_Limit : constant := 247;
+   Namespace_Limit  : constant := Topic_Name_Limit - 2;
+   --  The longest names rmw accepts (a topic keeps 8 characters for the
+   --  DDS prefixes, a namespace 2 more for the shortest name "/x" in it).
+
    function Node_Name_Problem (Name : String) return String;
    --  "" when Name is a valid node name (letters, digits, underscores, not
-   --  starting with a digit, not empty), else what is wrong with it.
+   --  starting with a digit, not empty, at most Node_Name_Limit
+   --  characters), else what is wrong with it.
 
    procedure Validate_Node_Name (Name : String);
    --  Raises Name_Error with Node_Name_Problem.
 
    function Namespace_Problem (Namespace : String) return String;
-   --  "" when Namespace is a valid absolute namespace ("/" or "/a/b").
+   --  "" when Namespace is a valid absolute namespace ("/" or "/a/b") of at
+   --  most Namespace_Limit characters.
 
    function Normalize_Namespace (Namespace : String) return String;
    --  "" -> "/", "ns" -> "/ns", "/ns/" -> "/ns"; then validated (Name_Error).
 
    function Topic_Problem (Name : String) return String;
-   --  "" when Name is a valid fully qualified topic name.
+   --  "" when Name is a valid fully qualified topic name of at most
+   --  Topic_Name_Limit characters.
+
+   function Parameter_Name_Problem (Name : String) return String;
+   --  "" when Name is a valid parameter name as a command line gives it
+   --  (rcl's rule: parts of letters, digits, '_' and '/' joined by single
+   --  dots: "gain", "pid.p", "limits/max"), else what is wrong with it.
+
+   function Shortened (Text : String) return String
+     with Post => Shortened'Result'Length <= 40;
+   --  Text, its middle left out when it is longer than 40 characters: a
+   --  name or an argument quoted in a message leaves room for the reason
+   --  within GNAT's 200 characters of exception message.
+   --  Example:
+   --     pragma Assert (Shortened ((1 .. 100 => 'a'))'Length = 40);
 
    function Name_Token (Text : String) return String is
      [for I in Text'Range =>

@@ -19,7 +19,7 @@ package body RCL.Parameters.Initial_Values is
                if D.Kind (V) = Mapping then
                   Flatten (Pattern, Prefix & K & ".", V);
                else
-                  Add_Override (Pattern, Prefix & K, From_YAML (D, V));
+                  Add_Override (Pattern, Prefix & K, From_YAML (D, V), Origin => D.Where (V));
                end if;
             end;
          end loop;
@@ -68,16 +68,19 @@ package body RCL.Parameters.Initial_Values is
       procedure Load_Argument (Flag, Value : String) is
       begin
          if Flag in "-p" | "--param" then
+            --  "[node:]name:=value", checked by RCL.Arguments.
             declare
-               Sep : constant Natural := Ada.Strings.Fixed.Index (Value, ":=");
+               Sep   : constant Natural := Ada.Strings.Fixed.Index (Value, ":=");
+               Left  : constant String := Value (Value'First .. Sep - 1);
+               Colon : constant Natural := Ada.Strings.Fixed.Index (Left, ":");
+               Node  : constant String :=
+                 (if Colon = 0 then "/**" else Left (Left'First .. Colon - 1));
+               Name  : constant String :=
+                 (if Colon = 0 then Left else Left (Colon + 1 .. Left'Last));
+               Where : constant String := "--ros-args " & Flag & " " & Left;
             begin
-               if Sep <= Value'First then
-                  raise Parameter_Error with "--ros-args " & Flag & " '" & Value
-                    & "': expected name:=value";
-               end if;
-               Add_Override ("/**", Value (Value'First .. Sep - 1),
-                             Parse (Value (Sep + 2 .. Value'Last),
-                                    "--ros-args " & Flag & " " & Value (Value'First .. Sep - 1)));
+               Add_Override (Node, Name, Parse (Value (Sep + 2 .. Value'Last), Where),
+                             Origin => Where);
             end;
          else
             Load_File (Value);

@@ -78,15 +78,15 @@ package body RCL.Parameters.Stores is
       end Clear_Overrides;
 
       procedure Find_Override
-        (Node_Name, Name : String; Found : out Boolean; V : out Value;
-         Pattern : out Unbounded_String) is
+        (Node_Name, Name : String; Found : out Boolean; O : out Override) is
       begin
          Found := False;
-         for O of Overrides loop
-            if To_String (O.Name) = Name and then Matches (To_String (O.Pattern), Node_Name) then
+         for Each of Overrides loop
+            if To_String (Each.Name) = Name
+              and then Matches (To_String (Each.Pattern), Node_Name)
+            then
                Found := True;
-               V := O.New_Value;
-               Pattern := O.Pattern;
+               O := Each;
             end if;
          end loop;
       end Find_Override;

@@ -23,6 +23,8 @@ private package RCL.Parameters.Stores is
    type Override is record
       Pattern, Name : Unbounded_String;
       New_Value     : Value;
+      Origin        : Unbounded_String;
+      --  Where it was given: "p.yaml:4:11", "--ros-args -p rate"; "" unknown.
    end record;
 
    package Override_Vectors is new Ada.Containers.Vectors (Positive, Override);
@@ -44,8 +46,8 @@ private package RCL.Parameters.Stores is
       procedure Add_Override (O : Override);
       procedure Clear_Overrides;
       procedure Find_Override
-        (Node_Name, Name : String; Found : out Boolean; V : out Value;
-         Pattern : out Unbounded_String);
+        (Node_Name, Name : String; Found : out Boolean; O : out Override);
+      --  The last override of Name that applies to Node_Name.
       procedure Mark_Loaded (Was_Loaded : out Boolean);
    private
       Entries    : Entry_Maps.Map;

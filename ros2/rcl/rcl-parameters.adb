@@ -243,10 +243,11 @@ package body RCL.Parameters is
    end Parse;
 
 
-   procedure Add_Override (Node_Pattern, Name : String; New_Value : Value) is
+   procedure Add_Override
+     (Node_Pattern, Name : String; New_Value : Value; Origin : String := "") is
    begin
       Store.Add_Override ((To_Unbounded_String (Node_Pattern), To_Unbounded_String (Name),
-                           New_Value));
+                           New_Value, To_Unbounded_String (Origin)));
    end Add_Override;
 
    procedure Clear_Overrides is
@@ -376,8 +377,14 @@ package body RCL.Parameters is
       Loaded    : Boolean;
       Found     : Boolean;
       Initial   : Value := Default;
-      From      : Unbounded_String;
+      Given     : Stores.Override;
       Done      : Boolean;
+
+      --  "p.yaml:4:11: " (where the override was given, as the location of
+      --  the error about it), then "parameter 'rate' of /node".
+      function Subject return String is
+        ((if Given.Origin = "" then "" else To_String (Given.Origin) & ": ")
+         & "parameter '" & Name & "' of " & Node_Name);
    begin
       if Name = "" then
          raise Parameter_Error with "empty parameter name";
@@ -386,16 +393,17 @@ package body RCL.Parameters is
       if not Loaded then
          Load_Arguments;
       end if;
-      Store.Find_Override (Node_Name, Name, Found, Initial, From);
-      if not Found then
-         Initial := Default;
-      elsif Initial.Kind /= Default.Kind then
+      Store.Find_Override (Node_Name, Name, Found, Given);
+      if Found then
+         Initial := Given.New_Value;
+      end if;
+      if Initial.Kind /= Default.Kind then
          if Default.Kind = Double_Type and then Initial.Kind = Integer_Type then
             Initial := To_Value (Long_Float (Initial.Int));
          else
-            raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name & " is "
-              & Type_Image (Default.Kind) & ", but the override for '" & To_String (From)
-              & "' is " & Type_Image (Initial.Kind) & " (" & Image (Initial) & ")";
+            raise Parameter_Error with Subject & " is " & Type_Image (Default.Kind)
+              & ", but the override for '" & To_String (Given.Pattern) & "' is "
+              & Type_Image (Initial.Kind) & " (" & Image (Initial) & ")";
          end if;
       end if;
       if Found then
@@ -406,9 +414,9 @@ package body RCL.Parameters is
             Reason : constant String := (if V = null then "" else V (Name, Initial));
          begin
             if Reason /= "" then
-               raise Parameter_Error with "parameter '" & Name & "' of " & Node_Name
-                 & ": the override for '" & To_String (From) & "' (" & Image (Initial)
-                 & ") is rejected: " & Reason;
+               raise Parameter_Error with Subject & ": the override for '"
+                 & To_String (Given.Pattern) & "' (" & Image (Initial) & ") is rejected: "
+                 & Reason;
             end if;
          end;
       end if;

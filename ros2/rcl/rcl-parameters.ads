@@ -172,9 +172,11 @@ package RCL.Parameters is
    procedure Load_File (Path : String);
    --  Overrides from a parameter file (see above).
 
-   procedure Add_Override (Node_Pattern, Name : String; New_Value : Value);
+   procedure Add_Override
+     (Node_Pattern, Name : String; New_Value : Value; Origin : String := "");
    --  Node_Pattern: "/**" (every node), a node name or a fully qualified
-   --  name. Later overrides win.
+   --  name. Later overrides win. Origin says where the override was given
+   --  ("p.yaml:4:11", "--ros-args -p rate"), for the errors about it.
 
    procedure Clear_Overrides;
 

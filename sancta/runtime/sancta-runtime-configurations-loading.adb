@@ -631,6 +631,8 @@ package body Sancta.Runtime.Configurations.Loading is
       Rank  : Positive := 1;
       Constants : String_Map := Result.Constants;
       Members   : Ref_Vectors.Vector;
+      Used      : String_Map;
+      --  The groups this agent uses, and where ("team.xml:16:5").
 
       function Group_Names return Local_Databases.Key_Vectors.Vector is
          Result : Local_Databases.Key_Vectors.Vector;
@@ -686,8 +688,15 @@ package body Sancta.Runtime.Configurations.Loading is
                declare
                   Name : constant String := T.Attribute_Value (Child, "group");
                begin
-                  if L.Groups.Contains (Name) then
+                  if Used.Contains (Name) then
+                     --  Its components twice: every key they provide would be
+                     --  reported in the group's file, far from this line.
+                     Report (Result, Error, T.Attribute_Where (Child, "group"),
+                             "group '" & Name & "' is used twice in agent '" & To_String (A.Id)
+                             & "' (first at " & Used (Name) & ")");
+                  elsif L.Groups.Contains (Name) then
                      Members.Append (L.Groups (Name));
+                     Used.Insert (Name, Image (T.Where (Child)));
                   else
                      Report (Result, Error, T.Attribute_Where (Child, "group"),
                              "unknown group '" & Name & "'"

@@ -99,7 +99,7 @@ CASES = [
      ["{d}/many.yaml:200003:5: duplicate key \"p7\""]),
     (["parameters_demo", "--ros-args", "-p", "rate:=1000"], 2,
      ["the override for '/**' (1000) is rejected: rate must be within 1 .. 100"]),
-    (["parameters_demo", "--ros-args", "-p", "rate"], 2, ["argument 3 'rate': expected name:=value"]),
+    (["parameters_demo", "--ros-args", "-p", "rate"], 2, ["argument 3 'rate': expected [node:]name:=value"]),
     (["server", "bad name"], 2, ["bad service name", "position 5"]),
     (["client", "1", "2", "0.5", "bad name"], 2, ["bad service name"]),
     (["client", "1", "2", "-1"], 2, ["usage: client"]),

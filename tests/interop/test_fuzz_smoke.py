@@ -1,14 +1,19 @@
 """A short, deterministic run of scripts/fuzz_inputs.py (fixed seed, a dozen
 mutated inputs per reader, no DDS): every reader refuses its mutated inputs
 with a located error or accepts them, and nothing crashes, hangs or prints
-an exception. The long runs and their findings: /work/notes/fuzz-s8.md."""
+an exception; the typed reader also compares the generated codecs with the
+dynamic decoder on the same payloads. The long runs and their findings:
+/work/notes/fuzz-s8.md."""
+import os
 import pathlib
+import signal
 import subprocess
 import sys
+import time
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,definition,params,mcap,"
-           "mcap-recover,cdr")
+           "mcap-recover,cdr,typed")
 
 
 def test_fuzz_smoke():
@@ -20,3 +25,48 @@ def test_fuzz_smoke():
     rows = [line.split() for line in p.stdout.splitlines()[1:]]
     assert sorted(r[0] for r in rows) == sorted(READERS.split(",")), p.stdout
     assert all(int(r[1]) == 12 for r in rows), p.stdout
+
+
+def test_fuzz_smoke_command_lines():
+    """The args reader (DDS on loopback: each case starts parameters_demo):
+    mutated --ros-args lists and --params-file files are refused naming the
+    argument or file:line, or the node starts; nothing hangs."""
+    p = subprocess.run([sys.executable, str(REPO / "scripts" / "fuzz_inputs.py"), "--seed", "19",
+                        "--cases", "8", "--readers", "args"],
+                       capture_output=True, text=True, timeout=240)
+    assert p.returncode == 0, p.stdout + p.stderr[-3000:]
+    assert p.stdout.splitlines()[1].split()[:2] == ["args", "8"], p.stdout
+
+
+def node_parameter(args, name):
+    """The value parameters_demo logs for parameter `name` when started with
+    args (it logs every parameter once it is ready, then is stopped)."""
+    e = dict(os.environ)
+    e["CYCLONEDDS_URI"] = "file://" + str(REPO / "share" / "cyclonedds-localhost.xml")
+    e["ROS_LOCALHOST_ONLY"] = "1"
+    e.setdefault("ROS_DOMAIN_ID", str(os.getpid() % 200 + 21))
+    p = subprocess.Popen([str(REPO / "bin" / "parameters_demo")] + args, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True, env=e, start_new_session=True)
+    seen = []
+    try:
+        began = time.monotonic()
+        for line in p.stdout:
+            seen.append(line)
+            if f"parameter {name} = " in line:
+                return line.split(" = ", 1)[1].strip()
+            if time.monotonic() - began > 15:
+                break
+    finally:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.wait()
+    raise AssertionError("no value logged:\n" + "".join(seen[-20:]))
+
+
+def test_node_specific_parameter_override():
+    """rcl's "-p node:name:=value" applies to that node only (the args
+    reader's finding: the whole "node:name" was taken as a parameter name,
+    so the override never applied)."""
+    assert node_parameter(["--ros-args", "-p", "parameters_demo:rate:=20"], "rate") == "20"
+    assert node_parameter(["--ros-args", "-p", "other_node:rate:=30"], "rate") == "10"
+    assert node_parameter(["--ros-args", "-r", "__node:=renamed", "-p", "parameters_demo:rate:=40",
+                           "-p", "renamed:gain:=2.5"], "gain") == "2.5"

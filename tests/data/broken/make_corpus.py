@@ -466,6 +466,51 @@ g = write("world/long-image-name.yaml", "resolution: 0.05\nimage: " + "x" * 300
 case("fuzz-world-long-image-name", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
      "long-image-name.yaml:2: image: no such file")
 
+# Found by the fuzzer's args reader (session 9): --ros-args and --params-file
+# through a node program's argument parser. Each failed on the code before its fix.
+# A long argument: its reason kept (GNAT cuts exception messages at 200
+# characters; the argument was quoted whole before the reason).
+A300 = "a" * 300
+case("fuzz-ros-args-long-remap", f"parameters_demo --ros-args -r {A300}", 2,
+     "argument 3", "expected from:=to")
+case("fuzz-ros-args-long-param", f"parameters_demo --ros-args -p {A300}", 2,
+     "argument 3", "expected [node:]name:=value")
+case("fuzz-ros-args-long-log-level", f"parameters_demo --ros-args --log-level {A300}", 2,
+     "argument 3", "unknown log level", "(debug, info, warn, error, fatal)")
+# A parameter name or node prefix rcl refuses (was accepted: an override
+# that never applies).
+case("fuzz-ros-args-parameter-name", "parameters_demo --ros-args -p 'a b:=1'", 2,
+     "argument 3", "parameter name \"a b\": invalid character ' ' at position 2")
+case("fuzz-ros-args-parameter-node", "parameters_demo --ros-args -p 9node:rate:=1", 2,
+     "argument 3", "node name \"9node\": must not start with a digit")
+# Names longer than rmw's limits (a 300-character node name ran, and its
+# discovery announcement failed at every publication).
+case("fuzz-ros-args-long-node-name", f"parameters_demo --ros-args -r __node:={A300}", 2,
+     "argument 3", "node name", "300 characters, longer than 255")
+case("fuzz-ros-args-long-namespace", f"parameters_demo --ros-args -r __ns:=/{A300}", 2,
+     "argument 3", "namespace", "301 characters, longer than 245")
+# An override the node refuses: where it was given (a file's line and column,
+# or the argument) leads the message (was named by neither).
+g = write("args/wrong-type.yaml", "parameters_demo:\n  ros__parameters:\n    rate: fast\n")
+case("fuzz-params-file-override-type", f"parameters_demo --ros-args --params-file {g}", 2,
+     "wrong-type.yaml:3:11: parameter 'rate' of /parameters_demo is integer")
+g = write("args/rejected.yaml", "/**:\n  ros__parameters:\n    name: x\n    rate: 500\n")
+case("fuzz-params-file-override-rejected", f"parameters_demo --ros-args --params-file {g}", 2,
+     "rejected.yaml:4:11: parameter 'rate'", "rate must be within 1 .. 100")
+case("fuzz-ros-args-override-rejected", "parameters_demo --ros-args -p rate:=0", 2,
+     "--ros-args -p rate: parameter 'rate'", "rate must be within 1 .. 100")
+
+# Found by the fuzzer's run reader (session 9): a group used twice by one
+# agent is refused at the second <use> (its components' keys were reported
+# as provided twice at the group's lines, possibly in an included file).
+g = write("config/group-used-twice.xml",
+          '<team>\n  <group name="base">\n    ' + ODO + '\n  </group>\n'
+          '  <agent id="a1" kind="robot">\n    <use group="base"/>\n    <use group="base"/>\n'
+          '  </agent>\n</team>\n')
+case("fuzz-config-group-used-twice", f"sancta check {g}", 1,
+     "group-used-twice.xml:9:", "group 'base' is used twice in agent 'a1'",
+     "(first at ", "group-used-twice.xml:8:")
+
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
               "#   id | command line | expected exit (a number, or !0) | substrings ;; ...\n"

@@ -8,24 +8,38 @@
 --     cdr_tool types                every message type: "T dds_name" then
 --                                   "F name kind collection size bound
 --                                   nested_dds_name|-" per field
---     cdr_tool random SEED          a random message of every type (printable
+--     cdr_tool random SEED [user]   a random message of every type (printable
 --                                   ASCII strings): "dds_name hex" lines
---     cdr_tool reencode             reads "dds_name hex" lines, decodes each
+--                                   ("user": also the types of
+--                                   tests/data/user_interfaces)
+--     cdr_tool reencode [user]      reads "dds_name hex" lines, decodes each
 --                                   and prints "dds_name hex" of its
 --                                   little-endian re-encoding (or
 --                                   "dds_name ERROR text"; "dds_name
 --                                   INTERNAL exception: text" when the
 --                                   decoder raised anything else)
+--     cdr_tool reencode typed       the same through the generated codecs
+--                                   (every type of the registries
+--                                   ROSIDL.Static.Bundled_Types and
+--                                   Test_Types; "dds_name NONE" for a type
+--                                   with no generated codec)
 with Ada.Command_Line;
+with Ada.Directories;
+with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
+with Ada.Unchecked_Deallocation;
 with ROSIDL.CDR;
 with ROSIDL.CDR_Samples;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
+with ROSIDL.Interfaces;
+with ROSIDL.Static.Bundled_Types;
+with ROSIDL.Static.Registries;
+with ROSIDL.Static.Test_Types;
 with ROSIDL.Typesupport;
 
 procedure CDR_Tool is
@@ -88,8 +102,51 @@ procedure CDR_Tool is
       end loop;
    end Put_Random;
 
-   procedure Reencode is
-      Types : constant Samples.Support_Vectors.Vector := Samples.All_Types;
+   procedure Use_User_Interfaces is
+      Root : constant String :=
+        (if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
+         then Ada.Environment_Variables.Value ("SANCTA_ROOT")
+         else Ada.Directories.Current_Directory);
+   begin
+      ROSIDL.Interfaces.Add_Folder (Root & "/tests/data/user_interfaces");
+   end Use_User_Interfaces;
+
+   type Recoder_Kind is (Dynamic_Codec, Generated_Codecs);
+
+   type Bytes_Access is access Ada.Streams.Stream_Element_Array;
+   procedure Free is new Ada.Unchecked_Deallocation
+     (Ada.Streams.Stream_Element_Array, Bytes_Access);
+
+   procedure Reencode (Recoder : Recoder_Kind) is
+      use type ROSIDL.Static.Registries.Type_Entries;
+      Types : constant Samples.Support_Vectors.Vector :=
+        (if Recoder = Dynamic_Codec then Samples.All_Types
+         else Samples.Support_Vectors.Empty_Vector);
+      Generated : constant ROSIDL.Static.Registries.Type_Entries :=
+        ROSIDL.Static.Bundled_Types.Types & ROSIDL.Static.Test_Types.Types;
+
+      --  Name's data re-encoded little-endian, or "" when Name has no codec.
+      function Recoded (Name : String; Data : Ada.Streams.Stream_Element_Array) return String is
+      begin
+         case Recoder is
+            when Dynamic_Codec =>
+               for Support of Types loop
+                  if ROSIDL.Typesupport.DDS_Type_Name (Support) = Name then
+                     return Samples.Hex (Encode (Decode (Support, Data), Little_Endian));
+                  end if;
+               end loop;
+            when Generated_Codecs =>
+               for T of Generated loop
+                  if T.DDS_Type_Name.all = Name then
+                     return Samples.Hex (T.Recode (Data, Little_Endian));
+                  end if;
+               end loop;
+         end case;
+         return "";
+      end Recoded;
+
+      function Unknown return String is
+        (if Recoder = Dynamic_Codec then " ERROR unknown type" else " NONE");
    begin
       while not End_Of_File loop
          declare
@@ -99,38 +156,35 @@ procedure CDR_Tool is
               (if Found_Space = 0 then Line'Last + 1 else Found_Space);
             --  A line without hex is a name with no data (a Decode_Error).
             Name  : constant String := Line (Line'First .. Space - 1);
-            Found : Boolean := False;
          begin
-            for Support of Types loop
-               if ROSIDL.Typesupport.DDS_Type_Name (Support) = Name then
-                  Found := True;
-                  begin
-                     declare
-                        Data : constant Ada.Streams.Stream_Element_Array :=
-                          Samples.From_Hex (Line (Space + 1 .. Line'Last));
-                     begin
-                        Put_Line (Name & " " & Samples.Hex
-                          (Encode (Decode (Support, Data), Little_Endian)));
-                     exception
-                        when E : ROSIDL.Decode_Error | ROSIDL.Encode_Error =>
-                           Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
-                        when E : others =>
-                           --  A decoder bug on malformed bytes (the fuzzer's finding):
-                           --  the line says so and the batch goes on.
-                           Put_Line (Name & " INTERNAL " & Ada.Exceptions.Exception_Name (E)
-                                     & ": " & Ada.Exceptions.Exception_Message (E));
-                     end;
-                  exception
-                     when E : Constraint_Error =>
-                        --  From_Hex's bad hex text.
-                        Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
-                  end;
-                  exit;
-               end if;
-            end loop;
-            if not Found then
-               Put_Line (Name & " ERROR unknown type");
-            end if;
+            declare
+               Data : Bytes_Access :=
+                 new Ada.Streams.Stream_Element_Array'
+                   (Samples.From_Hex (Line (Space + 1 .. Line'Last)));
+               --  On the heap, exactly sized: under valgrind, a read past its
+               --  end is an error (the secondary stack would hide it).
+            begin
+               declare
+                  Result : constant String := Recoded (Name, Data.all);
+               begin
+                  Put_Line (Name & (if Result = "" then Unknown else " " & Result));
+               end;
+               Free (Data);
+            exception
+               when E : ROSIDL.Decode_Error | ROSIDL.Encode_Error =>
+                  Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
+                  Free (Data);
+               when E : others =>
+                  --  A decoder bug on malformed bytes (the fuzzer's finding):
+                  --  the line says so and the batch goes on.
+                  Put_Line (Name & " INTERNAL " & Ada.Exceptions.Exception_Name (E)
+                            & ": " & Ada.Exceptions.Exception_Message (E));
+                  Free (Data);
+            end;
+         exception
+            when E : Constraint_Error =>
+               --  From_Hex's bad hex text.
+               Put_Line (Name & " ERROR " & Ada.Exceptions.Exception_Message (E));
          end;
       end loop;
    end Reencode;
@@ -154,17 +208,29 @@ procedure CDR_Tool is
    begin
       Put_Line (Standard_Error,
                 "usage: cdr_tool list | encode NAME [be] | image NAME"
-                & " | decode NAME HEX | types | random SEED | reencode");
+                & " | decode NAME HEX | types | random SEED [user]"
+                & " | reencode [user|typed]");
       Set_Exit_Status (Failure);
    end Usage;
 
 begin
    if Argument_Count = 1 and then Argument (1) = "types" then
       Put_Types;
-   elsif Argument_Count = 2 and then Argument (1) = "random" then
+   elsif Argument_Count in 2 .. 3 and then Argument (1) = "random"
+     and then (Argument_Count = 2 or else Argument (3) = "user")
+   then
+      if Argument_Count = 3 then
+         Use_User_Interfaces;
+      end if;
       Put_Random (Argument (2));
    elsif Argument_Count = 1 and then Argument (1) = "reencode" then
-      Reencode;
+      Reencode (Dynamic_Codec);
+   elsif Argument_Count = 2 and then Argument (1) = "reencode" and then Argument (2) = "user" then
+      Use_User_Interfaces;
+      Reencode (Dynamic_Codec);
+   elsif Argument_Count = 2 and then Argument (1) = "reencode" and then Argument (2) = "typed"
+   then
+      Reencode (Generated_Codecs);
    elsif Argument_Count = 1 and then Argument (1) = "list" then
       for N of Samples.Names loop
          Put_Line (N);
