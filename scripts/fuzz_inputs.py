@@ -5,7 +5,8 @@ silent wrong answer; malformed wire data never over-reads).
 
 Each reader takes valid seed inputs (bundled configurations, missions,
 TSPLIB files, worlds, interface definitions, parameter files, MCAP bags made
-with the `mcap` package, CDR payloads from `cdr_tool random`), mutates them
+with the `mcap` package, CDR payloads from `cdr_tool random`, --ros-args
+lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
 characters / deep nesting / long lines, duplicated and swapped lines, wrong
 values in length fields) and runs the product's own command on every copy.
@@ -21,6 +22,12 @@ A case is flagged when the program
 
     nice -n 19 .venv/bin/python scripts/fuzz_inputs.py --seed 1 --cases 2000 \
         [--readers config,tsp,...] [--keep out/fuzz]
+
+Readers that do more than read a file: `typed` (the generated codecs,
+compared with the dynamic decoder on the same mutated payloads), `args`
+(parameters_demo's --ros-args / --params-file; DDS on loopback: source
+scripts/env.sh first), `run` and `demo` (sancta run / sancta demo on mutated
+configurations; processes left behind are findings).
 
 Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
