@@ -5,7 +5,8 @@ silent wrong answer; malformed wire data never over-reads).
 
 Each reader takes valid seed inputs (bundled configurations, missions,
 TSPLIB files, worlds, interface definitions, parameter files, MCAP bags made
-with the `mcap` package, CDR payloads from `cdr_tool random`), mutates them
+with the `mcap` package, CDR payloads from `cdr_tool random`, --ros-args
+lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
 characters / deep nesting / long lines, duplicated and swapped lines, wrong
 values in length fields) and runs the product's own command on every copy.
@@ -21,6 +22,12 @@ A case is flagged when the program
 
     nice -n 19 .venv/bin/python scripts/fuzz_inputs.py --seed 1 --cases 2000 \
         [--readers config,tsp,...] [--keep out/fuzz]
+
+Readers that do more than read a file: `typed` (the generated codecs,
+compared with the dynamic decoder on the same mutated payloads), `args`
+(parameters_demo's --ros-args / --params-file; DDS on loopback: source
+scripts/env.sh first), `run` and `demo` (sancta run / sancta demo on mutated
+configurations; processes left behind are findings).
 
 Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
@@ -526,6 +533,10 @@ def judge(reader, rc, text, hung, data, seed_data, how, file_name):
     if reader.unlocated_ok is not None and reader.unlocated_ok.search(text):
         return None
     if reader.name == "pgm" and re.search(r"input\.pgm(:\d+|: byte \d+)", text):
+        return None
+    # An error located in a file the input includes (a value from one of the
+    # input's constants is reported where it is used).
+    if re.search(r"/parts/[\w.-]+\.xml:\d+", text):
         return None
     return "no location"
 

@@ -143,6 +143,10 @@ package body Sancta.Standard_Components.Logger is
 
    function Create is new Factory.Create_Component (Logger_Component);
 
+   Longest_Name_Part : constant := 255;
+   --  NAME_MAX of Linux file systems: a longer folder or file name cannot be
+   --  created (Use_Error when the logger starts).
+
    function Check_File (Name : String) return String is
       --  "" when Name can be a log file: not empty, not a folder, and the
       --  nearest existing ancestor is a folder (missing folders are made).
@@ -153,6 +157,20 @@ package body Sancta.Standard_Components.Logger is
       elsif Exists (Name) and then Kind (Name) = Directory then
          return "'" & Name & "' is a folder";
       end if;
+      --  Each part of the path within the file system's limit (NAME_MAX).
+      declare
+         Part_First : Positive := Name'First;
+      begin
+         for I in Name'Range loop
+            if I = Name'Last or else Name (I + 1) = '/' then
+               if I - Part_First + 1 > Longest_Name_Part then
+                  return "a part of the file name has" & Natural'Image (I - Part_First + 1)
+                    & " characters, more than" & Longest_Name_Part'Image;
+               end if;
+               Part_First := I + 2;
+            end if;
+         end loop;
+      end;
       declare
          Folder : Unbounded_String := To_Unbounded_String (Containing_Directory (Name));
       begin

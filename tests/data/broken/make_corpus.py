@@ -511,6 +511,15 @@ case("fuzz-config-group-used-twice", f"sancta check {g}", 1,
      "group-used-twice.xml:9:", "group 'base' is used twice in agent 'a1'",
      "(first at ", "group-used-twice.xml:8:")
 
+# A logger file whose name has a part longer than 255 characters: refused
+# by the check (sancta run started it and the logger failed in Start with
+# ADA.IO_EXCEPTIONS.USE_ERROR, retried forever).
+g = config("logger-long-name", '<component name="logger" file="out/' + "x_" * 150
+           + '.csv">\n      <requires data="a" as="a"/>\n    </component>\n    '
+           + ODO.replace('as="odometric_pose"', 'as="a"'))
+case("fuzz-config-logger-long-file-name", f"sancta check {g}", 1,
+     "logger-long-name.xml:3:", "a part of the file name has 304 characters, more than 255")
+
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"
               "#   id | command line | expected exit (a number, or !0) | substrings ;; ...\n"
