@@ -632,6 +632,20 @@ def cdr_seeds(user=False):
     return seeds
 
 
+def mutate_in_batches(rng, cases, pick, mutators, batch, flush, size=500):
+    """Mutates `cases` payloads, pick(n) giving case n's (type name, seed
+    payload), and hands them to flush() `size` at a time (batch is the list
+    flush() reads and clears)."""
+    for n in range(cases):
+        name, seed_data = pick(n)
+        data, how = mutate_cdr(rng, seed_data, mutators)
+        batch.append((name, data, how))
+        if len(batch) == size:
+            flush()
+    if batch:
+        flush()
+
+
 def mutate_cdr(rng, seed_data, mutators):
     """Mutations of the body (after the 4-byte encapsulation header); one
     case in ten also gets another header."""
@@ -687,14 +701,8 @@ def fuzz_cdr(rng, cases, keep, log):
     def record(v, name, data, how, text):
         record_cdr_case(counts, findings, keep, log, "cdr", v, name, data, how, text)
 
-    for n in range(cases):
-        name, seed_data = seeds[rng.randrange(len(seeds))]
-        data, how = mutate_cdr(rng, seed_data, CDR_MUTATORS)
-        batch.append((name, data, how))
-        if len(batch) == 500:
-            flush()
-    if batch:
-        flush()
+    mutate_in_batches(rng, cases, lambda n: seeds[rng.randrange(len(seeds))], CDR_MUTATORS,
+                      batch, flush)
     return counts, findings
 
 
@@ -727,6 +735,10 @@ def typed_verdict(typed, dynamic):
     typed refusal names the type, the field and the byte offset."""
     if TRACE.search(typed):
         return "exception"
+    if typed.endswith(" NONE"):
+        return None
+        # No generated codec for this type (e.g. a user interface found on
+        # the interface path): nothing to compare.
     t_refused, d_refused = " ERROR " in typed, " ERROR " in dynamic
     if t_refused and not TYPED_REFUSAL.search(typed):
         return "no location"
@@ -777,15 +789,11 @@ def fuzz_typed(rng, cases, keep, log):
     def record(v, name, data, how, text):
         record_cdr_case(counts, findings, keep, log, "typed", v, name, data, how, text)
 
-    for n in range(cases):
+    def pick(n):
         pool = rich if rich and n % 2 == 0 else seeds
-        name, seed_data = pool[rng.randrange(len(pool))]
-        data, how = mutate_cdr(rng, seed_data, TYPED_MUTATORS)
-        batch.append((name, data, how))
-        if len(batch) == 500:
-            flush()
-    if batch:
-        flush()
+        return pool[rng.randrange(len(pool))]
+
+    mutate_in_batches(rng, cases, pick, TYPED_MUTATORS, batch, flush)
     return counts, findings
 
 
