@@ -12,19 +12,30 @@ package body ROSIDL.CDR_Samples is
    use ROSIDL.Typesupport;
    use type Int8, Int16, Int32, Int64, Float32, Float64;
 
-   Added : Boolean := False;
+   Test_Folder_Added, User_Folder_Added : Boolean := False;
 
-   procedure Use_Test_Interfaces is
+   procedure Add_Once (Folder : String; Added : in out Boolean) is
+      --  Folder (relative to the repository) on the search path, once.
       Root : constant String :=
         (if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
          then Ada.Environment_Variables.Value ("SANCTA_ROOT")
          else Ada.Directories.Current_Directory);
    begin
       if not Added then
-         ROSIDL.Interfaces.Add_Folder (Root & "/tests/interfaces");
+         ROSIDL.Interfaces.Add_Folder (Root & "/" & Folder);
          Added := True;
       end if;
+   end Add_Once;
+
+   procedure Use_Test_Interfaces is
+   begin
+      Add_Once ("tests/interfaces", Test_Folder_Added);
    end Use_Test_Interfaces;
+
+   procedure Use_User_Interfaces is
+   begin
+      Add_Once ("tests/data/user_interfaces", User_Folder_Added);
+   end Use_User_Interfaces;
 
    procedure Set_Header (H : Field_Ref; Sec : Int32; Nanosec : UInt32; Frame : String)
    is

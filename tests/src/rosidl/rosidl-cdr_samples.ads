@@ -23,6 +23,9 @@ package ROSIDL.CDR_Samples is
    --  Adds tests/interfaces (cdr_test_msgs) to the search path, once; the
    --  folder is found from SANCTA_ROOT, else the current directory.
 
+   procedure Use_User_Interfaces;
+   --  Adds tests/data/user_interfaces (a user's own package) the same way.
+
    function Make (Name : String) return ROSIDL.Dynamic.Message;
    --  The sample called Name; Constraint_Error for an unknown name.
 

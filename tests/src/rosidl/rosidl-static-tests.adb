@@ -1,6 +1,4 @@
 with Ada.Containers.Indefinite_Ordered_Maps;
-with Ada.Directories;
-with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Streams;
 with Ada.Strings.Fixed;
@@ -35,19 +33,10 @@ package body ROSIDL.Static.Tests is
 
    package Entry_Maps is new Ada.Containers.Indefinite_Ordered_Maps (String, Type_Entry);
 
-   User_Folder_Added : Boolean := False;
-
    procedure Use_User_Interfaces is
-      Root : constant String :=
-        (if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
-         then Ada.Environment_Variables.Value ("SANCTA_ROOT")
-         else Ada.Directories.Current_Directory);
    begin
       ROSIDL.CDR_Samples.Use_Test_Interfaces;
-      if not User_Folder_Added then
-         ROSIDL.Interfaces.Add_Folder (Root & "/tests/data/user_interfaces");
-         User_Folder_Added := True;
-      end if;
+      ROSIDL.CDR_Samples.Use_User_Interfaces;
    end Use_User_Interfaces;
 
    function Generated return Entry_Maps.Map is

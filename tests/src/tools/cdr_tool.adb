@@ -24,8 +24,6 @@
 --                                   Test_Types; "dds_name NONE" for a type
 --                                   with no generated codec)
 with Ada.Command_Line;
-with Ada.Directories;
-with Ada.Environment_Variables;
 with Ada.Exceptions;
 with Ada.Streams;
 with Ada.Strings.Fixed;
@@ -36,7 +34,6 @@ with ROSIDL.CDR;
 with ROSIDL.CDR_Samples;
 with ROSIDL.Definitions;
 with ROSIDL.Dynamic;
-with ROSIDL.Interfaces;
 with ROSIDL.Static.Bundled_Types;
 with ROSIDL.Static.Registries;
 with ROSIDL.Static.Test_Types;
@@ -101,15 +98,6 @@ procedure CDR_Tool is
                                           Little_Endian)));
       end loop;
    end Put_Random;
-
-   procedure Use_User_Interfaces is
-      Root : constant String :=
-        (if Ada.Environment_Variables.Exists ("SANCTA_ROOT")
-         then Ada.Environment_Variables.Value ("SANCTA_ROOT")
-         else Ada.Directories.Current_Directory);
-   begin
-      ROSIDL.Interfaces.Add_Folder (Root & "/tests/data/user_interfaces");
-   end Use_User_Interfaces;
 
    type Recoder_Kind is (Dynamic_Codec, Generated_Codecs);
 
@@ -220,13 +208,13 @@ begin
      and then (Argument_Count = 2 or else Argument (3) = "user")
    then
       if Argument_Count = 3 then
-         Use_User_Interfaces;
+         Samples.Use_User_Interfaces;
       end if;
       Put_Random (Argument (2));
    elsif Argument_Count = 1 and then Argument (1) = "reencode" then
       Reencode (Dynamic_Codec);
    elsif Argument_Count = 2 and then Argument (1) = "reencode" and then Argument (2) = "user" then
-      Use_User_Interfaces;
+      Samples.Use_User_Interfaces;
       Reencode (Dynamic_Codec);
    elsif Argument_Count = 2 and then Argument (1) = "reencode" and then Argument (2) = "typed"
    then
