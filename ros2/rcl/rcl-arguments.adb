@@ -163,15 +163,14 @@ package body RCL.Arguments is
       end;
    end Parse_Rule;
 
-   --  "[node:]name:=value" (rcl's form: the value is YAML, read by
-   --  RCL.Parameters); Where names the argument for errors.
-   procedure Check_Parameter_Rule (Text, Where : String) is
+   function Parameter_Override_Of (Text : String) return Parameter_Override is
       use Ada.Strings.Fixed;
       Sep   : constant Natural := Index (Text, ":=");
       Left  : constant String := (if Sep = 0 then "" else Text (Text'First .. Sep - 1));
       Colon : constant Natural := Index (Left, ":");
       Node  : constant String := (if Colon = 0 then "" else Left (Left'First .. Colon - 1));
       Name  : constant String := (if Colon = 0 then Left else Left (Colon + 1 .. Left'Last));
+      Value : constant String := (if Sep = 0 then "" else Text (Sep + 2 .. Text'Last));
       Problem : constant String :=
         (if Sep = 0 or else Name = "" then "expected [node:]name:=value"
          elsif Colon > 0 and then RCL.Names.Node_Name_Problem (Node) /= ""
@@ -179,8 +178,23 @@ package body RCL.Arguments is
          else RCL.Names.Parameter_Name_Problem (Name));
    begin
       if Problem /= "" then
-         raise Argument_Error with Where & " " & Quoted (Text) & ": " & Problem;
+         raise Argument_Error with Quoted (Text) & ": " & Problem;
       end if;
+      return (Node'Length, Name'Length, Value'Length, Node, Name, Value);
+   end Parameter_Override_Of;
+
+   --  The same, with Where (the argument) in the message.
+   procedure Check_Parameter_Rule (Text, Where : String) is
+   begin
+      declare
+         Checked : constant Parameter_Override := Parameter_Override_Of (Text)
+           with Unreferenced;
+      begin
+         null;
+      end;
+   exception
+      when E : Argument_Error =>
+         raise Argument_Error with Where & " " & Ada.Exceptions.Exception_Message (E);
    end Check_Parameter_Rule;
 
    function Do_Parse (Arguments : Argument_List) return Parsed is

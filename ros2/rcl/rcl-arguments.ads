@@ -74,6 +74,20 @@ package RCL.Arguments is
    --  "rate:=20"; Flag "--params-file", Value "p.yaml"); RCL.Parameters
    --  reads them.
 
+   type Parameter_Override (Node_Length, Name_Length, Value_Length : Natural) is record
+      Node  : String (1 .. Node_Length);
+      --  "" for every node.
+      Name  : String (1 .. Name_Length);
+      Value : String (1 .. Value_Length);
+      --  YAML text, read by RCL.Parameters.
+   end record;
+
+   function Parameter_Override_Of (Text : String) return Parameter_Override;
+   --  A -p value "[node:]name:=value" split and checked (rcl's form: node
+   --  and parameter names); Argument_Error saying what is wrong otherwise.
+   --  Example:
+   --     pragma Assert (Parameter_Override_Of ("talker:gain:=2").Node = "talker");
+
    function Rosout_Enabled return Boolean;
    function Stdout_Enabled return Boolean;
 

@@ -1,4 +1,3 @@
-with Ada.Strings.Fixed;
 with RCL.Arguments;
 
 package body RCL.Parameters.Initial_Values is
@@ -68,19 +67,15 @@ package body RCL.Parameters.Initial_Values is
       procedure Load_Argument (Flag, Value : String) is
       begin
          if Flag in "-p" | "--param" then
-            --  "[node:]name:=value", checked by RCL.Arguments.
+            --  Checked by RCL.Arguments when it read the command line.
             declare
-               Sep   : constant Natural := Ada.Strings.Fixed.Index (Value, ":=");
-               Left  : constant String := Value (Value'First .. Sep - 1);
-               Colon : constant Natural := Ada.Strings.Fixed.Index (Left, ":");
-               Node  : constant String :=
-                 (if Colon = 0 then "/**" else Left (Left'First .. Colon - 1));
-               Name  : constant String :=
-                 (if Colon = 0 then Left else Left (Colon + 1 .. Left'Last));
-               Where : constant String := "--ros-args " & Flag & " " & Left;
+               Rule  : constant RCL.Arguments.Parameter_Override :=
+                 RCL.Arguments.Parameter_Override_Of (Value);
+               Where : constant String := "--ros-args " & Flag & " "
+                 & (if Rule.Node = "" then "" else Rule.Node & ":") & Rule.Name;
             begin
-               Add_Override (Node, Name, Parse (Value (Sep + 2 .. Value'Last), Where),
-                             Origin => Where);
+               Add_Override ((if Rule.Node = "" then "/**" else Rule.Node), Rule.Name,
+                             Parse (Rule.Value, Where), Origin => Where);
             end;
          else
             Load_File (Value);
