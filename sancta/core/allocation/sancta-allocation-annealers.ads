@@ -141,6 +141,15 @@ package Sancta.Allocation.Annealers is
       --  down by its size, not only the longest); 0 = none. Off by default:
       --  0.1 measured no better than the total-cost balance alone (kroA100,
       --  rat99, kroA200 with 5 robots).
+      Excess_Weight : Long_Float := 1.0;
+      Excess_Band   : Long_Float := 0.02;
+      --  Pure makespan, every task feasible for every robot, Square_Balance
+      --  0: the search objective adds the sum over tours of the squared
+      --  excess over a floor Excess_Band x the best makespan so far below
+      --  it, scaled so that the longest tour's excess weighs Excess_Weight
+      --  per unit of cost (every tour near the makespan is pushed down, not
+      --  only the longest, and transfers between them are not uphill); the
+      --  floor follows each lower best makespan. 0 = none.
       Enabled      : Kind_Flags := [others => True];
       --  The move kinds used (tests exercise one kind at a time).
       Ruin_Share   : Long_Float := 0.2;
