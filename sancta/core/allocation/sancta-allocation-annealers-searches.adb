@@ -102,8 +102,8 @@ package body Sancta.Allocation.Annealers.Searches is
          end if;
          This.Opts.Box.Post (This.Best, This.Best_Value);
       end if;
-      if This.Report /= null then
-         This.Report (Statistics (This));
+      if This.Opts.Report /= null then
+         This.Opts.Report (Statistics (This));
       end if;
    end Send_Report;
 
@@ -656,8 +656,7 @@ package body Sancta.Allocation.Annealers.Searches is
      (This   : in out Search;
       P      : Problem;
       Opts   : Options;
-      Best   : Assignment;
-      Report : Reporter) is
+      Best   : Assignment) is
    begin
       if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 and then Opts.Convergence <= 0 then
          raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
@@ -673,7 +672,6 @@ package body Sancta.Allocation.Annealers.Searches is
            and then Opts.Criterion.Ave_Weight = 0.0 and then P.Robots > 1;
          This.Opts.Schedule := (if This.Automatic_Hybrid then Hybrid else Geometric);
       end if;
-      This.Report := Report;
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
       This.Tours := New_State (P, This.Neighbours);
       This.Generator := Random.Seeded (Opts.Seed);
