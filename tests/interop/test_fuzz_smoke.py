@@ -38,6 +38,19 @@ def test_fuzz_smoke_command_lines():
     assert p.stdout.splitlines()[1].split()[:2] == ["args", "8"], p.stdout
 
 
+def test_fuzz_smoke_services():
+    """The services reader (DDS on loopback): mutated requests at the
+    examples' servers and parameters_demo's parameter services, mutated
+    replies at the clients: refusals logged with type and byte offset,
+    accepted requests answered, every client takes its true answer."""
+    p = subprocess.run([sys.executable, str(REPO / "scripts" / "fuzz_inputs.py"), "--seed", "19",
+                        "--cases", "10", "--readers", "services"],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr[-3000:]
+    row = p.stdout.splitlines()[1].split()
+    assert row[0] == "services" and int(row[1]) >= 50, p.stdout
+
+
 def node_parameter(args, name):
     """The value parameters_demo logs for parameter `name` when started with
     args (it logs every parameter once it is ready, then is stopped)."""
