@@ -1,5 +1,4 @@
 with Ada.Numerics.Long_Elementary_Functions;
-with Ada.Environment_Variables;
 with Sancta.Allocation.Local_Search;
 with Sancta.Allocation.Annealers.Construction; use Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Neighbourhoods;
@@ -752,15 +751,6 @@ package body Sancta.Allocation.Annealers.Searches is
            & " is not in 0 .. 1";
       end if;
       This.Opts := Opts;
-      --  TEMPORARY (experiments; not to be committed)
-      if Ada.Environment_Variables.Exists ("SANCTA_EXCESS_WEIGHT") then
-         This.Opts.Excess_Weight :=
-           Long_Float'Value (Ada.Environment_Variables.Value ("SANCTA_EXCESS_WEIGHT"));
-      end if;
-      if Ada.Environment_Variables.Exists ("SANCTA_EXCESS_BAND") then
-         This.Opts.Excess_Band :=
-           Long_Float'Value (Ada.Environment_Variables.Value ("SANCTA_EXCESS_BAND"));
-      end if;
       This.Automatic_Hybrid := False;
       if Opts.Schedule = Automatic then
          This.Automatic_Hybrid := Opts.Criterion.Sum_Weight = 0.0
