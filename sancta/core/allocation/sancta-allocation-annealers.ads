@@ -185,7 +185,7 @@ package Sancta.Allocation.Annealers is
       --  per cent of it); the floor follows each lower best makespan; the
       --  reported value and the best kept stay the makespan. 0 = none.
       --  Measured at 10 robots, 10 M moves on 6 unseen instances (2 seeds):
-      --  -0.87% mean (band 0.02: -0.58%, 0.08: -0.66%; weight 2: -0.02%).
+      --  -0.87% mean (band 0.02: -0.58%, 0.08: -0.79%; weight 2: -0.26%).
       Enabled      : Kind_Flags := [others => True];
       --  The move kinds used (tests exercise one kind at a time).
       Ruin_Share   : Long_Float := 0.2;
