@@ -27,7 +27,9 @@ Readers that do more than read a file: `typed` (the generated codecs,
 compared with the dynamic decoder on the same mutated payloads), `args`
 (parameters_demo's --ros-args / --params-file; DDS on loopback: source
 scripts/env.sh first), `run` and `demo` (sancta run / sancta demo on mutated
-configurations; processes left behind are findings).
+configurations; processes left behind are findings), `services` (mutated
+requests and replies written by a Cyclone DDS peer at the product's service
+servers and clients, scripts/fuzz_services.py; DDS on loopback).
 
 Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
@@ -1009,7 +1011,7 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + ["cdr", "typed", "args"]:
+        for reader in readers + ["cdr", "typed", "args", "services"]:
             name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
@@ -1023,6 +1025,9 @@ def main():
                 counts, findings = fuzz_typed(rng, args.cases, args.keep, log)
             elif reader == "args":
                 counts, findings = fuzz_args(rng, args.cases, args.keep, log)
+            elif reader == "services":
+                import fuzz_services
+                counts, findings = fuzz_services.fuzz_services(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)

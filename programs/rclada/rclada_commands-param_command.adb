@@ -63,6 +63,17 @@ procedure Param_Command (Args : Arguments) is
       Names.Element (1).Set_String (Pos (3));
    end Ask_For_Named_Parameter;
 
+   function Answered_Value (Item : ROSIDL.Dynamic.Field_Ref) return Value is
+      --  A ParameterValue of the node's reply: one of an unknown type is the
+      --  node's error, said as such (not an internal error of rclada).
+   begin
+      return Get_Parameter_Value (Item);
+   exception
+      when E : Parameter_Error =>
+         raise Command_Error with "the node answered a value rclada cannot read: "
+           & Ada.Exceptions.Exception_Message (E);
+   end Answered_Value;
+
    procedure Need (Count : Positive; What : String) is
    begin
       if Natural (Pos.Length) /= Count then
@@ -90,7 +101,7 @@ begin
             raise Command_Error with "the node answered" & Values.Length'Image & " values";
          end if;
          declare
-            V : constant Value := Get_Parameter_Value (Values.Element (1));
+            V : constant Value := Answered_Value (Values.Element (1));
          begin
             case V.Kind is
                when Not_Set =>
@@ -253,7 +264,7 @@ begin
             Put_Line ("  ros__parameters:");
             for I in 1 .. Values.Length loop
                Put_Line ("    " & Sorted (I) & ": "
-                         & YAML_Image (Get_Parameter_Value (Values.Element (I))));
+                         & YAML_Image (Answered_Value (Values.Element (I))));
             end loop;
          end;
       end;

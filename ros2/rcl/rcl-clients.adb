@@ -63,29 +63,37 @@ package body RCL.Clients is
    -----------------
 
    procedure Take_Replies (This : in out Client; Taken : out Natural) is
-      --  Takes every reply available and hands it to its call.
+      --  Takes every reply available and hands it to its call. Whose reply
+      --  it is comes first (the header): replies to the other clients of
+      --  this topic are dropped undecoded, so that a malformed one is not
+      --  reported here.
+      use ROSIDL.Typesupport;
       Info : RCL.DDS.Sample_Info;
    begin
       Taken := 0;
       loop
          declare
-            Data     : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Ends.Replies, Info);
-            Response : ROSIDL.Dynamic.Message :=
-              ROSIDL.Dynamic.Init (ROSIDL.Typesupport.Response_Support (This.Support));
-            Header   : ROSIDL.CDR.Request_Header;
-            Result   : RCL.Pending_Calls.Outcome;
+            Data : constant RCL.DDS.Byte_Array := RCL.DDS.Take (This.Ends.Replies, Info);
          begin
             exit when Data'Length = 0;
             Taken := Taken + 1;
-            ROSIDL.CDR.Decode (Data, Response, Header);
-            if Header.GUID = This.Ends.Handle then
-               This.Calls.Deliver (Header.Sequence, Response, Result);
-               if Result = RCL.Pending_Calls.Unknown_Sequence then
-                  Async_Calls.Complete (This.Asyncs, Header.Sequence, Response);
-               end if;
+            if ROSIDL.CDR.Request_Header_Of
+                 (Data, Full_Name (Response_Support (This.Support))).GUID = This.Ends.Handle
+            then
+               declare
+                  Response : ROSIDL.Dynamic.Message :=
+                    ROSIDL.Dynamic.Init (Response_Support (This.Support));
+                  Header   : ROSIDL.CDR.Request_Header;
+                  Result   : RCL.Pending_Calls.Outcome;
+               begin
+                  ROSIDL.CDR.Decode (Data, Response, Header);
+                  This.Calls.Deliver (Header.Sequence, Response, Result);
+                  if Result = RCL.Pending_Calls.Unknown_Sequence then
+                     Async_Calls.Complete (This.Asyncs, Header.Sequence, Response);
+                  end if;
+               end;
             end if;
-            --  Replies to other clients of this topic, and late replies
-            --  (Unknown_Sequence), are dropped.
+            --  Late replies (Unknown_Sequence) are dropped.
          exception
             when E : ROSIDL.Decode_Error =>
                RCL.Logging.Warn ("service " & This.Service_Name

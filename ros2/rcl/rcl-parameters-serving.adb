@@ -1,8 +1,10 @@
+with Ada.Exceptions;
 with Ada.Strings.Fixed;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
 with RCL.Clocks;
 with RCL.DDS;
+with RCL.Names;
 with RCL.Node_Entities;
 with RCL.Parameters.Stores;
 with RCL.Publishers;
@@ -78,6 +80,32 @@ package body RCL.Parameters.Serving is
       Response ("types").Set_UInt8_Array (Types);
    end Get_Parameter_Types;
 
+   function Assignment_Of (Parameter : Field_Ref) return Assignment is
+   --  An rcl_interfaces/Parameter of a request. Parameter_Error naming it
+   --  when its value's type is unknown (a peer's request: the callers answer
+   --  the reason; the exception must not leave the request unanswered).
+      Name : constant String := Parameter.Field_Reference ("name").Get_String;
+   begin
+      return (To_Unbounded_String (Name),
+              Get_Parameter_Value (Parameter.Field_Reference ("value")));
+   exception
+      when E : Parameter_Error =>
+         raise Parameter_Error with "parameter '" & RCL.Names.Shortened (Name) & "': "
+           & Ada.Exceptions.Exception_Message (E);
+   end Assignment_Of;
+
+   function Try_Set (Node_Name : String; Parameter : Field_Ref) return String is
+   begin
+      declare
+         Item : constant Assignment := Assignment_Of (Parameter);
+      begin
+         return Try_Set (Node_Name, To_String (Item.Name), Item.New_Value);
+      end;
+   exception
+      when E : Parameter_Error =>
+         return Ada.Exceptions.Exception_Message (E);
+   end Try_Set;
+
    procedure Set_Parameters
      (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
    is
@@ -87,9 +115,7 @@ package body RCL.Parameters.Serving is
       Results.Resize (Params.Length);
       for I in 1 .. Params.Length loop
          declare
-            Reason : constant String :=
-              Try_Set (Node_Of (Node), Params.Element (I).Field_Reference ("name").Get_String,
-                       Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
+            Reason : constant String := Try_Set (Node_Of (Node), Params.Element (I));
          begin
             Results.Element (I).Field_Reference ("successful").As_Bool.Element.all :=
               Reason = "";
@@ -102,18 +128,23 @@ package body RCL.Parameters.Serving is
      (Node : in out RCL.Nodes.Node'Class; Request : Message; Response : in out Message)
    is
       Params : constant Array_Ref := Request ("parameters").As_Array;
-      List   : Assignment_Array (1 .. Params.Length);
-   begin
-      for I in List'Range loop
-         List (I) := (To_Unbounded_String (Params.Element (I).Field_Reference ("name").Get_String),
-                      Get_Parameter_Value (Params.Element (I).Field_Reference ("value")));
-      end loop;
-      declare
-         Reason : constant String := Try_Set_Atomically (Node_Of (Node), List);
+
+      function Reason return String is
+         List : Assignment_Array (1 .. Params.Length);
       begin
-         Response ("result")("successful").As_Bool.Element.all := Reason = "";
-         Response ("result")("reason").Set_String (Reason);
-      end;
+         for I in List'Range loop
+            List (I) := Assignment_Of (Params.Element (I));
+         end loop;
+         return Try_Set_Atomically (Node_Of (Node), List);
+      exception
+         when E : Parameter_Error =>
+            return Ada.Exceptions.Exception_Message (E);
+      end Reason;
+
+      Answer : constant String := Reason;
+   begin
+      Response ("result")("successful").As_Bool.Element.all := Answer = "";
+      Response ("result")("reason").Set_String (Answer);
    end Set_Parameters_Atomically;
 
    procedure Describe_Parameters

@@ -4,12 +4,42 @@ package body RCL.Parameters.Stores is
 
    function Key (Node_Name, Name : String) return String is (Node_Name & ASCII.NUL & Name);
 
+   function Segments_Match (Pattern, Name : String) return Boolean is
+      --  Pattern and Name: '/'-separated segments ("" or "/a/b"); in Pattern
+      --  the segment "**" stands for any number of Name's segments (none
+      --  too) and "*" for one.
+      function Segment_End (S : String) return Natural is
+        (if S = "" then S'Last
+         else (declare Next : constant Natural :=
+                 Ada.Strings.Fixed.Index (S (S'First + 1 .. S'Last), "/");
+               begin (if Next = 0 then S'Last else Next - 1)));
+      P_End : constant Natural := Segment_End (Pattern);
+      N_End : constant Natural := Segment_End (Name);
+   begin
+      if Pattern = "" then
+         return Name = "";
+      elsif Pattern (Pattern'First .. P_End) = "/**" then
+         return Segments_Match (Pattern (P_End + 1 .. Pattern'Last), Name)
+           or else (Name /= ""
+                    and then Segments_Match (Pattern, Name (N_End + 1 .. Name'Last)));
+      elsif Name = "" then
+         return False;
+      else
+         return (Pattern (Pattern'First .. P_End) = "/*"
+                 or else Pattern (Pattern'First .. P_End) = Name (Name'First .. N_End))
+           and then Segments_Match (Pattern (P_End + 1 .. Pattern'Last),
+                                    Name (N_End + 1 .. Name'Last));
+      end if;
+   end Segments_Match;
+
    function Matches (Pattern, Node_Name : String) return Boolean is
       Base : constant Natural := Ada.Strings.Fixed.Index (Node_Name, "/", Ada.Strings.Backward);
    begin
       return Pattern in "/**" | "**"
         or else Pattern = Node_Name
-        or else Pattern = Node_Name (Base + 1 .. Node_Name'Last);
+        or else Pattern = Node_Name (Base + 1 .. Node_Name'Last)
+        or else (Pattern /= "" and then Pattern (Pattern'First) = '/'
+                 and then Segments_Match (Pattern, Node_Name));
    end Matches;
 
    protected body Store is

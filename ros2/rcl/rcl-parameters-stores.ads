@@ -30,8 +30,10 @@ private package RCL.Parameters.Stores is
    package Override_Vectors is new Ada.Containers.Vectors (Positive, Override);
 
    function Matches (Pattern, Node_Name : String) return Boolean;
-   --  An override's node pattern ("/**", "**", a full name or a base name)
-   --  applies to Node_Name.
+   --  An override's node pattern ("/**", "**", a full name or a base name,
+   --  or a full name with rcl's wildcards: "/**" for any namespace, "*"
+   --  for any one name, as in "/**/talker", "/robots/*") applies to
+   --  Node_Name (fully qualified).
 
    protected Store is
       procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean);

@@ -1,7 +1,6 @@
 with Ada.Exceptions;
 with Ada.Streams;
 with ROSIDL.CDR;
-with ROSIDL.Static.Impl.Wire;
 with ROSIDL.Type_Hashes;
 with RCL.Contexts;
 with RCL.Logging;
@@ -11,10 +10,8 @@ with RCL.Keyed_Caches;
 package body RCL.Services.Typed is
 
    use Ada.Real_Time;
-   use type Ada.Streams.Stream_Element_Offset;
    use type ROSIDL.UInt64;
    use type ROSIDL.Int64;
-   use type ROSIDL.CDR.Byte_Order;
 
    package Requests renames Handling.Request_Handling;
    package Responses renames Handling.Response_Handling;
@@ -66,13 +63,11 @@ package body RCL.Services.Typed is
      (Data : RCL.DDS.Byte_Array; GUID : out ROSIDL.UInt64; Sequence : out ROSIDL.Int64)
    --  The request header of a reply (Decode_Error when cut short).
    is
-      Start : constant Ada.Streams.Stream_Element_Offset :=
-        Data'First + ROSIDL.CDR.Encapsulation_Size;
-      C     : ROSIDL.Static.Impl.Wire.Cursor :=
-        (Pos => Start, Origin => Start,
-         Swap => ROSIDL.CDR.Byte_Order_Of (Data) /= ROSIDL.CDR.Native_Order);
+      Header : constant ROSIDL.CDR.Request_Header :=
+        ROSIDL.CDR.Request_Header_Of (Data, Responses.Full_Name);
    begin
-      ROSIDL.Static.Impl.Wire.Get_Request_Header (Data, C, GUID, Sequence, Responses.Full_Name);
+      GUID := Header.GUID;
+      Sequence := Header.Sequence;
    end Read_Header;
 
    procedure Take_Reply

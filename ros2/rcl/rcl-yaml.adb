@@ -796,14 +796,24 @@ package body RCL.YAML is
    -- Parse_File --
    ----------------
 
+   Longest_Shown_Path : constant := 80;
+
+   function Shown (Path : String) return String is
+     (if Path'Length <= Longest_Shown_Path then Path
+      else Path (Path'First .. Path'First + 19) & "..."
+           & Path (Path'Last - (Longest_Shown_Path - 24) .. Path'Last));
+   --  Path as messages quote it: its middle left out past 80 characters
+   --  (the end, with the file name, kept), so that "PATH:LINE:COL: reason"
+   --  keeps its reason within GNAT's 200 characters of exception message.
+
    function Parse_File (Path : String) return Document is
       use type Ada.Directories.File_Kind;
       Text : String_Access;
    begin
       if not Ada.Directories.Exists (Path) then
-         raise Parse_Error with Path & ": no such file";
+         raise Parse_Error with Shown (Path) & ": no such file";
       elsif Ada.Directories.Kind (Path) /= Ada.Directories.Ordinary_File then
-         raise Parse_Error with Path & ": not a regular file";
+         raise Parse_Error with Shown (Path) & ": not a regular file";
       end if;
       declare
          F : Ada.Streams.Stream_IO.File_Type;
@@ -819,9 +829,9 @@ package body RCL.YAML is
                Ada.Streams.Stream_IO.Close (F);
             end if;
             Free (Text);
-            raise Parse_Error with Path & ": cannot be read";
+            raise Parse_Error with Shown (Path) & ": cannot be read";
       end;
-      return Result : constant Document := Parse_Text (Text.all, Path) do
+      return Result : constant Document := Parse_Text (Text.all, Shown (Path)) do
          Free (Text);
       end return;
    exception

@@ -41,7 +41,10 @@ package RCL.YAML is
    --  An empty text (or only comments) gives a Null_Value root.
 
    function Parse_File (Path : String) return Document;
-   --  Parse_Error naming Path when it cannot be read.
+   --  Parse_Error naming Path when it cannot be read. Messages and
+   --  locations quote a Path of over 80 characters with its middle left
+   --  out ("/tmp/very/long/...path/params.yaml:3:7: ..."): the reason stays
+   --  within GNAT's 200 characters of exception message.
 
    function Root (This : Document) return Node;
    function Kind (This : Document; N : Node) return Node_Kind;

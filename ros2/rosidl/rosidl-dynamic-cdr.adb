@@ -75,7 +75,12 @@ package body ROSIDL.Dynamic.CDR is
       Codec.Decode (Data, Msg, True, Header);
    end Decode;
 
-   function Byte_Order_Of (Data : Stream_Element_Array) return Byte_Order is
-     (if Codec.Little_Endian_Header (Data) then Little_Endian else Big_Endian);
+   function Byte_Order_Of
+     (Data : Stream_Element_Array; Type_Name : String := "") return Byte_Order is
+     (if Codec.Little_Endian_Header (Data, Type_Name) then Little_Endian else Big_Endian);
+
+   function Request_Header_Of
+     (Data : Stream_Element_Array; Type_Name : String) return Request_Header is
+     (Codec.Request_Header_Of (Data, Type_Name));
 
 end ROSIDL.Dynamic.CDR;

@@ -97,8 +97,24 @@ package ROSIDL.Dynamic.CDR is
      with Pre => ROSIDL.Dynamic.Is_Initialised (Msg);
    --  A service request or reply.
 
-   function Byte_Order_Of (Data : Stream_Element_Array) return Byte_Order;
+   function Byte_Order_Of
+     (Data : Stream_Element_Array; Type_Name : String := "") return Byte_Order;
    --  The order the encapsulation header announces; Decode_Error when the
-   --  header is missing or unknown.
+   --  header is missing or unknown (naming Type_Name when given:
+   --  "pkg/msg/Type: unknown encapsulation identifier 0, 7 ... at byte
+   --  offset 0").
+
+   function Request_Header_Of
+     (Data : Stream_Element_Array; Type_Name : String) return Request_Header;
+   --  The request header of a service request or reply, the body left
+   --  unread: a client checks whose reply it is before decoding it.
+   --  Decode_Error naming Type_Name and the byte offset when Data is cut
+   --  short or its encapsulation header is unknown.
+   --  Example:
+   --     use type ROSIDL.UInt64;
+   --     Mine  : constant ROSIDL.UInt64 := 16#1234#;
+   --     Reply : constant Stream_Element_Array := Encode (Msg, (GUID => Mine, Sequence => 1));
+   --     Ours  : constant Boolean := Request_Header_Of
+   --       (Reply, "example_interfaces/srv/AddTwoInts_Response").GUID = Mine;
 
 end ROSIDL.Dynamic.CDR;

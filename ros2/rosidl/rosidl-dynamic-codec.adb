@@ -350,21 +350,56 @@ package body ROSIDL.Dynamic.Codec is
    -- Decoding --
    ---------------------------------------------------------------------
 
-   function Little_Endian_Header (Data : Stream_Element_Array) return Boolean is
+   function Little_Endian_Header
+     (Data : Stream_Element_Array; Type_Name : String := "") return Boolean
+   is
+      Subject : constant String := (if Type_Name = "" then "" else Type_Name & ": ");
    begin
       if Data'Length < Encapsulation_Size then
-         raise Decode_Error with "buffer of" & Data'Length'Image
+         raise Decode_Error with Subject & "buffer of" & Data'Length'Image
            & " bytes is shorter than the 4-byte encapsulation header"
            & " at byte offset 0";
       end if;
       if Data (Data'First) /= 0 or else Data (Data'First + 1) > 1 then
-         raise Decode_Error with "unknown encapsulation identifier"
+         raise Decode_Error with Subject & "unknown encapsulation identifier"
            & Stream_Element'Image (Data (Data'First)) & ","
            & Stream_Element'Image (Data (Data'First + 1))
            & " (expected 0, 0 for CDR_BE or 0, 1 for CDR_LE) at byte offset 0";
       end if;
       return Data (Data'First + 1) = 1;
    end Little_Endian_Header;
+
+   function Request_Header_Of
+     (Data : Stream_Element_Array; Type_Name : String) return CDR.Request_Header
+   is
+      Little : constant Boolean := Little_Endian_Header (Data, Type_Name);
+
+      function Word (Offset : Stream_Element_Offset; What : String) return Unsigned_64 is
+         --  The 8 bytes at Offset from the start of Data.
+         V : Unsigned_64 := 0;
+      begin
+         if Data'Length < Offset + 8 then
+            raise Decode_Error with Type_Name & ": request header " & What
+              & ": truncated: needs 8 bytes,"
+              & Stream_Element_Offset'Max (Data'Length - Offset, 0)'Image
+              & " remain at byte offset " & Trimmed (Long_Long_Integer (Offset));
+         end if;
+         for I in Stream_Element_Offset range 0 .. 7 loop
+            V := Shift_Left (V, 8)
+              or Unsigned_64 (Data (Data'First + Offset + (if Little then 7 - I else I)));
+         end loop;
+         return V;
+      end Word;
+
+      GUID : constant Unsigned_64 := Word (Encapsulation_Size, "guid");
+      Wire : constant Unsigned_64 := Word (Encapsulation_Size + 8, "sequence");
+      --  The sequence is an int64 on the wire: any 64 bits, e.g. -1
+      --  (FF..FF) from a hostile peer, are a valid value.
+   begin
+      return (GUID     => UInt64 (GUID),
+              Sequence => (if Wire <= Unsigned_64 (Int64'Last) then Int64 (Wire)
+                           else -Int64 (not Wire) - 1));
+   end Request_Header_Of;
 
    procedure Free_Words is new Ada.Unchecked_Deallocation
      (Word_Array, Word_Access);
@@ -628,20 +663,12 @@ package body ROSIDL.Dynamic.Codec is
       end if;
       Make_Unique (Msg, Referenced => False, Keep_Contents => False);
       S.Root := Msg.Root.Def;
-      S.Little := Little_Endian_Header (Data);
+      S.Little := Little_Endian_Header (Data, Full_Name (S.Root.all));
       S.Swap := S.Little /= Native_Little;
       S.Origin := Data'First + Encapsulation_Size;
       if With_Header then
-         Header.GUID := Get_Unsigned (8, "request header guid");
-         declare
-            --  The header's sequence is an int64 on the wire: any 64 bits,
-            --  e.g. -1 (FF..FF) from a hostile peer, are a valid value.
-            Wire : constant Unsigned_64 := Get_Unsigned (8, "request header sequence");
-         begin
-            Header.Sequence :=
-              (if Wire <= Unsigned_64 (Int64'Last) then Int64 (Wire)
-               else -Int64 (not Wire) - 1);
-         end;
+         Header := Request_Header_Of (Data, Full_Name (S.Root.all));
+         S.Pos := CDR.Request_Header_Size;
       end if;
       Get_Node (Msg.Root);
    end Decode;

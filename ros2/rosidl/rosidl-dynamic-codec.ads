@@ -37,7 +37,14 @@ private package ROSIDL.Dynamic.Codec is
    --  Header: read when With_Header, else all zero. After a Decode_Error
    --  Msg is a valid message of unspecified contents.
 
-   function Little_Endian_Header (Data : Stream_Element_Array) return Boolean;
-   --  Decode_Error when Data has no known XCDR1 encapsulation header.
+   function Little_Endian_Header
+     (Data : Stream_Element_Array; Type_Name : String := "") return Boolean;
+   --  Decode_Error when Data has no known XCDR1 encapsulation header (its
+   --  message starts with "Type_Name: " when Type_Name is given).
+
+   function Request_Header_Of
+     (Data : Stream_Element_Array; Type_Name : String) return CDR.Request_Header;
+   --  The request header of a service request or reply (see
+   --  CDR.Request_Header_Of).
 
 end ROSIDL.Dynamic.Codec;

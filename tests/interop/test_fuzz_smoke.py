@@ -38,6 +38,19 @@ def test_fuzz_smoke_command_lines():
     assert p.stdout.splitlines()[1].split()[:2] == ["args", "8"], p.stdout
 
 
+def test_fuzz_smoke_services():
+    """The services reader (DDS on loopback): mutated requests at the
+    examples' servers and parameters_demo's parameter services, mutated
+    replies at the clients: refusals logged with type and byte offset,
+    accepted requests answered, every client takes its true answer."""
+    p = subprocess.run([sys.executable, str(REPO / "scripts" / "fuzz_inputs.py"), "--seed", "19",
+                        "--cases", "10", "--readers", "services"],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr[-3000:]
+    row = p.stdout.splitlines()[1].split()
+    assert row[0] == "services" and int(row[1]) >= 50, p.stdout
+
+
 def node_parameter(args, name):
     """The value parameters_demo logs for parameter `name` when started with
     args (it logs every parameter once it is ready, then is stopped)."""
@@ -70,3 +83,21 @@ def test_node_specific_parameter_override():
     assert node_parameter(["--ros-args", "-p", "other_node:rate:=30"], "rate") == "10"
     assert node_parameter(["--ros-args", "-r", "__node:=renamed", "-p", "parameters_demo:rate:=40",
                            "-p", "renamed:gain:=2.5"], "gain") == "2.5"
+
+
+def test_params_file_node_name_wildcards(tmp_path):
+    """A parameter file's node names may use rcl's wildcards ("/**" for any
+    namespace, "*" for any one name): such overrides never applied (only
+    "/**" alone, a full name or a base name matched), silently."""
+    def rate_with(node_names):
+        f = tmp_path / "p.yaml"
+        f.write_text(f"{node_names}:\n  ros__parameters:\n    rate: 42\n")
+        return node_parameter(["--ros-args", "--params-file", str(f)], "rate")
+
+    for pattern in ("/**/parameters_demo", "/*", "/**/*"):
+        assert rate_with(pattern) == "42", pattern
+    for pattern in ("/other/*", "/**/other", "/ns/parameters_demo"):
+        assert rate_with(pattern) == "10", pattern
+    (tmp_path / "p.yaml").write_text("/robots/r1/*:\n  ros__parameters:\n    rate: 43\n")
+    assert node_parameter(["--ros-args", "-r", "__ns:=/robots/r1", "--params-file",
+                           str(tmp_path / "p.yaml")], "rate") == "43"

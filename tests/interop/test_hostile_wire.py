@@ -7,7 +7,9 @@ limited) what it dropped, print no traceback, and keep no garbage."""
 import math
 import os
 import re
+import struct
 import subprocess
+import sys
 import time
 
 import pubsub_support as ps
@@ -67,6 +69,99 @@ def test_client_ignores_replies_with_hostile_sequences():
     ada, out = svc.run_client_against(serve_some, "client", 20, 22, 10)
     assert ada.returncode == 0, out
     assert "Got answer: 42" in out, out
+    assert not NO_CRASH.search(out), out
+
+
+def raw_service_peer(dp, service, srv_type, side):
+    """A peer writing and taking raw samples (scripts/fuzz_services.py)."""
+    sys.path.insert(0, str(ps.REPO / "scripts"))
+    import fuzz_services
+    return fuzz_services.Peer(fuzz_services.dds(), dp, service, srv_type, side)
+
+
+def with_header(body, guid, seq):
+    """A little-endian body (encapsulation first) with the request header."""
+    return body[:4] + struct.pack("<Qq", guid, seq) + body[4:]
+
+
+SET_RATE_TO_TYPE_13 = bytes.fromhex(
+    "00010000010000000500000072617465000d0000000000000000000000000000000000000100000000000000"
+    "0000000000000000000000000000000000000000")
+# SetParameters request body: parameters [{name: rate, value: {type: 13}}] (no such type).
+VALUE_OF_TYPE_13 = bytes.fromhex(
+    "00010000010000000d000000000000000000000000000000000000000100000000000000000000000000000000"
+    "0000000000000000000000")
+# GetParameters response body: values [{type: 13}].
+
+
+def test_clients_leave_malformed_replies_to_other_clients_alone():
+    """Every client of a service reads every reply on its topic: a malformed
+    reply addressed to another client (the header's guid) is dropped
+    undecoded, unreported; one addressed to this client is reported with the
+    type and byte offset; the true reply is then taken (dynamic and typed
+    clients)."""
+    dp = ps.participant()
+    srv = raw_service_peer(dp, "/add_two_ints", "example_interfaces::srv::dds_::AddTwoInts",
+                           "server")
+
+    def serve_some():
+        for r in srv.take():
+            guid, seq, a, b = struct.unpack("<4xQqqq", r[:36])
+            for to in (guid ^ 1, guid):  # another client's, then this one's
+                srv.write(struct.pack("<BBxxQqI", 0, 1, to, seq, 42))  # the sum cut to 4 bytes
+            srv.write(struct.pack("<BBxxQqq", 0, 1, guid, seq, a + b))
+
+    for program in ("client", "typed_client"):
+        ada, out = svc.run_client_against(serve_some, program, 20, 22, 10)
+        assert ada.returncode == 0 and "Got answer: 42" in out, out
+        dropped = [line for line in out.splitlines() if "malformed reply dropped" in line]
+        assert len(dropped) == 1, out
+        assert ("example_interfaces/srv/AddTwoInts_Response" in dropped[0]
+                and "at byte offset 20" in dropped[0]), out
+        assert not NO_CRASH.search(out), out
+
+
+def test_parameter_server_answers_a_value_of_unknown_type():
+    """SetParameters naming a ParameterValue type that does not exist (13):
+    answered, refused with the reason (it was left unanswered: the
+    exception ended the request)."""
+    ada = ps.start("parameters_demo")
+    try:
+        dp = ps.participant()
+        peer = raw_service_peer(dp, "/parameters_demo/set_parameters",
+                                "rcl_interfaces::srv::dds_::SetParameters", "client")
+        assert peer.matched(15), "the parameter service was not discovered"
+        time.sleep(0.3)
+        peer.write(with_header(SET_RATE_TO_TYPE_13, 77, 1))
+        deadline, reply = time.monotonic() + 10, None
+        while reply is None and time.monotonic() < deadline:
+            reply = next((r for r in peer.take() if r[4:20] == struct.pack("<Qq", 77, 1)), None)
+            time.sleep(0.01)
+        assert reply is not None, "no answer"
+        # results [{successful: false, reason: "parameter 'rate': unknown ..."}]
+        assert reply[24] == 0 and b"parameter 'rate': unknown parameter type 13" in reply, reply
+        assert ada.poll() is None, "the node died"
+    finally:
+        out = svc.stop(ada)
+    assert not NO_CRASH.search(out), out
+
+
+def test_param_get_says_the_node_answered_an_unknown_type():
+    """`rclada param get` answered a ParameterValue of type 13: a clear
+    error saying so, not 'internal error'."""
+    dp = ps.participant()
+    peer = raw_service_peer(dp, "/fuzz_peer/get_parameters",
+                            "rcl_interfaces::srv::dds_::GetParameters", "server")
+    ada = ps.start("rclada", "param", "get", "/fuzz_peer", "rate", "--timeout", "10")
+    deadline = time.monotonic() + 20
+    while ada.poll() is None and time.monotonic() < deadline:
+        for request in peer.take():
+            if len(request) >= 20:
+                peer.write(VALUE_OF_TYPE_13[:4] + request[4:20] + VALUE_OF_TYPE_13[4:])
+        time.sleep(0.01)
+    out = ps.finish(ada)
+    assert ada.returncode == 1, out
+    assert "the node answered a value rclada cannot read: unknown parameter type 13" in out, out
     assert not NO_CRASH.search(out), out
 
 

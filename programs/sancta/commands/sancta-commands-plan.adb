@@ -239,8 +239,7 @@ package body Sancta.Commands.Plan is
    type Result_Access is access Run_Result;
 
    task type Runner is
-      entry Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access;
-                   Report : Boolean);
+      entry Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access);
       entry Wait;
    end Runner;
 
@@ -248,18 +247,14 @@ package body Sancta.Commands.Plan is
       PA : Problem_Access;
       Opts : Annealers.Options;
       Res : Result_Access;
-      Rep : Boolean;
    begin
-      accept Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access;
-                    Report : Boolean) do
+      accept Start (P : Problem_Access; O : Annealers.Options; Out_Result : Result_Access) do
          PA := P;
          Opts := O;
          Res := Out_Result;
-         Rep := Report;
       end Start;
       begin
-         Annealers.Solve (PA.all, Opts, Res.A, Res.Stats,
-                          (if Rep then Show'Access else null));
+         Annealers.Solve (PA.all, Opts, Res.A, Res.Stats);
       exception
          when E : others =>
             Res.Error := To_Unbounded_String (Ada.Exceptions.Exception_Message (E));
@@ -688,7 +683,7 @@ package body Sancta.Commands.Plan is
             S : constant String := To_String (Solver);
          begin
             if S = "anneal" and then Restarts = 1 then
-               Annealers.Solve (P.all, Opts, Result, Stats, Show'Access);
+               Annealers.Solve (P.all, (Opts with delta Report => Show'Access), Result, Stats);
             elsif S = "anneal" then
                declare
                   Runners : array (1 .. Restarts) of Runner;
@@ -702,7 +697,8 @@ package body Sancta.Commands.Plan is
                         O : Annealers.Options := Opts;
                      begin
                         O.Seed := Opts.Seed + Interfaces.Unsigned_64 (K - 1) * 7919;
-                        Runners (K).Start (P, O, Results (K), K = 1);
+                        O.Report := (if K = 1 then Show'Access else null);
+                        Runners (K).Start (P, O, Results (K));
                      end;
                   end loop;
                   for K in 1 .. Restarts loop

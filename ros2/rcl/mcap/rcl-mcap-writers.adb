@@ -113,6 +113,8 @@ package body RCL.MCAP.Writers is
    -- Add_Channel --
    -----------------
 
+   function Last_Schema (This : Writer) return Schema_Id is (This.Schema_Count);
+
    function Add_Channel
      (This             : in out Writer;
       Topic            : String;

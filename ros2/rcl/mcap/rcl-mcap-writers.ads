@@ -23,6 +23,8 @@ private with RCL.MCAP.Buffers;
 
 package RCL.MCAP.Writers is
 
+   use type Schema_Id;
+
    type Writer is new Ada.Finalization.Limited_Controlled with private;
    --  Its time ranges stay consistent (a Type_Invariant): the open chunk's
    --  range covers the chunk's messages and lies within the file's.
@@ -60,8 +62,18 @@ package RCL.MCAP.Writers is
       Schema           : Schema_Id;
       Message_Encoding : String;
       Metadata         : String_Maps.Map) return Channel_Id
-     with Pre => This.Is_Open;
-   --  Ids count from 1. Schema: one returned by Add_Schema (or 0).
+     with Pre => This.Is_Open
+                 and then (Schema <= This.Last_Schema
+                           or else raise Constraint_Error
+                             with "Add_Channel: schema" & Schema'Image & " was never added "
+                                  & "(schemas added so far:" & This.Last_Schema'Image
+                                  & "), for topic '" & Topic & "'");
+   --  Ids count from 1. Schema: one returned by Add_Schema (or 0, none): a
+   --  channel naming a schema the file does not define would make every
+   --  reader refuse the file.
+
+   function Last_Schema (This : Writer) return Schema_Id;
+   --  The last id Add_Schema returned (0 before any).
 
    procedure Write
      (This         : in out Writer;

@@ -101,7 +101,7 @@ package body ROSIDL.Static.Message_Support is
       Header := (others => <>);
       C := (Pos    => Data'First + Encapsulation_Size,
             Origin => Data'First + Encapsulation_Size,
-            Swap   => Byte_Order_Of (Data) /= Native_Order);
+            Swap   => Byte_Order_Of (Data, Full_Name) /= Native_Order);
       if With_Header then
          ROSIDL.Static.Impl.Wire.Get_Request_Header
            (Data, C, Header.GUID, Header.Sequence, Full_Name);

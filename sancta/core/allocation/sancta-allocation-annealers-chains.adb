@@ -136,19 +136,20 @@ package body Sancta.Allocation.Annealers.Chains is
             begin
                for U_Index in 1 .. S.Near_Count (T) loop
                   declare
-                     Q : constant Natural := S.Owner (S.Near (T, U_Index));
+                     U : constant Positive := S.Near (T, U_Index);
+                     Q : constant Natural := S.Owner (U);
                   begin
                      if Q /= 0 and then Q /= Donor and then not Space.Visited (Q) then
                         for Length in 1 .. Natural'Min (3, S.Length (Donor) - I + 1) loop
                            for Variant in 0 .. 3 loop
-                              Or_Opt (P, S, T, U_Index, Length, Variant, Mv, Ok);
+                              Or_Opt (P, S, T, U, Length, Variant, Mv, Ok);
                               if Ok then
                                  Consider (Mv);
                               end if;
                            end loop;
                         end loop;
                         for Variant in 0 .. 3 loop
-                           Two_Opt (P, S, T, U_Index, Variant, Mv, Ok);
+                           Two_Opt (P, S, T, U, Variant, Mv, Ok);
                            if Ok then
                               Consider (Mv);
                            end if;

@@ -84,22 +84,17 @@ package body Sancta.Allocation.Annealers.Neighbourhoods is
    end Relocate;
 
    procedure Or_Opt
-     (P : Problem; S : State; T : Positive; U_Index : Positive; Length : Positive;
+     (P : Problem; S : State; T, U : Positive; Length : Positive;
       Variant : Natural; Mv : in out Move; Ok : out Boolean)
    is
       R1 : constant Positive := S.Owner (T);
       I  : constant Positive := S.Position (T);
       J  : constant Positive := Positive'Min (I + Length - 1, S.Length (R1));
-      U  : constant Natural := S.Near (T, U_Index);
-      R2 : Positive;
+      R2 : constant Positive := S.Owner (U);
       Q  : Natural;
       Rev : Boolean;
    begin
       Ok := False;
-      if U = 0 or else S.Owner (U) = 0 then
-         return;
-      end if;
-      R2 := S.Owner (U);
       case Variant mod 4 is
          when 0 => Q := S.Position (U); Rev := False;
          when 1 => Q := S.Position (U) - 1; Rev := True;
@@ -116,21 +111,15 @@ package body Sancta.Allocation.Annealers.Neighbourhoods is
    end Or_Opt;
 
    procedure Two_Opt
-     (P : Problem; S : State; T : Positive; U_Index : Positive; Variant : Natural;
+     (P : Problem; S : State; T, U : Positive; Variant : Natural;
       Mv : in out Move; Ok : out Boolean)
    is
       R1 : constant Positive := S.Owner (T);
       I  : constant Positive := S.Position (T);
-      U  : constant Natural := S.Near (T, U_Index);
-      R2 : Positive;
-      J  : Positive;
+      R2 : constant Positive := S.Owner (U);
+      J  : constant Positive := S.Position (U);
    begin
       Ok := False;
-      if U = 0 or else S.Owner (U) = 0 then
-         return;
-      end if;
-      R2 := S.Owner (U);
-      J := S.Position (U);
       Clear (Mv);
       if R1 = R2 then
          declare
@@ -206,17 +195,16 @@ package body Sancta.Allocation.Annealers.Neighbourhoods is
    end Two_Opt;
 
    procedure Or_3opt
-     (P : Problem; S : State; T : Positive; U_Index, V_Index : Positive; Variant : Natural;
+     (P : Problem; S : State; T, U : Positive; V_Index : Positive; Variant : Natural;
       Mv : in out Move; Ok : out Boolean)
    is
       R  : constant Positive := S.Owner (T);
       A  : constant Positive := S.Position (T);
-      U  : constant Natural := S.Near (T, U_Index);
       B, C : Natural;
       Pivot, V : Natural;
    begin
       Ok := False;
-      if U = 0 or else S.Owner (U) /= R or else S.Position (U) < A + 2
+      if S.Owner (U) /= R or else S.Position (U) < A + 2
         or else A < P.Frozen_Length (R)
       then
          return;
@@ -238,22 +226,16 @@ package body Sancta.Allocation.Annealers.Neighbourhoods is
    end Or_3opt;
 
    procedure Cross_Exchange
-     (P : Problem; S : State; T : Positive; U_Index : Positive; L1, L2 : Natural;
+     (P : Problem; S : State; T, U : Positive; L1, L2 : Natural;
       Mv : in out Move; Ok : out Boolean)
    is
       R1 : constant Positive := S.Owner (T);
       I  : constant Positive := S.Position (T);
-      U  : constant Natural := S.Near (T, U_Index);
-      R2 : Positive;
-      J  : Positive;
+      R2 : constant Positive := S.Owner (U);
+      J  : constant Positive := S.Position (U);
       E1, E2 : Natural;
    begin
       Ok := False;
-      if U = 0 or else S.Owner (U) = 0 then
-         return;
-      end if;
-      R2 := S.Owner (U);
-      J := S.Position (U);
       if R1 = R2 or else J < P.Frozen_Length (R2) then
          return;
       end if;

@@ -102,8 +102,8 @@ package body Sancta.Allocation.Annealers.Searches is
          end if;
          This.Opts.Box.Post (This.Best, This.Best_Value);
       end if;
-      if This.Report /= null then
-         This.Report (Statistics (This));
+      if This.Opts.Report /= null then
+         This.Opts.Report (Statistics (This));
       end if;
    end Send_Report;
 
@@ -180,6 +180,65 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
    end Propose_Best_Insert;
 
+   --  The neighbour moves from T drawn at random: T's candidate neighbour
+   --  first, then the move's own numbers, one declaration each (the order
+   --  in which a call's arguments are evaluated is the compiler's choice,
+   --  RM 6.4(10)); nothing (Ok False) when the neighbour is not in a tour.
+
+   function Draw_Neighbour (This : in out Search; T : Positive) return Natural is
+     (Placed_Neighbour (This.Tours.all, T, 1 + Random.Below (This.Generator, This.Neighbours)));
+
+   procedure Propose_Or_Opt
+     (This : in out Search; P : Problem; T : Positive; Mv : in out Move; Ok : out Boolean)
+   is
+      U       : constant Natural := Draw_Neighbour (This, T);
+      Length  : constant Positive := 1 + Random.Below (This.Generator, 3);
+      Variant : constant Natural := Random.Below (This.Generator, 4);
+   begin
+      Ok := False;
+      if U /= 0 then
+         Or_Opt (P, This.Tours.all, T, U, Length, Variant, Mv, Ok);
+      end if;
+   end Propose_Or_Opt;
+
+   procedure Propose_Two_Opt
+     (This : in out Search; P : Problem; T : Positive; Mv : in out Move; Ok : out Boolean)
+   is
+      U       : constant Natural := Draw_Neighbour (This, T);
+      Variant : constant Natural := Random.Below (This.Generator, 4);
+   begin
+      Ok := False;
+      if U /= 0 then
+         Two_Opt (P, This.Tours.all, T, U, Variant, Mv, Ok);
+      end if;
+   end Propose_Two_Opt;
+
+   procedure Propose_Or_3opt
+     (This : in out Search; P : Problem; T : Positive; Mv : in out Move; Ok : out Boolean)
+   is
+      U       : constant Natural := Draw_Neighbour (This, T);
+      V_Index : constant Positive := 1 + Random.Below (This.Generator, This.Neighbours);
+      Variant : constant Natural := Random.Below (This.Generator, 2);
+   begin
+      Ok := False;
+      if U /= 0 then
+         Or_3opt (P, This.Tours.all, T, U, V_Index, Variant, Mv, Ok);
+      end if;
+   end Propose_Or_3opt;
+
+   procedure Propose_Cross_Exchange
+     (This : in out Search; P : Problem; T : Positive; Mv : in out Move; Ok : out Boolean)
+   is
+      U  : constant Natural := Draw_Neighbour (This, T);
+      L1 : constant Positive := 1 + Random.Below (This.Generator, 3);
+      L2 : constant Natural := Random.Below (This.Generator, 4);
+   begin
+      Ok := False;
+      if U /= 0 then
+         Cross_Exchange (P, This.Tours.all, T, U, L1, L2, Mv, Ok);
+      end if;
+   end Propose_Cross_Exchange;
+
    --  Makespan criteria: a task of the longest tour (the tour that sets the
    --  makespan) moved next to one of its candidate neighbours (Or-opt of 1
    --  to 3 tasks) or joined to it by 2-opt / 2-opt*: the neighbour moves,
@@ -190,7 +249,6 @@ package body Sancta.Allocation.Annealers.Searches is
    is
       S : State renames This.Tours.all;
       G : Random.Generator renames This.Generator;
-      K : constant Positive := This.Neighbours;
       Worst : constant Positive := Worst_Robot (S);
       Free_Length : constant Natural := S.Length (Worst) - P.Frozen_Length (Worst);
       T : Positive;
@@ -201,10 +259,9 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
       T := S.Task_At (Worst, P.Frozen_Length (Worst) + 1 + Random.Below (G, Free_Length));
       if Random.Below (G, 2) = 0 then
-         Or_Opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
-                 Random.Below (G, 4), Mv, Ok);
+         Propose_Or_Opt (This, P, T, Mv, Ok);
       else
-         Two_Opt (P, S, T, 1 + Random.Below (G, K), Random.Below (G, 4), Mv, Ok);
+         Propose_Two_Opt (This, P, T, Mv, Ok);
       end if;
    end Propose_Worst_Near;
 
@@ -255,7 +312,6 @@ package body Sancta.Allocation.Annealers.Searches is
    is
       S : State renames This.Tours.all;
       G : Random.Generator renames This.Generator;
-      K : constant Positive := This.Neighbours;
       T : constant Natural := Random_Task (P, S, G);
    begin
       Ok := False;
@@ -268,16 +324,13 @@ package body Sancta.Allocation.Annealers.Searches is
          when Switch_Subtree =>
             Propose_Switch (P, S, G, This.Guide, This.Locked, This.Switch.all, Mv, Ok);
          when Or_Opt_Near =>
-            Or_Opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
-                    Random.Below (G, 4), Mv, Ok);
+            Propose_Or_Opt (This, P, T, Mv, Ok);
          when Two_Opt_Near =>
-            Two_Opt (P, S, T, 1 + Random.Below (G, K), Random.Below (G, 4), Mv, Ok);
+            Propose_Two_Opt (This, P, T, Mv, Ok);
          when Or3_Near =>
-            Or_3opt (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, K),
-                     Random.Below (G, 2), Mv, Ok);
+            Propose_Or_3opt (This, P, T, Mv, Ok);
          when Cross_Near =>
-            Cross_Exchange (P, S, T, 1 + Random.Below (G, K), 1 + Random.Below (G, 3),
-                            Random.Below (G, 4), Mv, Ok);
+            Propose_Cross_Exchange (This, P, T, Mv, Ok);
          when Random_Move =>
             declare
                R : constant Positive := S.Owner (T);
@@ -656,8 +709,7 @@ package body Sancta.Allocation.Annealers.Searches is
      (This   : in out Search;
       P      : Problem;
       Opts   : Options;
-      Best   : Assignment;
-      Report : Reporter) is
+      Best   : Assignment) is
    begin
       if Opts.Time_Limit <= 0.0 and then Opts.Iterations <= 0 and then Opts.Convergence <= 0 then
          raise Constraint_Error with "annealer: no budget (time, iterations or convergence)";
@@ -673,7 +725,6 @@ package body Sancta.Allocation.Annealers.Searches is
            and then Opts.Criterion.Ave_Weight = 0.0 and then P.Robots > 1;
          This.Opts.Schedule := (if This.Automatic_Hybrid then Hybrid else Geometric);
       end if;
-      This.Report := Report;
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
       This.Tours := New_State (P, This.Neighbours);
       This.Generator := Random.Seeded (Opts.Seed);
@@ -966,28 +1017,32 @@ package body Sancta.Allocation.Annealers.Searches is
                return;
             end if;
             if Movable (P, S, T) then
-               for U in 1 .. K loop
-                  for V in 0 .. 13 + 2 * K loop
-                     exit when not Movable (P, S, T);
-                     if V < 8 then
-                        Or_Opt (P, S, T, U, 1 + V / 4 * 2, V mod 4, Mv, Ok);
-                     elsif V < 12 then
-                        Two_Opt (P, S, T, U, V mod 4, Mv, Ok);
-                     elsif V < 14 then
-                        Cross_Exchange (P, S, T, U, 1, (V mod 2), Mv, Ok);
-                     else
-                        Or_3opt (P, S, T, U, 1 + (V - 14) / 2, V mod 2, Mv, Ok);
-                     end if;
-                     Mv.Switch_Task := 0;
-                     if Ok then
-                        Evaluate_Move (P, S, This.Guide, Mv, Ok);
-                        if Ok and then Mv.Value < This.Current - 1.0E-9 then
-                           Apply_Move (This, P, Mv);
-                           Restart_From_Current (This, P);
-                           Improved := True;
+               for U_Index in 1 .. K loop
+                  declare
+                     U : constant Natural := Placed_Neighbour (S, T, U_Index);
+                  begin
+                     for V in 0 .. 13 + 2 * K loop
+                        exit when U = 0 or else not Movable (P, S, T);
+                        if V < 8 then
+                           Or_Opt (P, S, T, U, 1 + V / 4 * 2, V mod 4, Mv, Ok);
+                        elsif V < 12 then
+                           Two_Opt (P, S, T, U, V mod 4, Mv, Ok);
+                        elsif V < 14 then
+                           Cross_Exchange (P, S, T, U, 1, (V mod 2), Mv, Ok);
+                        else
+                           Or_3opt (P, S, T, U, 1 + (V - 14) / 2, V mod 2, Mv, Ok);
                         end if;
-                     end if;
-                  end loop;
+                        Mv.Switch_Task := 0;
+                        if Ok then
+                           Evaluate_Move (P, S, This.Guide, Mv, Ok);
+                           if Ok and then Mv.Value < This.Current - 1.0E-9 then
+                              Apply_Move (This, P, Mv);
+                              Restart_From_Current (This, P);
+                              Improved := True;
+                           end if;
+                        end if;
+                     end loop;
+                  end;
                end loop;
             end if;
          end loop;

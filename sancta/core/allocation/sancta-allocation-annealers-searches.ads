@@ -5,7 +5,7 @@
 --  ruin and recreate, the final descent, the reports.
 --
 --     Run : Search (P.Robots, P.Tasks);
---     Start (Run, P, Opts, Best, Report);
+--     Start (Run, P, Opts, Best);
 --     Anneal (Run, P);
 --     Finish (Run, P, Best, Stats);
 with Ada.Finalization;
@@ -23,7 +23,6 @@ private package Sancta.Allocation.Annealers.Searches is
    type Search (Robots, Tasks : Positive) is new Ada.Finalization.Limited_Controlled with
    record
       Opts            : Options;
-      Report          : Reporter;
       Tours           : State_Access;
       --  The current solution.
       Switch          : Switch_Access;
@@ -92,8 +91,7 @@ private package Sancta.Allocation.Annealers.Searches is
      (This   : in out Search;
       P      : Problem;
       Opts   : Options;
-      Best   : Assignment;
-      Report : Reporter);
+      Best   : Assignment);
    --  Checks the budget, the move kinds and the initial allocation (Best
    --  when Opts.Initial), builds the start and samples the temperatures.
 

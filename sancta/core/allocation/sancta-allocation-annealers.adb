@@ -106,8 +106,7 @@ package body Sancta.Allocation.Annealers is
      (P      : Problem;
       Opts   : Options;
       Best   : in out Assignment;
-      Stats  : out Progress;
-      Report : Reporter := null)
+      Stats  : out Progress)
    is
       Single_Tour : constant Boolean := Local_Search.Applies (P);
       Route_Polish : constant Boolean := Opts.Polish and then Opts.Criterion.Ave_Weight = 0.0;
@@ -148,7 +147,7 @@ package body Sancta.Allocation.Annealers is
                                           * (1.0 - (if Share > 0.0 then Share
                                                     elsif Route_Polish then Team_Polish_Share
                                                     else 0.0)));
-      Searches.Start (Run, P, Anneal_Opts, Best, Report);
+      Searches.Start (Run, P, Anneal_Opts, Best);
       Searches.Anneal (Run, P);
       Searches.Finish (Run, P, Best, Stats);
       if Opts.Target > 0.0 and then Stats.Best <= Opts.Target then

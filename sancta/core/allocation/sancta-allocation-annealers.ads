@@ -89,6 +89,37 @@ package Sancta.Allocation.Annealers is
    Route_Search_Interval : constant := 50;
    --  Moves per task between two route searches inside the anneal.
 
+   type Kind_Stats is record
+      Tries     : Long_Long_Integer := 0;
+      --  Moves of this kind drawn.
+      Legal     : Long_Long_Integer := 0;
+      --  ... that gave a legal move (evaluated).
+      Accepted  : Long_Long_Integer := 0;
+      Improving : Long_Long_Integer := 0;
+      --  ... accepted with a strict decrease of the search objective.
+      New_Best  : Long_Long_Integer := 0;
+   end record;
+   type Kind_Stats_Array is array (Move_Kind) of Kind_Stats;
+   --  What each neighbourhood achieved in the annealing phase (profiling).
+
+   type Progress is record
+      Best          : Long_Float := 0.0;
+      Current       : Long_Float := 0.0;
+      Temperature   : Long_Float := 0.0;
+      Moves         : Long_Long_Integer := 0;
+      Accepted      : Long_Long_Integer := 0;
+      Elapsed       : Duration := 0.0;
+      Moves_Per_Second : Long_Float := 0.0;
+      Time_To_Best  : Duration := 0.0;
+      Kinds         : Kind_Stats_Array;
+      Polish_Gain   : Long_Float := 0.0;
+      --  How much the final descent lowered the objective.
+      Switches      : Long_Long_Integer := 0;
+      --  Accepted switch subtree moves (plan trees).
+   end record;
+
+   type Reporter is access procedure (P : Progress);
+
    type Options is record
       Criterion    : Allocation.Criterion := Min_Sum;
       Seed         : Interfaces.Unsigned_64 := 1;
@@ -130,6 +161,8 @@ package Sancta.Allocation.Annealers is
       Initial      : Boolean := False;
       --  Start from Start_From (below) instead of best insertion.
       Report_Every : Duration := 0.5;
+      Report       : Reporter := null;
+      --  When set, called every Report_Every with the progress.
       Balance      : Long_Float := 0.05;
       --  Pure makespan only: weight of the total cost in the search
       --  objective (decaying to a tie-break if Balance_Decay); < 0 = 1 / Robots.
@@ -159,53 +192,20 @@ package Sancta.Allocation.Annealers is
       --  or on one robot's route (Polish, no mean completion time, nothing
       --  to choose but the order); 0 = none. Teams get one route descent.
       Target       : Long_Float := 0.0;
+      --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).
-      --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
    end record;
-
-   type Kind_Stats is record
-      Tries     : Long_Long_Integer := 0;
-      --  Moves of this kind drawn.
-      Legal     : Long_Long_Integer := 0;
-      --  ... that gave a legal move (evaluated).
-      Accepted  : Long_Long_Integer := 0;
-      Improving : Long_Long_Integer := 0;
-      --  ... accepted with a strict decrease of the search objective.
-      New_Best  : Long_Long_Integer := 0;
-   end record;
-   type Kind_Stats_Array is array (Move_Kind) of Kind_Stats;
-   --  What each neighbourhood achieved in the annealing phase (profiling).
-
-   type Progress is record
-      Best          : Long_Float := 0.0;
-      Current       : Long_Float := 0.0;
-      Temperature   : Long_Float := 0.0;
-      Moves         : Long_Long_Integer := 0;
-      Accepted      : Long_Long_Integer := 0;
-      Elapsed       : Duration := 0.0;
-      Moves_Per_Second : Long_Float := 0.0;
-      Time_To_Best  : Duration := 0.0;
-      Kinds         : Kind_Stats_Array;
-      Polish_Gain   : Long_Float := 0.0;
-      --  How much the final descent lowered the objective.
-      Switches      : Long_Long_Integer := 0;
-      --  Accepted switch subtree moves (plan trees).
-   end record;
-
-   type Reporter is access procedure (P : Progress);
 
    procedure Solve
      (P      : Problem;
       Opts   : Options;
       Best   : in out Assignment;
-      Stats  : out Progress;
-      Report : Reporter := null)
+      Stats  : out Progress)
      with Pre => Best.Robots = P.Robots and then Best.Tasks = P.Tasks
                  and then Check (P) = "";
    --  Anneals and returns the best allocation found in Best (read as the
-   --  start when Opts.Initial). Reporter, if given, is called every
-   --  Opts.Report_Every with the progress.
+   --  start when Opts.Initial).
 
    function Greedy_Start (P : Problem; C : Criterion; Seed : Interfaces.Unsigned_64)
      return Assignment;

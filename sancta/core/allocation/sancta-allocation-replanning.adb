@@ -228,6 +228,7 @@ package body Sancta.Allocation.Replanning is
       Current_Box := Box'Unchecked_Access;
       Current_Criterion := Opts.Criterion;
       O.Box := Box'Unchecked_Access;
+      O.Report := Record_Progress'Access;
       Recorder.Start (Trace.Capacity);
       Recorder.Add ((0.0, Evaluate (Q, Plan, Opts.Criterion).Value));
       O.Initial := True;
@@ -235,7 +236,7 @@ package body Sancta.Allocation.Replanning is
       Offset := To_Duration (Budget_Clocks.Clock (Opts.Budget_Clock) - Started);
       O.Time_Limit := Duration'Max (0.01, Opts.Time_Limit - Offset);
       begin
-         Annealers.Solve (Q, O, Plan, Stats, Record_Progress'Access);
+         Annealers.Solve (Q, O, Plan, Stats);
       exception
          when others =>
             Recorder.Release;

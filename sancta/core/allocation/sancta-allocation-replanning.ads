@@ -74,6 +74,7 @@ package Sancta.Allocation.Replanning is
    --  dropped but for the last). The annealer ranks plans
    --  by its search objective, which for a makespan adds a small share of
    --  the total cost: the makespan may rise a little between samples.
-   --  Re-plans run one at a time (the reports go through one recorder).
+   --  Re-plans run one at a time (the reports go through one recorder;
+   --  Opts.Box and Opts.Report are replaced by the recorder's).
 
 end Sancta.Allocation.Replanning;

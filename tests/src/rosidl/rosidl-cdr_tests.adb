@@ -361,6 +361,7 @@ package body ROSIDL.CDR_Tests is
    end Corrupted_Buffers_Are_Rejected;
 
    procedure Request_Corpus (Unused : in out Fixture) is
+      Request_Type : constant String := "example_interfaces/srv/AddTwoInts_Request";
       Data : constant Stream_Element_Array :=
         Samples.Encode_Sample ("add_two_ints_request");
       M    : Message := Samples.Make ("add_two_ints_request");
@@ -372,9 +373,39 @@ package body ROSIDL.CDR_Tests is
             Assert (False, "a cut request header/body must not decode");
          exception
             when E : Decode_Error =>
-               Assert (Contains (Message_Of (E), "byte offset"), Message_Of (E));
+               Assert (Contains (Message_Of (E), "byte offset")
+                       and then Contains (Message_Of (E), Request_Type & ": "),
+                       Message_Of (E));
          end;
       end loop;
+      --  The header alone (a client reads it first: whose reply is it?).
+      H := Request_Header_Of (Data (1 .. 20), Request_Type);
+      Assert (H = Samples.Test_Header, "header read alone");
+      for L in Stream_Element_Offset range 0 .. 19 loop
+         begin
+            H := Request_Header_Of (Data (1 .. L), Request_Type);
+            Assert (False, "a cut request header must not be read");
+         exception
+            when E : Decode_Error =>
+               Assert (Contains (Message_Of (E), Request_Type & ": ")
+                       and then Contains
+                         (Message_Of (E), "at byte offset"
+                          & (if L < 4 then " 0" elsif L < 12 then " 4" else " 12")),
+                       Message_Of (E));
+         end;
+      end loop;
+      --  An unknown encapsulation, as any decoder of a type says it.
+      declare
+         Bad : Stream_Element_Array := Data;
+      begin
+         Bad (2) := 7;
+         Decode (Bad, M, H);
+         Assert (False, "encapsulation 0, 7 was accepted");
+      exception
+         when E : Decode_Error =>
+            Assert (Contains (Message_Of (E), Request_Type & ": unknown encapsulation identifier")
+                    and then Contains (Message_Of (E), "at byte offset 0"), Message_Of (E));
+      end;
    end Request_Corpus;
 
    ---------------------------------------------------------------------------
@@ -441,7 +472,7 @@ package body ROSIDL.CDR_Tests is
                                       Decode_Errors_Name_Path_And_Offset'Access));
       Result.Add_Test (Caller.Create ("cdr: corrupted corpus raises only Decode_Error",
                                       Corrupted_Buffers_Are_Rejected'Access));
-      Result.Add_Test (Caller.Create ("cdr: every cut request is rejected",
+      Result.Add_Test (Caller.Create ("cdr: every cut request is rejected, naming its type",
                                       Request_Corpus'Access));
       Result.Add_Test (Caller.Create ("cdr: random round trip of every bundled type",
                                       Every_Bundled_Type_Round_Trips'Access));

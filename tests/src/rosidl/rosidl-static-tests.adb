@@ -264,8 +264,11 @@ package body ROSIDL.Static.Tests is
          Scan.Decode (Bad, Msg);
          Assert (False, "encapsulation 0, 7 was accepted");
       exception
-         when ROSIDL.Decode_Error =>
-            null;
+         when E : ROSIDL.Decode_Error =>
+            --  The type named (a program logging it may serve many).
+            Assert (Contains (Message_Of (E), "sensor_msgs/msg/LaserScan: unknown encapsulation")
+                    and then Contains (Message_Of (E), "at byte offset 0"),
+                    "error message: " & Message_Of (E));
       end;
       declare
          Bad : Stream_Element_Array := Good;
