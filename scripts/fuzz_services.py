@@ -8,7 +8,9 @@ clients:
   servers  examples' server (dynamic, RCL.Services) and typed_server
            (RCL.Services.Typed), AddTwoInts; parameters_demo's parameter
            services (dynamic servers of rcl_interfaces: strings, nested
-           sequences)
+           sequences); the send_goal / get_result / cancel_goal services of
+           fibonacci_server (RCL.Actions) and typed_fibonacci
+           (RCL.Actions.Typed)
   clients  examples' client (RCL.Clients) and typed_client
            (RCL.Services.Typed), AddTwoInts; `rclada param get` (RCL.Clients,
            GetParameters replies)
@@ -21,7 +23,15 @@ probe after each batch (it keeps serving). A client must print the answer of
 the first reply of its call that decodes (AddTwoInts: that reply's sum, not
 another), log the malformed replies to its call that came before it, and
 never log a reply addressed to another client. A crash, a hang, an exception
-trace, an unlocated refusal, a lost or an extra log line is a finding."""
+trace, an unlocated refusal, a lost or an extra log line is a finding.
+
+Limits of the peer: Cyclone DDS sends a sample with the sender's byte order
+in its encapsulation identifier and builds no valid packet around some
+identifiers, and the Python peer writes no sample under 5 bytes; so
+big-endian payloads, identifiers FF FF / 01 FF and samples under 8 bytes
+are not sent (the cdr and typed readers cover them offline).
+
+    fuzz_services.py TARGET HEX...   replays requests at one server target"""
 import os
 import re
 import select
@@ -34,7 +44,7 @@ from dataclasses import dataclass
 import fuzz_inputs as fi
 
 SERVERS = [
-    # (name, argv, service name, service type, request mutations per case)
+    # (name, argv, service name, service type)
     ("server", ["server", "fuzz_sum"], "/fuzz_sum",
      "example_interfaces::srv::dds_::AddTwoInts"),
     ("typed_server", ["typed_server", "fuzz_sum"], "/fuzz_sum",
@@ -45,6 +55,16 @@ SERVERS = [
      "rcl_interfaces::srv::dds_::GetParameters"),
     ("param_server/describe", ["parameters_demo"], "/parameters_demo/describe_parameters",
      "rcl_interfaces::srv::dds_::DescribeParameters"),
+    ("action_server/send_goal", ["fibonacci_server", "fuzz_fib", "0.01"],
+     "/fuzz_fib/_action/send_goal", "example_interfaces::action::dds_::Fibonacci_SendGoal"),
+    ("action_server/get_result", ["fibonacci_server", "fuzz_fib", "0.01"],
+     "/fuzz_fib/_action/get_result", "example_interfaces::action::dds_::Fibonacci_GetResult"),
+    ("action_server/cancel", ["fibonacci_server", "fuzz_fib", "0.01"],
+     "/fuzz_fib/_action/cancel_goal", "action_msgs::srv::dds_::CancelGoal"),
+    ("typed_action_server/send_goal", ["typed_fibonacci", "server", "fuzz_fib", "0.01"],
+     "/fuzz_fib/_action/send_goal", "example_interfaces::action::dds_::Fibonacci_SendGoal"),
+    ("typed_action_server/cancel", ["typed_fibonacci", "server", "fuzz_fib", "0.01"],
+     "/fuzz_fib/_action/cancel_goal", "action_msgs::srv::dds_::CancelGoal"),
 ]
 
 CLIENTS = [
