@@ -76,6 +76,11 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --square W           minmax: weight of the sum of squared tour costs in");
       Put_Line ("                       the search objective, per unit of a mean tour");
       Put_Line ("                       (default 0 = none)");
+      Put_Line ("  --excess W           minmax: weight of the tours' squared excess over a");
+      Put_Line ("                       floor below the best makespan, per unit of the");
+      Put_Line ("                       longest tour's excess (default 1, 0 = none)");
+      Put_Line ("  --excess-band F      minmax: that floor, as a share of the best makespan");
+      Put_Line ("                       below it (default 0.04)");
       Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
@@ -604,6 +609,10 @@ package body Sancta.Commands.Plan is
                Opts.Balance_Decay := True;
             elsif A = "--square" then
                Opts.Square_Balance := Number_In (A, 0.0, 10.0);
+            elsif A = "--excess" then
+               Opts.Excess_Weight := Number_In (A, 0.0, 10.0);
+            elsif A = "--excess-band" then
+               Opts.Excess_Band := Number_In (A, 0.0, 1.0);
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);

@@ -154,11 +154,11 @@ package body Sancta.Allocation.Annealers.Moves is
       Mv.New_Sum := Sum;
       Mv.New_Completion := Completion;
       if W.Square /= 0.0 then
-         Mv.New_Square := S.Total_Square - Square_Of (S.Robot_Cost (A))
-           + Square_Of (Mv.New_A_Cost);
+         Mv.New_Square := S.Total_Square - Square_Of (S, S.Robot_Cost (A))
+           + Square_Of (S, Mv.New_A_Cost);
          if B /= 0 then
-            Mv.New_Square := Mv.New_Square - Square_Of (S.Robot_Cost (B))
-              + Square_Of (Mv.New_B_Cost);
+            Mv.New_Square := Mv.New_Square - Square_Of (S, S.Robot_Cost (B))
+              + Square_Of (S, Mv.New_B_Cost);
          end if;
       end if;
       Mv.Value := Objective (W, Max, Sum, Completion, S.Active_Tasks, Mv.New_Square);
@@ -284,7 +284,7 @@ package body Sancta.Allocation.Annealers.Moves is
                end if;
             end if;
             Sum := Sum + RC;
-            Square := Square + Square_Of (RC);
+            Square := Square + Square_Of (S, RC);
             Completion := Completion + RCm;
             Max := Cost'Max (Max, RC);
          end;

@@ -259,7 +259,8 @@ package body Sancta.Allocation.Annealers.Plan_Trees is
                Sum := Sum - S.Robot_Cost (R) + D.Robot_Cost (R);
                Completion := Completion - S.Robot_Completion (R) + D.Robot_Completion (R);
                Max := Cost'Max (Max, D.Robot_Cost (R));
-               Square := Square - Square_Of (S.Robot_Cost (R)) + Square_Of (D.Robot_Cost (R));
+               Square := Square - Square_Of (S, S.Robot_Cost (R))
+                 + Square_Of (S, D.Robot_Cost (R));
             else
                Max := Cost'Max (Max, S.Robot_Cost (R));
             end if;

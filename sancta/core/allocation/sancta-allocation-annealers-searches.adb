@@ -66,8 +66,33 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Current := Current_Value (P, This.Tours.all, This.Guide);
    end Restart_From_Current;
 
+   --  The squared-excess term (Options.Excess_Weight) for a new best
+   --  makespan: its floor Excess_Band below it, its weight such that the
+   --  longest tour's excess weighs Excess_Weight per unit of cost.
+   procedure Set_Excess_Floor (This : in out Search; Makespan : Cost) is
+      Band : constant Cost :=
+        Cost'Max (1, Cost (This.Opts.Excess_Band * Long_Float (Makespan)));
+   begin
+      This.Excess_Makespan := Makespan;
+      Set_Square_Floor (This.Tours.all, Makespan - Band);
+      This.Guide.Square := This.Opts.Excess_Weight / (2.0 * Long_Float (Band));
+   end Set_Excess_Floor;
+
    procedure Note_New_Best (This : in out Search; Kind : Move_Kind; Value : Long_Float) is
    begin
+      if This.Excess_Floor and then Current_Max (This.Tours.all) < This.Excess_Makespan then
+         --  The search objective changes: the current value and the
+         --  schedule's reference move with it.
+         declare
+            Before : constant Long_Float := This.Guide.Square * This.Tours.Total_Square;
+            Change : Long_Float;
+         begin
+            Set_Excess_Floor (This, Current_Max (This.Tours.all));
+            Change := This.Guide.Square * This.Tours.Total_Square - Before;
+            This.Current := This.Current + Change;
+            This.Cycle_Best := This.Cycle_Best + Change;
+         end;
+      end if;
       This.Best_Value := Value;
       This.Best_Saved := False;
       This.Last_Best_Move := This.Moves;
@@ -718,6 +743,13 @@ package body Sancta.Allocation.Annealers.Searches is
          raise Constraint_Error with "annealer: Geometric_Share" & Opts.Geometric_Share'Image
            & " is not in 0 .. 1";
       end if;
+      if Opts.Excess_Weight < 0.0 then
+         raise Constraint_Error with "annealer: Excess_Weight" & Opts.Excess_Weight'Image
+           & " is negative";
+      elsif Opts.Excess_Band not in 0.0 .. 1.0 then
+         raise Constraint_Error with "annealer: Excess_Band" & Opts.Excess_Band'Image
+           & " is not in 0 .. 1";
+      end if;
       This.Opts := Opts;
       This.Automatic_Hybrid := False;
       if Opts.Schedule = Automatic then
@@ -771,6 +803,11 @@ package body Sancta.Allocation.Annealers.Searches is
             This.Guide.Square := Opts.Square_Balance
               / (2.0 * Long_Float'Max (1.0, Long_Float (This.Tours.Total_Cost)
                                           / Long_Float (P.Robots)));
+         elsif This.Opts.Excess_Weight > 0.0 and then This.Opts.Excess_Band > 0.0
+           and then P.All_Feasible
+         then
+            This.Excess_Floor := True;
+            Set_Excess_Floor (This, Current_Max (This.Tours.all));
          end if;
       end if;
       Check (This, P);

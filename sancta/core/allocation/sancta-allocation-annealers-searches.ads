@@ -49,6 +49,10 @@ private package Sancta.Allocation.Annealers.Searches is
       --  from Initial_Balance to Goal.Tie over the budget.
       Current         : Long_Float := 0.0;
       --  The current solution's value for Guide.
+      Excess_Floor    : Boolean := False;
+      Excess_Makespan : Cost := 0;
+      --  Guide has the squared-excess term (Options.Excess_Weight), its
+      --  floor set from this best makespan.
       Moves, Accepted, Last_Best_Move, Switches : Long_Long_Integer := 0;
       Ruin_Evaluations : Long_Long_Integer := 0;
       --  Move evaluations spent in ruin and recreate (best insertions).

@@ -91,9 +91,18 @@ package body Sancta.Allocation.Annealers.Tours is
       S.Robot_Completion (R) := M * S.Forward_Sum (R, N) + Cost (Bad) * Infinity;
       S.Total_Cost := S.Total_Cost - Old_Cost + S.Robot_Cost (R);
       S.Total_Completion := S.Total_Completion - Old_Completion + S.Robot_Completion (R);
-      S.Total_Square := S.Total_Square - Square_Of (Old_Cost) + Square_Of (S.Robot_Cost (R));
+      S.Total_Square := S.Total_Square - Square_Of (S, Old_Cost) + Square_Of (S, S.Robot_Cost (R));
       Set_Tree_Cost (S, R, S.Robot_Cost (R));
    end Rebuild;
+
+   procedure Set_Square_Floor (S : in out State; Floor : Cost) is
+   begin
+      S.Square_Floor := Floor;
+      S.Total_Square := 0.0;
+      for R in 1 .. S.Robots loop
+         S.Total_Square := S.Total_Square + Square_Of (S, S.Robot_Cost (R));
+      end loop;
+   end Set_Square_Floor;
 
    procedure Cost_From_Scratch
      (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;

@@ -46,9 +46,11 @@ private package Sancta.Allocation.Annealers.Tours is
       --  Tour cost and sum of completion times (times the multiplier,
       --  Infinity per infeasible task).
       Total_Cost, Total_Completion : Cost := 0;
+      Square_Floor    : Cost := 0;
       Total_Square    : Long_Float := 0.0;
-      --  The sum of Square_Of (robot cost) (the makespan search's balance
-      --  term, Moves.Weights.Square).
+      --  The sum over robots of Square_Of (S, robot cost): squared excess
+      --  over Square_Floor (the makespan search's balance term,
+      --  Moves.Weights.Square; Set_Square_Floor changes the floor).
       Max_Tree        : Cost_Array (1 .. Tree_Size) := [others => 0];
       --  Robot costs in a max segment tree: leaves Robots .. 2 Robots - 1.
       Near            : Neighbour_Grid (1 .. Tasks, 1 .. Neighbours) :=
@@ -70,10 +72,17 @@ private package Sancta.Allocation.Annealers.Tours is
    function New_State (P : Problem; Neighbours : Positive) return State_Access
    is (new State (P.Robots, P.Tasks, Neighbours, P.Tasks + 1, 2 * P.Robots));
 
-   function Square_Of (C : Cost) return Long_Float is
-     (if Is_Infinite (C) then 0.0 else Long_Float (C) ** 2) with Inline;
-   --  A robot cost squared; 0 for an infeasible tour (its 2 ** 80 would
-   --  swallow the other robots' terms in a running sum).
+   function Square_Of (S : State; C : Cost) return Long_Float is
+     (if Is_Infinite (C) or else C <= S.Square_Floor then 0.0
+      else Long_Float (C - S.Square_Floor) ** 2) with Inline;
+   --  The square of a robot cost's excess over S.Square_Floor (the cost
+   --  squared with the floor 0); 0 for an infeasible tour (its 2 ** 80
+   --  would swallow the other robots' terms in a running sum).
+   --  Example: floor 900, costs 1000 and 800: 100 ** 2 + 0 = 10_000.
+
+   procedure Set_Square_Floor (S : in out State; Floor : Cost)
+     with Post => S.Square_Floor = Floor;
+   --  A new floor; Total_Square recomputed (O (robots)).
 
    function Max_Except (S : State; A, B : Natural) return Cost with Inline;
    --  The largest robot cost but those of robots A and B (0: none).

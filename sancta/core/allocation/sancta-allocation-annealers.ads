@@ -174,6 +174,18 @@ package Sancta.Allocation.Annealers is
       --  down by its size, not only the longest); 0 = none. Off by default:
       --  0.1 measured no better than the total-cost balance alone (kroA100,
       --  rat99, kroA200 with 5 robots).
+      Excess_Weight : Long_Float := 1.0;
+      Excess_Band   : Long_Float := 0.04;
+      --  Pure makespan, every task feasible for every robot, Square_Balance
+      --  0: the search objective adds the sum over tours of the squared
+      --  excess over a floor Excess_Band x the best makespan so far below
+      --  it, scaled so that the longest tour's excess weighs Excess_Weight
+      --  per unit of cost (every tour near the makespan is pushed down, not
+      --  only the longest: with many robots several tours sit within a few
+      --  per cent of it); the floor follows each lower best makespan; the
+      --  reported value and the best kept stay the makespan. 0 = none.
+      --  Measured at 10 robots, 10 M moves on 6 unseen instances (2 seeds):
+      --  -0.87% mean (band 0.02: -0.58%, 0.08: -0.66%; weight 2: -0.02%).
       Enabled      : Kind_Flags := [others => True];
       --  The move kinds used (tests exercise one kind at a time).
       Ruin_Share   : Long_Float := 0.2;

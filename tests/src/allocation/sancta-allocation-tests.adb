@@ -593,6 +593,64 @@ package body Sancta.Allocation.Tests is
       Assert (Improving > 30, "only" & Improving'Image & " chains lowered the objective");
    end Ejection_Chains_Checked;
 
+   --  The makespan search's squared excess over a floor below the best
+   --  makespan (Options.Excess_Weight), under the expensive check after
+   --  every move (the incremental sum of squared excesses recomputed, also
+   --  after each new best moves the floor), on random problems of every
+   --  variant: valid, the reported best is the allocation's makespan, the
+   --  same for a seed, another search than without the term; a band
+   --  outside 0 .. 1 is refused.
+   procedure Excess_Term_Checked (Unused : in out Fixture) is
+      use Annealers;
+      Variants : constant array (1 .. 6) of Variant :=
+        [Variant'(others => <>),
+         (Asymmetric => True, Closed => False, others => <>),
+         (Frozen => Robots_1_And_2, Min_Tasks => 2, others => <>),
+         (End_Depot => True, Heterogeneous => True, Alternatives => True, others => <>),
+         (Own_Factor => True, Own_Matrix => True, Own_Callback => True, others => <>),
+         (Plan_Trees => True, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 4_500;
+      Differs : Natural := 0;
+   begin
+      for V of Variants loop
+         Seed := Seed + 1;
+         declare
+            P : constant Problem_Access := Random_Problem (40, 5, V, Seed);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 20_000,
+               Check => True, Excess_Weight => 1.0, Excess_Band => 0.03, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6, "reported best");
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            O.Excess_Weight := 0.0;
+            Solve (P.all, O, B, T);
+            if A /= B then
+               Differs := Differs + 1;
+            end if;
+         end;
+      end loop;
+      Assert (Differs >= 5, "the excess term changed the search on" & Differs'Image & " of 6");
+      declare
+         P : constant Problem_Access := Random_Problem (10, 2, (others => <>), 1);
+         A : Assignment (P.Robots, P.Tasks);
+         S : Progress;
+      begin
+         Solve (P.all, (Criterion => Min_Max, Iterations => 100, Excess_Band => 1.5,
+                        others => <>), A, S);
+         Assert (False, "an excess band of 1.5 was accepted");
+      exception
+         when E : Constraint_Error =>
+            Assert (Ada.Exceptions.Exception_Message (E)
+                      = "annealer: Excess_Band 1.50000000000000E+00 is not in 0 .. 1",
+                    Ada.Exceptions.Exception_Message (E));
+      end;
+   end Excess_Term_Checked;
+
    --  Computed Euclidean distances (no matrix) equal the matrix ones on
    --  every bundled TSPLIB file (EUC_2D, ATSP / explicit keep a matrix), on
    --  scaled and floored random points, with robot factors and own costs,
@@ -765,6 +823,8 @@ package body Sancta.Allocation.Tests is
       Add ("mission XML: nested AND/OR plans, errors", Nested_Plans'Access);
       Add ("each move kind alone, checked after every move", Each_Move_Kind_Checked'Access);
       Add ("ejection chains, checked after every step", Ejection_Chains_Checked'Access);
+      Add ("makespan search's excess term, checked after every move",
+           Excess_Term_Checked'Access);
       return Result;
    end Suite;
 
