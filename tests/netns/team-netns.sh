@@ -110,14 +110,18 @@ fail() {
 }
 
 cut_seconds="${CUT_SECONDS:-10}"
+# The team stays up (--linger) at least as long as the cut after finishing:
+# the majority may finish the mission before the link is restored, and a
+# team that has left cannot be rejoined (the rejoin itself is bounded below).
+linger=$(( cut_seconds > 4 ? cut_seconds : 4 ))
 
 one_run() {  # one_run RUN_NUMBER
 rm -f "$work"/*.log
 for i in 1 2 3; do
    run_in "$i" "$work/r$i.log" --id "r$i" --x $((i * 3)) --y 10 --rate 4 --lease 1.0 --for 150 \
-      --linger 4
+      --linger "$linger"
 done
-run_in 0 "$work/operator.log" --operator "$mission" --lease 1.0 --for 150 --linger 4
+run_in 0 "$work/operator.log" --operator "$mission" --lease 1.0 --for 150 --linger "$linger"
 op_pid=$!
 robot_pids=$(jobs -p)
 
