@@ -26,7 +26,7 @@ A case is flagged when the program
 Readers that do more than read a file: `typed` (the generated codecs,
 compared with the dynamic decoder on the same mutated payloads), `args`
 (parameters_demo's --ros-args / --params-file; DDS on loopback: source
-scripts/env.sh first), `run` and `demo` (sancta run / sancta demo on mutated
+scripts/env.sh first), `message` (YAML messages given to `rclada topic pub`), `run` and `demo` (sancta run / sancta demo on mutated
 configurations; processes left behind are findings), `services` (mutated
 requests and replies written by a Cyclone DDS peer at the product's service
 servers and clients, scripts/fuzz_services.py; DDS on loopback).
@@ -322,6 +322,39 @@ def params_seeds(folder):
     return out
 
 
+MESSAGE_SEEDS = {
+    "std_msgs.msg.String": "{data: hello}",
+    "geometry_msgs.msg.Twist": "{linear: {x: 1.0, y: -2.5, z: 0}, angular: {z: 0.5}}",
+    "sensor_msgs.msg.JointState": "{header: {stamp: {sec: 1, nanosec: 2}, frame_id: base}, "
+                                  "name: [a, b], position: [1.0, 2.0], velocity: [], "
+                                  "effort: [0.5]}",
+    "std_msgs.msg.Float64MultiArray": "{layout: {dim: [{label: x, size: 2, stride: 2}], "
+                                      "data_offset: 0}, data: [1.5, 2.5]}",
+    "rcl_interfaces.msg.ParameterValue": "{type: 9, integer_value: -5, "
+                                         "string_array_value: ['a', \"b c\"]}",
+    "sensor_msgs.msg.CompressedImage": "{format: jpeg, data: [1, 2, 255]}",
+    "builtin_interfaces.msg.Time": "{sec: -1, nanosec: 999999999}",
+}
+
+
+def message_seeds(folder):
+    """YAML messages as `rclada topic pub` takes them (the file's stem is the
+    type, dots for slashes): flow ones above, block ones as `cdr_tool image`
+    prints them (LaserScan, OccupancyGrid, Odometry)."""
+    seeds = []
+    for name, text in MESSAGE_SEEDS.items():
+        seeds.append(folder / f"{name}.yaml")
+        seeds[-1].write_text(text)
+    for sample, name in (("laser_scan", "sensor_msgs.msg.LaserScan"),
+                         ("occupancy_grid", "nav_msgs.msg.OccupancyGrid"),
+                         ("odometry", "nav_msgs.msg.Odometry")):
+        image = subprocess.run([str(BIN / "cdr_tool"), "image", sample], capture_output=True,
+                               text=True, check=True).stdout
+        seeds.append(folder / f"{name}.yaml")
+        seeds[-1].write_text(image)
+    return seeds
+
+
 def config_prepare(seed, folder):
     # Includes are relative to the including file.
     shutil.copytree(SHARE / "config" / "parts", folder / "parts")
@@ -409,6 +442,11 @@ def build_readers(seed_folder):
                "yaml", None, TEXT_MUTATORS, timeout=15.0,
                # Read and understood: it then waits for a node that is not there.
                unlocated_ok=re.compile(r"service after|not available|set_parameters|has no parameters for")),
+        Reader("message", message_seeds(seed_folder),
+               ["rclada", "topic", "pub", "/fuzz_yaml", "{seed_type}", "{text}", "--once"],
+               "yaml", None, TEXT_MUTATORS, timeout=15.0, name_of=lambda seed: "<argument>",
+               # A mutated argument that starts with '-' is an option.
+               unlocated_ok=re.compile(r"^rclada: unknown option -", re.M)),
         Reader("mcap", make_mcap_seeds(seed_folder),
                ["rclada", "bag", "info", "{input}"], "binary", None,
                BINARY_MUTATORS + [m_mcap_length] * 4, must_refuse=mcap_must_refuse),
@@ -565,7 +603,12 @@ def fuzz_reader(reader, rng, cases, keep, log):
             file_name = reader.name_of(seed)
             (folder / file_name).parent.mkdir(parents=True, exist_ok=True)
             (folder / file_name).write_bytes(data)
+            # {text}: the input as an argument (no NUL, at most 100 KB:
+            # execve's limits); {seed_type}: the seed's stem, dots for slashes.
+            text_argument = data.replace(b"\x00", b"").decode("utf-8", "replace")[:100000]
             argv = [a.replace("{input}", str(folder / file_name)).replace("{dir}", str(folder))
+                    .replace("{seed_type}", seed.stem.replace(".", "/"))
+                    .replace("{text}", text_argument)
                     for a in reader.argv]
             argv[0] = str(BIN / argv[0])
             if reader.session:

@@ -71,9 +71,14 @@ procedure Bench_Sim is
       Sim.Initialize (World, Seed => 1, Physics_Period => 0.01);
       for R in 1 .. N loop
          loop
-            Starts (R) :=
-              (F.Origin.X + Generators.Uniform (Random) * Real (F.Width) * F.Resolution,
-               F.Origin.Y + Generators.Uniform (Random) * Real (F.Height) * F.Resolution);
+            declare
+               --  One draw per declaration (an aggregate's order is the compiler's)
+               U : constant Real := Generators.Uniform (Random);
+               V : constant Real := Generators.Uniform (Random);
+            begin
+               Starts (R) := (F.Origin.X + U * Real (F.Width) * F.Resolution,
+                              F.Origin.Y + V * Real (F.Height) * F.Resolution);
+            end;
             exit when Map.Is_Free (Starts (R))
               and then Map.Cost (Starts (R), (10.0, 10.0)) /= Robot.Path_Costs.Unreachable
               and then (for all K in 1 .. R - 1 => Distance (Starts (K), Starts (R)) > 0.7);

@@ -54,6 +54,13 @@ package body RCL.Contexts is
       Process_Context.Ensure_Participant (Domain, Localhost_Only);
    end Init;
 
+   procedure Init (Participant_Lease : Duration) is
+   begin
+      RCL.Arguments.Load;
+      Install_Signal_Handlers;
+      Process_Context.Ensure_Participant (Env_Domain, Env_Localhost_Only, Participant_Lease);
+   end Init;
+
    procedure Shutdown is
    begin
       Process_Context.Shutdown;

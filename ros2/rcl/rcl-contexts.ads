@@ -23,6 +23,15 @@ package RCL.Contexts is
    --  The same with an explicit domain and discovery range instead of the
    --  environment's (before the first node).
 
+   procedure Init (Participant_Lease : Duration)
+     with Pre => not Is_Initialized and then Participant_Lease >= 0.1;
+   --  Init, the participant's lease being Participant_Lease instead of the
+   --  DDS configuration's (10 s by default): peers drop this process after
+   --  that long without hearing it, and it announces itself every 0.8 x
+   --  Participant_Lease (below 10 s; every 8 s by default), so that a peer
+   --  that dropped it (a network cut, then healed) finds it again within that
+   --  time (RCL.DDS.Create). E.g. Init (Participant_Lease => 2.0).
+
    function Is_Initialized return Boolean;
 
    function Domain return RCL.DDS.Domain_Id;

@@ -17,7 +17,8 @@ package body RCL.Process_Context is
          Dom       : RCL.DDS.Domain_Id;
          Local     : Boolean;
          User_Data : String;
-         Security  : RCL.Security.Credentials);
+         Security  : RCL.Security.Credentials;
+         Lease     : Duration);
       function Current return Participant_Access;
       function Initialized return Boolean;
       function Domain return RCL.DDS.Domain_Id;
@@ -41,13 +42,14 @@ package body RCL.Process_Context is
          Dom       : RCL.DDS.Domain_Id;
          Local     : Boolean;
          User_Data : String;
-         Security  : RCL.Security.Credentials)
+         Security  : RCL.Security.Credentials;
+         Lease     : Duration)
       is
          New_Part : Participant_Access := new RCL.DDS.Participant;
       begin
          if Part = null then
             begin
-               RCL.DDS.Create (New_Part.all, Dom, Local, User_Data, Security);
+               RCL.DDS.Create (New_Part.all, Dom, Local, User_Data, Security, Lease);
             exception
                when others =>
                   Free (New_Part);
@@ -97,7 +99,10 @@ package body RCL.Process_Context is
    end State;
 
    procedure Ensure
-     (P : out Participant_Access; Dom : RCL.DDS.Domain_Id; Local : Boolean) is
+     (P     : out Participant_Access;
+      Dom   : RCL.DDS.Domain_Id;
+      Local : Boolean;
+      Lease : Duration := RCL.DDS.Configured_Lease) is
    begin
       P := State.Current;
       if P = null then
@@ -106,15 +111,19 @@ package body RCL.Process_Context is
          begin
             State.Init (P, Dom, Local,
                         "enclave=" & Ada.Strings.Unbounded.To_String (Settings.Enclave) & ";",
-                        RCL.Security.Resolve (Settings));
+                        RCL.Security.Resolve (Settings), Lease);
          end;
       end if;
    end Ensure;
 
-   procedure Ensure_Participant (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean) is
+   procedure Ensure_Participant
+     (Domain         : RCL.DDS.Domain_Id;
+      Localhost_Only : Boolean;
+      Lease          : Duration := RCL.DDS.Configured_Lease)
+   is
       P : Participant_Access;
    begin
-      Ensure (P, Domain, Localhost_Only);
+      Ensure (P, Domain, Localhost_Only, Lease);
    end Ensure_Participant;
 
    function Participant return not null access RCL.DDS.Participant is

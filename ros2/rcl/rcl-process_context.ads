@@ -11,9 +11,13 @@ private package RCL.Process_Context is
    --  Created first if need be, on RCL.Contexts.Domain and
    --  RCL.Contexts.Localhost_Only.
 
-   procedure Ensure_Participant (Domain : RCL.DDS.Domain_Id; Localhost_Only : Boolean);
+   procedure Ensure_Participant
+     (Domain         : RCL.DDS.Domain_Id;
+      Localhost_Only : Boolean;
+      Lease          : Duration := RCL.DDS.Configured_Lease);
    --  Creates the participant if not done yet: secured as the environment
-   --  says (RCL.Security), USER_DATA "enclave=<enclave>;" (RCL.Contexts.Init).
+   --  says (RCL.Security), USER_DATA "enclave=<enclave>;", with Lease
+   --  (RCL.DDS.Create) (RCL.Contexts.Init).
 
    function Is_Initialized return Boolean;
    function Domain return RCL.DDS.Domain_Id

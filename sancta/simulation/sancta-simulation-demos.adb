@@ -35,8 +35,13 @@ package body Sancta.Simulation.Demos is
       --  free but closed off, is never used).
 
       function Random_Point return Point is
-        ((F.Origin.X + Generators.Uniform (Random) * Real (F.Width) * F.Resolution,
-          F.Origin.Y + Generators.Uniform (Random) * Real (F.Height) * F.Resolution));
+         --  One draw per declaration (an aggregate's order is the compiler's)
+         U : constant Real := Generators.Uniform (Random);
+         V : constant Real := Generators.Uniform (Random);
+      begin
+         return (F.Origin.X + U * Real (F.Width) * F.Resolution,
+                 F.Origin.Y + V * Real (F.Height) * F.Resolution);
+      end Random_Point;
 
       function Random_Free (Near_Others : Natural) return Point is
          P : Point;

@@ -304,12 +304,18 @@ package body Sancta.Simulation.Simulators is
       then
          Advance (R.Next_GPS, R.Config.GPS.Rate);
          R.GPS_Count := R.GPS_Count + 1;
-         R.Last_GPS :=
-           (Stamp    => Now,
-            Position =>
-              (R.Truth.X + Generators.Gaussian (R.Random, R.Config.GPS.Std_Dev),
-               R.Truth.Y + Generators.Gaussian (R.Random, R.Config.GPS.Std_Dev)),
-            Std_Dev  => R.Config.GPS.Std_Dev);
+         declare
+            --  One draw per declaration: the components of an aggregate are
+            --  evaluated in an order the compiler chooses, and a seed must
+            --  give the same fixes in every build.
+            Error_X : constant Real := Generators.Gaussian (R.Random, R.Config.GPS.Std_Dev);
+            Error_Y : constant Real := Generators.Gaussian (R.Random, R.Config.GPS.Std_Dev);
+         begin
+            R.Last_GPS :=
+              (Stamp    => Now,
+               Position => (R.Truth.X + Error_X, R.Truth.Y + Error_Y),
+               Std_Dev  => R.Config.GPS.Std_Dev);
+         end;
       end if;
    end Sense;
 

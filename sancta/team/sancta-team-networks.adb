@@ -436,6 +436,9 @@ package body Sancta.Team.Networks is
 
    --  The network ---------------------------------------------------------------
 
+   function Participant_Lease (Lease : Duration) return Duration is
+     (Duration'Min (Duration'Max (2.0 * Lease, 2.0), 10.0));
+
    function Create
      (Id     : String;
       Groups : String := "";
@@ -455,6 +458,9 @@ package body Sancta.Team.Networks is
       Net.Groups := To_Unbounded_String (Groups);
       Net.Lease := Lease;
       Net.Team := To_Unbounded_String (Team);
+      if not RCL.Contexts.Is_Initialized then
+         RCL.Contexts.Init (Participant_Lease => Participant_Lease (Lease));
+      end if;
       Net.Node := new RCL.Nodes.Node'(RCL.Nodes.Init ("sancta_" & Team & "_" & Id));
       Registry.Add (Net.Node.Name, Net);
       Net.Messages := new RCL.Publishers.Publisher'

@@ -20,6 +20,15 @@
 --  (Cyclone applies no lease to the writers of its own participant: members
 --  living in the same process are expired when silent for their lease.)
 --
+--  A member heard again after a cut rejoins only once DDS has found its
+--  participant again: a participant that a peer dropped (no word from it
+--  for the participant lease) is found again at its next announcement,
+--  every 8 s with DDS's default 10 s lease; a team that finished its
+--  mission meanwhile may have left. So the first network of a process
+--  creates the process's DDS participant (when nothing did before) with a
+--  lease of 2 x Lease (2 .. 10 s), which announces it every 1.6 x Lease:
+--  with Lease 1 s, a healed link is found again within 1.6 s.
+--
 --  The replicated database's entries travel on /sancta/team/state
 --  (sancta_msgs/DbEntry, reliable, TRANSIENT_LOCAL, depth 1000) through the
 --  same Network (Publish_State / Set_State_Consumer); the mission's entries

@@ -30,12 +30,15 @@ def test_fuzz_smoke():
 def test_fuzz_smoke_command_lines():
     """The args reader (DDS on loopback: each case starts parameters_demo):
     mutated --ros-args lists and --params-file files are refused naming the
-    argument or file:line, or the node starts; nothing hangs."""
+    argument or file:line, or the node starts; nothing hangs. The message
+    reader: mutated YAML messages given to `rclada topic pub` are refused at
+    <argument>:line:column or published."""
     p = subprocess.run([sys.executable, str(REPO / "scripts" / "fuzz_inputs.py"), "--seed", "19",
-                        "--cases", "8", "--readers", "args"],
+                        "--cases", "8", "--readers", "args,message"],
                        capture_output=True, text=True, timeout=240)
     assert p.returncode == 0, p.stdout + p.stderr[-3000:]
-    assert p.stdout.splitlines()[1].split()[:2] == ["args", "8"], p.stdout
+    rows = sorted(line.split()[:2] for line in p.stdout.splitlines()[1:])
+    assert rows == [["args", "8"], ["message", "8"]], p.stdout
 
 
 def test_fuzz_smoke_services():

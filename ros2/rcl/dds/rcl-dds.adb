@@ -271,7 +271,8 @@ package body RCL.DDS is
       Domain         : Domain_Id;
       Localhost_Only : Boolean;
       User_Data      : String := "enclave=/;";
-      Security       : RCL.Security.Credentials := RCL.Security.Unsecured)
+      Security       : RCL.Security.Credentials := RCL.Security.Unsecured;
+      Lease          : Duration := Configured_Lease)
    is
       Q      : Thin.Qos_Ptr;
       Result : C.int;
@@ -281,6 +282,10 @@ package body RCL.DDS is
       This.Domain := Dom;
       Q := Thin.Create_Qos;
       Thin.Qset_Userdata (Q, User_Data'Address, User_Data'Length);
+      if Lease /= Configured_Lease then
+         --  Cyclone accepts only AUTOMATIC for a participant.
+         Thin.Qset_Liveliness (Q, Thin.Liveliness_Automatic, To_Dds (Lease));
+      end if;
       if Security.Secured then
          begin
             Set_Security (Q, Security.Files);

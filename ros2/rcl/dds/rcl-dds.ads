@@ -56,13 +56,17 @@ package RCL.DDS is
 
    type Participant is new Ada.Finalization.Limited_Controlled with private;
 
+   Configured_Lease : constant Duration := 0.0;
+   --  A participant lease that says "the configuration's" (Create).
+
    procedure Create
      (This           : in out Participant;
       Domain         : Domain_Id;
       Localhost_Only : Boolean;
       User_Data      : String := "enclave=/;";
-      Security       : RCL.Security.Credentials := RCL.Security.Unsecured)
-     with Pre => not Is_Open (This);
+      Security       : RCL.Security.Credentials := RCL.Security.Unsecured;
+      Lease          : Duration := Configured_Lease)
+     with Pre => not Is_Open (This) and then (Lease = Configured_Lease or else Lease >= 0.1);
    --  CYCLONEDDS_URI, when set, is Cyclone's whole configuration (Cyclone
    --  reads it itself). Otherwise, with Localhost_Only, the domain gets a
    --  loopback-only configuration (unicast discovery on 127.0.0.1, no
@@ -70,6 +74,13 @@ package RCL.DDS is
    --  dds.sec.* properties, the plugins of the libddsc loaded); files that
    --  do not verify (a bad signature, an expired certificate) make Create
    --  raise ROS_Exception, Cyclone's own reason on standard error.
+   --  Lease: the participant's lease (a Cyclone extension of DDS, the
+   --  participant's liveliness QoS): the other participants drop this one
+   --  when they have heard nothing from it for Lease; it announces itself
+   --  (SPDP) every 0.8 x Lease below 10 s, so a peer that dropped it (a link
+   --  cut, then restored) finds it again within that time. Configured_Lease:
+   --  the configuration's (Discovery/LeaseDuration, 10 s by default: then
+   --  every 8 s).
 
    function Is_Open (This : Participant) return Boolean;
 
