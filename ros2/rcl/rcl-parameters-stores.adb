@@ -33,13 +33,14 @@ package body RCL.Parameters.Stores is
    end Segments_Match;
 
    function Matches (Pattern, Node_Name : String) return Boolean is
-      Base : constant Natural := Ada.Strings.Fixed.Index (Node_Name, "/", Ada.Strings.Backward);
+      --  As rclcpp and rclpy: a name without a leading '/' is made absolute,
+      --  so "talker" is "/talker", the node of that name in the root namespace.
+      Absolute : constant String :=
+        (if Pattern /= "" and then Pattern (Pattern'First) = '/' then Pattern else "/" & Pattern);
    begin
-      return Pattern in "/**" | "**"
-        or else Pattern = Node_Name
-        or else Pattern = Node_Name (Base + 1 .. Node_Name'Last)
-        or else (Pattern /= "" and then Pattern (Pattern'First) = '/'
-                 and then Segments_Match (Pattern, Node_Name));
+      return Absolute = "/**"
+        or else Absolute = Node_Name
+        or else Segments_Match (Absolute, Node_Name);
    end Matches;
 
    protected body Store is

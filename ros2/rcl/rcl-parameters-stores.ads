@@ -30,10 +30,11 @@ private package RCL.Parameters.Stores is
    package Override_Vectors is new Ada.Containers.Vectors (Positive, Override);
 
    function Matches (Pattern, Node_Name : String) return Boolean;
-   --  An override's node pattern ("/**", "**", a full name or a base name,
-   --  or a full name with rcl's wildcards: "/**" for any namespace, "*"
-   --  for any one name, as in "/**/talker", "/robots/*") applies to
-   --  Node_Name (fully qualified).
+   --  An override's node pattern ("/**", a full name, or a full name with
+   --  rcl's wildcards: "/**" for any namespace, "*" for any one name, as in
+   --  "/**/talker", "/robots/*") applies to Node_Name (fully qualified). A
+   --  pattern without a leading '/' is absolute as in rclcpp: "talker" and
+   --  "-p talker:rate:=5" mean "/talker", not a talker in another namespace.
 
    protected Store is
       procedure Insert (Node_Name, Name : String; E : Entry_Record; Done : out Boolean);

@@ -104,3 +104,18 @@ def test_params_file_node_name_wildcards(tmp_path):
     (tmp_path / "p.yaml").write_text("/robots/r1/*:\n  ros__parameters:\n    rate: 43\n")
     assert node_parameter(["--ros-args", "-r", "__ns:=/robots/r1", "--params-file",
                            str(tmp_path / "p.yaml")], "rate") == "43"
+
+
+def test_node_names_without_slash_are_absolute(tmp_path):
+    """As in rclcpp/rclpy, a node name without a leading '/' (in a parameter
+    file or in '-p node:name:=value') is made absolute: 'parameters_demo' is
+    '/parameters_demo', not a node of that name in another namespace (it
+    matched any namespace; ROS 2 behaves so: ros2/rcl issue 1306)."""
+    f = tmp_path / "p.yaml"
+    f.write_text("parameters_demo:\n  ros__parameters:\n    rate: 42\n")
+    in_root = ["--ros-args", "--params-file", str(f)]
+    in_ns = ["--ros-args", "-r", "__ns:=/robots", "--params-file", str(f)]
+    assert node_parameter(in_root, "rate") == "42"
+    assert node_parameter(in_ns, "rate") == "10"
+    assert node_parameter(["--ros-args", "-r", "__ns:=/robots", "-p",
+                           "parameters_demo:rate:=20"], "rate") == "10"

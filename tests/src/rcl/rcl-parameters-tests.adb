@@ -62,16 +62,18 @@ package body RCL.Parameters.Tests is
       FQN  : constant String := "/tests/param_unit";
    begin
       Add_Override ("/**", "gain", To_Value (Long_Long_Integer'(4)));
-      Add_Override ("param_unit", "label", To_Value ("override"));
+      Add_Override ("/tests/param_unit", "label", To_Value ("override"));
       Add_Override ("/other/node", "rate", To_Value (Long_Long_Integer'(99)));
+      Add_Override ("param_unit", "rate", To_Value (Long_Long_Integer'(98)));
+      --  (a name without '/' is absolute, as in rclcpp: "/param_unit")
       Declare_Parameter (Node, "rate", To_Value (Long_Long_Integer'(10)));
       Declare_Parameter (Node, "gain", To_Value (Long_Float'(1.0)));
       Declare_Parameter (Node, "label", To_Value ("default"), "a label");
       Declare_Parameter (Node, "fixed", To_Value (True), Read_Only => True);
       Clear_Overrides;
-      Assert (Get (Node, "rate").Int = 10, "an override for another node is ignored");
+      Assert (Get (Node, "rate").Int = 10, "overrides for other nodes are ignored");
       Assert (Get (Node, "gain").Double = 4.0, "wildcard override, integer made double");
-      Assert (To_String (Get (Node, "label").Text) = "override", "override by node name");
+      Assert (To_String (Get (Node, "label").Text) = "override", "override by full node name");
       Assert (Has_Parameter (Node, "rate") and not Has_Parameter (Node, "nope"), "has");
       On_Set (Node, Check'Access);
       Assert (Try_Set (FQN, "rate", To_Value (Long_Long_Integer'(50))) = "", "accepted");
