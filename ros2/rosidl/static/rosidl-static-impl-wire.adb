@@ -24,7 +24,6 @@ package body ROSIDL.Static.Impl.Wire is
 
    Little : constant Boolean := System.Default_Bit_Order = System.Low_Order_First;
 
-   function To_Int64 is new Ada.Unchecked_Conversion (Unsigned_64, Int64);
    function To_UInt64 is new Ada.Unchecked_Conversion (Int64, Unsigned_64);
 
    function Offset_Image (N : Stream_Element_Offset) return String is
@@ -293,33 +292,5 @@ package body ROSIDL.Static.Impl.Wire is
       Put_U64 (GUID);
       Put_U64 (To_UInt64 (Sequence));
    end Put_Request_Header;
-
-   procedure Get_Request_Header
-     (B        : Stream_Element_Array;
-      C        : in out Cursor;
-      GUID     : out UInt64;
-      Sequence : out Int64;
-      What     : String)
-   is
-      Wire_Little : constant Boolean := Little /= C.Swap;
-      function Get_U64 return Unsigned_64 is
-         V : Unsigned_64 := 0;
-      begin
-         if Remaining (B, C) < 8 then
-            Fail (B, C.Pos, What & " request header", "truncated: needs 8 bytes,"
-                  & Long_Long_Integer'Max (Remaining (B, C), 0)'Image & " remain");
-         end if;
-         for I in 0 .. 7 loop
-            V := V or Shift_Left
-              (Unsigned_64 (B (C.Pos + (if Wire_Little then Stream_Element_Offset (I)
-                                        else Stream_Element_Offset (7 - I)))), 8 * I);
-         end loop;
-         C.Pos := C.Pos + 8;
-         return V;
-      end Get_U64;
-   begin
-      GUID := Get_U64;
-      Sequence := To_Int64 (Get_U64);
-   end Get_Request_Header;
 
 end ROSIDL.Static.Impl.Wire;

@@ -111,11 +111,4 @@ package ROSIDL.Static.Impl.Wire is
       Into  : out Ada.Strings.Wide_Wide_Unbounded.Unbounded_Wide_Wide_String;
       What  : String);
 
-   procedure Get_Request_Header
-     (B        : Stream_Element_Array;
-      C        : in out Cursor;
-      GUID     : out UInt64;
-      Sequence : out Int64;
-      What     : String);
-
 end ROSIDL.Static.Impl.Wire;

@@ -103,8 +103,8 @@ package body ROSIDL.Static.Message_Support is
             Origin => Data'First + Encapsulation_Size,
             Swap   => Byte_Order_Of (Data, Full_Name) /= Native_Order);
       if With_Header then
-         ROSIDL.Static.Impl.Wire.Get_Request_Header
-           (Data, C, Header.GUID, Header.Sequence, Full_Name);
+         Header := ROSIDL.CDR.Request_Header_Of (Data, Full_Name);
+         C.Pos := C.Pos + Header_Size;
       end if;
       Read_Body (Data, C, Msg);
    end Read;
