@@ -8,9 +8,11 @@ package body RCL.Names is
    function Is_Word_Char (C : Character) return Boolean is
      (C in 'a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_');
 
-   function Shortened (Text : String) return String is
-     (if Text'Length <= 40 then Text
-      else Text (Text'First .. Text'First + 29) & "..." & Text (Text'Last - 6 .. Text'Last));
+   function Shortened
+     (Text : String; Longest : Positive := 40; Tail : Natural := 7) return String is
+     (if Text'Length <= Longest then Text
+      else Text (Text'First .. Text'First + (Longest - 3 - Tail) - 1) & "..."
+           & Text (Text'Last - Tail + 1 .. Text'Last));
 
    function Quoted (Name : String) return String is ('"' & Shortened (Name) & '"');
 

@@ -43,13 +43,17 @@ package RCL.Names is
    --  (rcl's rule: parts of letters, digits, '_' and '/' joined by single
    --  dots: "gain", "pid.p", "limits/max"), else what is wrong with it.
 
-   function Shortened (Text : String) return String
-     with Post => Shortened'Result'Length <= 40;
-   --  Text, its middle left out when it is longer than 40 characters: a
-   --  name or an argument quoted in a message leaves room for the reason
-   --  within GNAT's 200 characters of exception message.
+   function Shortened
+     (Text : String; Longest : Positive := 40; Tail : Natural := 7) return String
+     with Pre  => Tail + 3 < Longest,
+          Post => Shortened'Result'Length <= Longest;
+   --  Text, its middle replaced by "..." when it is longer than Longest
+   --  characters (its last Tail characters kept): a name, an argument or a
+   --  path quoted in a message leaves room for the reason within GNAT's 200
+   --  characters of exception message.
    --  Example:
    --     pragma Assert (Shortened ((1 .. 100 => 'a'))'Length = 40);
+   --     pragma Assert (Shortened ("/tmp/" & (1 .. 90 => 'd') & "/p.yaml", 80, 57)'Length = 80);
 
    function Name_Token (Text : String) return String is
      [for I in Text'Range =>

@@ -5,6 +5,7 @@ with Ada.Directories;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Unchecked_Deallocation;
+with RCL.Names;
 
 package body RCL.YAML is
 
@@ -796,12 +797,8 @@ package body RCL.YAML is
    -- Parse_File --
    ----------------
 
-   Longest_Shown_Path : constant := 80;
-
    function Shown (Path : String) return String is
-     (if Path'Length <= Longest_Shown_Path then Path
-      else Path (Path'First .. Path'First + 19) & "..."
-           & Path (Path'Last - (Longest_Shown_Path - 24) .. Path'Last));
+     (RCL.Names.Shortened (Path, Longest => 80, Tail => 57));
    --  Path as messages quote it: its middle left out past 80 characters
    --  (the end, with the file name, kept), so that "PATH:LINE:COL: reason"
    --  keeps its reason within GNAT's 200 characters of exception message.
