@@ -862,7 +862,8 @@ package body Rclada_Commands is
          if Natural (Pos.Length) not in 3 .. 4 then
             raise Usage_Error with "topic pub takes a topic name, a type and a YAML message";
          end if;
-         Topic_Pub (Checked_Name (Arg (2)), Arg (3), Arg (4), Args);
+         Topic_Pub (Checked_Name (Arg (2)), Arg (3),
+                    (if Natural (Pos.Length) = 4 then Pos (4) else "{}"), Args);
       elsif Pos (1) = "hz" then
          Check_Options (Args, "--count --window --spin-time");
          if Natural (Pos.Length) not in 2 .. 3 then
