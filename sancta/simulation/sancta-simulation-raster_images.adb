@@ -251,18 +251,21 @@ package body Sancta.Simulation.Raster_Images is
             Length : constant Unsigned_32 := U32 (Pos);
             T      : constant String := Kind (Pos + 4);
             First  : constant Natural := Pos + 8;
+            Valid  : constant Boolean := (for all Letter of T => Letter in 'A' .. 'Z' | 'a' .. 'z');
+            Named  : constant String := (if Valid then T else Hex (Pos + 4));
+            --  The chunk type for messages.
          begin
-            if not (for all Letter of T => Letter in 'A' .. 'Z' | 'a' .. 'z') then
-               Fail ("chunk type " & Hex (Pos + 4) & " is not four ASCII letters");
-            elsif Length > Unsigned_32 (Data'Last - Pos + 1 - 12) then
-               Fail ("chunk " & T & " longer than the file");
+            if Length > Unsigned_32 (Data'Last - Pos + 1 - 12) then
+               Fail ("chunk " & Named & " longer than the file");
             end if;
             declare
                Last : constant Integer := First + Integer (Length) - 1;
                C    : constant Byte_Array := Data (First .. Last);
             begin
                if CRC_32 (Data (Pos + 4 .. Last)) /= U32 (Last + 1) then
-                  Fail ("CRC mismatch in chunk " & T);
+                  Fail ("CRC mismatch in chunk " & Named);
+               elsif not Valid then
+                  Fail ("chunk type " & Named & " is not four ASCII letters");
                end if;
                if not Seen_Header and then T /= "IHDR" then
                   Fail ("first chunk is " & T & ", not IHDR");
