@@ -6,7 +6,7 @@ with Interfaces;
 
 package body Sancta.Simulation.Raster_Images is
 
-   use Deflate;
+   use Zlib;
    use type Ada.Directories.File_Kind;
    use Interfaces;
 
@@ -370,7 +370,7 @@ package body Sancta.Simulation.Raster_Images is
          end Sample;
       begin
          begin
-            Zlib_Decompress (IDAT (0 .. IDAT_Length - 1), Raw.all, Last);
+            Decompress (IDAT (0 .. IDAT_Length - 1), Raw.all, Last);
          exception
             when E : Format_Error =>
                Free (IDAT);
@@ -497,7 +497,7 @@ package body Sancta.Simulation.Raster_Images is
          end;
       end loop;
       declare
-         Z : constant Byte_Array := Zlib_Store (Raw.all);
+         Z : constant Byte_Array := Compress (Raw.all);
       begin
          Free (Raw);
          return Signature

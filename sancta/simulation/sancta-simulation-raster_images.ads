@@ -1,18 +1,18 @@
 --  Raster images for maps and rendering: an RGB image held on the heap,
 --  read from PGM (P5 binary, P2 ASCII) and PNG (every standard colour type
---  and bit depth, not interlaced; our own inflater), written as PNG
---  (stored deflate blocks, CRC-32, Adler-32) and PGM (P5).
+--  and bit depth, not interlaced; zlib decompresses), written as PNG
+--  (compressed by zlib) and PGM (P5).
 --  Pixel (1, 1) is the top-left corner.
 --
 --     Img : Image := Load ("map.png");
 --     Set (Img, 10, 20, (255, 0, 0));
 --     Save_PNG (Img, "out.png");
 with Ada.Finalization;
-with Sancta.Simulation.Deflate;
+with Sancta.Simulation.Zlib;
 
 package Sancta.Simulation.Raster_Images is
 
-   subtype Byte is Deflate.Byte;
+   subtype Byte is Zlib.Byte;
 
    type Color is record
       R, G, B : Byte := 0;
@@ -49,17 +49,17 @@ package Sancta.Simulation.Raster_Images is
    --  ("file: byte N: reason") when it is neither or is malformed; also
    --  when it cannot be read.
 
-   function Decode_PNG (Data : Deflate.Byte_Array; Name : String) return Image;
-   function Decode_PGM (Data : Deflate.Byte_Array; Name : String) return Image;
+   function Decode_PNG (Data : Zlib.Byte_Array; Name : String) return Image;
+   function Decode_PGM (Data : Zlib.Byte_Array; Name : String) return Image;
    --  Name only serves the error messages.
 
-   function Encode_PNG (This : Image) return Deflate.Byte_Array;
+   function Encode_PNG (This : Image) return Zlib.Byte_Array;
 
    procedure Save_PNG (This : Image; File_Name : String);
    procedure Save_PGM (This : Image; File_Name : String);
    --  Gray levels (mean of the channels), binary P5.
 
-   function Read_File (File_Name : String) return Deflate.Byte_Array;
+   function Read_File (File_Name : String) return Zlib.Byte_Array;
    --  The whole file; Format_Error when it cannot be read.
 
 private

@@ -77,7 +77,7 @@ open("missing_origin.yaml", "w").write("image: room.pgm\nresolution: 0.1\n")
 open("bad.walls", "w").write("# walls\nresolution 0.05\nwall 0 0 10 0\nwall 0 0 ten 10\n")
 open("room.walls", "w").write("# a 4 x 3 room with a pillar\nresolution 0.05\nthickness 0.1\n"
                               "box 0 0 4 3\nwall 2 1 2 2 0.2\n")
-# Known deflate data for the inflater test (as Ada aggregates).
+# Known zlib streams for the zlib binding test (as Ada aggregates).
 text = b"SANCTA SANCTA SANCTA robots robots robots " * 3
 for label, data in (("fixed", zlib.compress(b"hello hello hello hello", 9)),
                     ("dynamic", zlib.compress(text, 9)),

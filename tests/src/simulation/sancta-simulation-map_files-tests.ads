@@ -1,4 +1,4 @@
---  World files and images: the inflater on known streams, the checksums,
+--  World files and images: zlib on known streams, the checksums,
 --  PNG encode/decode round trip, PGM (P5, P2) and PNG (gray, RGB, palette,
 --  every filter) map loading into worlds, wall worlds, and clear errors on
 --  bad files (fixtures in tests/data/simulation, made by make_fixtures.py).
