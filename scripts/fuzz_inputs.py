@@ -26,10 +26,13 @@ A case is flagged when the program
 Readers that do more than read a file: `typed` (the generated codecs,
 compared with the dynamic decoder on the same mutated payloads), `args`
 (parameters_demo's --ros-args / --params-file; DDS on loopback: source
-scripts/env.sh first), `message` (YAML messages given to `rclada topic pub`), `run` and `demo` (sancta run / sancta demo on mutated
+scripts/env.sh first), `message` (YAML messages given to `rclada topic
+pub`), `run` and `demo` (sancta run / sancta demo on mutated
 configurations; processes left behind are findings), `services` (mutated
 requests and replies written by a Cyclone DDS peer at the product's service
-servers and clients, scripts/fuzz_services.py; DDS on loopback).
+servers and clients, scripts/fuzz_services.py; DDS on loopback), `actions`
+(the same peer playing an action server: mutated goal, result and cancel
+responses, feedback and status messages at the action clients).
 
 Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
@@ -1054,7 +1057,7 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + ["cdr", "typed", "args", "services"]:
+        for reader in readers + ["cdr", "typed", "args", "services", "actions"]:
             name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
@@ -1071,6 +1074,9 @@ def main():
             elif reader == "services":
                 import fuzz_services
                 counts, findings = fuzz_services.fuzz_services(rng, args.cases, args.keep, log)
+            elif reader == "actions":
+                import fuzz_services
+                counts, findings = fuzz_services.fuzz_actions(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)
