@@ -12,7 +12,7 @@ import sys
 import time
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
-READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,definition,params,mcap,"
+READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,png,definition,params,mcap,"
            "mcap-recover,cdr,typed")
 
 
