@@ -4,7 +4,8 @@ input gets a clear error with its location, never a crash, a hang or a
 silent wrong answer; malformed wire data never over-reads).
 
 Each reader takes valid seed inputs (bundled configurations, missions,
-TSPLIB files, worlds, interface definitions, parameter files, MCAP bags made
+TSPLIB files, worlds, PGM and PNG map images (every PNG colour type, bit
+depth, row filter and DEFLATE block kind), interface definitions, parameter files, MCAP bags made
 with the `mcap` package, CDR payloads from `cdr_tool random`, --ros-args
 lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
@@ -18,7 +19,8 @@ A case is flagged when the program
   - runs past the time limit,
   - refuses the input without naming where (file:line[:column] or byte N),
   - exits 0 on a mutation that must be refused (XML cut before its root's
-    end tag, an MCAP file cut before its end magic).
+    end tag, an MCAP file cut before its end magic, a PNG map image the PNG
+    specification forbids: png_problem, an independent reading).
 
     nice -n 19 .venv/bin/python scripts/fuzz_inputs.py --seed 1 --cases 2000 \
         [--readers config,tsp,...] [--keep out/fuzz]
@@ -26,10 +28,13 @@ A case is flagged when the program
 Readers that do more than read a file: `typed` (the generated codecs,
 compared with the dynamic decoder on the same mutated payloads), `args`
 (parameters_demo's --ros-args / --params-file; DDS on loopback: source
-scripts/env.sh first), `message` (YAML messages given to `rclada topic pub`), `run` and `demo` (sancta run / sancta demo on mutated
+scripts/env.sh first), `message` (YAML messages given to `rclada topic
+pub`), `run` and `demo` (sancta run / sancta demo on mutated
 configurations; processes left behind are findings), `services` (mutated
 requests and replies written by a Cyclone DDS peer at the product's service
-servers and clients, scripts/fuzz_services.py; DDS on loopback).
+servers and clients, scripts/fuzz_services.py; DDS on loopback), `actions`
+(the same peer playing an action server: mutated goal, result and cancel
+responses, feedback and status messages at the action clients).
 
 Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
@@ -41,10 +46,12 @@ import random
 import re
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
 import time
+import zlib
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 BIN = pathlib.Path(os.environ.get("SANCTA_FUZZ_BIN", REPO / "bin"))
@@ -382,6 +389,310 @@ def small_pgm(folder):
     return [p5, p2]
 
 
+# ------------------------------------------------------------------ PNG maps
+# Map images in PNG go through the simulator's own PNG reader and inflater
+# (Sancta.Simulation.Raster_Images, .Deflate). The seeds cover every colour
+# type and bit depth the reader takes, all five row filters, the three
+# DEFLATE block kinds and image data split over several IDAT chunks; most
+# mutations keep the chunks' CRCs right so that they reach the inflater and
+# the row filters.
+
+def png_chunk(kind, body):
+    return (struct.pack(">I", len(body)) + kind + body
+            + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def png_chunks(data):
+    """[(kind, body)] of a PNG whose chunk lengths are right, else None."""
+    if not data.startswith(PNG_SIGNATURE):
+        return None
+    pos, chunks = 8, []
+    while pos + 12 <= len(data):
+        n = struct.unpack(">I", data[pos:pos + 4])[0]
+        if pos + 12 + n > len(data):
+            return None
+        chunks.append((data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]))
+        pos += 12 + n
+    return chunks if pos == len(data) else None
+
+
+def png_from(chunks):
+    return PNG_SIGNATURE + b"".join(png_chunk(k, b) for k, b in chunks)
+
+
+def png_filtered(rows, bpp):
+    """Rows (bytes) with filter type row % 5 applied (the encoder's side)."""
+    out, prior = b"", bytes(len(rows[0]))
+    for y, row in enumerate(rows):
+        f = y % 5
+        line = bytearray()
+        for i, x in enumerate(row):
+            a = row[i - bpp] if i >= bpp else 0
+            b = prior[i]
+            c = prior[i - bpp] if i >= bpp else 0
+            if f == 0:
+                pred = 0
+            elif f == 1:
+                pred = a
+            elif f == 2:
+                pred = b
+            elif f == 3:
+                pred = (a + b) // 2
+            else:
+                p_ = a + b - c
+                pa, pb, pc = abs(p_ - a), abs(p_ - b), abs(p_ - c)
+                pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
+            line.append((x - pred) % 256)
+        out += bytes([f]) + bytes(line)
+        prior = row
+    return out
+
+
+def png_seeds(folder):
+    w, h = 24, 18
+    gray = [[0 if x in (0, w - 1) or y in (0, h - 1) else 205 if 8 <= x < 12 else 254
+             for x in range(w)] for y in range(h)]
+
+    def packed(values, depth):
+        bits = "".join(format(v, f"0{depth}b") for v in values)
+        bits += "0" * (-len(bits) % 8)
+        return bytes(int(bits[i:i + 8], 2) for i in range(0, len(bits), 8))
+
+    variants = [  # (name, colour type, depth, rows, bytes per pixel, extra chunks)
+        ("gray8", 0, 8, [bytes(r) for r in gray], 1, []),
+        ("gray1", 0, 1, [packed([int(v > 128) for v in r], 1) for r in gray], 1, []),
+        ("gray4", 0, 4, [packed([v // 17 for v in r], 4) for r in gray], 1, []),
+        ("gray16", 0, 16, [b"".join(struct.pack(">H", v * 257) for v in r) for r in gray], 2, []),
+        ("graya8", 4, 8, [bytes(x for v in r for x in (v, 255)) for r in gray], 2, []),
+        ("rgb8", 2, 8, [bytes(x for v in r for x in (v, v, 255 - v // 2)) for r in gray], 3, []),
+        ("rgba16", 6, 16, [b"".join(struct.pack(">4H", v * 257, v * 257, v * 257, 65535)
+                                    for v in r) for r in gray], 8, []),
+        ("palette2", 3, 2, [packed([{0: 0, 205: 1, 254: 2}[v] for v in r], 2) for r in gray], 1,
+         [(b"PLTE", bytes([0, 0, 0, 205, 205, 205, 254, 254, 254]))]),
+    ]
+    seeds = []
+    for n, (name, ctype, depth, rows, bpp, extra) in enumerate(variants):
+        raw = png_filtered(rows, bpp)
+        level, strategy = [(9, zlib.Z_DEFAULT_STRATEGY), (6, zlib.Z_FIXED), (0, 0)][n % 3]
+        c = zlib.compressobj(level, zlib.DEFLATED, 15, 9, strategy)
+        stream = c.compress(raw) + c.flush()
+        idat = [(b"IDAT", stream)] if n % 2 else [(b"IDAT", stream[i:i + 40])
+                                                   for i in range(0, len(stream), 40)]
+        ihdr = struct.pack(">IIBBBBB", w, h, depth, ctype, 0, 0, 0)
+        data = png_from([(b"IHDR", ihdr)] + extra + [(b"tEXt", b"Comment\0fuzz seed")] + idat
+                        + [(b"IEND", b"")])
+        path = folder / f"{name}.png"
+        path.write_bytes(data)
+        seeds.append(path)
+    return seeds
+
+
+def png_prepare(seed, folder):
+    (folder / "world.yaml").write_text(
+        "image: input.png\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
+
+
+def png_rebuilt(rng, data, change):
+    """data with change(rng, chunks) -> (chunks, how) applied, every CRC
+    right; the plain byte mutations when data's chunks cannot be read."""
+    chunks = png_chunks(data)
+    if not chunks:
+        return m_flip(rng, data, "binary")
+    chunks, how = change(rng, chunks)
+    return png_from(chunks), how
+
+
+def png_image_data(chunks):
+    return b"".join(b for k, b in chunks if k == b"IDAT")
+
+
+def with_image_data(chunks, stream, split):
+    """chunks with their IDAT chunks replaced by stream (in `split`-byte
+    chunks) where the first one was."""
+    first = next((i for i, (k, _) in enumerate(chunks) if k == b"IDAT"), len(chunks) - 1)
+    rest = [c for c in chunks if c[0] != b"IDAT"]
+    idat = [(b"IDAT", stream[i:i + split]) for i in range(0, max(1, len(stream)), split)]
+    return rest[:first] + idat + rest[first:]
+
+
+def m_png_pixels(rng, data, kind):
+    """The decompressed rows mutated (filter types, bytes, length), then
+    compressed again."""
+    def change(rng, chunks):
+        try:
+            raw = zlib.decompress(png_image_data(chunks))
+        except zlib.error:
+            return chunks, "pixels (image data unreadable)"
+        raw = bytearray(raw)
+        r = rng.random()
+        if r < 0.4 and raw:
+            for _ in range(rng.choice([1, 2, 4])):
+                raw[rng.randrange(len(raw))] = rng.choice([5, 6, 255, 128, rng.randrange(256)])
+            how = "image bytes changed"
+        elif r < 0.7:
+            cut = rng.randrange(len(raw) + 1)
+            raw, how = raw[:cut], f"image data cut at {cut}"
+        else:
+            more = rng.choice([1, 7, 100, 100000])
+            raw, how = raw + bytes(rng.randrange(256) for _ in range(more)), f"{more} bytes more"
+        level = rng.choice([0, 1, 9])
+        stream = zlib.compress(bytes(raw), level)
+        split = rng.choice([8, 64, 1 << 20])
+        return with_image_data(chunks, stream, split), how + f", level {level}"
+    return png_rebuilt(rng, data, change)
+
+
+def m_png_stream(rng, data, kind):
+    """The compressed image data mutated (DEFLATE and zlib errors)."""
+    def change(rng, chunks):
+        stream = bytearray(png_image_data(chunks))
+        r = rng.random()
+        if r < 0.5 and stream:
+            for _ in range(rng.choice([1, 1, 2, 3])):
+                i = rng.randrange(len(stream))
+                stream[i] ^= 1 << rng.randrange(8)
+            how = "image stream bits flipped"
+        elif r < 0.75:
+            cut = rng.randrange(len(stream) + 1)
+            stream, how = stream[:cut], f"image stream cut at {cut}"
+        else:
+            i = rng.randrange(len(stream) + 1)
+            junk = bytes(rng.randrange(256) for _ in range(rng.choice([1, 4, 64])))
+            stream = stream[:i] + junk + stream[i:]
+            how = f"{len(junk)} bytes into the stream at {i}"
+        return with_image_data(chunks, bytes(stream), rng.choice([8, 64, 1 << 20])), how
+    return png_rebuilt(rng, data, change)
+
+
+def m_png_header(rng, data, kind):
+    """An IHDR field changed."""
+    def change(rng, chunks):
+        i = next((i for i, (k, _) in enumerate(chunks) if k == b"IHDR"), None)
+        if i is None or len(chunks[i][1]) != 13:
+            return chunks, "header (no IHDR)"
+        body = bytearray(chunks[i][1])
+        field = rng.choice(["width", "height", "depth", "colour", "compression", "filter",
+                            "interlace"])
+        if field in ("width", "height"):
+            v = rng.choice([0, 1, 2, 23, 25, 30000, 30001, 65535, 2**31 - 1, 2**31, 2**32 - 1])
+            struct.pack_into(">I", body, 0 if field == "width" else 4, v)
+        else:
+            v = rng.choice([0, 1, 2, 3, 4, 5, 6, 7, 8, 16, 32, 255])
+            body[8 + ["depth", "colour", "compression", "filter", "interlace"].index(field)] = v
+        chunks = list(chunks)
+        chunks[i] = (b"IHDR", bytes(body))
+        return chunks, f"IHDR {field} {v}"
+    return png_rebuilt(rng, data, change)
+
+
+def m_png_chunks(rng, data, kind):
+    """Chunks dropped, doubled, moved or added (unknown critical and
+    ancillary chunks, palettes of odd sizes)."""
+    def change(rng, chunks):
+        chunks = list(chunks)
+        r = rng.random()
+        i = rng.randrange(len(chunks))
+        if r < 0.2:
+            how = f"chunk {chunks[i][0]!r} dropped"
+            del chunks[i]
+        elif r < 0.35:
+            how = f"chunk {chunks[i][0]!r} doubled"
+            chunks.insert(i, chunks[i])
+        elif r < 0.5:
+            j = rng.randrange(len(chunks))
+            how = f"chunk {chunks[i][0]!r} moved to {j}"
+            chunks.insert(j, chunks.pop(i))
+        elif r < 0.7:
+            k = rng.choice([b"ABCD", b"abCD", b"IDAT", b"PLTE", b"tRNS", b"\0\1\2\3", b"IEND"])
+            body = bytes(rng.randrange(256) for _ in range(rng.choice([0, 3, 9, 768, 771])))
+            how = f"chunk {k!r} of {len(body)} bytes added at {i}"
+            chunks.insert(i, (k, body))
+        else:
+            n = rng.choice([0, 1, 2, 255, 256, 257])
+            how = f"palette of {n} entries"
+            chunks = [c for c in chunks if c[0] != b"PLTE"]
+            chunks.insert(1, (b"PLTE", bytes(rng.randrange(256) for _ in range(3 * n))))
+        return chunks, how
+    return png_rebuilt(rng, data, change)
+
+
+PNG_MUTATORS = ([m_png_pixels] * 3 + [m_png_stream] * 4 + [m_png_header] * 2 + [m_png_chunks] * 3
+                + BINARY_MUTATORS)
+
+
+def png_problem(data):
+    """Why a PNG is not valid by the PNG specification (chunks, CRCs, header,
+    image data) or None: an independent reading, used to flag a mutated file
+    the simulator accepts."""
+    if not data.startswith(PNG_SIGNATURE):
+        return "signature"
+    pos, chunks = 8, []
+    while True:
+        if pos + 12 > len(data):
+            return "no IEND"
+        n = struct.unpack(">I", data[pos:pos + 4])[0]
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        if n > 2**31 - 1 or pos + 12 + n > len(data):
+            return "chunk length"
+        if zlib.crc32(kind + body) & 0xFFFFFFFF != struct.unpack(">I", data[pos + 8 + n:
+                                                                         pos + 12 + n])[0]:
+            return "CRC"
+        chunks.append((kind, body))
+        pos += 12 + n
+        if kind == b"IEND":
+            break
+    kinds = [k for k, _ in chunks]
+    if kinds[0] != b"IHDR" or kinds.count(b"IHDR") != 1 or len(chunks[0][1]) != 13:
+        return "IHDR"
+    for k in kinds:
+        if not all(65 <= c <= 90 or 97 <= c <= 122 for c in k):
+            return f"chunk type {k!r}"
+        if 65 <= k[0] <= 90 and k not in (b"IHDR", b"PLTE", b"IDAT", b"IEND"):
+            return f"unknown critical chunk {k!r}"
+    w, h, depth, ctype, comp, filt, lace = struct.unpack(">IIBBBBB", chunks[0][1])
+    if not (0 < w < 2**31 and 0 < h < 2**31) or comp or filt or lace > 1:
+        return "IHDR fields"
+    if depth not in {0: (1, 2, 4, 8, 16), 2: (8, 16), 3: (1, 2, 4, 8), 4: (8, 16),
+                     6: (8, 16)}.get(ctype, ()):
+        return "colour type / depth"
+    idat = [i for i, k in enumerate(kinds) if k == b"IDAT"]
+    if not idat or idat != list(range(idat[0], idat[-1] + 1)):
+        return "IDAT missing or not consecutive"
+    plte = [i for i, k in enumerate(kinds) if k == b"PLTE"]
+    if len(plte) > 1 or (plte and (ctype in (0, 4) or plte[0] > idat[0])):
+        return "PLTE"
+    if plte:
+        n = len(chunks[plte[0]][1])
+        if n == 0 or n % 3 or n > 768:
+            return "PLTE length"
+    if ctype == 3 and not plte:
+        return "no PLTE"
+    if lace:
+        return None  # valid; the simulator says it does not read interlaced images
+    try:
+        d = zlib.decompressobj()
+        raw = d.decompress(b"".join(chunks[i][1] for i in idat))
+        if not d.eof:
+            return "image data cut short"
+    except zlib.error:
+        return "image data"
+    channels = {0: 1, 2: 3, 3: 1, 4: 2, 6: 4}[ctype]
+    stride = (w * channels * depth + 7) // 8
+    if len(raw) < h * (stride + 1):
+        return "too little image data"
+    if any(raw[y * (stride + 1)] > 4 for y in range(h)):
+        return "filter type"
+    return None
+
+
+def png_must_refuse(seed, data, how):
+    return png_problem(data) is not None
+
+
 def trajectories_seed(folder):
     p = folder / "trajectories.csv"
     p.write_text("robot,x,y\n" + "".join(f"{1 + i % 3},{1 + i * 0.25:.2f},{2 + (i % 7) * 0.5:.2f}\n"
@@ -432,6 +743,10 @@ def build_readers(seed_folder):
                ["sancta-render", "{dir}/world.yaml", "--svg", "{dir}/w.svg"], "binary", None,
                BINARY_MUTATORS + [m_number, m_long_line], prepare=pgm_prepare,
                name_of=lambda seed: "input.pgm"),
+        Reader("png", png_seeds(seed_folder),
+               ["sancta-render", "{dir}/world.yaml", "--svg", "{dir}/w.svg"], "binary", None,
+               PNG_MUTATORS, prepare=png_prepare, name_of=lambda seed: "input.png",
+               must_refuse=png_must_refuse),
         Reader("definition", definition_seeds(),
                ["rosidl_generate", "-o", "{dir}/out", "{dir}/defs"], "msg", None, TEXT_MUTATORS,
                prepare=definition_prepare,
@@ -573,6 +888,9 @@ def judge(reader, rc, text, hung, data, seed_data, how, file_name):
     if reader.unlocated_ok is not None and reader.unlocated_ok.search(text):
         return None
     if reader.name == "pgm" and re.search(r"input\.pgm(:\d+|: byte \d+)", text):
+        return None
+    if reader.name == "png" and re.search(r"input\.png(:\d+|: byte \d+"
+                                          r"|: image data: (zlib|deflate): byte \d+)", text):
         return None
     # An error located in a file the input includes (a value from one of the
     # input's constants is reported where it is used).
@@ -1054,7 +1372,7 @@ def main():
         log = open(args.log, "a") if args.log else sys.stderr
         table = []
         total_findings = 0
-        for reader in readers + ["cdr", "typed", "args", "services"]:
+        for reader in readers + ["cdr", "typed", "args", "services", "actions"]:
             name = reader if isinstance(reader, str) else reader.name
             # Each reader its own generator: a reader's cases do not depend on
             # which other readers ran.
@@ -1071,6 +1389,9 @@ def main():
             elif reader == "services":
                 import fuzz_services
                 counts, findings = fuzz_services.fuzz_services(rng, args.cases, args.keep, log)
+            elif reader == "actions":
+                import fuzz_services
+                counts, findings = fuzz_services.fuzz_actions(rng, args.cases, args.keep, log)
             else:
                 counts, findings = fuzz_reader(reader, rng, args.cases, args.keep, log)
             total_findings += len(findings)

@@ -25,6 +25,20 @@ another), log the malformed replies to its call that came before it, and
 never log a reply addressed to another client. A crash, a hang, an exception
 trace, an unlocated refusal, a lost or an extra log line is a finding.
 
+The `actions` reader: the peer plays the server of a Fibonacci action
+(its three services, its feedback and status topics) for one client run
+per case: `rclada action send_goal -f` (RCL.Actions.Clients) and
+`typed_fibonacci client` (RCL.Actions.Typed), also with `cancel`. Each call
+is answered with 1-4 mutated replies, one to another client, then the true
+one; once the goal is accepted, 0-4 mutated feedback messages (two in three
+about the client's goal), a valid one and 0-2 mutated status arrays are
+published. A client must log every refused reply of its call before the
+first that decodes, and every refused feedback about its goal (or whose
+goal cannot be read) at the reference's offset, none about another goal;
+print every feedback about its goal that decodes, and act on the first
+reply that decodes: rejected, the cancel code, the status and the result,
+or a clear error naming a status or cancel code that is no such value.
+
 Limits of the peer: Cyclone DDS sends a sample with the sender's byte order
 in its encapsulation identifier and builds no valid packet around some
 identifiers, and the Python peer writes no sample under 5 bytes; so
@@ -457,6 +471,27 @@ def judge_client(name, resp_type, sent, text, hung, rc, record):
     record(name, None, how, b"", "answered")
 
 
+def recorder(counts, findings, keep, log, reader):
+    """record(target, verdict, how, data, text): counts a case, logs and
+    keeps a finding (verdict not None)."""
+    def record(target, verdict, how, data, text):
+        ok = ("refused" if text.startswith("ERROR")
+              else "rejected" if text == "rejected" else "ok")
+        key = verdict or ok
+        counts[key] = counts.get(key, 0) + 1
+        if verdict:
+            findings.append((verdict, target, how, [text.strip()[:300]]))
+            log.write(f"{reader} {target} {verdict}: {how[:600]}\n   {data.hex()[:200]}\n"
+                      f"   {text.strip()[:1500]}\n")
+            log.flush()
+            if keep:
+                folder = keep / reader
+                folder.mkdir(parents=True, exist_ok=True)
+                with open(folder / "findings.txt", "a") as f:
+                    f.write(f"{target} {verdict}: {how}\n{data.hex()}\n# {text.strip()[:600]}\n")
+    return record
+
+
 def fuzz_services(rng, cases, keep, log):
     """Entry point for fuzz_inputs.py: `cases` requests per server target
     and `cases // 8` client runs per client target (a run takes a second)."""
@@ -464,26 +499,332 @@ def fuzz_services(rng, cases, keep, log):
     d = dds()
     dp = d["domain"].DomainParticipant(int(fi.env()["ROS_DOMAIN_ID"]))
     counts, findings = {}, []
-
-    def record(target, verdict, how, data, text):
-        ok = "refused" if text.startswith("ERROR") else "ok"
-        key = verdict or ok
-        counts[key] = counts.get(key, 0) + 1
-        if verdict:
-            findings.append((verdict, target, how, [text.strip()[:300]]))
-            log.write(f"services {target} {verdict}: {how[:600]}\n   {data.hex()[:200]}\n"
-                      f"   {text.strip()[:1500]}\n")
-            log.flush()
-            if keep:
-                folder = keep / "services"
-                folder.mkdir(parents=True, exist_ok=True)
-                with open(folder / "findings.txt", "a") as f:
-                    f.write(f"{target} {verdict}: {how}\n{data.hex()}\n# {text.strip()[:600]}\n")
-
+    record = recorder(counts, findings, keep, log, "services")
     for target in SERVERS:
         fuzz_server(d, dp, target, rng, cases, record)
     for target in CLIENTS:
         fuzz_client(d, dp, target, rng, max(1, cases // 8), record)
+    return counts, findings
+
+
+# ---------------------------------------------------------------- actions
+# The peer plays an action server (its three services and two topics) for
+# one action client run per case.
+
+ACTION = "/fuzz_act"
+FIB = "example_interfaces::action::dds_::Fibonacci"
+CANCEL = "action_msgs::srv::dds_::CancelGoal"
+STATUS = "action_msgs::msg::dds_::GoalStatusArray_"
+FEEDBACK = FIB + "_FeedbackMessage_"
+ACTION_CLIENTS = [
+    # (name, argv, how it prints feedback)
+    ("action_client", ["rclada", "action", "send_goal", ACTION,
+                       "example_interfaces/action/Fibonacci", "{order: 5}", "-f",
+                       "--timeout", "10"], "Feedback:"),
+    ("typed_action_client", ["typed_fibonacci", "client", "5", ACTION[1:], "10"],
+     "feedback of "),
+    ("typed_action_client/cancel", ["typed_fibonacci", "client", "5", ACTION[1:], "10",
+                                    "cancel"], "feedback of "),
+]
+STATUS_NAMES = ["UNKNOWN", "ACCEPTED", "EXECUTING", "CANCELING", "SUCCEEDED", "CANCELED",
+                "ABORTED"]
+CANCEL_NAMES = ["ERROR_NONE", "ERROR_REJECTED", "ERROR_UNKNOWN_GOAL_ID",
+                "ERROR_GOAL_TERMINATED"]
+LE = b"\x00\x01\x00\x00"
+FEEDBACK_REFUSAL = re.compile(r"dropped a malformed sample on (\S+): (.*)")
+
+
+def mutate_sample(rng, payload):
+    """A mutated topic sample (no request header), as mutate() does the
+    body of a reply."""
+    body, how = fi.mutate_cdr(rng, payload, fi.TYPED_MUTATORS)
+    if len(body) >= 2:
+        body = bytes([min(body[0], 1), body[1] | 1 if body[1] < 16 else 1]) + body[2:]
+    return padded(body), how
+
+
+def sample_reference(cases):
+    """The dynamic decoder's verdict on each (type, sample): None when it
+    decodes, else (error text, byte offset)."""
+    if not cases:
+        return []
+    rc, text, hung, _ = fi.run([str(fi.BIN / "cdr_tool"), "reencode"], 120,
+                               stdin="".join(f"{n} {data.hex()}\n" for n, data in cases).encode())
+    outs = text.splitlines()
+    if rc != 0 or hung or len(outs) != len(cases):
+        raise RuntimeError(f"cdr_tool reencode failed: {text[-500:]}")
+    answers = []
+    for out in outs:
+        m = OFFSET.search(out)
+        answers.append((out.split(" ERROR ", 1)[1], int(m.group(1)) if m else None)
+                       if " ERROR " in out else None)
+    return answers
+
+
+class ActionPeer:
+    """The server side of action ACTION: three services, the feedback and
+    status topics."""
+
+    def __init__(self, d, dp, action=ACTION):
+        self.d = d
+        self.send = Peer(d, dp, action + "/_action/send_goal", FIB + "_SendGoal", "server")
+        self.result = Peer(d, dp, action + "/_action/get_result", FIB + "_GetResult", "server")
+        self.cancel = Peer(d, dp, action + "/_action/cancel_goal", CANCEL, "server")
+        qos = d["core"].Qos(d["core"].Policy.History.KeepLast(10),
+                            d["core"].Policy.Reliability.Reliable(max_blocking_time=10**9),
+                            d["core"].Policy.Durability.Volatile,
+                            d["core"].Policy.DataRepresentation(use_cdrv0_representation=True))
+        self.feedback = d["pub"].DataWriter(
+            dp, d["topic"].Topic(dp, f"rt{action}/_action/feedback", raw_type(d, FEEDBACK)),
+            qos=qos)
+        self.status = d["pub"].DataWriter(
+            dp, d["topic"].Topic(dp, f"rt{action}/_action/status", raw_type(d, STATUS)),
+            qos=qos)
+
+    def publish(self, writer, data):
+        if self.d["write"](writer._ref, data) < 0:
+            raise RuntimeError("raw write failed")
+
+    def feedback_matched(self, timeout):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.feedback.get_publication_matched_status().current_count > 0:
+                return True
+            time.sleep(0.05)
+        return False
+
+
+class ActionRun:
+    """What the peer sent in one client run, for the verdict."""
+
+    def __init__(self):
+        self.replies = {"send_goal": [], "get_result": [], "cancel_goal": []}
+        self.feedback = []   # (data, how, own goal id)
+        self.status = []
+        self.goal = None
+
+
+def answer_call(rng, peer, run, service, req, seeds, true_body):
+    """1-4 mutated replies to the call, one to another client, the true one."""
+    h = header_of(req)
+    if h is None:
+        return None
+    guid, seq = h
+    sent = run.replies[service]
+    for _ in range(rng.randrange(1, 5)):
+        data, how = mutate(rng, seeds[rng.randrange(len(seeds))], guid, seq)
+        sent.append((data, how, guid))
+        peer.write(data)
+    other, how = mutate(rng, seeds[rng.randrange(len(seeds))], guid ^ 1, seq)
+    sent.append((other, how + "; to another client", guid))
+    peer.write(other)
+    true = padded(with_header(true_body, guid, seq))
+    sent.append((true, "true reply", guid))
+    peer.write(true)
+    return h
+
+
+def fuzz_action_client(d, dp, target, rng, cases, record):
+    """One client run per case: each call answered as fuzz_client does;
+    after the goal is accepted, 0-4 mutated feedback messages (two in three
+    about the client's goal), a valid one, 0-2 mutated status arrays; the
+    result is answered once the client has printed the feedback it must."""
+    name, argv, feedback_mark = target
+    seeds = {t: [p for tt, p in fi.cdr_seeds() if tt == t]
+             for t in (FIB + "_SendGoal_Response_", FIB + "_GetResult_Response_",
+                       CANCEL + "_Response_", FEEDBACK, STATUS)}
+    peer = ActionPeer(d, dp)
+    for n in range(cases):
+        ada = Output([str(fi.BIN / argv[0])] + argv[1:])
+        run = ActionRun()
+        for ends in (peer.send, peer.result, peer.cancel):
+            ends.take()  # a former client's late calls
+        began = time.monotonic()
+        feedback_due = 0
+        try:
+            while ada.p.poll() is None and time.monotonic() - began < 25:
+                for req in peer.send.take():
+                    if len(req) >= 36 and run.goal is None:
+                        run.goal = req[20:36]
+                    if answer_call(rng, peer.send, run, "send_goal", req,
+                                   seeds[FIB + "_SendGoal_Response_"],
+                                   LE + b"\x01\0\0\0" + struct.pack("<iI", 5, 0)) is None:
+                        continue
+                    feedback_due = send_feedback(rng, peer, run, seeds)
+                for req in peer.cancel.take():
+                    answer_call(rng, peer.cancel, run, "cancel_goal", req,
+                                seeds[CANCEL + "_Response_"],
+                                LE + b"\0\0\0\0" + struct.pack("<I", 1)
+                                + (run.goal or bytes(16)) + struct.pack("<iI", 0, 0))
+                for req in peer.result.take():
+                    # The feedback first (the client prints it as it comes).
+                    wait = time.monotonic() + 5
+                    while (ada.read(0.05).count(feedback_mark) < feedback_due
+                           and time.monotonic() < wait and ada.p.poll() is None):
+                        pass
+                    answer_call(rng, peer.result, run, "get_result", req,
+                                seeds[FIB + "_GetResult_Response_"],
+                                LE + b"\x04\0\0\0" + struct.pack("<I6i", 6, 0, 1, 1, 2, 3, 5))
+                ada.read(0.02)
+            hung = ada.p.poll() is None
+        finally:
+            text = ada.stop()
+        judge_action_client(name, feedback_mark, run, text, hung, ada.p.returncode, record)
+
+
+def send_feedback(rng, peer, run, seeds):
+    """Publishes the mutated and valid feedback and the mutated status
+    arrays; returns how many feedback messages the client must print."""
+    if not peer.feedback_matched(5):
+        return 0
+    goal = run.goal or bytes(16)
+    for _ in range(rng.randrange(0, 5)):
+        seed = seeds[FEEDBACK][rng.randrange(len(seeds[FEEDBACK]))]
+        own = rng.random() < 2 / 3
+        seed = seed[:4] + (goal if own else os.urandom(16)) + seed[20:]
+        data, how = mutate_sample(rng, seed)
+        run.feedback.append((data, how + ("" if own else "; another goal"), goal))
+        peer.publish(peer.feedback, data)
+    valid = LE + goal + struct.pack("<I4i", 4, 0, 1, 1, 2)
+    run.feedback.append((valid, "valid feedback", goal))
+    peer.publish(peer.feedback, valid)
+    for _ in range(rng.randrange(0, 3)):
+        data, how = mutate_sample(rng, seeds[STATUS][rng.randrange(len(seeds[STATUS]))])
+        run.status.append((data, how))
+        peer.publish(peer.status, data)
+    answers = sample_reference([(FEEDBACK, data) for data, _, _ in run.feedback])
+    return sum(1 for (data, _, g), a in zip(run.feedback, answers)
+               if a is None and data[4:20] == g)
+
+
+def first_answer(service, resp_type, sent, lines):
+    """(verdict, body of the first reply of the call that decodes) for one
+    service's replies and the client's log lines about that service."""
+    if not sent:
+        return None, None
+    answers = reference([(resp_type, data) for data, _, _ in sent])
+    logged = [t for t in lines if f"{service}: malformed reply dropped" in t]
+    must, first = 0, None
+    for (data, h, guid), a in zip(sent, answers):
+        own = header_of(data) is not None and header_of(data)[0] == guid
+        call = own and header_of(data)[1] == header_of(sent[-1][0])[1]
+        if call and a is None:
+            first = data
+            break
+        must += call
+    may = sum(1 for (data, h, guid), a in zip(sent, answers)
+              if a is not None and (header_of(data) is None or header_of(data)[0] == guid))
+    if any(not located(t) for t in logged):
+        return "no location: " + " | ".join(logged)[:600], None
+    if len(logged) < must:
+        return f"{service}: refusal not logged (logged {len(logged)}, expected {must})", None
+    if len(logged) > may:
+        return (f"{service}: another client's reply logged (logged {len(logged)}, at most {may})",
+                None)
+    return None, decoded_body(resp_type, first) if first is not None else None
+
+
+def judge_action_client(name, feedback_mark, run, text, hung, rc, record):
+    sent_all = [x for v in run.replies.values() for x in v]
+    how = " | ".join(h for _, h, _ in sent_all + run.feedback)[:600]
+    how += "".join(f" | status {h}" for _, h in run.status)[:200]
+    if not run.replies["send_goal"]:
+        return record(name, "no goal sent", how, b"", text[-300:])
+    if hung:
+        return record(name, "hang", how, b"", text[-300:])
+    if rc is not None and rc < 0:
+        return record(name, f"signal {-rc}", how, b"", text[-300:])
+    if trace_line(text):
+        return record(name, "exception", how, b"", trace_line(text))
+    lines = text.splitlines()
+    if any("/_action/status" in t for t in lines):
+        return record(name, "status message reported", how, b"", text[-300:])
+    # Feedback: every refused one about the client's goal (or whose goal
+    # cannot be read) logged at the reference's offset, none about another
+    # goal; every one about its goal that decodes printed.
+    answers = sample_reference([(FEEDBACK, data) for data, _, _ in run.feedback])
+    logged = [m.group(2) for m in map(FEEDBACK_REFUSAL.search, lines) if m]
+    want = sorted(a[1] for (data, _, g), a in zip(run.feedback, answers)
+                  if a is not None and (len(data) < 20 or data[4:20] == g
+                                        or data[:2] not in (b"\0\0", b"\0\1")))
+    shown = sum(1 for (data, _, g), a in zip(run.feedback, answers)
+                if a is None and data[4:20] == g)
+    got = sorted(int(OFFSET.search(t).group(1)) for t in logged if OFFSET.search(t))
+    # The calls: the first reply of each that decodes decides.
+    verdict, send_body = first_answer("send_goal", FIB + "_SendGoal_Response_",
+                                      run.replies["send_goal"], lines)
+    if verdict:
+        return record(name, verdict, how, b"", text[-400:])
+    if send_body is None:
+        return record(name, "no answer to send_goal", how, b"", text[-300:])
+    # A rejected goal's client may stop before the feedback comes: then
+    # what it read must be a part of what it would have read.
+    accepted = send_body[4] != 0
+    if any(not located(t) for t in logged):
+        return record(name, "feedback refusal without location", how, b"", " | ".join(logged))
+    if got != want and (accepted or any(got.count(o) > want.count(o) for o in got)):
+        return record(name, "feedback refusals logged %s, expected %s" % (got, want), how, b"",
+                      " | ".join(logged)[:600])
+    printed = text.count(feedback_mark)
+    if printed != shown and (accepted or printed > shown):
+        return record(name, "feedback printed %d times, expected %d" % (printed, shown),
+                      how, b"", text[-600:])
+    if not accepted:
+        ok = "rejected" in text and not run.replies["get_result"]
+        return record(name, None if ok else "rejection not reported", how, b"",
+                      "rejected" if ok else text[-300:])
+    if "cancel" in name:
+        verdict, body = first_answer("cancel_goal", CANCEL + "_Response_",
+                                     run.replies["cancel_goal"], lines)
+        if verdict or body is None:
+            return record(name, verdict or "no answer to cancel_goal", how, b"", text[-400:])
+        code = struct.unpack("<b", body[4:5])[0]
+        if 0 <= code < len(CANCEL_NAMES):
+            if f"cancel: {CANCEL_NAMES[code]}" not in text:
+                return record(name, f"cancel code {code} not reported", how, b"", text[-300:])
+        elif not re.search(rf"cancel_goal.*(?<![\d-]){code}\b", text) or rc == 0:
+            return record(name, f"cancel code {code} (not a code) not refused clearly", how, b"",
+                          text[-300:])
+        else:
+            return record(name, None, how, b"", "ERROR cancel code")
+    verdict, body = first_answer("get_result", FIB + "_GetResult_Response_",
+                                 run.replies["get_result"], lines)
+    if verdict or body is None:
+        return record(name, verdict or "no answer to get_result", how, b"", text[-400:])
+    status = struct.unpack("<b", body[4:5])[0]
+    count = struct.unpack("<I", body[8:12])[0]
+    sequence = list(struct.unpack(f"<{count}i", body[12:12 + 4 * count]))
+    if not 0 <= status < len(STATUS_NAMES):
+        if not re.search(rf"get_result.*(?<![\d-]){status}\b", text) or rc == 0:
+            return record(name, f"status {status} (not a status) not refused clearly", how, b"",
+                          text[-300:])
+        return record(name, None, how, b"", "ERROR status")
+    if feedback_mark == "Feedback:":
+        m = re.search(r"Result:\n(.*?)Goal finished with status: (\w+)", text, re.S)
+        printed = [int(x) for x in re.findall(r"-?\d+", m.group(1))] if m else None
+        if not m or m.group(2) != STATUS_NAMES[status] or printed != sequence:
+            return record(name, "wrong result", how, b"",
+                          f"expected {STATUS_NAMES[status]} {sequence}: {text[-300:]}")
+    else:
+        if status == 0:
+            sequence = []  # the typed client's default result for an unknown goal
+        want = "[" + ",".join(f" {v}" if v >= 0 else str(v) for v in sequence) + " ]"
+        if f"result ({STATUS_NAMES[status]}): {want}" not in text:
+            return record(name, "wrong result", how, b"",
+                          f"expected result ({STATUS_NAMES[status]}): {want}: {text[-300:]}")
+    record(name, None, how, b"", "answered")
+
+
+def fuzz_actions(rng, cases, keep, log):
+    """Entry point for fuzz_inputs.py (reader `actions`): `cases // 4`
+    client runs per action client target."""
+    os.environ["CYCLONEDDS_URI"] = fi.env()["CYCLONEDDS_URI"]  # loopback only
+    d = dds()
+    dp = d["domain"].DomainParticipant(int(fi.env()["ROS_DOMAIN_ID"]))
+    counts, findings = {}, []
+    record = recorder(counts, findings, keep, log, "actions")
+    for target in ACTION_CLIENTS:
+        fuzz_action_client(d, dp, target, rng, max(1, cases // 4), record)
     return counts, findings
 
 

@@ -6,9 +6,11 @@
 --  far) and succeeds with the N + 1 first numbers; negative orders and
 --  orders above 62 are rejected; canceled goals end with the sequence so
 --  far; several goals run at once.
---     typed_fibonacci client ORDER [ACTION_NAME [TIMEOUT]]
+--     typed_fibonacci client ORDER [ACTION_NAME [TIMEOUT [cancel]]]
 --  sends one goal, prints every feedback and the result; exit status 1 when
 --  the goal is rejected or does not succeed within TIMEOUT (default 30 s).
+--  With "cancel", asks the server to cancel the goal once it is accepted
+--  and prints the server's answer before the result.
 with Ada.Command_Line;
 with Example_Support; use Example_Support;
 with RCL.Actions.Clients;
@@ -134,6 +136,10 @@ procedure Typed_Fibonacci is
       Node    : aliased Nodes.Node := Nodes.Init ("typed_fibonacci_client");
       Order   : constant ROSIDL.Int32 := ROSIDL.Int32'Value (Argument (2, "10"));
       Timeout : constant Duration := Duration'Value (Argument (4, "30.0"));
+      Cancel  : constant Boolean :=
+        (if Argument (5, "") in "" | "cancel" then Argument (5, "") = "cancel"
+         else raise Constraint_Error with "typed_fibonacci client: the fifth argument is"
+                    & " 'cancel' or nothing, not '" & Argument (5, "") & "'");
       Id      : Goal_Id;
       Status  : Goal_Status;
       Outcome : Fib.Result.Message;
@@ -145,6 +151,10 @@ procedure Typed_Fibonacci is
       begin
          Id := Fib_Client.Send_Goal ((Order => Order));
          Logging.Info ("goal " & Image (Id) & " accepted", Node.Logger_Name);
+         if Cancel then
+            Logging.Info ("cancel: " & Cancel_Code'Image (Fib_Client.Cancel_Goal (Id, Timeout)),
+                          Node.Logger_Name);
+         end if;
          Fib_Client.Get_Result (Id, Status, Outcome, Timeout);
          Logging.Info ("result (" & Status_Image (Status) & "): " & Image (Outcome.Sequence),
                        Node.Logger_Name);
@@ -169,10 +179,11 @@ begin
    elsif Argument (1, "") = "client" then
       Ask;
    else
-      Logging.Error ("usage: typed_fibonacci server [NAME [STEP]] | client ORDER [NAME [TIMEOUT]]");
+      Logging.Error ("usage: typed_fibonacci server [NAME [STEP]]"
+                     & " | client ORDER [NAME [TIMEOUT [cancel]]]");
       CL.Set_Exit_Status (2);
    end if;
 exception
-   when E : RCL.RCL_Timeout | Constraint_Error =>
+   when E : RCL.RCL_Timeout | RCL.ROS_Exception | Constraint_Error =>
       Fail (E, Status => 1);
 end Typed_Fibonacci;

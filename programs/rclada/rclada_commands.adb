@@ -692,9 +692,14 @@ package body Rclada_Commands is
       Node.Spin;
    end Topic_Echo;
 
-   procedure Topic_Pub (Topic, Type_Arg, Text : String; Args : Arguments) is
+   procedure Topic_Pub
+     (Topic, Type_Arg, Text : String; Has_Message : Boolean; Args : Arguments)
+   is
+      --  Text: the YAML message when the command line has one (Has_Message);
+      --  without, the default message (bounded publications only).
       Support : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Arg);
-      Msg     : constant ROSIDL.Dynamic.Message := Message_From (Support, Text);
+      Msg     : constant ROSIDL.Dynamic.Message :=
+        Message_From (Support, (if Has_Message then Text else "{}"));
       Rate    : constant Float := Number_Option (Args, "--rate", "1.0", Low => 0.001);
       Times   : constant Natural :=
         (if Option (Args, "--times", "") /= ""
@@ -716,7 +721,7 @@ package body Rclada_Commands is
    begin
       if Rate <= 0.0 then
          raise Usage_Error with "--rate must be positive";
-      elsif Text = "" and then Times = 0 then
+      elsif not Has_Message and then Times = 0 then
          raise Usage_Error with "topic pub: no YAML message: give one ('{data: hello}', '{}'"
            & " for the default message) or publish a bounded number (--once, --times N)";
       end if;
@@ -862,7 +867,7 @@ package body Rclada_Commands is
          if Natural (Pos.Length) not in 3 .. 4 then
             raise Usage_Error with "topic pub takes a topic name, a type and a YAML message";
          end if;
-         Topic_Pub (Checked_Name (Arg (2)), Arg (3), Arg (4), Args);
+         Topic_Pub (Checked_Name (Arg (2)), Arg (3), Arg (4), Natural (Pos.Length) = 4, Args);
       elsif Pos (1) = "hz" then
          Check_Options (Args, "--count --window --spin-time");
          if Natural (Pos.Length) not in 2 .. 3 then

@@ -1,4 +1,6 @@
 with Ada.Containers.Ordered_Sets;
+with Ada.Streams;
+with Ada.Strings.Fixed;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
 with RCL.DDS;
@@ -25,6 +27,33 @@ package body RCL.Actions.Clients is
       function Contains (Id : Goal_Id) return Boolean is (Ids.Contains (Id));
    end Goal_Set;
 
+   function Number (Code : Integer) return String is
+     (Ada.Strings.Fixed.Trim (Code'Image, Ada.Strings.Left));
+
+   function About_Another_Goal
+     (Mine : Goal_Set_Access; Data : RCL.DDS.Byte_Array; Type_Name : String) return Boolean
+   is
+      --  The feedback's goal_id (its first field: 16 bytes, the same in
+      --  either byte order) is not one of Mine, read before decoding the
+      --  rest, so that a malformed feedback about another client's goal is
+      --  not reported by this one. False when the id is cut short (the
+      --  decoder then says where); Decode_Error naming Type_Name when the
+      --  encapsulation header is unknown.
+      use Ada.Streams;
+      Order : constant ROSIDL.CDR.Byte_Order := ROSIDL.CDR.Byte_Order_Of (Data, Type_Name);
+      pragma Unreferenced (Order);
+      First : constant Stream_Element_Offset := Data'First + ROSIDL.CDR.Encapsulation_Size;
+      Id    : Goal_Id;
+   begin
+      if Data'Length < ROSIDL.CDR.Encapsulation_Size + Goal_Id'Length then
+         return False;
+      end if;
+      for I in Id'Range loop
+         Id (I) := ROSIDL.UInt8 (Data (First + Stream_Element_Offset (I - Id'First)));
+      end loop;
+      return not Mine.Contains (Id);
+   end About_Another_Goal;
+
    type Feedback_Handler is new RCL.Nodes.Handler with record
       Support  : Action_Support;
       Mine     : Goal_Set_Access;
@@ -38,12 +67,20 @@ package body RCL.Actions.Clients is
       Info : ROSIDL.Message_Info)
    is
       pragma Unreferenced (Info);
-      Msg : constant Message := ROSIDL.CDR.Decode (Feedback_Message_Support (This.Support), Data);
-      Id  : constant Goal_Id := Get_Id (Msg ("goal_id"));
+      Support : constant ROSIDL.Typesupport.Message_Support :=
+        Feedback_Message_Support (This.Support);
    begin
-      if This.Mine.Contains (Id) then
-         This.Callback (Node, Id, To_Message (Msg ("feedback")));
+      if About_Another_Goal (This.Mine, Data, ROSIDL.Typesupport.Full_Name (Support)) then
+         return;
       end if;
+      declare
+         Msg : constant Message := ROSIDL.CDR.Decode (Support, Data);
+         Id  : constant Goal_Id := Get_Id (Msg ("goal_id"));
+      begin
+         if This.Mine.Contains (Id) then
+            This.Callback (Node, Id, To_Message (Msg ("feedback")));
+         end if;
+      end;
    end Deliver;
 
    procedure Init
@@ -137,9 +174,12 @@ package body RCL.Actions.Clients is
          Response : constant Message := This.Results.Call (Request, Timeout);
          Code     : constant Integer := Integer (Response ("status").As_Int8.Element.all);
       begin
-         Status := (if Code in Goal_Status'Pos (Goal_Status'First) .. Goal_Status'Pos
-                      (Goal_Status'Last)
-                    then Goal_Status'Val (Code) else Unknown);
+         if Code not in Goal_Status'Pos (Goal_Status'First) .. Goal_Status'Pos (Goal_Status'Last)
+         then
+            raise ROS_Exception with "action " & This.Name & ": get_result answered status "
+              & Number (Code) & ", which is no goal status (0 .. 6)";
+         end if;
+         Status := Goal_Status'Val (Code);
          Result := To_Message (Response ("result"));
       end;
    end Get_Result;
@@ -155,7 +195,12 @@ package body RCL.Actions.Clients is
          Code : constant Integer :=
            Integer (This.Cancel.Call (Request, Timeout) ("return_code").As_Int8.Element.all);
       begin
-         return (if Code in 0 .. 3 then Cancel_Code'Val (Code) else Error_Rejected);
+         if Code not in Cancel_Code'Pos (Cancel_Code'First) .. Cancel_Code'Pos (Cancel_Code'Last)
+         then
+            raise ROS_Exception with "action " & This.Name & ": cancel_goal answered return code "
+              & Number (Code) & ", which is no cancel code (0 .. 3)";
+         end if;
+         return Cancel_Code'Val (Code);
       end;
    end Cancel;
 

@@ -39,7 +39,8 @@ package RCL.Actions.Clients is
          Goal     : Goal_Id;
          Feedback : ROSIDL.Dynamic.Message) := null);
    --  Name is expanded like a service name. On_Feedback (if given) gets the
-   --  feedback of the goals this client sent, while the node spins.
+   --  feedback of the goals this client sent, while the node spins (the
+   --  feedback of other goals is dropped undecoded).
 
    function Name (This : Client) return String;
 
@@ -70,12 +71,15 @@ package RCL.Actions.Clients is
       Result  : out ROSIDL.Dynamic.Message;
       Timeout : Duration := Forever);
    --  Waits for the goal to end (RCL_Timeout after Timeout). Status Unknown
-   --  when the server does not know the goal (expired).
+   --  when the server does not know the goal (expired). ROS_Exception when
+   --  the server answers a status that is no GoalStatus value.
 
    function Cancel_Goal
      (This    : in out Client;
       Id      : Goal_Id;
       Timeout : Duration := 10.0) return Cancel_Code;
+   --  The server's answer; ROS_Exception when its return code is no
+   --  CancelGoal code.
 
    function Cancel_All_Goals
      (This    : in out Client;

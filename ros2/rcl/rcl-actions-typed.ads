@@ -128,9 +128,11 @@ package RCL.Actions.Typed is
          Timeout : Duration := Clients.Forever);
       --  Waits for the goal to end (RCL_Timeout after Timeout); Status
       --  Unknown when the server does not know the goal (Outcome is then
-      --  the default result).
+      --  the default result). ROS_Exception when the server answers a
+      --  status that is no GoalStatus value.
 
       function Cancel_Goal (Id : Goal_Id; Timeout : Duration := 10.0) return Cancel_Code;
+      --  ROS_Exception when the server's return code is no CancelGoal code.
    end Client;
 
 private

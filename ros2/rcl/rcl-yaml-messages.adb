@@ -231,6 +231,11 @@ package body RCL.YAML.Messages is
       Doc : constant Document := Parse (Text, Source);
    begin
       return Msg : constant ROSIDL.Dynamic.Message := Init (Support) do
+         if Doc.Kind (Doc.Root) = Null_Value then
+            Fail (Doc, Doc.Root, Full_Name (Msg.Definition.all) & " is a message: expected a"
+                  & " mapping of its fields ({" & Field_Names (Msg.Definition.all)
+                  & "}), found nothing ('{}' is the default message)");
+         end if;
          Fill (Msg, Doc, Doc.Root);
       end return;
    end From_YAML;

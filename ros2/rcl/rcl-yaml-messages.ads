@@ -23,5 +23,7 @@ package RCL.YAML.Messages is
      (Support : ROSIDL.Typesupport.Message_Support;
       Text    : String;
       Source  : String := "<message>") return ROSIDL.Dynamic.Message;
+   --  Text must be a mapping ("{}": the default message); an empty text (or
+   --  only comments) is refused, as ros2 refuses a non-dictionary.
 
 end RCL.YAML.Messages;

@@ -214,14 +214,29 @@ package body Sancta.Simulation.Raster_Images is
       function Kind (P : Natural) return String is
         ([for K in 1 .. 4 => Character'Val (Data (P + K - 1))]);
 
+      function Hex (P : Natural) return String is
+         --  The 4 bytes at P in hex ("00 01 41 ff"), for a chunk type that
+         --  is not letters.
+         Hex_Digits : constant String := "0123456789abcdef";
+      begin
+         return [for K in 1 .. 11 =>
+                   (if K mod 3 = 0 then ' '
+                    elsif K mod 3 = 1 then Hex_Digits (Natural (Data (P + K / 3)) / 16 + 1)
+                    else Hex_Digits (Natural (Data (P + K / 3)) mod 16 + 1))];
+      end Hex;
+
       W, H          : Natural := 0;
       Depth, CType  : Natural := 0;
       Seen_Header   : Boolean := False;
       Seen_End      : Boolean := False;
       Palette       : array (0 .. 255) of Color := [others => Black];
       Palette_Size  : Natural := 0;
+      Seen_Palette  : Boolean := False;
       IDAT          : Byte_Array_Access := new Byte_Array (0 .. Data'Length);
       IDAT_Length   : Natural := 0;
+      Seen_IDAT     : Boolean := False;
+      IDAT_Ended    : Boolean := False;
+      --  A chunk other than IDAT came after the first IDAT.
    begin
       if Data'Length < 8 or else Data (Data'First .. Data'First + 7) /= Signature then
          Free (IDAT);
@@ -236,21 +251,33 @@ package body Sancta.Simulation.Raster_Images is
             Length : constant Unsigned_32 := U32 (Pos);
             T      : constant String := Kind (Pos + 4);
             First  : constant Natural := Pos + 8;
+            Valid  : constant Boolean := (for all Letter of T => Letter in 'A' .. 'Z' | 'a' .. 'z');
+            Named  : constant String := (if Valid then T else Hex (Pos + 4));
+            --  The chunk type for messages.
          begin
             if Length > Unsigned_32 (Data'Last - Pos + 1 - 12) then
-               Fail ("chunk " & T & " longer than the file");
+               Fail ("chunk " & Named & " longer than the file");
             end if;
             declare
                Last : constant Integer := First + Integer (Length) - 1;
                C    : constant Byte_Array := Data (First .. Last);
             begin
                if CRC_32 (Data (Pos + 4 .. Last)) /= U32 (Last + 1) then
-                  Fail ("CRC mismatch in chunk " & T);
+                  Fail ("CRC mismatch in chunk " & Named);
+               elsif not Valid then
+                  Fail ("chunk type " & Named & " is not four ASCII letters");
                end if;
                if not Seen_Header and then T /= "IHDR" then
                   Fail ("first chunk is " & T & ", not IHDR");
+               elsif T (1) in 'A' .. 'Z' and then T not in "IHDR" | "PLTE" | "IDAT" | "IEND" then
+                  Fail ("unknown critical chunk " & T & " (the image cannot be read without it)");
+               elsif T = "IDAT" and then IDAT_Ended then
+                  Fail ("IDAT chunks are not consecutive");
                end if;
-               if T = "IHDR" then
+               IDAT_Ended := Seen_IDAT and then T /= "IDAT";
+               if T = "IHDR" and then Seen_Header then
+                  Fail ("second IHDR chunk");
+               elsif T = "IHDR" then
                   if Length /= 13 then
                      Fail ("IHDR length is not 13");
                   end if;
@@ -283,15 +310,23 @@ package body Sancta.Simulation.Raster_Images is
                   end if;
                   Seen_Header := True;
                elsif T = "PLTE" then
-                  if Length mod 3 /= 0 or else Length > 768 then
-                     Fail ("bad palette length");
+                  if Seen_Palette then
+                     Fail ("second PLTE chunk");
+                  elsif Seen_IDAT then
+                     Fail ("PLTE chunk after the image data");
+                  elsif CType in 0 | 4 then
+                     Fail ("PLTE chunk in a grey image (colour type" & CType'Image & ")");
+                  elsif Length = 0 or else Length mod 3 /= 0 or else Length > 768 then
+                     Fail ("bad palette length" & Length'Image);
                   end if;
+                  Seen_Palette := True;
                   Palette_Size := Natural (Length) / 3;
                   for K in 0 .. Palette_Size - 1 loop
                      Palette (K) := (C (C'First + 3 * K), C (C'First + 3 * K + 1),
                                      C (C'First + 3 * K + 2));
                   end loop;
                elsif T = "IDAT" then
+                  Seen_IDAT := True;
                   IDAT (IDAT_Length .. IDAT_Length + C'Length - 1) := C;
                   IDAT_Length := IDAT_Length + C'Length;
                elsif T = "IEND" then

@@ -61,6 +61,17 @@ CASES = [
     # rclada: option values, names, YAML messages
     (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/String", "[" * 50000], 1,
      ["<argument>:1:100: collections nested deeper than 100"]),
+    (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/String", "", "--once"], 1,
+     ["<argument>:1:1: std_msgs/msg/String is a message: expected a mapping of its fields"
+      " ({data}), found nothing ('{}' is the default message)"]),
+    (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/String", "# x\n", "--once"], 1,
+     ["<argument>:", "found nothing"]),
+    (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/String", "hello", "--once"], 1,
+     ["<argument>:1:1: std_msgs/msg/String is a message: expected a mapping", "found 'hello'"]),
+    (["rclada", "service", "call", "/s", "example_interfaces/srv/AddTwoInts", " "], 1,
+     ["<argument>:1:", "AddTwoInts_Request is a message", "found nothing"]),
+    (["rclada", "action", "send_goal", "/a", "example_interfaces/action/Fibonacci", ""], 1,
+     ["<argument>:1:1:", "Fibonacci_Goal is a message", "found nothing"]),
     (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/Int32", "{data: 99999999999}"], 1,
      ["<argument>:1:8:", "out of range for int32"]),
     (["rclada", "topic", "pub", "/chatter", "std_msgs/msg/String", "{data: x}", "--rate", "0"],

@@ -12,7 +12,7 @@ import sys
 import time
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
-READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,definition,params,mcap,"
+READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,png,definition,params,mcap,"
            "mcap-recover,cdr,typed")
 
 
@@ -52,6 +52,20 @@ def test_fuzz_smoke_services():
     assert p.returncode == 0, p.stdout + p.stderr[-3000:]
     row = p.stdout.splitlines()[1].split()
     assert row[0] == "services" and int(row[1]) >= 50, p.stdout
+
+
+def test_fuzz_smoke_actions():
+    """The actions reader (DDS on loopback): a raw action server answers
+    the action clients (rclada action send_goal, typed_fibonacci client,
+    with cancel) with mutated replies, feedback and status messages: each
+    client reports what it drops, with type and byte offset, and takes the
+    first answer that decodes."""
+    p = subprocess.run([sys.executable, str(REPO / "scripts" / "fuzz_inputs.py"), "--seed", "19",
+                        "--cases", "8", "--readers", "actions"],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stdout + p.stderr[-3000:]
+    row = p.stdout.splitlines()[1].split()
+    assert row[0] == "actions" and int(row[1]) == 6, p.stdout
 
 
 def node_parameter(args, name):

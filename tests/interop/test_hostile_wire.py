@@ -165,6 +165,94 @@ def test_param_get_says_the_node_answered_an_unknown_type():
     assert not NO_CRASH.search(out), out
 
 
+def action_peer(dp, action):
+    """The server side of an example_interfaces/Fibonacci action, raw
+    (scripts/fuzz_services.py)."""
+    sys.path.insert(0, str(ps.REPO / "scripts"))
+    import fuzz_services
+    return fuzz_services.ActionPeer(fuzz_services.dds(), dp, action)
+
+
+LE = b"\x00\x01\x00\x00"
+
+
+def run_action_client(argv, action, feedback=lambda goal: [], status=4, cancel_code=0):
+    """Runs an action client (argv) against a raw action server: the goal
+    is accepted, then the feedback samples feedback(goal id) published; the
+    cancel request (if any) answered cancel_code, the result request
+    (after 1.5 s: the feedback is printed first) status and [0, 1, 1, 2]."""
+    dp = ps.participant()
+    peer = action_peer(dp, action)
+    ada = ps.start(*argv)
+    deadline = time.monotonic() + 30
+    while ada.poll() is None and time.monotonic() < deadline:
+        for r in peer.send.take():
+            peer.send.write(LE + r[4:20] + b"\x01\0\0\0" + struct.pack("<iI", 5, 0))
+            assert peer.feedback_matched(5), "the client's feedback reader was not discovered"
+            for sample in feedback(r[20:36]):
+                peer.publish(peer.feedback, sample)
+        for r in peer.cancel.take():
+            peer.cancel.write(LE + r[4:20] + struct.pack("<b3xI", cancel_code, 1) + r[20:36]
+                              + struct.pack("<iI", 0, 0))
+        for r in peer.result.take():
+            time.sleep(1.5)
+            peer.result.write(LE + r[4:20] + struct.pack("<b3xI4i", status, 4, 0, 1, 1, 2))
+        time.sleep(0.01)
+    return ada, ps.finish(ada)
+
+
+ACTION_CLIENTS = [
+    ["rclada", "action", "send_goal", "/hostile_fib", "example_interfaces/action/Fibonacci",
+     "{order: 3}", "-f", "--timeout", "10"],
+    ["typed_fibonacci", "client", "3", "hostile_fib", "10"],
+]
+
+
+def test_action_clients_leave_malformed_feedback_of_other_goals_alone():
+    """Every action client reads every feedback message of the action: a
+    malformed one about another client's goal (the goal_id, its first
+    field) is dropped undecoded, unreported (it was reported by every
+    client); one about this client's goal is reported with the type and the
+    byte offset; the valid feedback and the result are still taken (dynamic
+    and typed clients)."""
+    def feedback(goal):
+        cut = struct.pack("<I", 1000)  # a sequence of 1000 int32 with no data
+        return [LE + bytes(16) + cut, LE + goal + cut, LE + goal + struct.pack("<I3i", 3, 0, 1, 1)]
+
+    for argv in ACTION_CLIENTS:
+        ada, out = run_action_client(argv, "/hostile_fib", feedback)
+        assert ada.returncode == 0, out
+        dropped = [line for line in out.splitlines() if "dropped a malformed sample" in line]
+        assert len(dropped) == 1, out
+        assert ("example_interfaces/action/Fibonacci_FeedbackMessage" in dropped[0]
+                and "at byte offset 20" in dropped[0]), out
+        assert out.count("Feedback:" if argv[0] == "rclada" else "feedback of") == 1, out
+        assert "SUCCEEDED" in out, out
+        assert not NO_CRASH.search(out), out
+
+
+def test_action_clients_refuse_a_status_that_is_no_goal_status():
+    """A get_result answer with status 9 (GoalStatus has 0 .. 6): a clear
+    error naming it (it was reported as the goal's status UNKNOWN)."""
+    for argv in ACTION_CLIENTS:
+        ada, out = run_action_client(argv, "/hostile_fib", status=9)
+        assert ada.returncode == 1, out
+        assert ("action /hostile_fib: get_result answered status 9, which is no goal status"
+                in out), out
+        assert "UNKNOWN" not in out and not NO_CRASH.search(out), out
+
+
+def test_action_client_refuses_a_cancel_code_that_is_no_code():
+    """A cancel_goal answer with return code -3 (CancelGoal has 0 .. 3): a
+    clear error naming it (it was taken as ERROR_REJECTED)."""
+    ada, out = run_action_client(["typed_fibonacci", "client", "3", "hostile_fib", "10",
+                                  "cancel"], "/hostile_fib", cancel_code=-3)
+    assert ada.returncode == 1, out
+    assert ("action /hostile_fib: cancel_goal answered return code -3, which is no cancel code"
+            in out), out
+    assert "ERROR_REJECTED" not in out and not NO_CRASH.search(out), out
+
+
 def test_simulator_survives_hostile_control_and_cmd_vel():
     dp = ps.participant()
     truth = ps.reader(dp, "rt/robot1/ground_truth", rt.PoseStamped_)

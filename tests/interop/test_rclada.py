@@ -197,6 +197,14 @@ def test_topic_pub():
     assert "publishing #3: " in out, out
     got = ps.take_until(rd, 3, timeout=5)
     assert [s.data for s in got] == ["hi there"] * 3
+    # No message: the default one ('{}'), for a bounded number only; an
+    # empty message argument is refused (ros2: not a dictionary).
+    rc, out, err = rclada("topic", "pub", "/pub_test", "std_msgs/msg/String", "--once")
+    assert rc == 0 and "publishing #1: std_msgs/msg/String(data: '')" in out, (out, err)
+    rc, _, err = rclada("topic", "pub", "/pub_test", "std_msgs/msg/String")
+    assert rc == 2 and "no YAML message" in err, err
+    rc, _, err = rclada("topic", "pub", "/pub_test", "std_msgs/msg/String", "", "--once")
+    assert rc == 1 and "<argument>:1:1:" in err and "found nothing" in err, err
 
 
 def test_topic_hz():

@@ -3,6 +3,8 @@
 cases.txt. Large inputs (megabytes) are made by the test itself in a
 temporary folder ({tmp}). Run from anywhere: python3 make_corpus.py"""
 import pathlib
+import struct
+import zlib
 
 HERE = pathlib.Path(__file__).resolve().parent
 CASES = []  # (id, argv, exit, expected substrings)
@@ -519,6 +521,56 @@ g = config("logger-long-name", '<component name="logger" file="out/' + "x_" * 15
            + ODO.replace('as="odometric_pose"', 'as="a"'))
 case("fuzz-config-logger-long-file-name", f"sancta check {g}", 1,
      "logger-long-name.xml:3:", "a part of the file name has 304 characters, more than 255")
+
+# Session 10: --params-file keys checked as rcl does (node names by the rmw
+# rules, no empty parameter name: they silently matched nothing); a long path
+# keeps the reason of its error (GNAT cuts exception messages at 200).
+g = write("args/empty-name.yaml", 'parameters_demo:\n  ros__parameters:\n    "": 1\n    rate: 15\n')
+case("fuzz-params-file-empty-name", f"parameters_demo --ros-args --params-file {g}", 2,
+     "empty-name.yaml:3:5: empty parameter name")
+g = write("args/bad-node-name.yaml", 'parameters_demo:\n  ros__parameters:\n    rate: 15\n'
+          '"robot 1":\n  ros__parameters:\n    rate: 16\n')
+case("fuzz-params-file-bad-node-name", f"parameters_demo --ros-args --params-file {g}", 2,
+     "bad-node-name.yaml:4:1: node name \"robot 1\": invalid character ' '")
+case("fuzz-params-file-long-path",
+     f"parameters_demo --ros-args --params-file {{tmp}}/{'d' * 190}/params.yaml", 2,
+     "params.yaml: no such file")
+
+# Found by the fuzzer's png reader (session 11): PNG map images whose chunks
+# the PNG specification forbids were read as if the chunk were not there
+# (libpng refuses all but a palette in a grey image, which it ignores with a
+# warning). Each is refused at the chunk's byte offset.
+def png(name, chunks):
+    """A 2 x 2 grey PNG map (the given chunks between IHDR and IEND, "IDAT"
+    for the image data) and a world YAML naming it."""
+    def chunk(kind, body):
+        return (struct.pack(">I", len(body)) + kind + body
+                + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+    body = b"".join(chunk(b"IDAT", PIXELS) if k == b"IDAT" else chunk(k, b) for k, b in chunks)
+    header = chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 0, 0, 0, 0))
+    write(f"world/{name}.png", b"\x89PNG\r\n\x1a\n" + header + body + chunk(b"IEND", b""),
+          binary=True)
+    return write(f"world/{name}.yaml", f"image: {name}.png\nresolution: 0.5\norigin: [0, 0, 0]\n")
+
+
+PIXELS = zlib.compress(b"\0\0\xfe\0\xfe\0")  # two rows, filter 0
+
+IDAT = (b"IDAT", b"")
+g = png("png-critical-chunk", [(b"ABCD", b"xyz"), IDAT])
+case("fuzz-png-unknown-critical-chunk", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "png-critical-chunk.png: byte 33: unknown critical chunk ABCD")
+g = png("png-chunk-type", [(b"\0\1AB", b""), IDAT])
+case("fuzz-png-chunk-type-not-letters", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "png-chunk-type.png: byte 33: chunk type 00 01 41 42 is not four ASCII letters")
+g = png("png-second-header", [(b"IHDR", struct.pack(">IIBBBBB", 1, 1, 8, 0, 0, 0, 0)), IDAT])
+case("fuzz-png-second-header", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "png-second-header.png: byte 33: second IHDR chunk")
+g = png("png-grey-palette", [(b"PLTE", bytes(6)), IDAT])
+case("fuzz-png-palette-in-grey-image", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     "png-grey-palette.png: byte 33: PLTE chunk in a grey image (colour type 0)")
+g = png("png-split-data", [IDAT, (b"tEXt", b"a\0b"), IDAT])
+case("fuzz-png-image-data-not-consecutive", f"sancta-render {g} --svg {{tmp}}/w.svg", 1,
+     f"png-split-data.png: byte {33 + 12 + len(PIXELS) + 15}: IDAT chunks are not consecutive")
 
 with open(HERE / "cases.txt", "w") as out:
     out.write("# The broken-input corpus (issue 19): one case a line,\n"

@@ -214,6 +214,19 @@ package body RCL.YAML.Tests is
                         "expected 36 elements, found 2"), "fixed array size");
       Assert (Contains (Error_Of ("std_msgs", "Header", "{stamp: 5}"),
                         "builtin_interfaces/msg/Time is a message"), "message vs scalar");
+      --  ros2 refuses a message argument that is not a dictionary: nothing,
+      --  only a comment, a scalar, a sequence; '{}' is the default message.
+      Assert (Contains (Error_Of ("std_msgs", "String", ""),
+                        "<message>:1:1: std_msgs/msg/String is a message: expected a mapping"
+                        & " of its fields ({data}), found nothing"),
+              Error_Of ("std_msgs", "String", ""));
+      Assert (Contains (Error_Of ("std_msgs", "String", "  # no message" & ASCII.LF),
+                        "found nothing"), "comment only");
+      Assert (Contains (Error_Of ("std_msgs", "String", "null"), "found 'null'"), "null");
+      Assert (Contains (Error_Of ("std_msgs", "String", "[x]"), "expected a mapping"),
+              "sequence");
+      Assert (RCL.YAML.Messages.From_YAML (Get_Message_Support ("std_msgs", "String"), "{}")
+                ("data").Get_String = "", "'{}' is the default message");
    end Messages_From_YAML;
 
    procedure Mangling (Unused : in out Fixture) is
