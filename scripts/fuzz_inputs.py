@@ -5,7 +5,8 @@ silent wrong answer; malformed wire data never over-reads).
 
 Each reader takes valid seed inputs (bundled configurations, missions,
 TSPLIB files, worlds, PGM and PNG map images (every PNG colour type, bit
-depth, row filter and DEFLATE block kind), interface definitions, parameter files, MCAP bags made
+depth, row filter and DEFLATE block kind), SROS2 policies (`rclada security
+create_permission`), interface definitions, parameter files, MCAP bags made
 with the `mcap` package, CDR payloads from `cdr_tool random`, --ros-args
 lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
@@ -693,6 +694,49 @@ def png_must_refuse(seed, data, how):
     return png_problem(data) is not None
 
 
+POLICY_KEYSTORE = []  # the keystore the policy reader's cases write into
+
+
+def policy_seeds(folder):
+    """Two SROS2 policies (format 0.2.0) and a keystore with enclave
+    /talker, made once (`rclada security create_permission` signs into it)."""
+    ks = folder / "keystore"
+    for argv in (["create_keystore", str(ks)], ["create_enclave", str(ks), "/talker"]):
+        subprocess.run([str(BIN / "rclada"), "security"] + argv, check=True,
+                       capture_output=True, env=env())
+    POLICY_KEYSTORE.append(str(ks))
+    one = folder / "talker.xml"
+    one.write_text(
+        '<?xml version="1.0" encoding="UTF-8"?>\n<policy version="0.2.0">\n  <enclaves>\n'
+        '    <enclave path="/talker">\n      <profiles>\n'
+        '        <profile ns="/" node="talker">\n'
+        '          <topics publish="ALLOW">\n            <topic>chatter</topic>\n'
+        '            <topic>~/status</topic>\n          </topics>\n'
+        '          <topics subscribe="DENY">\n            <topic>/secret</topic>\n'
+        '          </topics>\n'
+        '          <services reply="ALLOW">\n            <service>add_two_ints</service>\n'
+        '          </services>\n'
+        '          <actions call="ALLOW">\n            <action>fibonacci</action>\n'
+        '          </actions>\n        </profile>\n      </profiles>\n    </enclave>\n'
+        '  </enclaves>\n</policy>\n')
+    two = folder / "robots.xml"
+    two.write_text(
+        '<policy version="0.2.0">\n<enclaves>\n'
+        '<enclave path="/listener"><profiles><profile ns="/" node="listener">'
+        '<topics subscribe="ALLOW"><topic>chatter</topic></topics></profile></profiles>'
+        '</enclave>\n'
+        '<enclave path="/talker"><profiles>\n'
+        '<profile ns="/robots/r1" node="talker">\n'
+        '<topics publish="ALLOW" subscribe="ALLOW"><topic>odom</topic><topic>/tf</topic>'
+        '</topics>\n'
+        '<services request="ALLOW"><service>~/get_map</service></services>\n'
+        '<actions execute="DENY"><action>navigate</action></actions>\n'
+        '</profile>\n<profile ns="/robots/r1/" node="helper">\n'
+        '<topics publish="DENY"><topic>cmd_vel</topic></topics>\n</profile>\n'
+        '</profiles></enclave>\n</enclaves>\n</policy>\n')
+    return [one, two]
+
+
 def trajectories_seed(folder):
     p = folder / "trajectories.csv"
     p.write_text("robot,x,y\n" + "".join(f"{1 + i % 3},{1 + i * 0.25:.2f},{2 + (i % 7) * 0.5:.2f}\n"
@@ -747,6 +791,12 @@ def build_readers(seed_folder):
                ["sancta-render", "{dir}/world.yaml", "--svg", "{dir}/w.svg"], "binary", None,
                PNG_MUTATORS, prepare=png_prepare, name_of=lambda seed: "input.png",
                must_refuse=png_must_refuse),
+        Reader("policy", policy_seeds(seed_folder),
+               ["rclada", "security", "create_permission", "{keystore}", "/talker", "{input}"],
+               "xml", None, TEXT_MUTATORS, must_refuse=xml_must_refuse,
+               # Verdicts on the whole file: no rules for the enclave, too
+               # many, too large a file.
+               unlocated_ok=re.compile(r"no <enclave path=|more than \d+ rules|may not exceed")),
         Reader("definition", definition_seeds(),
                ["rosidl_generate", "-o", "{dir}/out", "{dir}/defs"], "msg", None, TEXT_MUTATORS,
                prepare=definition_prepare,
@@ -926,6 +976,7 @@ def fuzz_reader(reader, rng, cases, keep, log):
             text_argument = data.replace(b"\x00", b"").decode("utf-8", "replace")[:100000]
             argv = [a.replace("{input}", str(folder / file_name)).replace("{dir}", str(folder))
                     .replace("{seed_type}", seed.stem.replace(".", "/"))
+                    .replace("{keystore}", POLICY_KEYSTORE[-1] if POLICY_KEYSTORE else "")
                     .replace("{text}", text_argument)
                     for a in reader.argv]
             argv[0] = str(BIN / argv[0])

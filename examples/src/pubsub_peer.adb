@@ -5,7 +5,8 @@
 --        publishes COUNT messages (10 Hz) filled with the values below;
 --     pubsub_peer echo PKG MSG TOPIC OUT_TOPIC COUNT [best_effort]
 --        republishes each message received on TOPIC to OUT_TOPIC, COUNT
---        times, then exits;
+--        times, then exits; COUNT 0: until stopped (SIGTERM), for a test
+--        that feeds it until its echoes come back (Echo_Peers);
 --
 --  Known types filled: std_msgs/String, geometry_msgs/Twist,
 --  sensor_msgs/LaserScan, nav_msgs/Odometry (the Python test expects the
@@ -29,8 +30,8 @@ procedure Pubsub_Peer is
    Pkg      : constant String := Argument (2);
    Msg_Name : constant String := Argument (3);
    Topic    : constant String := Argument (4);
-   Count    : constant Positive :=
-     Positive'Value (Argument (if Mode = "echo" then 6 else 5));
+   Count    : constant Natural :=
+     Natural'Value (Argument (if Mode = "echo" then 6 else 5));
    Best     : constant Boolean :=
      Argument_Count >= (if Mode = "echo" then 7 else 6)
      and then Argument (Argument_Count) = "best_effort";

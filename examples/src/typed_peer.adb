@@ -6,7 +6,8 @@
 --        publishes COUNT messages (10 Hz) filled with the values below;
 --     typed_peer echo MSG TOPIC OUT_TOPIC COUNT
 --        republishes each message received on TOPIC to OUT_TOPIC, COUNT
---        times, then exits.
+--        times, then exits; COUNT 0: until stopped (SIGTERM), for a test
+--        that feeds it until its echoes come back (Echo_Peers).
 --
 --  MSG: LaserScan (sensor_msgs), Odometry, OccupancyGrid (nav_msgs); the
 --  Python test expects the same values.
@@ -37,7 +38,7 @@ procedure Typed_Peer is
    Mode     : constant String := Argument (1);
    Msg_Name : constant String := Argument (2);
    Topic    : constant String := Argument (3);
-   Count    : constant Positive := Positive'Value (Argument (if Mode = "echo" then 5 else 4));
+   Count    : constant Natural := Natural'Value (Argument (if Mode = "echo" then 5 else 4));
 
    Header : constant ROSIDL.Static.Std_Msgs.Messages.Header.Message :=
      (Stamp => (Sec => 1_700_000_123, Nanosec => 456_789),

@@ -17,6 +17,8 @@
 --  "~" the node's own; ros_discovery_info always allowed both ways.
 --  xi:include is not supported (the error says so).
 with Ada.Characters.Handling;
+with Ada.Containers.Vectors;
+with Ada.Directories;
 with Ada.Exceptions;
 with Ada.Text_IO;
 with DOM.Core.Documents;
@@ -24,13 +26,18 @@ with DOM.Core.Elements;
 with DOM.Core.Nodes;
 with DOM.Readers;
 with Input_Sources.File;
+with Sax.Locators;
 with Sax.Readers;
+with Sax.Symbols;
+with Sax.Utils;
+with Unicode.CES;
 with RCL.Security.Keystores;
 
 separate (Rclada_Commands)
 procedure Security_Command (Args : Arguments) is
 
    package Keystores renames RCL.Security.Keystores;
+   use type Ada.Directories.File_Size;
    use type DOM.Core.Node;
    use type DOM.Core.Node_Types;
 
@@ -53,19 +60,98 @@ procedure Security_Command (Args : Arguments) is
 
    function Lower (S : String) return String renames Ada.Characters.Handling.To_Lower;
 
+   type Placed_Element is record
+      Element : DOM.Core.Node;
+      Place   : Sax.Locators.Location;
+   end record;
+
+   package Placed_Elements is new Ada.Containers.Vectors (Positive, Placed_Element);
+
+   Max_Policy_Depth : constant := 100;
+   Max_Policy_Size  : constant := 1024 * 1024;
+   --  SROS2 policies nest 7 deep and take kilobytes. The XML reader takes
+   --  time quadratic in the depth (100,000 levels: minutes) and overflows
+   --  its stack on a name of megabytes.
+
+   Too_Deep : exception;
+
+   type Locating_Reader is new DOM.Readers.Tree_Reader with record
+      Places  : Placed_Elements.Vector;
+      Depth   : Natural := 0;
+      Too_Far : Sax.Locators.Location;
+      --  The start tag that went past Max_Policy_Depth.
+   end record;
+   --  A DOM reader that remembers where each element's start tag ends, so
+   --  that an error about an element names its line and column; Too_Deep
+   --  (at the start tag) when elements nest deeper than Max_Policy_Depth.
+
+   overriding procedure Start_Element
+     (Handler    : in out Locating_Reader;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol;
+      Atts       : Sax.Readers.Sax_Attribute_List);
+
+   overriding procedure End_Element
+     (Handler    : in out Locating_Reader;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol);
+
+   overriding procedure Start_Element
+     (Handler    : in out Locating_Reader;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol;
+      Atts       : Sax.Readers.Sax_Attribute_List) is
+   begin
+      Handler.Depth := Handler.Depth + 1;
+      if Handler.Depth > Max_Policy_Depth then
+         Handler.Too_Far := Handler.Current_Location;
+         raise Too_Deep;
+      end if;
+      DOM.Readers.Tree_Reader (Handler).Start_Element (NS, Local_Name, Atts);
+      Handler.Places.Append (Placed_Element'(Handler.Current_Node, Handler.Current_Location));
+   end Start_Element;
+
+   overriding procedure End_Element
+     (Handler    : in out Locating_Reader;
+      NS         : Sax.Utils.XML_NS;
+      Local_Name : Sax.Symbols.Symbol) is
+   begin
+      DOM.Readers.Tree_Reader (Handler).End_Element (NS, Local_Name);
+      Handler.Depth := Handler.Depth - 1;
+   end End_Element;
+
+   function Image (N : Natural) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
+   function Place_Of (Reader : Locating_Reader; Element : DOM.Core.Node) return String is
+      --  "LINE:COLUMN" where Element's start tag ends.
+   begin
+      for P of Reader.Places loop
+         if P.Element = Element then
+            return Image (P.Place.Line) & ":" & Image (P.Place.Column);
+         end if;
+      end loop;
+      return "1:1";
+   end Place_Of;
+
    type Rule_Vector is array (Positive range <>) of Keystores.Topic_Rule;
 
    function Policy_Rules (File, Enclave : String) return Keystores.Topic_Rules is
       Input  : Input_Sources.File.File_Input;
-      Reader : DOM.Readers.Tree_Reader;
+      Reader : Locating_Reader;
       Doc    : DOM.Core.Document;
       Rules  : Rule_Vector (1 .. 10_000);
       Count  : Natural := 0;
       Found  : Boolean := False;
 
-      procedure Fail (Why : String) is
+      procedure Fail (Why : String) with No_Return is
       begin
          raise Command_Error with File & ": " & Why;
+      end Fail;
+
+      procedure Fail (Element : DOM.Core.Node; Why : String) with No_Return is
+      begin
+         raise Command_Error with File & ":" & Place_Of (Reader, Element) & ": " & Why;
       end Fail;
 
       procedure Add (Allow : Boolean; Kind : Keystores.Access_Kind; Topic : String) is
@@ -99,7 +185,9 @@ procedure Security_Command (Args : Arguments) is
          return Ada.Strings.Fixed.Trim (To_String (Result), Ada.Strings.Both);
       end Text;
 
-      function Qualified (Name, Namespace, Node_Name : String) return String is
+      function Qualified (Name, Namespace, Node_Name : String) return String
+        with Pre => Name /= ""
+      is
          --  SROS2's resolution: absolute names as they are, "~" the node's
          --  own namespace, others relative to the profile's namespace.
          NS : constant String :=
@@ -108,16 +196,10 @@ procedure Security_Command (Args : Arguments) is
                Namespace (Namespace'First .. Namespace'Last - 1)
             else Namespace);
       begin
-         if Name = "" then
-            Fail ("an empty name in the profile of node " & Node_Name);
-         elsif Name (Name'First) = '/' then
-            return Name;
-         elsif Name (Name'First) = '~' then
-            return NS & "/" & Node_Name & Name (Name'First + 1 .. Name'Last);
-         else
-            return NS & "/" & Name;
-         end if;
-         return "";
+         return (if Name (Name'First) = '/' then Name
+                 elsif Name (Name'First) = '~'
+                 then NS & "/" & Node_Name & Name (Name'First + 1 .. Name'Last)
+                 else NS & "/" & Name);
       end Qualified;
 
       function Without_Slash (Name : String) return String is
@@ -137,9 +219,11 @@ procedure Security_Command (Args : Arguments) is
          Node : constant String := Attribute (Profile, "node");
 
          procedure Each
-           (Group, Item : String;
+           (Group, Item, Mode_1, Mode_2 : String;
             Action : not null access procedure (Name : String; Mode, Value : String))
          is
+            --  Every <Group Mode_1|Mode_2="ALLOW|DENY"> of the profile and
+            --  every <Item> in it.
             Groups : constant DOM.Core.Node_List := Elements (Profile, Group);
          begin
             for G in 0 .. DOM.Core.Nodes.Length (Groups) - 1 loop
@@ -155,13 +239,23 @@ procedure Security_Command (Args : Arguments) is
                         Value : constant String :=
                           DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
                      begin
-                        if Value not in "ALLOW" | "DENY" then
-                           Fail ("<" & Group & " " & Mode & "=""" & Value
+                        if Mode /= Mode_1 and then Mode /= Mode_2 then
+                           Fail (E, "<" & Group & " " & Mode & "=...>: expected " & Mode_1
+                                 & " or " & Mode_2);
+                        elsif Value not in "ALLOW" | "DENY" then
+                           Fail (E, "<" & Group & " " & Mode & "=""" & Value
                                  & """>: expected ALLOW or DENY");
                         end if;
                         for I in 0 .. DOM.Core.Nodes.Length (Items) - 1 loop
-                           Action (Qualified (Text (DOM.Core.Nodes.Item (Items, I)), NS, Node),
-                                   Mode, Value);
+                           declare
+                              Name : constant String := Text (DOM.Core.Nodes.Item (Items, I));
+                           begin
+                              if Name = "" then
+                                 Fail (DOM.Core.Nodes.Item (Items, I),
+                                       "an empty name in the profile of node " & Node);
+                              end if;
+                              Action (Qualified (Name, NS, Node), Mode, Value);
+                           end;
                         end loop;
                      end;
                   end loop;
@@ -171,9 +265,6 @@ procedure Security_Command (Args : Arguments) is
 
          procedure Topic (Name, Mode, Value : String) is
          begin
-            if Mode not in "publish" | "subscribe" then
-               Fail ("<topics " & Mode & "=...>: expected publish or subscribe");
-            end if;
             Add (Value = "ALLOW",
                  (if Mode = "publish" then Keystores.Publish else Keystores.Subscribe),
                  "rt/" & Without_Slash (Name));
@@ -181,18 +272,12 @@ procedure Security_Command (Args : Arguments) is
 
          procedure Service (Name, Mode, Value : String) is
          begin
-            if Mode not in "reply" | "request" then
-               Fail ("<services " & Mode & "=...>: expected reply or request");
-            end if;
             Service_Rules (Name, Value = "ALLOW", Server => Mode = "reply");
          end Service;
 
          procedure Action (Name, Mode, Value : String) is
             Server : constant Boolean := Mode = "execute";
          begin
-            if Mode not in "call" | "execute" then
-               Fail ("<actions " & Mode & "=...>: expected call or execute");
-            end if;
             for S in Action_Service loop
                Service_Rules (Name & "/_action/" & Lower (Action_Service'Image (S)),
                               Value = "ALLOW", Server);
@@ -204,11 +289,12 @@ procedure Security_Command (Args : Arguments) is
          end Action;
       begin
          if DOM.Core.Nodes.Length (Elements (Profile, "xi:include")) > 0 then
-            Fail ("xi:include is not supported: put the included rules in the profile");
+            Fail (DOM.Core.Nodes.Item (Elements (Profile, "xi:include"), 0),
+                  "xi:include is not supported: put the included rules in the profile");
          end if;
-         Each ("topics", "topic", Topic'Access);
-         Each ("services", "service", Service'Access);
-         Each ("actions", "action", Action'Access);
+         Each ("topics", "topic", "publish", "subscribe", Topic'Access);
+         Each ("services", "service", "reply", "request", Service'Access);
+         Each ("actions", "action", "call", "execute", Action'Access);
       end Profile_Rules;
 
    begin
@@ -218,6 +304,11 @@ procedure Security_Command (Args : Arguments) is
          when others =>
             raise Command_Error with File & ": cannot open";
       end;
+      if Ada.Directories.Size (File) > Max_Policy_Size then
+         Input_Sources.File.Close (Input);
+         Fail (Ada.Strings.Fixed.Trim (Ada.Directories.Size (File)'Image, Ada.Strings.Left)
+               & " bytes: a policy file may not exceed" & Max_Policy_Size'Image & " bytes");
+      end if;
       Reader.Set_Feature (Sax.Readers.Namespace_Feature, False);
       begin
          Reader.Parse (Input);
@@ -235,7 +326,23 @@ procedure Security_Command (Args : Arguments) is
                  (if Located
                   then File & ":" & Message (Message'First + File'Length + 1 .. Message'Last)
                     & " (malformed XML)"
+                  elsif Message'Length > 0 and then Message (Message'First) = ':'
+                  then File & Message & " (malformed XML)"  --  ":1:0: No root element"
                   else File & ": malformed XML: " & Message);
+            end;
+         when Too_Deep =>
+            Input_Sources.File.Close (Input);
+            raise Command_Error with File & ":" & Image (Reader.Too_Far.Line) & ":"
+              & Image (Reader.Too_Far.Column) & ": elements nested deeper than"
+              & Max_Policy_Depth'Image;
+         when E : Unicode.CES.Invalid_Encoding =>
+            Input_Sources.File.Close (Input);
+            declare
+               Place : constant Sax.Locators.Location := Reader.Current_Location;
+            begin
+               raise Command_Error with File & ":" & Image (Place.Line) & ":"
+                 & Image (Place.Column) & ": " & Ada.Exceptions.Exception_Message (E)
+                 & " (malformed XML)";
             end;
       end;
       Input_Sources.File.Close (Input);
@@ -245,7 +352,7 @@ procedure Security_Command (Args : Arguments) is
          Enclaves : constant DOM.Core.Node_List := Elements (Root, "enclave");
       begin
          if DOM.Core.Nodes.Node_Name (Root) /= "policy" then
-            Fail ("the root element is <" & DOM.Core.Nodes.Node_Name (Root)
+            Fail (Root, "the root element is <" & DOM.Core.Nodes.Node_Name (Root)
                   & ">, expected <policy>");
          end if;
          for I in 0 .. DOM.Core.Nodes.Length (Enclaves) - 1 loop

@@ -86,6 +86,13 @@ def take_until(rd, count, timeout=10.0):
     return got
 
 
+ECHO_UNTIL_STOPPED = 0
+"""The COUNT of `pubsub_peer echo` and `typed_peer echo` (Echo_Peers.Until_Stopped)
+that has the peer echo until it is stopped: a test that needs echoes back feeds
+it until they came (those sent before the peer's writer and the test's reader
+have matched each other are lost), then stops it."""
+
+
 def start(program, *args):
     exe = BIN / program
     assert exe.exists(), f"{exe} not built (gprbuild -P build_all.gpr)"

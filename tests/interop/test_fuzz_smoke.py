@@ -12,8 +12,8 @@ import sys
 import time
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
-READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,png,definition,params,mcap,"
-           "mcap-recover,cdr,typed")
+READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,png,definition,params,policy,"
+           "mcap,mcap-recover,cdr,typed")
 
 
 def test_fuzz_smoke():

@@ -119,3 +119,28 @@ def test_schedules():
     assert p.returncode != 0 and "is not automatic, geometric, cyclic, reheat or hybrid" in p.stderr
     p = run(str(tsplib / "eil51.tsp"), "--geometric-share", "1")
     assert p.returncode != 0 and "--geometric-share: '1' is not a number in 0.01 .. 0.99" in p.stderr
+
+
+def test_excess_term_options():
+    """MinMax's excess term: --excess-reheats (the term kept in the hybrid
+    schedule's reheats) changes nothing under the geometric schedule and
+    gives a valid plan under the hybrid one; values out of range for the
+    term's weight and band are usage errors."""
+    eil51 = str(REPO / "share" / "tsplib" / "eil51.tsp")
+    common = ["--robots", "3", "--objective", "minmax", "--time", "0", "--iterations",
+              "200000", "--quiet", "--json", "-"]
+    plans = {}
+    for schedule in ["geometric", "hybrid"]:
+        for extra in [[], ["--excess-reheats"]]:
+            p = run(eil51, *common, "--schedule", schedule, *extra)
+            assert p.returncode == 0, (schedule, extra, p.stderr)
+            d = json.loads(p.stdout)
+            assert d["valid"], (schedule, extra)
+            plans[schedule, bool(extra)] = [t["tour"] for t in d["tours"]]
+    assert plans["geometric", False] == plans["geometric", True]
+    for option, value, message in [("--excess-band", "1.5", "0.00 .. 1.00"),
+                                   ("--excess-band", "half", "0.00 .. 1.00"),
+                                   ("--excess", "11", "0.00 .. 10.00")]:
+        p = run(eil51, option, value)
+        assert p.returncode != 0
+        assert "%s: '%s' is not a number in %s" % (option, value, message) in p.stderr, p.stderr

@@ -69,6 +69,53 @@ def stop(proc):
     return proc.communicate()[0]
 
 
+DENY = 'publish="DENY"'
+
+
+def line_of(text, part):
+    return text[:text.index(part)].count("\n") + 1
+
+
+BAD_POLICIES = [
+    # (policy text, substrings of the error) -- each names the file, line
+    # and column (found by the fuzzer's policy reader: the XML encoding was
+    # an internal error, the others named no line).
+    ('<?xml version="1.0" encoding="UTF-0"?>\n<policy/>\n',
+     ["bad.xml:1:", "Invalid encoding: UTF-0 (malformed XML)"]),
+    ("", ["bad.xml:1:0: No root element specified (malformed XML)"]),
+    (POLICY.replace("<policy", "<polcy").replace("</policy>", "</polcy>"),
+     [f"bad.xml:{line_of(POLICY, '<policy')}:",
+      "the root element is <polcy>, expected <policy>"]),
+    (POLICY.replace('publish="DENY"', 'publish="MAYBE"'),
+     [f"bad.xml:{line_of(POLICY, DENY)}:",
+      '<topics publish="MAYBE">: expected ALLOW or DENY']),
+    (POLICY.replace('<topics publish="DENY"><topic>chatter</topic></topics>',
+                    '<topics publsh="DENY"></topics>'),
+     [f"bad.xml:{line_of(POLICY, DENY)}:",
+      "<topics publsh=...>: expected publish or subscribe"]),
+    (POLICY.replace("<topic>chatter</topic>", "<topic> </topic>"),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "an empty name in the profile of node talker"]),
+    # 100,000 nested elements took minutes (the XML reader is quadratic in
+    # the depth); a 4 MB element name overflowed its stack (internal error).
+    (POLICY.replace("<profiles>", "<profiles>" + "<a>" * 100000 + "</a>" * 100000),
+     [f"bad.xml:{line_of(POLICY, '<profiles>')}:", "elements nested deeper than 100"]),
+    (POLICY.replace("<profiles>", "<profiles><" + "x" * 4000000 + "/>"),
+     ["bad.xml: 4000", "bytes: a policy file may not exceed 1048576 bytes"]),
+]
+
+
+@pytest.mark.parametrize("text,expected", BAD_POLICIES, ids=range(len(BAD_POLICIES)))
+def test_bad_policies_name_file_line_and_column(keystore, tmp_path, text, expected):
+    bad = tmp_path / "bad.xml"
+    bad.write_text(text)
+    rc, out, err = rclada("security", "create_permission", keystore, "/no_chatter", bad)
+    assert rc == 1, err
+    for e in expected:
+        assert e in err, err
+    assert "internal error" not in err, err
+
+
 def test_keystore_layout_and_list(keystore):
     rc, out, err = rclada("security", "list_enclaves", keystore)
     assert rc == 0, err

@@ -81,6 +81,8 @@ package body Sancta.Commands.Plan is
       Put_Line ("                       longest tour's excess (default 1, 0 = none)");
       Put_Line ("  --excess-band F      minmax: that floor, as a share of the best makespan");
       Put_Line ("                       below it (default 0.04)");
+      Put_Line ("  --excess-reheats     minmax, hybrid schedule: that term also in the");
+      Put_Line ("                       reheats (default: they anneal on the makespan)");
       Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
@@ -613,6 +615,8 @@ package body Sancta.Commands.Plan is
                Opts.Excess_Weight := Number_In (A, 0.0, 10.0);
             elsif A = "--excess-band" then
                Opts.Excess_Band := Number_In (A, 0.0, 1.0);
+            elsif A = "--excess-reheats" then
+               Opts.Excess_In_Reheats := True;
             elsif A = "--balance" then
                declare
                   S : constant String := Value_Of (A);

@@ -925,7 +925,8 @@ package body Sancta.Allocation.Annealers.Searches is
 
    --  Hybrid: Geometric over the first Geometric_Share of the budget, then
    --  Reheat from the best so far, starting at T1 (back to T0 only after
-   --  the reheat schedule's long stretch without a new best).
+   --  the reheat schedule's long stretch without a new best), without the
+   --  excess term unless Opts.Excess_In_Reheats.
    procedure Hybrid_Step (This : in out Search; P : Problem; X : Long_Float) is
       Share : constant Long_Float := This.Opts.Geometric_Share;
    begin
@@ -951,6 +952,12 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
       if not This.Reheating then
          This.Reheating := True;
+         if This.Excess_Floor and then not This.Opts.Excess_In_Reheats then
+            --  The reheats anneal on the makespan itself (Current is
+            --  recomputed below).
+            This.Excess_Floor := False;
+            This.Guide.Square := 0.0;
+         end if;
          if not This.Best_Saved then
             Save_Best (This);
          end if;

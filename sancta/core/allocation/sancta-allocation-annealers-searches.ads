@@ -52,7 +52,8 @@ private package Sancta.Allocation.Annealers.Searches is
       Excess_Floor    : Boolean := False;
       Excess_Makespan : Cost := 0;
       --  Guide has the squared-excess term (Options.Excess_Weight), its
-      --  floor set from this best makespan.
+      --  floor set from this best makespan (until the hybrid schedule's
+      --  reheats, unless Options.Excess_In_Reheats).
       Moves, Accepted, Last_Best_Move, Switches : Long_Long_Integer := 0;
       Ruin_Evaluations : Long_Long_Integer := 0;
       --  Move evaluations spent in ruin and recreate (best insertions).

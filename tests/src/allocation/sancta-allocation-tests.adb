@@ -597,9 +597,11 @@ package body Sancta.Allocation.Tests is
    --  makespan (Options.Excess_Weight), under the expensive check after
    --  every move (the incremental sum of squared excesses recomputed, also
    --  after each new best moves the floor), on random problems of every
-   --  variant: valid, the reported best is the allocation's makespan, the
-   --  same for a seed, another search than without the term; a band
-   --  outside 0 .. 1 is refused.
+   --  variant, with the hybrid schedule: valid, the reported best is the
+   --  allocation's makespan, the same for a seed, another search than
+   --  without the term, and than with the term kept in the reheats
+   --  (Excess_In_Reheats; valid too), which changes nothing under the
+   --  geometric schedule; a band outside 0 .. 1 is refused.
    procedure Excess_Term_Checked (Unused : in out Fixture) is
       use Annealers;
       Variants : constant array (1 .. 6) of Variant :=
@@ -610,7 +612,7 @@ package body Sancta.Allocation.Tests is
          (Own_Factor => True, Own_Matrix => True, Own_Callback => True, others => <>),
          (Plan_Trees => True, others => <>)];
       Seed : Interfaces.Unsigned_64 := 4_500;
-      Differs : Natural := 0;
+      Differs, Reheats_Differ : Natural := 0;
    begin
       for V of Variants loop
          Seed := Seed + 1;
@@ -620,13 +622,26 @@ package body Sancta.Allocation.Tests is
             S, T : Progress;
             O : Options :=
               (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 20_000,
-               Check => True, Excess_Weight => 1.0, Excess_Band => 0.03, others => <>);
+               Schedule => Hybrid, Check => True, Excess_Weight => 1.0, Excess_Band => 0.03,
+               others => <>);
          begin
             Solve (P.all, O, A, S);
             Assert (Validate (P.all, A) = "", Validate (P.all, A));
             Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6, "reported best");
             Solve (P.all, O, B, T);
             Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            O.Excess_In_Reheats := True;
+            Solve (P.all, O, B, T);
+            Assert (Validate (P.all, B) = "", Validate (P.all, B));
+            Assert (abs (Evaluate (P.all, B, Min_Max).Value - T.Best) < 1.0E-6, "in reheats");
+            if A /= B then
+               Reheats_Differ := Reheats_Differ + 1;
+            end if;
+            O.Schedule := Geometric;
+            Solve (P.all, O, A, S);
+            O.Excess_In_Reheats := False;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "Excess_In_Reheats acted without reheats");
             O.Excess_Weight := 0.0;
             Solve (P.all, O, B, T);
             if A /= B then
@@ -635,6 +650,8 @@ package body Sancta.Allocation.Tests is
          end;
       end loop;
       Assert (Differs >= 5, "the excess term changed the search on" & Differs'Image & " of 6");
+      Assert (Reheats_Differ >= 2,
+              "the term in the reheats changed the search on" & Reheats_Differ'Image & " of 6");
       declare
          P : constant Problem_Access := Random_Problem (10, 2, (others => <>), 1);
          A : Assignment (P.Robots, P.Tasks);
