@@ -256,8 +256,9 @@ def mcap_must_refuse(seed, data, how):
 
 
 def make_mcap_seeds(folder):
-    """Four rosbag2-profile MCAP files written by the `mcap` package:
-    uncompressed chunks with and without CRCs, lz4 chunks, no chunks."""
+    """Five rosbag2-profile MCAP files written by the `mcap` package:
+    uncompressed chunks with and without CRCs, lz4 and zstd chunks, no
+    chunks."""
     from mcap.writer import Writer, CompressionType
     seeds = []
     schema_text = b"string data\n"
@@ -274,6 +275,7 @@ def make_mcap_seeds(folder):
     for label, comp, chunked, crcs in (("plain", CompressionType.NONE, True, True),
                                        ("nocrc", CompressionType.NONE, True, False),
                                        ("lz4", CompressionType.LZ4, True, False),
+                                       ("zstd", CompressionType.ZSTD, True, False),
                                        ("flat", CompressionType.NONE, False, False)):
         path = folder / f"seed-{label}.mcap"
         with open(path, "wb") as f:
