@@ -134,6 +134,54 @@ procedure Security_Command (Args : Arguments) is
       return "1:1";
    end Place_Of;
 
+   function Schema_Children (Element : String) return String is
+     (if Element = "policy" then "enclaves"
+      elsif Element = "enclaves" then "enclave"
+      elsif Element = "enclave" then "profiles"
+      elsif Element = "profiles" then "profile metadata"
+      elsif Element = "profile" then "topics services actions"
+      elsif Element = "topics" then "topic"
+      elsif Element = "services" then "service"
+      elsif Element = "actions" then "action"
+      else "");
+   --  The elements SROS2's policy schema allows in Element, separated by
+   --  spaces ("" for the names topic, service and action: text only).
+
+   function Schema_Attributes (Element : String) return String is
+     (if Element = "policy" then "version"
+      elsif Element = "enclave" then "path"
+      elsif Element = "profiles" then "type"
+      elsif Element = "profile" then "ns node xml:base"
+      elsif Element = "topics" then "publish subscribe xml:base"
+      elsif Element = "services" then "reply request xml:base"
+      elsif Element = "actions" then "call execute xml:base"
+      else "");
+   --  The attributes SROS2's policy schema allows on Element.
+
+   function Listed (Word, List : String) return Boolean is
+     (Ada.Strings.Fixed.Index (" " & List & " ", " " & Word & " ") > 0);
+
+   function Alternatives (List : String) return String is
+      --  Example: "a b c" -> "a, b or c"; "" -> "none".
+      Space : constant Natural := Ada.Strings.Fixed.Index (List, " ");
+      Rest  : constant String := (if Space = 0 then "" else List (Space + 1 .. List'Last));
+   begin
+      if List = "" then
+         return "none";
+      elsif Space = 0 then
+         return List;
+      elsif Ada.Strings.Fixed.Index (Rest, " ") = 0 then
+         return List (List'First .. Space - 1) & " or " & Rest;
+      end if;
+      return List (List'First .. Space - 1) & ", " & Alternatives (Rest);
+   end Alternatives;
+
+   function Is_Namespace_Declaration (Attribute : String) return Boolean is
+     (Attribute = "xmlns"
+      or else (Attribute'Length > 6
+               and then Attribute (Attribute'First .. Attribute'First + 5) = "xmlns:"));
+   --  xmlns="..." and xmlns:PREFIX="...": no attributes to a schema.
+
    type Rule_Vector is array (Positive range <>) of Keystores.Topic_Rule;
 
    function Policy_Rules (File, Enclave : String) return Keystores.Topic_Rules is
@@ -214,6 +262,49 @@ procedure Security_Command (Args : Arguments) is
          Add (Allow, (if Server then Publish else Subscribe), Reply);
       end Service_Rules;
 
+      procedure Check_Schema (Element : DOM.Core.Node) is
+         --  Refuses an element or attribute that SROS2's policy schema
+         --  (policy.xsd, format 0.2.0) does not define where it stands,
+         --  as SROS2 does: a misspelt <topcis> would otherwise give no rule.
+         --  Example: <topics><topicz>a</topicz></topics> ->
+         --  "FILE:L:C: unknown element 'topicz' in <topics> (expected topic)"
+         Name     : constant String := DOM.Core.Nodes.Node_Name (Element);
+         Children : constant String := Schema_Children (Name);
+         Allowed  : constant String := Schema_Attributes (Name);
+         Attrs    : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (Element);
+         Nodes    : constant DOM.Core.Node_List := DOM.Core.Nodes.Child_Nodes (Element);
+      begin
+         for A in 0 .. DOM.Core.Nodes.Length (Attrs) - 1 loop
+            declare
+               Attr : constant String := DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
+            begin
+               if not Listed (Attr, Allowed) and then not Is_Namespace_Declaration (Attr) then
+                  Fail (Element, "unknown attribute '" & Attr & "' in <" & Name & "> (expected "
+                        & Alternatives (Allowed) & ")");
+               end if;
+            end;
+         end loop;
+         if Name = "metadata" then
+            return;  --  Any content (xs:anyType).
+         end if;
+         for I in 0 .. DOM.Core.Nodes.Length (Nodes) - 1 loop
+            declare
+               Child : constant DOM.Core.Node := DOM.Core.Nodes.Item (Nodes, I);
+            begin
+               if DOM.Core.Nodes.Node_Type (Child) = DOM.Core.Element_Node then
+                  if DOM.Core.Nodes.Node_Name (Child) = "xi:include" then
+                     Fail (Child, "xi:include is not supported: put the included rules in the"
+                           & " profile");
+                  elsif not Listed (DOM.Core.Nodes.Node_Name (Child), Children) then
+                     Fail (Child, "unknown element '" & DOM.Core.Nodes.Node_Name (Child)
+                           & "' in <" & Name & "> (expected " & Alternatives (Children) & ")");
+                  end if;
+                  Check_Schema (Child);
+               end if;
+            end;
+         end loop;
+      end Check_Schema;
+
       procedure Profile_Rules (Profile : DOM.Core.Node) is
          NS   : constant String := Attribute (Profile, "ns");
          Node : constant String := Attribute (Profile, "node");
@@ -239,24 +330,26 @@ procedure Security_Command (Args : Arguments) is
                         Value : constant String :=
                           DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
                      begin
-                        if Mode /= Mode_1 and then Mode /= Mode_2 then
-                           Fail (E, "<" & Group & " " & Mode & "=...>: expected " & Mode_1
-                                 & " or " & Mode_2);
-                        elsif Value not in "ALLOW" | "DENY" then
-                           Fail (E, "<" & Group & " " & Mode & "=""" & Value
-                                 & """>: expected ALLOW or DENY");
+                        if Mode = Mode_1 or else Mode = Mode_2 then
+                           --  (Check_Schema refused other names but xml:base and
+                           --  xmlns, which give no rule.)
+                           if Value not in "ALLOW" | "DENY" then
+                              Fail (E, "<" & Group & " " & Mode & "=""" & Value
+                                    & """>: expected ALLOW or DENY");
+                           end if;
+                           for I in 0 .. DOM.Core.Nodes.Length (Items) - 1 loop
+                              declare
+                                 Name : constant String :=
+                                   Text (DOM.Core.Nodes.Item (Items, I));
+                              begin
+                                 if Name = "" then
+                                    Fail (DOM.Core.Nodes.Item (Items, I),
+                                          "an empty name in the profile of node " & Node);
+                                 end if;
+                                 Action (Qualified (Name, NS, Node), Mode, Value);
+                              end;
+                           end loop;
                         end if;
-                        for I in 0 .. DOM.Core.Nodes.Length (Items) - 1 loop
-                           declare
-                              Name : constant String := Text (DOM.Core.Nodes.Item (Items, I));
-                           begin
-                              if Name = "" then
-                                 Fail (DOM.Core.Nodes.Item (Items, I),
-                                       "an empty name in the profile of node " & Node);
-                              end if;
-                              Action (Qualified (Name, NS, Node), Mode, Value);
-                           end;
-                        end loop;
                      end;
                   end loop;
                end;
@@ -288,10 +381,6 @@ procedure Security_Command (Args : Arguments) is
             end loop;
          end Action;
       begin
-         if DOM.Core.Nodes.Length (Elements (Profile, "xi:include")) > 0 then
-            Fail (DOM.Core.Nodes.Item (Elements (Profile, "xi:include"), 0),
-                  "xi:include is not supported: put the included rules in the profile");
-         end if;
          Each ("topics", "topic", "publish", "subscribe", Topic'Access);
          Each ("services", "service", "reply", "request", Service'Access);
          Each ("actions", "action", "call", "execute", Action'Access);
@@ -355,6 +444,7 @@ procedure Security_Command (Args : Arguments) is
             Fail (Root, "the root element is <" & DOM.Core.Nodes.Node_Name (Root)
                   & ">, expected <policy>");
          end if;
+         Check_Schema (Root);
          for I in 0 .. DOM.Core.Nodes.Length (Enclaves) - 1 loop
             declare
                E        : constant DOM.Core.Node := DOM.Core.Nodes.Item (Enclaves, I);

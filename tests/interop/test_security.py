@@ -92,10 +92,30 @@ BAD_POLICIES = [
     (POLICY.replace('<topics publish="DENY"><topic>chatter</topic></topics>',
                     '<topics publsh="DENY"></topics>'),
      [f"bad.xml:{line_of(POLICY, DENY)}:",
-      "<topics publsh=...>: expected publish or subscribe"]),
+      "unknown attribute 'publsh' in <topics> (expected publish, subscribe or xml:base)"]),
     (POLICY.replace("<topic>chatter</topic>", "<topic> </topic>"),
      [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
       "an empty name in the profile of node talker"]),
+    # Elements and attributes SROS2's policy schema does not define were
+    # ignored silently (a misspelt group gave no rule); SROS2 refuses them.
+    (POLICY.replace("<topic>chatter</topic>", "<topicz>chatter</topicz>"),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "unknown element 'topicz' in <topics> (expected topic)"]),
+    (POLICY.replace("<services ", "<servces ").replace("</services>", "</servces>"),
+     [f"bad.xml:{line_of(POLICY, '<services')}:",
+      "unknown element 'servces' in <profile> (expected topics, services or actions)"]),
+    (POLICY.replace('node="talker"', 'node="talker" nodes="listener"'),
+     [f"bad.xml:{line_of(POLICY, 'node=')}:",
+      "unknown attribute 'nodes' in <profile> (expected ns, node or xml:base)"]),
+    (POLICY.replace("<topic>chatter</topic>", '<topic kind="x">chatter</topic>'),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "unknown attribute 'kind' in <topic> (expected none)"]),
+    # ... in any enclave, not only the one asked for (SROS2 validates the file).
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"><profiles>'
+                    '<profile ns="/" node="n"><actions call="ALLOW"><action>a</action>'
+                    '</actions><acton/></profile></profiles></enclave>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      "unknown element 'acton' in <profile> (expected topics, services or actions)"]),
     # 100,000 nested elements took minutes (the XML reader is quadratic in
     # the depth); a 4 MB element name overflowed its stack (internal error).
     (POLICY.replace("<profiles>", "<profiles>" + "<a>" * 100000 + "</a>" * 100000),
@@ -114,6 +134,25 @@ def test_bad_policies_name_file_line_and_column(keystore, tmp_path, text, expect
     for e in expected:
         assert e in err, err
     assert "internal error" not in err, err
+
+
+def test_policy_with_every_schema_construct_is_accepted(keystore, tmp_path):
+    # What SROS2's policy schema allows besides rules: profiles type, a
+    # <metadata> of any content, xml:base, namespace declarations.
+    text = (POLICY.replace("<policy ", '<policy xmlns:xi="http://www.w3.org/2001/XInclude" ')
+            .replace("<profiles>", '<profiles type="ros">')
+            .replace('node="talker"', 'node="talker" xml:base="."')
+            .replace("</profile>\n", '<actions call="ALLOW" xml:base="."><action>fib</action>'
+                     '</actions></profile>\n<metadata><anything x="1"><topicz/></anything>'
+                     "</metadata>\n"))
+    good = tmp_path / "good.xml"
+    good.write_text(text)
+    copy = tmp_path / "keystore"  # the other tests' keystore stays as it is
+    shutil.copytree(keystore, copy, symlinks=True)
+    rc, out, err = rclada("security", "create_permission", copy, "/no_chatter", good)
+    assert rc == 0, err + text
+    permissions = (copy / "enclaves" / "no_chatter" / "permissions.xml").read_text()
+    assert "rq/fib/_action/send_goalRequest" in permissions, permissions
 
 
 def test_keystore_layout_and_list(keystore):
