@@ -433,31 +433,10 @@ def judge_client(name, resp_type, sent, text, hung, rc, record):
         return record(name, f"signal {-rc}", how, b"", text[-300:])
     if trace_line(text):
         return record(name, "exception", how, b"", trace_line(text))
-    answers = reference([(resp_type, data) for data, _, _ in sent])
-    logged = refusals(REPLY_REFUSAL, text)
-    # The replies of the call (its guid and sequence) up to the first that
-    # decodes: each refused one must be logged. At most: every refused reply
-    # with the client's guid (any sequence: a late reply is decoded, then
-    # dropped) and those whose header cannot be read; never one with
-    # another client's guid.
-    must, first = 0, None
-    for (data, h, guid), a in zip(sent, answers):
-        own = header_of(data) is not None and header_of(data)[0] == guid
-        call = own and header_of(data)[1] == header_of(sent[-1][0])[1]
-        if call and a is None:
-            first = data
-            break
-        must += call
-    may = sum(1 for (data, h, guid), a in zip(sent, answers)
-              if a is not None and (header_of(data) is None or header_of(data)[0] == guid))
-    if any(not located(t) for t in logged):
-        return record(name, "no location", how, b"", " | ".join(logged)[:600])
-    if len(logged) < must:
-        return record(name, "refusal not logged", how, b"",
-                      f"logged {len(logged)}, expected {must}: {text[-400:]}")
-    if len(logged) > may:
-        return record(name, "another client's reply logged", how, b"",
-                      f"logged {len(logged)}, at most {may}: " + " | ".join(logged)[:600])
+    problem, detail, first = reply_verdict(resp_type, sent, refusals(REPLY_REFUSAL, text))
+    if problem:
+        return record(name, problem, how, b"",
+                      f"{detail}: {text[-400:]}" if problem == "refusal not logged" else detail)
     if first is None:
         return record(name, "no answer", how, b"", text[-300:])
     if "AddTwoInts" in resp_type:
@@ -697,13 +676,15 @@ def send_feedback(rng, peer, run, seeds):
                if a is None and data[4:20] == g)
 
 
-def first_answer(service, resp_type, sent, lines):
-    """(verdict, body of the first reply of the call that decodes) for one
-    service's replies and the client's log lines about that service."""
-    if not sent:
-        return None, None
+def reply_verdict(resp_type, sent, logged):
+    """(problem, detail, first reply of the call that decodes) for the
+    replies sent to one client call and the refusals the client logged.
+    The replies of the call (its guid and sequence) up to the first that
+    decodes: each refused one must be logged. At most: every refused reply
+    with the client's guid (any sequence: a late reply is decoded, then
+    dropped) and those whose header cannot be read; never one with another
+    client's guid. problem is None when the log is right."""
     answers = reference([(resp_type, data) for data, _, _ in sent])
-    logged = [t for t in lines if f"{service}: malformed reply dropped" in t]
     must, first = 0, None
     for (data, h, guid), a in zip(sent, answers):
         own = header_of(data) is not None and header_of(data)[0] == guid
@@ -715,12 +696,24 @@ def first_answer(service, resp_type, sent, lines):
     may = sum(1 for (data, h, guid), a in zip(sent, answers)
               if a is not None and (header_of(data) is None or header_of(data)[0] == guid))
     if any(not located(t) for t in logged):
-        return "no location: " + " | ".join(logged)[:600], None
+        return "no location", " | ".join(logged)[:600], None
     if len(logged) < must:
-        return f"{service}: refusal not logged (logged {len(logged)}, expected {must})", None
+        return "refusal not logged", f"logged {len(logged)}, expected {must}", None
     if len(logged) > may:
-        return (f"{service}: another client's reply logged (logged {len(logged)}, at most {may})",
-                None)
+        return ("another client's reply logged",
+                f"logged {len(logged)}, at most {may}: " + " | ".join(logged)[:600], None)
+    return None, "", first
+
+
+def first_answer(service, resp_type, sent, lines):
+    """(verdict, body of the first reply of the call that decodes) for one
+    service's replies and the client's log lines about that service."""
+    if not sent:
+        return None, None
+    logged = [t for t in lines if f"{service}: malformed reply dropped" in t]
+    problem, detail, first = reply_verdict(resp_type, sent, logged)
+    if problem:
+        return f"{service}: {problem} ({detail})", None
     return None, decoded_body(resp_type, first) if first is not None else None
 
 
