@@ -134,29 +134,26 @@ procedure Security_Command (Args : Arguments) is
       return "1:1";
    end Place_Of;
 
-   function Schema_Children (Element : String) return String is
-     (if Element = "policy" then "enclaves"
-      elsif Element = "enclaves" then "enclave"
-      elsif Element = "enclave" then "profiles"
-      elsif Element = "profiles" then "profile metadata"
-      elsif Element = "profile" then "topics services actions"
-      elsif Element = "topics" then "topic"
-      elsif Element = "services" then "service"
-      elsif Element = "actions" then "action"
-      else "");
-   --  The elements SROS2's policy schema allows in Element, separated by
-   --  spaces ("" for the names topic, service and action: text only).
+   type Schema_Rule is record
+      Children, Attributes : Unbounded_String;
+   end record;
+   --  What SROS2's policy schema allows in an element: the names of its
+   --  child elements and of its attributes, separated by spaces.
 
-   function Schema_Attributes (Element : String) return String is
-     (if Element = "policy" then "version"
-      elsif Element = "enclave" then "path"
-      elsif Element = "profiles" then "type"
-      elsif Element = "profile" then "ns node xml:base"
-      elsif Element = "topics" then "publish subscribe xml:base"
-      elsif Element = "services" then "reply request xml:base"
-      elsif Element = "actions" then "call execute xml:base"
-      else "");
-   --  The attributes SROS2's policy schema allows on Element.
+   function "+" (Names : String) return Unbounded_String renames To_Unbounded_String;
+
+   function Schema_Of (Element : String) return Schema_Rule is
+     (if Element = "policy" then (+"enclaves", +"version")
+      elsif Element = "enclaves" then (+"enclave", +"")
+      elsif Element = "enclave" then (+"profiles", +"path")
+      elsif Element = "profiles" then (+"profile metadata", +"type")
+      elsif Element = "profile" then (+"topics services actions", +"ns node xml:base")
+      elsif Element = "topics" then (+"topic", +"publish subscribe xml:base")
+      elsif Element = "services" then (+"service", +"reply request xml:base")
+      elsif Element = "actions" then (+"action", +"call execute xml:base")
+      else (+"", +""));
+   --  Example: Schema_Of ("topics") = (+"topic", +"publish subscribe xml:base");
+   --  the names topic, service and action hold text only: (+"", +"").
 
    function Listed (Word, List : String) return Boolean is
      (Ada.Strings.Fixed.Index (" " & List & " ", " " & Word & " ") > 0);
@@ -269,8 +266,9 @@ procedure Security_Command (Args : Arguments) is
          --  Example: <topics><topicz>a</topicz></topics> ->
          --  "FILE:L:C: unknown element 'topicz' in <topics> (expected topic)"
          Name     : constant String := DOM.Core.Nodes.Node_Name (Element);
-         Children : constant String := Schema_Children (Name);
-         Allowed  : constant String := Schema_Attributes (Name);
+         Rule     : constant Schema_Rule := Schema_Of (Name);
+         Children : constant String := To_String (Rule.Children);
+         Allowed  : constant String := To_String (Rule.Attributes);
          Attrs    : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (Element);
          Nodes    : constant DOM.Core.Node_List := DOM.Core.Nodes.Child_Nodes (Element);
       begin
