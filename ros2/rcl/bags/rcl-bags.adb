@@ -7,6 +7,7 @@ with Ada.Text_IO;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.YAML_Strings;
+with RCL.Names;
 with RCL.YAML;
 
 package body RCL.Bags is
@@ -282,7 +283,8 @@ package body RCL.Bags is
         (Topic_Entry'(Name     => To_Unbounded_String (Name),
                       Type_Name => To_Unbounded_String (Type_Name),
                       QoS_Text => To_Unbounded_String (Offered_QoS),
-                      Count    => 0, Channel => 0));
+                      Count    => 0, Channel => 0, Schema => 0, File => 0,
+                      Channel_At | Schema_At => 0));
       Ensure_Channel (This, This.Topics.Last_Index);
       return This.Topics.Last_Index;
    end Add_Topic;
@@ -496,7 +498,11 @@ package body RCL.Bags is
                                   Type_Name => (if C.Schema = 0 then Null_Unbounded_String
                                                 else This.Current.Find_Schema (C.Schema).Name),
                                   QoS_Text  => To_Unbounded_String (Qos),
-                                  Count     => 0, Channel => 0));
+                                  Count     => 0, Channel => C.Id, Schema => C.Schema,
+                                  File      => Natural (This.Files.Length) + 1,
+                                  Channel_At => This.Current.Channel_Offset (I),
+                                  Schema_At  => (if C.Schema = 0 then 0
+                                                 else This.Current.Schema_Offset (C.Schema))));
                   Found := This.Topics.Last_Index;
                end if;
                This.Topics (Found).Count :=
@@ -527,6 +533,22 @@ package body RCL.Bags is
      (To_String (This.Topics (Topic).QoS_Text));
    function Topic_Message_Count (This : Bag_Reader; Topic : Topic_Index) return Unsigned_64 is
      (This.Topics (Topic).Count);
+   function File_Place (This : Bag_Reader; File : Positive) return String is
+     (RCL.Names.Shortened (To_String (This.Files (File).Name), 80, 57));
+
+   function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String is
+     (File_Place (This, This.Topics (Topic).File) & ": byte "
+      & Image (This.Topics (Topic).Channel_At) & ": channel"
+      & This.Topics (Topic).Channel'Image);
+
+   function Type_Place (This : Bag_Reader; Topic : Topic_Index) return String is
+     (if This.Topics (Topic).Schema = 0 then Topic_Place (This, Topic)
+      else File_Place (This, This.Topics (Topic).File) & ": byte "
+        & Image (This.Topics (Topic).Schema_At) & ": schema" & This.Topics (Topic).Schema'Image);
+
+   function Message_Place (This : Bag_Reader) return String is
+     (File_Place (This, This.Now_File) & ": " & RCL.MCAP.Readers.Place (This.Now_Message));
+
    function Message_Count (This : Bag_Reader) return Unsigned_64 is (This.Total);
    function Start_Time (This : Bag_Reader) return Time_Stamp is (This.First);
    function End_Time (This : Bag_Reader) return Time_Stamp is (This.Last);
@@ -542,8 +564,9 @@ package body RCL.Bags is
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
    is
    begin
-      for F of This.Files loop
-         This.Current.Open (To_String (F.Name), This.Recover);
+      for File in This.Files.First_Index .. This.Files.Last_Index loop
+         This.Now_File := File;
+         This.Current.Open (To_String (This.Files (File).Name), This.Recover);
          declare
             type Topic_Map is array (RCL.MCAP.Channel_Id range <>) of Topic_Index'Base;
             Largest : RCL.MCAP.Channel_Id := 0;
@@ -555,6 +578,14 @@ package body RCL.Bags is
                Map : Topic_Map (0 .. Largest) := [others => 0];
                procedure Each (Msg : RCL.MCAP.Readers.Message; Data : RCL.MCAP.Byte_Array) is
                begin
+                  This.Now_Message := Msg;
+                  if Msg.Channel not in Map'Range or else Map (Msg.Channel) = 0 then
+                     --  Open read every channel record of the file: this one
+                     --  was not there then.
+                     raise RCL.MCAP.Format_Error with Message_Place (This)
+                       & ": message on channel" & Msg.Channel'Image
+                       & ", which the file did not define when opened: corrupt";
+                  end if;
                   Process (Map (Msg.Channel), Msg.Log_Time, Data);
                end Each;
             begin
