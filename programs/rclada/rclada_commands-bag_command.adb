@@ -340,6 +340,10 @@ procedure Bag_Command (Args : Arguments) is
                   if Type_Problem (Kind) /= "" then
                      raise Command_Error with Reader.Type_Place (T) & ": topic '"
                        & RCL.Names.Shortened (Name) & "': " & Type_Problem (Kind);
+                  elsif RCL.Bags.Offered_QoS_Problem (Reader.Topic_QoS (T)) /= "" then
+                     raise Command_Error with Reader.Topic_Place (T)
+                       & ": offered_qos_profiles: "
+                       & RCL.Bags.Offered_QoS_Problem (Reader.Topic_QoS (T));
                   end if;
                   begin
                      Pubs (T) := new RCL.Publishers.Publisher'

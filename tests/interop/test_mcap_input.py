@@ -8,8 +8,11 @@ offsets are checked against the file's bytes. Files written with the Python
 `mcap` package; every participant on loopback."""
 import re
 import subprocess
+import time
 
 import pytest
+from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication
+from cyclonedds.qos import Policy
 from mcap.writer import CompressionType, Writer
 
 import pubsub_support as ps
@@ -28,19 +31,23 @@ def play(path, *extra):
 
 
 def write(path, topic="/fine", type_name="std_msgs/msg/String", payload=CDR_HI,
-          schema=True, compression=CompressionType.NONE, chunked=True, **options):
+          schema=True, compression=CompressionType.NONE, chunked=True, qos=None, spacing=1,
+          **options):
     """A ros2-profile MCAP: channel 1 /chatter (valid), channel 2 `topic`
-    of `type_name` (schema 2, or none), three messages on each."""
+    of `type_name` (schema 2, or none; offered_qos_profiles qos when given),
+    three messages on each, `spacing` ns apart."""
     with open(path, "wb") as f:
         w = Writer(f, compression=compression, use_chunking=chunked, **options)
         w.start(profile="ros2", library="test")
         good = w.register_schema("std_msgs/msg/String", "ros2msg", b"string data\n")
         other = w.register_schema(type_name, "ros2msg", b"string data\n") if schema else 0
         c1 = w.register_channel("/chatter", "cdr", good)
-        c2 = w.register_channel(topic, "cdr", other)
+        c2 = w.register_channel(topic, "cdr", other,
+                                {} if qos is None else {"offered_qos_profiles": qos})
         for i in range(3):
-            w.add_message(c1, log_time=1_000_000_000 + i, data=CDR_HI, publish_time=0)
-            w.add_message(c2, log_time=1_000_000_000 + i, data=payload, publish_time=0)
+            t = 1_000_000_000 + i * spacing
+            w.add_message(c1, log_time=t, data=CDR_HI, publish_time=0)
+            w.add_message(c2, log_time=t, data=payload, publish_time=0)
         w.finish()
     return path
 
@@ -147,3 +154,54 @@ def test_summary_without_statistics_or_channels(tmp_path, options):
     assert re.search(r"Topic: /fine +\| Type: std_msgs/msg/String \| Count: 3 ", r.stdout), r.stdout
     r = play(path)
     assert r.returncode == 0 and "Played 6 messages" in r.stdout, r.stdout + r.stderr
+
+
+def jazzy_qos(reliability, durability):
+    """offered_qos_profiles as rosbag2 writes it from metadata version 9
+    (Jazzy): the policies by name."""
+    return ("- history: keep_last\n  depth: 1\n  reliability: " + reliability
+            + "\n  durability: " + durability + "\n  deadline:\n    sec: 9223372036\n"
+            "    nsec: 854775807\n  lifespan:\n    sec: 9223372036\n    nsec: 854775807\n"
+            "  liveliness: automatic\n  liveliness_lease_duration:\n    sec: 9223372036\n"
+            "    nsec: 854775807\n  avoid_ros_namespace_conventions: false\n")
+
+
+@pytest.mark.parametrize("reliability,durability,expected", [
+    ("best_effort", "volatile", ("BestEffort", Policy.Durability.Volatile)),
+    ("reliable", "transient_local", ("Reliable", Policy.Durability.TransientLocal))])
+def test_jazzy_qos_names_are_understood(tmp_path, reliability, durability, expected):
+    # Was: only Humble's numbers were read, a latched topic of a Jazzy bag
+    # was played volatile (late subscribers missed it), best effort reliable.
+    topic = f"/jazzy_{reliability}"
+    path = write(tmp_path / "jazzy.mcap", topic=topic, qos=jazzy_qos(reliability, durability),
+                 spacing=1_000_000_000)
+    dp = ps.participant()
+    pubs = BuiltinDataReader(dp, BuiltinTopicDcpsPublication)
+    p = ps.start("rclada", "bag", "play", path, "--delay", "0.5")
+    seen = None
+    deadline = time.monotonic() + 15
+    while seen is None and time.monotonic() < deadline:
+        seen = next((w for w in pubs.take(N=100) if w.topic_name == "rt" + topic), None)
+        time.sleep(0.1)
+    out = ps.finish(p, 30)
+    assert seen is not None, out
+    reliable = isinstance(seen.qos[Policy.Reliability], Policy.Reliability.Reliable)
+    assert ("Reliable" if reliable else "BestEffort", seen.qos[Policy.Durability]) == expected
+    assert "Played 6 messages" in out, out
+
+
+@pytest.mark.parametrize("qos,reason", [
+    (jazzy_qos("reliable", "latched"), "profile 1: durability 'latched' is no durability"),
+    (jazzy_qos("sometimes", "volatile"), "profile 1: reliability 'sometimes' is no reliability"),
+    ("history: 1\ndepth: 10\n", "expected a sequence of QoS profiles"),
+    ("- history: 1\n  depth: ten\n", "profile 1: depth 'ten' is no number of messages"),
+    ("- [1, 2\n", "offered_qos_profiles")],
+    ids=["durability", "reliability", "no sequence", "depth", "yaml"])
+def test_offered_qos_not_understood_is_refused_with_its_place(tmp_path, qos, reason):
+    # Was: played with the default QoS, silently.
+    path = write(tmp_path / "qos.mcap", qos=qos)
+    r = play(path)
+    assert r.returncode == 1, r.stdout + r.stderr
+    offset = offset_of(r.stderr, path, "channel 2: offered_qos_profiles: ")
+    assert record_content_at(path.read_bytes(), offset, OP_CHANNEL, 2), r.stderr
+    assert reason in r.stderr, r.stderr

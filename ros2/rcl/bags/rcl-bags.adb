@@ -1,6 +1,7 @@
 with Ada.Calendar.Formatting;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Directories;
+with Ada.Exceptions;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
@@ -145,37 +146,82 @@ package body RCL.Bags is
    -- Playback_QoS --
    ------------------
 
-   function Playback_QoS (Offered : String) return RCL.QoS.Profile is
+   procedure Interpret_Offered
+     (Offered : String; Result : out RCL.QoS.Profile; Problem : out Unbounded_String)
+   is
+      --  Playback_QoS's answer, and what is not understood ("" when all is;
+      --  Result is then Default).
       use RCL.QoS;
       use RCL.YAML;
-      Result    : Profile := Default;
       All_Local : Boolean := True;
       Depth     : Natural := 0;
    begin
+      Result := Default;
+      Problem := Null_Unbounded_String;
       if Trim (Offered) = "" then
-         return Default;
+         return;
       end if;
       declare
          D : constant Document := Parse (Offered, "offered_qos_profiles");
       begin
-         if D.Kind (D.Root) /= Sequence or else D.Length (D.Root) = 0 then
-            return Default;
+         if D.Kind (D.Root) /= Sequence then
+            Problem := To_Unbounded_String ("expected a sequence of QoS profiles");
+            return;
+         elsif D.Length (D.Root) = 0 then
+            return;
          end if;
          for I in 1 .. D.Length (D.Root) loop
             declare
                P : constant Node := D.Item (D.Root, I);
                function Field (Key : String) return String is
                  (if D.Kind (P) = Mapping and then D.Find (P, Key) /= 0
+                    and then D.Kind (D.Find (P, Key)) = Scalar
                   then D.Text (D.Find (P, Key)) else "");
+               --  rosbag2 writes the policies as numbers (metadata version 8
+               --  and before: Humble) or names (9 on: Jazzy).
+               Reliability : constant String := Field ("reliability");
+               Durability  : constant String := Field ("durability");
+               Depth_Text  : constant String := Field ("depth");
+               Known : constant String :=
+                 " 0 1 2 3 4 system_default unknown best_available ";
+               Where : constant String := "profile" & I'Image & ": ";
             begin
-               if Field ("reliability") = "2" then
+               if D.Kind (P) /= Mapping then
+                  Problem := To_Unbounded_String (Where & "expected a mapping of policies");
+                  return;
+               elsif Ada.Strings.Fixed.Index (Known & "reliable best_effort ",
+                                              " " & Reliability & " ") = 0
+                 and then Reliability /= ""
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "reliability '" & RCL.Names.Shortened (Reliability)
+                     & "' is no reliability policy");
+                  return;
+               elsif Ada.Strings.Fixed.Index (Known & "transient_local volatile ",
+                                              " " & Durability & " ") = 0
+                 and then Durability /= ""
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "durability '" & RCL.Names.Shortened (Durability)
+                     & "' is no durability policy");
+                  return;
+               elsif Depth_Text /= ""
+                 and then (Depth_Text'Length > 9
+                           or else (for some C of Depth_Text => C not in '0' .. '9'))
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "depth '" & RCL.Names.Shortened (Depth_Text)
+                     & "' is no number of messages");
+                  return;
+               end if;
+               if Reliability in "2" | "best_effort" then
                   Result.Reliability := Best_Effort;
                end if;
-               if Field ("durability") /= "1" then
+               if Durability not in "1" | "transient_local" then
                   All_Local := False;
                end if;
-               if Field ("depth") /= "" then
-                  Depth := Natural'Max (Depth, Natural'Value (Field ("depth")));
+               if Depth_Text /= "" then
+                  Depth := Natural'Max (Depth, Natural'Value (Depth_Text));
                end if;
             end;
          end loop;
@@ -184,11 +230,26 @@ package body RCL.Bags is
          Result.Durability := Transient_Local;
       end if;
       Result.Depth := (if Depth = 0 then 10 else Depth);
-      return Result;
    exception
-      when Parse_Error | Constraint_Error =>
-         return Default;
+      when E : Parse_Error =>
+         Problem := To_Unbounded_String (Ada.Exceptions.Exception_Message (E));
+   end Interpret_Offered;
+
+   function Playback_QoS (Offered : String) return RCL.QoS.Profile is
+      Result  : RCL.QoS.Profile;
+      Problem : Unbounded_String;
+   begin
+      Interpret_Offered (Offered, Result, Problem);
+      return (if Problem = Null_Unbounded_String then Result else RCL.QoS.Default);
    end Playback_QoS;
+
+   function Offered_QoS_Problem (Offered : String) return String is
+      Result  : RCL.QoS.Profile;
+      Problem : Unbounded_String;
+   begin
+      Interpret_Offered (Offered, Result, Problem);
+      return To_String (Problem);
+   end Offered_QoS_Problem;
 
    --  Writing -----------------------------------------------------------------------
 

@@ -52,8 +52,15 @@ package RCL.Bags is
    function Playback_QoS (Offered : String) return RCL.QoS.Profile;
    --  What rosbag2 play offers for a topic recorded with Offered: reliable
    --  unless a publisher was best effort, transient local when every one
-   --  was, depth 10 (or the largest recorded depth). Default when Offered is
-   --  empty or not understood.
+   --  was, depth 10 (or the largest recorded depth). The policies as
+   --  numbers (rosbag2's metadata version 8 and before: Humble) or names
+   --  (version 9 on: Jazzy, "best_effort", "transient_local"). Default when
+   --  Offered is empty or not understood.
+
+   function Offered_QoS_Problem (Offered : String) return String;
+   --  "" when Playback_QoS understands Offered, else what it does not:
+   --  "profile 1: durability 'latched' is no durability policy", or the YAML
+   --  error ("offered_qos_profiles:3:5: ...").
 
    --  Writing ---------------------------------------------------------------------
 
