@@ -156,6 +156,13 @@ procedure Bag_Command (Args : Arguments) is
                 & " topics into '" & Output & "'");
    end Record_Bag;
 
+   procedure Warn (Reader : RCL.Bags.Bag_Reader) is
+   begin
+      if Reader.Warning /= "" then
+         Put_Line (Standard_Error, "rclada: warning: " & Reader.Warning);
+      end if;
+   end Warn;
+
    ----------
    -- Info --
    ----------
@@ -172,6 +179,7 @@ procedure Bag_Command (Args : Arguments) is
          when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
             raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
+      Warn (Reader);
       Put (Reader.Info);
    end Info_Bag;
 
@@ -233,6 +241,7 @@ procedure Bag_Command (Args : Arguments) is
          when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
             raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
+      Warn (Reader);
       declare
          type Publisher_Access is access RCL.Publishers.Publisher;
          type Publisher_Array is array (RCL.Bags.Topic_Index range <>) of Publisher_Access;

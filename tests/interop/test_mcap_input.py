@@ -205,3 +205,34 @@ def test_offered_qos_not_understood_is_refused_with_its_place(tmp_path, qos, rea
     offset = offset_of(r.stderr, path, "channel 2: offered_qos_profiles: ")
     assert record_content_at(path.read_bytes(), offset, OP_CHANNEL, 2), r.stderr
     assert reason in r.stderr, r.stderr
+
+
+def test_sqlite_bag_is_named_as_such(tmp_path):
+    # rosbag2's other storage (Humble's default): was "not an MCAP file:
+    # expected the magic ...", true but not what it is.
+    from rosbags.rosbag2 import Writer as BagWriter
+    from rosbags.typesys import Stores, get_typestore
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    string = store.types["std_msgs/msg/String"]
+    with BagWriter(tmp_path / "db", version=8) as w:
+        c = w.add_connection("/c", string.__msgtype__, typestore=store)
+        w.write(c, 1, store.serialize_cdr(string(data="x"), string.__msgtype__))
+    for path in (tmp_path / "db", tmp_path / "db" / "db.db3"):
+        r = rclada("bag", "info", path)
+        assert r.returncode == 1, r.stdout
+        assert ("db.db3: byte 0: not an MCAP file but a SQLite 3 database (rosbag2's sqlite3 "
+                "storage, .db3)") in r.stderr, r.stderr
+
+
+def test_metadata_yaml_not_understood_is_said(tmp_path):
+    # Was: the directory's files were read instead, silently.
+    bag = tmp_path / "bag"
+    bag.mkdir()
+    write(bag / "bag_0.mcap")
+    (bag / "metadata.yaml").write_text("rosbag2_bagfile_information:\n"
+                                       "  relative_file_paths: [bag_0.mcap\n")
+    for r in (rclada("bag", "info", bag), play(bag)):
+        assert r.returncode == 0, r.stderr
+        assert f"rclada: warning: {bag}/metadata.yaml:2:" in r.stderr, r.stderr
+        assert "the directory's .mcap files are read" in r.stderr, r.stderr
+    assert "Messages:          6" in rclada("bag", "info", bag).stdout

@@ -471,11 +471,14 @@ package body RCL.Bags is
       return 0;
    end Find_Topic;
 
-   function Listed_Files (Directory : String) return Type_Vectors.Vector is
+   function Listed_Files
+     (Directory : String; Warning : out Unbounded_String) return Type_Vectors.Vector
+   is
       use Ada.Directories;
       Result : Type_Vectors.Vector;
       Meta   : constant String := Compose (Directory, "metadata.yaml");
    begin
+      Warning := Null_Unbounded_String;
       if Exists (Meta) then
          begin
             declare
@@ -492,8 +495,13 @@ package body RCL.Bags is
                end if;
             end;
          exception
-            when RCL.YAML.Parse_Error =>
-               Result.Clear;  --  A metadata.yaml this reader cannot parse: list the files.
+            when E : RCL.YAML.Parse_Error =>
+               --  A metadata.yaml this reader cannot parse: list the files,
+               --  and say so.
+               Result.Clear;
+               Warning := To_Unbounded_String
+                 (Ada.Exceptions.Exception_Message (E)
+                  & " (metadata.yaml not understood: the directory's .mcap files are read)");
          end;
       end if;
       if Result.Is_Empty then
@@ -526,10 +534,11 @@ package body RCL.Bags is
       This.Size := 0;
       This.Recover := Recover;
       This.Compression := Null_Unbounded_String;
+      This.Warning := Null_Unbounded_String;
       if not Exists (Path) then
          raise Bag_Error with Path & ": no such bag (directory or .mcap file)";
       elsif Kind (Path) = Directory then
-         Paths := Listed_Files (Path);
+         Paths := Listed_Files (Path, This.Warning);
          if Paths.Is_Empty then
             raise Bag_Error with Path & ": no .mcap file in this directory";
          end if;
@@ -618,6 +627,7 @@ package body RCL.Bags is
      (To_String (This.Files (Index).Name));
    function Bytes (This : Bag_Reader) return Unsigned_64 is (This.Size);
    function Compression (This : Bag_Reader) return String is (To_String (This.Compression));
+   function Warning (This : Bag_Reader) return String is (To_String (This.Warning));
 
    procedure Iterate
      (This    : in out Bag_Reader;

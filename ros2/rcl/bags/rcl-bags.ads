@@ -141,6 +141,11 @@ package RCL.Bags is
    function Bytes (This : Bag_Reader) return Interfaces.Unsigned_64;
    function Compression (This : Bag_Reader) return String;
 
+   function Warning (This : Bag_Reader) return String;
+   --  What Open could not use but read the bag without ("" when nothing):
+   --  a metadata.yaml that does not parse ("run/metadata.yaml:3:7: ...";
+   --  the directory's .mcap files are read instead).
+
    procedure Iterate
      (This    : in out Bag_Reader;
       Process : not null access procedure
@@ -204,6 +209,7 @@ private
       First, Last : Time_Stamp := 0;
       Size        : Interfaces.Unsigned_64 := 0;
       Compression : Unbounded_String;
+      Warning     : Unbounded_String;
       Recover     : Boolean := False;
       Current     : RCL.MCAP.Readers.Reader;
       Now_File    : Natural := 0;

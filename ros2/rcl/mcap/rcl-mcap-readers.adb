@@ -732,6 +732,21 @@ package body RCL.MCAP.Readers is
       end if;
       Read_At (This, 0, Head, "magic");
       if Head /= Magic then
+         declare
+            SQLite : constant String := "SQLite format 3" & ASCII.NUL;
+            --  The header of a SQLite database: rosbag2's sqlite3 storage.
+            Start  : Byte_Array (1 .. SQLite'Length) := [others => 0];
+         begin
+            if This.Size >= SQLite'Length then
+               Read_At (This, 0, Start, "magic");
+            end if;
+            if (for all I in SQLite'Range =>
+                  Start (Stream_Element_Offset (I)) = Character'Pos (SQLite (I)))
+            then
+               Fail (This, 0, "not an MCAP file but a SQLite 3 database (rosbag2's sqlite3 "
+                     & "storage, .db3): only MCAP bags are read");
+            end if;
+         end;
          Fail (This, 0, "not an MCAP file: expected the magic 89 4D 43 41 50 30 0D 0A");
       end if;
       Read_Head (This, 8, Opcode, Length);
