@@ -236,3 +236,23 @@ def test_metadata_yaml_not_understood_is_said(tmp_path):
         assert f"rclada: warning: {bag}/metadata.yaml:2:" in r.stderr, r.stderr
         assert "the directory's .mcap files are read" in r.stderr, r.stderr
     assert "Messages:          6" in rclada("bag", "info", bag).stdout
+
+
+def test_one_topic_with_two_types_is_refused(tmp_path):
+    # Was: every message played with the first type seen, silently.
+    path = write(tmp_path / "two.mcap", topic="/chatter", type_name="std_msgs/msg/Int32")
+    for r in (rclada("bag", "info", path), play(path)):
+        assert r.returncode == 1, r.stdout
+        offset = offset_of(r.stderr, path, "channel 2: topic '/chatter' is "
+                           r"'std_msgs/msg/Int32' here, 'std_msgs/msg/String' on channel 1")
+        assert record_content_at(path.read_bytes(), offset, OP_CHANNEL, 2), r.stderr
+    bag = tmp_path / "split"
+    bag.mkdir()
+    write(bag / "split_0.mcap")
+    write(bag / "split_1.mcap", type_name="std_msgs/msg/Int32")
+    r = rclada("bag", "info", bag)
+    assert r.returncode == 1, r.stdout
+    offset = offset_of(r.stderr, bag / "split_1.mcap", "channel 2: topic '/fine' is "
+                       r"'std_msgs/msg/Int32' here, 'std_msgs/msg/String' in split_0\.mcap on "
+                       r"channel 2")
+    assert record_content_at((bag / "split_1.mcap").read_bytes(), offset, OP_CHANNEL, 2)

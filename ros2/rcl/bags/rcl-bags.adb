@@ -561,12 +561,26 @@ package body RCL.Bags is
                Qos   : constant String :=
                  (if C.Metadata.Contains ("offered_qos_profiles")
                   then C.Metadata.Element ("offered_qos_profiles") else "");
+               Of_Type : constant Unbounded_String :=
+                 (if C.Schema = 0 then Null_Unbounded_String
+                  else This.Current.Find_Schema (C.Schema).Name);
             begin
-               if Found = 0 then
+               if Found /= 0 and then This.Topics (Found).Type_Name /= Of_Type then
+                  --  One topic, one type: played with one, the other
+                  --  messages would be misread.
+                  raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": byte "
+                    & Image (This.Current.Channel_Offset (I)) & ": channel" & C.Id'Image
+                    & ": topic '" & RCL.Names.Shortened (To_String (C.Topic)) & "' is '"
+                    & RCL.Names.Shortened (To_String (Of_Type)) & "' here, '"
+                    & RCL.Names.Shortened (To_String (This.Topics (Found).Type_Name)) & "' "
+                    & (if This.Topics (Found).File = Natural (This.Files.Length) + 1 then ""
+                       else "in " & Ada.Directories.Simple_Name
+                         (To_String (This.Files (This.Topics (Found).File).Name)) & " ")
+                    & "on channel" & This.Topics (Found).Channel'Image;
+               elsif Found = 0 then
                   This.Topics.Append
                     (Topic_Entry'(Name      => C.Topic,
-                                  Type_Name => (if C.Schema = 0 then Null_Unbounded_String
-                                                else This.Current.Find_Schema (C.Schema).Name),
+                                  Type_Name => Of_Type,
                                   QoS_Text  => To_Unbounded_String (Qos),
                                   Count     => 0, Channel => C.Id, Schema => C.Schema,
                                   File      => Natural (This.Files.Length) + 1,
