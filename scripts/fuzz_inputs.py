@@ -301,8 +301,13 @@ def make_mcap_seeds(folder):
             w.start(profile="ros2", library="fuzz")
             s1 = w.register_schema("std_msgs/msg/String", "ros2msg", schema_text)
             s2 = w.register_schema("sensor_msgs/msg/LaserScan", "ros2msg", scan_text)
-            c1 = w.register_channel("/chatter", "cdr", s1, {"offered_qos_profiles": ""})
-            c2 = w.register_channel("/scan", "cdr", s2)
+            # QoS as rosbag2 writes it: Humble's numbers, Jazzy's names.
+            c1 = w.register_channel("/chatter", "cdr", s1, {"offered_qos_profiles": (
+                "- history: 1\n  depth: 10\n  reliability: 1\n  durability: 1\n"
+                if label in ("plain", "lz4") else "")})
+            c2 = w.register_channel("/scan", "cdr", s2, {} if label == "flat" else {
+                "offered_qos_profiles": "- history: keep_last\n  depth: 5\n"
+                "  reliability: best_effort\n  durability: volatile\n"})
             for i in range(6):
                 text = f"hello {i}".encode()
                 payload = (b"\x00\x01\x00\x00" + (len(text) + 1).to_bytes(4, "little")
