@@ -542,6 +542,10 @@ procedure Security_Command (Args : Arguments) is
                   Fail (Element, "in <profile>: " & RCL.Names.Node_Name_Problem (Node));
                end if;
             end;
+         elsif Rule.Text and then Text (Element) = "" then
+            Fail (Element, "an empty name in the profile of node "
+                  & Attribute (DOM.Core.Nodes.Parent_Node (DOM.Core.Nodes.Parent_Node (Element)),
+                               "node"));
          elsif Rule.Text and then Name_Problem (Text (Element)) /= "" then
             Fail (Element, "<" & Name & "> '" & Excerpt (Text (Element)) & "': "
                   & Name_Problem (Text (Element)));
@@ -604,12 +608,9 @@ procedure Security_Command (Args : Arguments) is
                        DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
 
                      procedure Item_Rule (I : DOM.Core.Node) is
-                        Name : constant String := Text (I);
                      begin
-                        if Name = "" then
-                           Fail (I, "an empty name in the profile of node " & Node);
-                        end if;
-                        Action (Qualified (Name, NS, Node), Mode, Value);
+                        --  (Check_Schema refused an empty name.)
+                        Action (Qualified (Text (I), NS, Node), Mode, Value);
                      end Item_Rule;
                   begin
                      if Mode = Mode_1 or else Mode = Mode_2 then

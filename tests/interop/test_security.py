@@ -179,6 +179,12 @@ BAD_POLICIES = [
     (POLICY.replace("<service>*</service>", "<service>a~b</service>"),
      [f"bad.xml:{line_of(POLICY, '<service>')}:",
       "<service> 'a~b': invalid character '~' at position 2"]),
+    # ... in any enclave (was: only in the one asked for).
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"><profiles>'
+                    '<profile ns="/" node="other"><topics publish="ALLOW"><topic/>'
+                    '</topics></profile></profiles></enclave>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      "an empty name in the profile of node other"]),
     # 100,000 nested elements took minutes (the XML reader is quadratic in
     # the depth); a 4 MB element name overflowed its stack (internal error).
     (POLICY.replace("<profiles>", "<profiles>" + "<a>" * 100000 + "</a>" * 100000),
