@@ -335,7 +335,11 @@ procedure Bag_Command (Args : Arguments) is
          for Name of Play_Topics loop
             if not (for some T in Pubs'Range => Reader.Topic_Name (T) = Name) then
                raise Command_Error with "--topics: the bag has no topic '"
-                 & RCL.Names.Shortened (Name) & "'";
+                 & RCL.Names.Shortened (Name) & "'"
+                 & (if (for some T in Pubs'Range => Reader.Topic_Name (T) = "/" & Name)
+                    then " (its topics are fully qualified: '/" & RCL.Names.Shortened (Name)
+                      & "')"
+                    else "");
             end if;
          end loop;
          --  Every topic to play is checked before any is: a bag whose topic

@@ -137,6 +137,9 @@ def test_topics_option_naming_no_topic_of_the_bag(tmp_path):
     path = write(tmp_path / "ok.mcap")
     r = play(path, "--topics", "/chatter", "/chater")
     assert r.returncode == 1 and "--topics: the bag has no topic '/chater'" in r.stderr, r.stderr
+    r = play(path, "--topics", "chatter")
+    assert r.returncode == 1 and ("--topics: the bag has no topic 'chatter' (its topics are "
+                                  "fully qualified: '/chatter')") in r.stderr, r.stderr
 
 
 @pytest.mark.parametrize("options", [dict(use_statistics=False),
