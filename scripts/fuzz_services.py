@@ -32,12 +32,18 @@ per case: `rclada action send_goal -f` (RCL.Actions.Clients) and
 is answered with 1-4 mutated replies, one to another client, then the true
 one; once the goal is accepted, 0-4 mutated feedback messages (two in three
 about the client's goal), a valid one and 0-2 mutated status arrays are
-published. A client must log every refused reply of its call before the
-first that decodes, and every refused feedback about its goal (or whose
-goal cannot be read) at the reference's offset, none about another goal;
-print every feedback about its goal that decodes, and act on the first
-reply that decodes: rejected, the cancel code, the status and the result,
-or a clear error naming a status or cancel code that is no such value.
+published (their first goal the client's two times in three, its status
+any int8 one time in three). A client must log every refused reply of its
+call before the first that decodes, and every refused feedback about its
+goal (or whose goal cannot be read) at the reference's offset, none about
+another goal; print every feedback about its goal that decodes, and act on
+the first reply that decodes: rejected, the cancel code, the status and the
+result, or a clear error naming a status or cancel code that is no such
+value. The status topic keeps one array (rcl_action's QoS), so an array may
+be replaced unread: a client may log only the refusals of arrays sent (at
+their reference offset) and only an entry of its own goal whose status is
+no GoalStatus value (naming the value and the goal), nothing else about
+the status topic.
 
 Limits of the peer: Cyclone DDS sends a sample with the sender's byte order
 in its encapsulation identifier and builds no valid packet around some
@@ -510,7 +516,10 @@ STATUS_NAMES = ["UNKNOWN", "ACCEPTED", "EXECUTING", "CANCELING", "SUCCEEDED", "C
 CANCEL_NAMES = ["ERROR_NONE", "ERROR_REJECTED", "ERROR_UNKNOWN_GOAL_ID",
                 "ERROR_GOAL_TERMINATED"]
 LE = b"\x00\x01\x00\x00"
-FEEDBACK_REFUSAL = re.compile(r"dropped a malformed sample on (\S+): (.*)")
+FEEDBACK_REFUSAL = re.compile(r"dropped a malformed sample on (\S+/_action/feedback): (.*)")
+STATUS_REFUSAL = re.compile(r"dropped a malformed sample on (\S+/_action/status): (.*)")
+BAD_STATUS = re.compile(r"the status topic gives goal ([0-9a-f]{32}) status (-?\d+), which is "
+                        r"no goal status")
 
 
 def mutate_sample(rng, payload):
@@ -556,13 +565,21 @@ class ActionPeer:
         self.feedback = d["pub"].DataWriter(
             dp, d["topic"].Topic(dp, f"rt{action}/_action/feedback", raw_type(d, FEEDBACK)),
             qos=qos)
+        status_qos = d["core"].Qos(  # rcl_action's: the client's reader asks for it
+            d["core"].Policy.History.KeepLast(1),
+            d["core"].Policy.Reliability.Reliable(max_blocking_time=10**9),
+            d["core"].Policy.Durability.TransientLocal,
+            d["core"].Policy.DataRepresentation(use_cdrv0_representation=True))
         self.status = d["pub"].DataWriter(
             dp, d["topic"].Topic(dp, f"rt{action}/_action/status", raw_type(d, STATUS)),
-            qos=qos)
+            qos=status_qos)
+        self.last_status = None
 
     def publish(self, writer, data):
         if self.d["write"](writer._ref, data) < 0:
             raise RuntimeError("raw write failed")
+        if writer is self.status:
+            self.last_status = data
 
     def feedback_matched(self, timeout):
         deadline = time.monotonic() + timeout
@@ -616,6 +633,8 @@ def fuzz_action_client(d, dp, target, rng, cases, record):
     for n in range(cases):
         ada = Output([str(fi.BIN / argv[0])] + argv[1:])
         run = ActionRun()
+        if peer.last_status is not None:  # transient local: the new client gets it
+            run.status.append((peer.last_status, "the last run's last status array"))
         for ends in (peer.send, peer.result, peer.cancel):
             ends.take()  # a former client's late calls
         began = time.monotonic()
@@ -668,8 +687,15 @@ def send_feedback(rng, peer, run, seeds):
     run.feedback.append((valid, "valid feedback", goal))
     peer.publish(peer.feedback, valid)
     for _ in range(rng.randrange(0, 3)):
-        data, how = mutate_sample(rng, seeds[STATUS][rng.randrange(len(seeds[STATUS]))])
-        run.status.append((data, how))
+        seed = seeds[STATUS][rng.randrange(len(seeds[STATUS]))]
+        own = len(seed) >= 33 and rng.random() < 2 / 3
+        if own:
+            seed = seed[:8] + goal + seed[24:]
+        if len(seed) >= 33 and rng.random() < 1 / 3:
+            seed = seed[:32] + struct.pack("<b", rng.randrange(-128, 128)) + seed[33:]
+        data, how = (mutate_sample(rng, seed) if rng.random() < 2 / 3
+                     else (padded(seed), "unmutated"))
+        run.status.append((data, how + ("; own goal" if own else "")))
         peer.publish(peer.status, data)
     answers = sample_reference([(FEEDBACK, data) for data, _, _ in run.feedback])
     return sum(1 for (data, _, g), a in zip(run.feedback, answers)
@@ -717,6 +743,47 @@ def first_answer(service, resp_type, sent, lines):
     return None, decoded_body(resp_type, first) if first is not None else None
 
 
+def bad_statuses(data):
+    """{(goal id hex, status value)} of the entries of a status array (one
+    the reference decodes, little-endian) whose status is no GoalStatus."""
+    count = struct.unpack("<I", data[4:8])[0]
+    found = set()
+    for i in range(min(count, max(0, len(data) - 8) // 28 + 1)):
+        at = 8 + 28 * i  # an entry: UUID, Time (8 bytes), int8 status, padding
+        if len(data) >= at + 25:
+            value = struct.unpack("<b", data[at + 24:at + 25])[0]
+            if not 0 <= value < len(STATUS_NAMES):
+                found.add((data[at:at + 16].hex(), value))
+    return found
+
+
+def status_verdict(run, lines):
+    """None when what the client logged about the status topic is right: a
+    refusal of an array sent (at its reference offset) or an entry of its
+    own goal with a status that is no GoalStatus value, sent (value and goal
+    named); nothing else names the status topic."""
+    answers = sample_reference([(STATUS, data) for data, _ in run.status])
+    refused = {a[1] for a in answers if a is not None}
+    bad = set().union(*[bad_statuses(data) for (data, _), a in zip(run.status, answers)
+                        if a is None and data[1] & 1] or [set()])
+    own = run.goal.hex() if run.goal else None
+    for t in lines:
+        refusal, entry = STATUS_REFUSAL.search(t), BAD_STATUS.search(t)
+        if refusal:
+            if not located(t):
+                return "status refusal without location"
+            if int(OFFSET.search(t).group(1)) not in refused:
+                return f"status refusal at an offset no array sent was refused at ({refused})"
+        elif entry:
+            if entry.group(1) != own:
+                return "the status of another goal reported"
+            if (own, int(entry.group(2))) not in bad:
+                return f"status {entry.group(2)} reported, not sent"
+        elif "/_action/status" in t or "status topic" in t:
+            return "status topic message unexplained"
+    return None
+
+
 def judge_action_client(name, feedback_mark, run, text, hung, rc, record):
     sent_all = [x for v in run.replies.values() for x in v]
     how = " | ".join(h for _, h, _ in sent_all + run.feedback)[:600]
@@ -730,8 +797,9 @@ def judge_action_client(name, feedback_mark, run, text, hung, rc, record):
     if trace_line(text):
         return record(name, "exception", how, b"", trace_line(text))
     lines = text.splitlines()
-    if any("/_action/status" in t for t in lines):
-        return record(name, "status message reported", how, b"", text[-300:])
+    problem = status_verdict(run, lines)
+    if problem:
+        return record(name, problem, how, b"", text[-400:])
     # Feedback: every refused one about the client's goal (or whose goal
     # cannot be read) logged at the reference's offset, none about another
     # goal; every one about its goal that decodes printed.

@@ -118,7 +118,15 @@ procedure Typed_Fibonacci is
                     Node.Logger_Name);
    end On_Feedback;
 
-   package Fib_Client is new Fibs.Client (On_Feedback);
+   procedure On_Status
+     (Node   : in out Nodes.Node'Class;
+      Id     : Goal_Id;
+      Status : Goal_Status) is
+   begin
+      Logging.Info ("status of " & Image (Id) & ": " & Status_Image (Status), Node.Logger_Name);
+   end On_Status;
+
+   package Fib_Client is new Fibs.Client (On_Feedback, On_Status);
 
    Finished : Boolean := False with Atomic;
 

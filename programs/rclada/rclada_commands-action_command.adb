@@ -108,6 +108,7 @@ procedure Action_Command (Args : Arguments) is
       Support  : constant Action_Support := Support_Of (Type_Name);
       Goal     : constant ROSIDL.Dynamic.Message := Message_From (Goal_Support (Support), Text);
       Feedback : constant Boolean := Has_Flag (Args, "-f", "--feedback");
+      Statuses : constant Boolean := Has_Flag (Args, "-s", "--status");
       Node     : RCL.Nodes.Node := Tool_Node;
       Client   : RCL.Actions.Clients.Client;
       Id       : Goal_Id;
@@ -128,6 +129,22 @@ procedure Action_Command (Args : Arguments) is
          when Ada.IO_Exceptions.Device_Error =>
             Output_Closed;
       end On_Feedback;
+
+      --  The goal's status changes, from the action's status topic.
+      procedure On_Status
+        (Node   : in out RCL.Nodes.Node'Class;
+         Goal   : Goal_Id;
+         Status : Goal_Status)
+      is
+         pragma Unreferenced (Node, Goal);
+      begin
+         Put_Line ("Goal status: " & Status_Image (Status));
+         New_Line;
+         Flush;
+      exception
+         when Ada.IO_Exceptions.Device_Error =>
+            Output_Closed;
+      end On_Status;
 
       protected Outcome is
          procedure Set (S : Goal_Status; R : ROSIDL.Dynamic.Message; Error : String);
@@ -157,7 +174,8 @@ procedure Action_Command (Args : Arguments) is
       end Outcome;
    begin
       Client.Init (Node, Support, Checked_Name (Name),
-                   (if Feedback then On_Feedback'Access else null));
+                   (if Feedback then On_Feedback'Access else null),
+                   (if Statuses then On_Status'Access else null));
       Put_Line ("Waiting for an action server to become available...");
       Client.Wait_For_Server (Duration (Number_Option (Args, "--timeout", "10.0")));
       Put_Line ("Sending goal:");
@@ -193,6 +211,20 @@ procedure Action_Command (Args : Arguments) is
             raise Command_Error with Outcome.Error;
          end if;
          Node.Spin (During => 0.05);  --  The last feedback, if any.
+         if Statuses and then Outcome.Status in Terminal_Status then
+            --  The status topic's word on the end (it may come after the
+            --  result); a server that never publishes it costs 1 s.
+            declare
+               Deadline : constant Ada.Real_Time.Time :=
+                 Ada.Real_Time.Clock + Ada.Real_Time.Seconds (1);
+            begin
+               while Client.Status (Id) not in Terminal_Status
+                 and then Ada.Real_Time.Clock < Deadline
+               loop
+                  Node.Spin (During => 0.05);
+               end loop;
+            end;
+         end if;
          Put_Line ("Result:");
          Put_Block (Indented (ROSIDL.Dynamic.Image (Outcome.Result)));
          New_Line;
@@ -222,7 +254,7 @@ begin
          Put_Line (Action_Type (Fully_Qualified (Pos (2))));
       end if;
    elsif Pos (1) = "send_goal" then
-      Check_Options (Args, "-f --feedback --timeout");
+      Check_Options (Args, "-f --feedback -s --status --timeout");
       if Natural (Pos.Length) /= 4 then
          raise Usage_Error with "action send_goal takes an action name, a type and a goal";
       end if;

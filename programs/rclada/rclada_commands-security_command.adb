@@ -15,7 +15,10 @@
 --  services (_action/send_goal, cancel_goal, get_result) and two topics
 --  (_action/feedback, status); relative names in the profile's namespace,
 --  "~" the node's own; ros_discovery_info always allowed both ways.
---  xi:include is not supported (the error says so).
+--  xi:include is not supported (the error says so). The whole file is
+--  checked against SROS2's policy.xsd first (Check_Schema); the rules come
+--  from the child elements along enclaves/enclave/profiles/profile only, so
+--  that what a <metadata> holds grants nothing (as in SROS2's transform).
 with Ada.Characters.Handling;
 with Ada.Containers.Vectors;
 with Ada.Directories;
@@ -31,6 +34,7 @@ with Sax.Readers;
 with Sax.Symbols;
 with Sax.Utils;
 with Unicode.CES;
+with RCL.Names;
 with RCL.Security.Keystores;
 
 separate (Rclada_Commands)
@@ -77,12 +81,18 @@ procedure Security_Command (Args : Arguments) is
 
    type Locating_Reader is new DOM.Readers.Tree_Reader with record
       Places  : Placed_Elements.Vector;
+      Texts   : Placed_Elements.Vector;
+      --  For each element with non-blank character data, where the first
+      --  non-blank character of it is.
+      Last    : Sax.Locators.Location;
+      --  Where the last event's markup or text ended.
       Depth   : Natural := 0;
       Too_Far : Sax.Locators.Location;
       --  The start tag that went past Max_Policy_Depth.
    end record;
-   --  A DOM reader that remembers where each element's start tag ends, so
-   --  that an error about an element names its line and column; Too_Deep
+   --  A DOM reader that remembers where each element's start tag ends (and
+   --  its first text), so that an error about an element (or about text where
+   --  none may be) names its line and column; Too_Deep
    --  (at the start tag) when elements nest deeper than Max_Policy_Depth.
 
    overriding procedure Start_Element
@@ -95,6 +105,30 @@ procedure Security_Command (Args : Arguments) is
      (Handler    : in out Locating_Reader;
       NS         : Sax.Utils.XML_NS;
       Local_Name : Sax.Symbols.Symbol);
+
+   overriding procedure Characters
+     (Handler : in out Locating_Reader;
+      Ch      : Unicode.CES.Byte_Sequence);
+
+   overriding procedure Comment
+     (Handler : in out Locating_Reader;
+      Comment : Unicode.CES.Byte_Sequence);
+
+   overriding procedure Processing_Instruction
+     (Handler : in out Locating_Reader;
+      Target  : Unicode.CES.Byte_Sequence;
+      Data    : Unicode.CES.Byte_Sequence);
+
+   overriding procedure Start_Cdata (Handler : in out Locating_Reader);
+   --  These four and the two above note where each event ended (the reader
+   --  tells where an event ends, not where it starts).
+
+   XML_Blanks : constant Ada.Strings.Maps.Character_Set :=
+     Ada.Strings.Maps.To_Set (' ' & ASCII.HT & ASCII.LF & ASCII.CR);
+   --  XML's white space.
+
+   function Is_Blank (S : String) return Boolean is
+     (Ada.Strings.Fixed.Index (S, XML_Blanks, Test => Ada.Strings.Outside) = 0);
 
    overriding procedure Start_Element
      (Handler    : in out Locating_Reader;
@@ -109,6 +143,7 @@ procedure Security_Command (Args : Arguments) is
       end if;
       DOM.Readers.Tree_Reader (Handler).Start_Element (NS, Local_Name, Atts);
       Handler.Places.Append (Placed_Element'(Handler.Current_Node, Handler.Current_Location));
+      Handler.Last := Handler.Current_Location;
    end Start_Element;
 
    overriding procedure End_Element
@@ -118,15 +153,66 @@ procedure Security_Command (Args : Arguments) is
    begin
       DOM.Readers.Tree_Reader (Handler).End_Element (NS, Local_Name);
       Handler.Depth := Handler.Depth - 1;
+      Handler.Last := Handler.Current_Location;
    end End_Element;
+
+   overriding procedure Characters
+     (Handler : in out Locating_Reader;
+      Ch      : Unicode.CES.Byte_Sequence)
+   is
+      Place : Sax.Locators.Location := Handler.Last;
+      --  Ch starts where the last event ended: its first non-blank
+      --  character is after the blanks that come first.
+   begin
+      DOM.Readers.Tree_Reader (Handler).Characters (Ch);
+      if not Is_Blank (Ch)
+        and then (Handler.Texts.Is_Empty
+                  or else Handler.Texts.Last_Element.Element /= Handler.Current_Node)
+      then
+         for C of Ch loop
+            exit when not Ada.Strings.Maps.Is_In (C, XML_Blanks);
+            if C = ASCII.LF then
+               Place.Line := Place.Line + 1;
+               Place.Column := 1;
+            else
+               Place.Column := Place.Column + 1;
+            end if;
+         end loop;
+         Handler.Texts.Append (Placed_Element'(Handler.Current_Node, Place));
+      end if;
+      Handler.Last := Handler.Current_Location;
+   end Characters;
+
+   overriding procedure Comment
+     (Handler : in out Locating_Reader;
+      Comment : Unicode.CES.Byte_Sequence) is
+   begin
+      DOM.Readers.Tree_Reader (Handler).Comment (Comment);
+      Handler.Last := Handler.Current_Location;
+   end Comment;
+
+   overriding procedure Processing_Instruction
+     (Handler : in out Locating_Reader;
+      Target  : Unicode.CES.Byte_Sequence;
+      Data    : Unicode.CES.Byte_Sequence) is
+   begin
+      DOM.Readers.Tree_Reader (Handler).Processing_Instruction (Target, Data);
+      Handler.Last := Handler.Current_Location;
+   end Processing_Instruction;
+
+   overriding procedure Start_Cdata (Handler : in out Locating_Reader) is
+   begin
+      Handler.Last := Handler.Current_Location;
+   end Start_Cdata;
 
    function Image (N : Natural) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
-   function Place_Of (Reader : Locating_Reader; Element : DOM.Core.Node) return String is
-      --  "LINE:COLUMN" where Element's start tag ends.
+   function Place_Of
+     (Element : DOM.Core.Node; Places : Placed_Elements.Vector) return String is
+      --  "LINE:COLUMN" of Element in Places (a Locating_Reader's).
    begin
-      for P of Reader.Places loop
+      for P of Places loop
          if P.Element = Element then
             return Image (P.Place.Line) & ":" & Image (P.Place.Column);
          end if;
@@ -136,30 +222,62 @@ procedure Security_Command (Args : Arguments) is
 
    type Schema_Rule is record
       Children, Attributes : Unbounded_String;
+      --  The names of the child elements and of the attributes allowed,
+      --  separated by spaces.
+      Needed_Children, Needed_Attributes : Unbounded_String;
+      --  Those of them that must be there (children: at least once).
+      Single : Unbounded_String;
+      --  The children allowed at most once.
+      Text : Boolean := False;
+      --  Character data allowed (else only blanks between the children).
+      Qualifiers : Boolean := False;
+      --  The attributes other than xml:base take ALLOW or DENY.
    end record;
-   --  What SROS2's policy schema allows in an element: the names of its
-   --  child elements and of its attributes, separated by spaces.
+   --  What SROS2's policy schema (policy.xsd, format 0.2.0) says of an
+   --  element; <metadata> is of any content and has no rule.
 
    function "+" (Names : String) return Unbounded_String renames To_Unbounded_String;
 
+   function Group_Rule (Item, Modes : String) return Schema_Rule is
+     (Children => +Item, Attributes => +(Modes & " xml:base"),
+      Needed_Children => +Item, Needed_Attributes => +"", Single => +"",
+      Text => False, Qualifiers => True);
+   --  <topics>, <services>, <actions>: one or more items, two optional modes.
+
    function Schema_Of (Element : String) return Schema_Rule is
-     (if Element = "policy" then (+"enclaves", +"version")
-      elsif Element = "enclaves" then (+"enclave", +"")
-      elsif Element = "enclave" then (+"profiles", +"path")
-      elsif Element = "profiles" then (+"profile metadata", +"type")
-      elsif Element = "profile" then (+"topics services actions", +"ns node xml:base")
-      elsif Element = "topics" then (+"topic", +"publish subscribe xml:base")
-      elsif Element = "services" then (+"service", +"reply request xml:base")
-      elsif Element = "actions" then (+"action", +"call execute xml:base")
-      else (+"", +""));
-   --  Example: Schema_Of ("topics") = (+"topic", +"publish subscribe xml:base");
-   --  the names topic, service and action hold text only: (+"", +"").
+     (if Element = "policy" then
+        (Children => +"enclaves", Attributes => +"version", Needed_Children => +"enclaves",
+         Needed_Attributes => +"version", Single => +"enclaves", others => False)
+      elsif Element = "enclaves" then
+        (Children => +"enclave", Attributes => +"", Needed_Children => +"enclave",
+         Needed_Attributes => +"", Single => +"", others => False)
+      elsif Element = "enclave" then
+        (Children => +"profiles", Attributes => +"path", Needed_Children => +"profiles",
+         Needed_Attributes => +"path", Single => +"", others => False)
+      elsif Element = "profiles" then
+        (Children => +"profile metadata", Attributes => +"type", Needed_Children => +"profile",
+         Needed_Attributes => +"", Single => +"metadata", others => False)
+      elsif Element = "profile" then
+        (Children => +"topics services actions", Attributes => +"ns node xml:base",
+         Needed_Children => +"", Needed_Attributes => +"ns node", Single => +"",
+         others => False)
+      elsif Element = "topics" then Group_Rule ("topic", "publish subscribe")
+      elsif Element = "services" then Group_Rule ("service", "reply request")
+      elsif Element = "actions" then Group_Rule ("action", "call execute")
+      else
+        (Children => +"", Attributes => +"", Needed_Children => +"", Needed_Attributes => +"",
+         Single => +"", Text => True, Qualifiers => False));
+   --  Example: Schema_Of ("enclave") requires a path and one <profiles> or
+   --  more; the names topic, service and action hold text only.
+
+   Policy_Version : constant String := "0.2.0";
+   --  The value policy.xsd fixes for <policy version>.
 
    function Listed (Word, List : String) return Boolean is
      (Ada.Strings.Fixed.Index (" " & List & " ", " " & Word & " ") > 0);
 
-   function Alternatives (List : String) return String is
-      --  Example: "a b c" -> "a, b or c"; "" -> "none".
+   function Alternatives (List : String; Last : String := "or") return String is
+      --  Example: "a b c" -> "a, b or c"; "" -> "none"; ("a b", "and") -> "a and b".
       Space : constant Natural := Ada.Strings.Fixed.Index (List, " ");
       Rest  : constant String := (if Space = 0 then "" else List (Space + 1 .. List'Last));
    begin
@@ -168,10 +286,33 @@ procedure Security_Command (Args : Arguments) is
       elsif Space = 0 then
          return List;
       elsif Ada.Strings.Fixed.Index (Rest, " ") = 0 then
-         return List (List'First .. Space - 1) & " or " & Rest;
+         return List (List'First .. Space - 1) & " " & Last & " " & Rest;
       end if;
-      return List (List'First .. Space - 1) & ", " & Alternatives (Rest);
+      return List (List'First .. Space - 1) & ", " & Alternatives (Rest, Last);
    end Alternatives;
+
+   function Trimmed (S : String) return String is
+     (Ada.Strings.Fixed.Trim (S, Left => XML_Blanks, Right => XML_Blanks));
+
+   function Excerpt (S : String) return String is
+      --  The start of S without blanks around, up to a line's end or 30
+      --  bytes (not inside a UTF-8 character); "..." when cut.
+      T    : constant String := Trimmed (S);
+      Last : Natural := Natural'Min (T'Last, T'First + 29);
+   begin
+      for I in T'First .. Last loop
+         if Character'Pos (T (I)) < 32 then
+            Last := I - 1;
+            exit;
+         end if;
+      end loop;
+      while Last in T'Range and then Last < T'Last
+        and then Character'Pos (T (Last + 1)) in 16#80# .. 16#BF#
+      loop
+         Last := Last - 1;
+      end loop;
+      return T (T'First .. Last) & (if Last < T'Last then "..." else "");
+   end Excerpt;
 
    function Is_Namespace_Declaration (Attribute : String) return Boolean is
      (Attribute = "xmlns"
@@ -196,8 +337,14 @@ procedure Security_Command (Args : Arguments) is
 
       procedure Fail (Element : DOM.Core.Node; Why : String) with No_Return is
       begin
-         raise Command_Error with File & ":" & Place_Of (Reader, Element) & ": " & Why;
+         raise Command_Error with File & ":" & Place_Of (Element, Reader.Places) & ": " & Why;
       end Fail;
+
+      procedure Fail_In_Text (Element : DOM.Core.Node; Why : String) with No_Return is
+         --  At Element's first non-blank text.
+      begin
+         raise Command_Error with File & ":" & Place_Of (Element, Reader.Texts) & ": " & Why;
+      end Fail_In_Text;
 
       procedure Add (Allow : Boolean; Kind : Keystores.Access_Kind; Topic : String) is
       begin
@@ -208,8 +355,27 @@ procedure Security_Command (Args : Arguments) is
          Rules (Count) := (Allow, Kind, To_Unbounded_String (Topic));
       end Add;
 
-      function Elements (Parent : DOM.Core.Node; Name : String) return DOM.Core.Node_List is
-        (DOM.Core.Elements.Get_Elements_By_Tag_Name (Parent, Name));
+      procedure For_Each
+        (Parent  : DOM.Core.Node;
+         Name    : String;
+         Process : not null access procedure (Child : DOM.Core.Node))
+      is
+         --  Process each child element of Parent named Name, in order; not
+         --  the grandchildren (a <metadata> may hold <profile>s: no rules).
+         Nodes : constant DOM.Core.Node_List := DOM.Core.Nodes.Child_Nodes (Parent);
+      begin
+         for I in 0 .. DOM.Core.Nodes.Length (Nodes) - 1 loop
+            declare
+               Child : constant DOM.Core.Node := DOM.Core.Nodes.Item (Nodes, I);
+            begin
+               if DOM.Core.Nodes.Node_Type (Child) = DOM.Core.Element_Node
+                 and then DOM.Core.Nodes.Node_Name (Child) = Name
+               then
+                  Process (Child);
+               end if;
+            end;
+         end loop;
+      end For_Each;
 
       function Attribute (E : DOM.Core.Node; Name : String) return String is
         (DOM.Core.Elements.Get_Attribute (E, Name));
@@ -227,7 +393,7 @@ procedure Security_Command (Args : Arguments) is
                end if;
             end;
          end loop;
-         return Ada.Strings.Fixed.Trim (To_String (Result), Ada.Strings.Both);
+         return Trimmed (To_String (Result));
       end Text;
 
       function Qualified (Name, Namespace, Node_Name : String) return String
@@ -259,10 +425,36 @@ procedure Security_Command (Args : Arguments) is
          Add (Allow, (if Server then Publish else Subscribe), Reply);
       end Service_Rules;
 
+      function Name_Problem (Name : String) return String is
+         --  "" when Name is a ROS 2 name (relative, absolute or "~/...")
+         --  or a pattern of them (* ? [a-z] [!x] as DDS permissions match
+         --  topic names), else which character is not.
+      begin
+         for I in Name'Range loop
+            declare
+               C : constant Character := Name (I);
+            begin
+               if not (C in 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' | '/'
+                              | '*' | '?' | '[' | ']' | '!' | '^' | '-'
+                       or else (C = '~' and then I = Name'First
+                                and then (I = Name'Last or else Name (I + 1) = '/')))
+               then
+                  return "invalid character "
+                    & (if C in ' ' .. '~' then "'" & C & "'"
+                       else "(byte" & Character'Pos (C)'Image & ")")
+                    & " at position" & Natural'Image (I - Name'First + 1);
+               end if;
+            end;
+         end loop;
+         return "";
+      end Name_Problem;
+
       procedure Check_Schema (Element : DOM.Core.Node) is
-         --  Refuses an element or attribute that SROS2's policy schema
-         --  (policy.xsd, format 0.2.0) does not define where it stands,
-         --  as SROS2 does: a misspelt <topcis> would otherwise give no rule.
+         --  Refuses what SROS2's policy schema (policy.xsd, format 0.2.0)
+         --  refuses, as SROS2 does: elements and attributes it does not
+         --  define where they stand (a misspelt <topcis> would otherwise give
+         --  no rule), required ones missing, one too many, text between
+         --  elements, a mode other than ALLOW or DENY, another version.
          --  Example: <topics><topicz>a</topicz></topics> ->
          --  "FILE:L:C: unknown element 'topicz' in <topics> (expected topic)"
          Name     : constant String := DOM.Core.Nodes.Node_Name (Element);
@@ -271,36 +463,128 @@ procedure Security_Command (Args : Arguments) is
          Allowed  : constant String := To_String (Rule.Attributes);
          Attrs    : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (Element);
          Nodes    : constant DOM.Core.Node_List := DOM.Core.Nodes.Child_Nodes (Element);
+         Seen     : Unbounded_String;
+         --  The names of the children met so far, each once.
+
+         procedure Each_Word
+           (List : String; Process : not null access procedure (Word : String)) is
+            First : Positive := List'First;
+         begin
+            for I in List'Range loop
+               if List (I) = ' ' then
+                  Process (List (First .. I - 1));
+                  First := I + 1;
+               elsif I = List'Last then
+                  Process (List (First .. I));
+               end if;
+            end loop;
+         end Each_Word;
+
+         procedure Need_Attribute (Attr : String) is
+         begin
+            if DOM.Core.Elements.Get_Attribute_Node (Element, Attr) = null then
+               Fail (Element, "missing attribute '" & Attr & "' in <" & Name & "> (required: "
+                     & Alternatives (To_String (Rule.Needed_Attributes), "and") & ")");
+            end if;
+         end Need_Attribute;
+
+         procedure Need_Child (Child : String) is
+         begin
+            if not Listed (Child, To_String (Seen)) then
+               Fail (Element, "missing element <" & Child & "> in <" & Name & "> (required: "
+                     & (if Listed (Child, To_String (Rule.Single)) then "one" else "one or more")
+                     & ")");
+            end if;
+         end Need_Child;
       begin
+         if Name = "metadata" then
+            return;  --  Any attributes and content (xs:anyType).
+         end if;
          for A in 0 .. DOM.Core.Nodes.Length (Attrs) - 1 loop
             declare
-               Attr : constant String := DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
+               Attr  : constant String := DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
+               Value : constant String :=
+                 DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
             begin
-               if not Listed (Attr, Allowed) and then not Is_Namespace_Declaration (Attr) then
+               if Is_Namespace_Declaration (Attr) then
+                  null;
+               elsif not Listed (Attr, Allowed) then
                   Fail (Element, "unknown attribute '" & Attr & "' in <" & Name & "> (expected "
                         & Alternatives (Allowed) & ")");
+               elsif Rule.Qualifiers and then Attr /= "xml:base"
+                 and then Value not in "ALLOW" | "DENY"
+               then
+                  Fail (Element, "<" & Name & " " & Attr & "=""" & Excerpt (Value)
+                        & """>: expected ALLOW or DENY");
+               elsif Name = "policy" and then Attr = "version" and then Value /= Policy_Version
+               then
+                  Fail (Element, "<policy version=""" & Excerpt (Value) & """>: expected version "
+                        & Policy_Version & " (SROS2's policy format)");
                end if;
             end;
          end loop;
-         if Name = "metadata" then
-            return;  --  Any content (xs:anyType).
+         Each_Word (To_String (Rule.Needed_Attributes), Need_Attribute'Access);
+         if Name = "profile" then
+            --  The names SROS2 joins into topic names: a namespace ("" and a
+            --  final '/' as SROS2 takes them) and a node name, as in ROS 2.
+            declare
+               NS      : constant String := Attribute (Element, "ns");
+               Node    : constant String := Attribute (Element, "node");
+               Problem : constant String :=
+                 (if NS = "" then ""
+                  elsif NS'Length > 1 and then NS (NS'Last) = '/'
+                  then RCL.Names.Namespace_Problem (NS (NS'First .. NS'Last - 1))
+                  else RCL.Names.Namespace_Problem (NS));
+            begin
+               if Problem /= "" then
+                  Fail (Element, "in <profile>: " & Problem);
+               elsif RCL.Names.Node_Name_Problem (Node) /= "" then
+                  Fail (Element, "in <profile>: " & RCL.Names.Node_Name_Problem (Node));
+               end if;
+            end;
+         elsif Rule.Text and then Text (Element) = "" then
+            Fail (Element, "an empty name in the profile of node "
+                  & Attribute (DOM.Core.Nodes.Parent_Node (DOM.Core.Nodes.Parent_Node (Element)),
+                               "node"));
+         elsif Rule.Text and then Name_Problem (Text (Element)) /= "" then
+            Fail (Element, "<" & Name & "> '" & Excerpt (Text (Element)) & "': "
+                  & Name_Problem (Text (Element)));
          end if;
          for I in 0 .. DOM.Core.Nodes.Length (Nodes) - 1 loop
             declare
-               Child : constant DOM.Core.Node := DOM.Core.Nodes.Item (Nodes, I);
+               Child      : constant DOM.Core.Node := DOM.Core.Nodes.Item (Nodes, I);
+               Child_Name : constant String := DOM.Core.Nodes.Node_Name (Child);
             begin
                if DOM.Core.Nodes.Node_Type (Child) = DOM.Core.Element_Node then
-                  if DOM.Core.Nodes.Node_Name (Child) = "xi:include" then
+                  if Child_Name = "xi:include" then
                      Fail (Child, "xi:include is not supported: put the included rules in the"
                            & " profile");
-                  elsif not Listed (DOM.Core.Nodes.Node_Name (Child), Children) then
-                     Fail (Child, "unknown element '" & DOM.Core.Nodes.Node_Name (Child)
-                           & "' in <" & Name & "> (expected " & Alternatives (Children) & ")");
+                  elsif not Listed (Child_Name, Children) then
+                     Fail (Child, "unknown element '" & Child_Name & "' in <" & Name
+                           & "> (expected " & Alternatives (Children) & ")");
+                  elsif Listed (Child_Name, To_String (Seen))
+                    and then Listed (Child_Name, To_String (Rule.Single))
+                  then
+                     Fail (Child, "a second <" & Child_Name & "> in <" & Name
+                           & "> (allowed: one)");
+                  elsif Name = "profiles" and then Listed ("metadata", To_String (Seen)) then
+                     Fail (Child, "<" & Child_Name & "> after <metadata> in <profiles> (the"
+                           & " <metadata> comes last)");
+                  end if;
+                  if not Listed (Child_Name, To_String (Seen)) then
+                     Append (Seen, (if Seen = "" then "" else " ") & Child_Name);
                   end if;
                   Check_Schema (Child);
+               elsif DOM.Core.Nodes.Node_Type (Child) = DOM.Core.Text_Node
+                 and then not Rule.Text
+                 and then not Is_Blank (DOM.Core.Nodes.Node_Value (Child))
+               then
+                  Fail_In_Text (Element, "text '" & Excerpt (DOM.Core.Nodes.Node_Value (Child))
+                                & "' in <" & Name & "> (only elements are allowed there)");
                end if;
             end;
          end loop;
+         Each_Word (To_String (Rule.Needed_Children), Need_Child'Access);
       end Check_Schema;
 
       procedure Profile_Rules (Profile : DOM.Core.Node) is
@@ -312,46 +596,31 @@ procedure Security_Command (Args : Arguments) is
             Action : not null access procedure (Name : String; Mode, Value : String))
          is
             --  Every <Group Mode_1|Mode_2="ALLOW|DENY"> of the profile and
-            --  every <Item> in it.
-            Groups : constant DOM.Core.Node_List := Elements (Profile, Group);
-         begin
-            for G in 0 .. DOM.Core.Nodes.Length (Groups) - 1 loop
-               declare
-                  E     : constant DOM.Core.Node := DOM.Core.Nodes.Item (Groups, G);
-                  Items : constant DOM.Core.Node_List := Elements (E, Item);
-                  Attrs : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (E);
-               begin
-                  for A in 0 .. DOM.Core.Nodes.Length (Attrs) - 1 loop
-                     declare
-                        Mode  : constant String :=
-                          DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
-                        Value : constant String :=
-                          DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
+            --  every <Item> in it (Check_Schema checked the values).
+            procedure Group_Rules (G : DOM.Core.Node) is
+               Attrs : constant DOM.Core.Named_Node_Map := DOM.Core.Nodes.Attributes (G);
+            begin
+               for A in 0 .. DOM.Core.Nodes.Length (Attrs) - 1 loop
+                  declare
+                     Mode  : constant String :=
+                       DOM.Core.Nodes.Node_Name (DOM.Core.Nodes.Item (Attrs, A));
+                     Value : constant String :=
+                       DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
+
+                     procedure Item_Rule (I : DOM.Core.Node) is
                      begin
-                        if Mode = Mode_1 or else Mode = Mode_2 then
-                           --  (Check_Schema refused other names but xml:base and
-                           --  xmlns, which give no rule.)
-                           if Value not in "ALLOW" | "DENY" then
-                              Fail (E, "<" & Group & " " & Mode & "=""" & Value
-                                    & """>: expected ALLOW or DENY");
-                           end if;
-                           for I in 0 .. DOM.Core.Nodes.Length (Items) - 1 loop
-                              declare
-                                 Name : constant String :=
-                                   Text (DOM.Core.Nodes.Item (Items, I));
-                              begin
-                                 if Name = "" then
-                                    Fail (DOM.Core.Nodes.Item (Items, I),
-                                          "an empty name in the profile of node " & Node);
-                                 end if;
-                                 Action (Qualified (Name, NS, Node), Mode, Value);
-                              end;
-                           end loop;
-                        end if;
-                     end;
-                  end loop;
-               end;
-            end loop;
+                        --  (Check_Schema refused an empty name.)
+                        Action (Qualified (Text (I), NS, Node), Mode, Value);
+                     end Item_Rule;
+                  begin
+                     if Mode = Mode_1 or else Mode = Mode_2 then
+                        For_Each (G, Item, Item_Rule'Access);
+                     end if;
+                  end;
+               end loop;
+            end Group_Rules;
+         begin
+            For_Each (Profile, Group, Group_Rules'Access);
          end Each;
 
          procedure Topic (Name, Mode, Value : String) is
@@ -435,27 +704,32 @@ procedure Security_Command (Args : Arguments) is
       Input_Sources.File.Close (Input);
       Doc := Reader.Get_Tree;
       declare
-         Root     : constant DOM.Core.Element := DOM.Core.Documents.Get_Element (Doc);
-         Enclaves : constant DOM.Core.Node_List := Elements (Root, "enclave");
+         Root : constant DOM.Core.Element := DOM.Core.Documents.Get_Element (Doc);
+
+         procedure Profiles_Rules (Profiles : DOM.Core.Node) is
+         begin
+            For_Each (Profiles, "profile", Profile_Rules'Access);
+         end Profiles_Rules;
+
+         procedure Enclave_Rules (E : DOM.Core.Node) is
+         begin
+            if Attribute (E, "path") = Enclave then
+               Found := True;
+               For_Each (E, "profiles", Profiles_Rules'Access);
+            end if;
+         end Enclave_Rules;
+
+         procedure Enclaves_Rules (Enclaves : DOM.Core.Node) is
+         begin
+            For_Each (Enclaves, "enclave", Enclave_Rules'Access);
+         end Enclaves_Rules;
       begin
          if DOM.Core.Nodes.Node_Name (Root) /= "policy" then
             Fail (Root, "the root element is <" & DOM.Core.Nodes.Node_Name (Root)
                   & ">, expected <policy>");
          end if;
          Check_Schema (Root);
-         for I in 0 .. DOM.Core.Nodes.Length (Enclaves) - 1 loop
-            declare
-               E        : constant DOM.Core.Node := DOM.Core.Nodes.Item (Enclaves, I);
-               Profiles : constant DOM.Core.Node_List := Elements (E, "profile");
-            begin
-               if Attribute (E, "path") = Enclave then
-                  Found := True;
-                  for P in 0 .. DOM.Core.Nodes.Length (Profiles) - 1 loop
-                     Profile_Rules (DOM.Core.Nodes.Item (Profiles, P));
-                  end loop;
-               end if;
-            end;
-         end loop;
+         For_Each (Root, "enclaves", Enclaves_Rules'Access);
       end;
       if not Found then
          Fail ("no <enclave path=""" & Enclave & """>");

@@ -77,9 +77,10 @@ package body Rclada_Commands is
          return "usage: rclada action list [-t|--show-types] [--spin-time S]" & LF
            & "       rclada action info ACTION [-t|--show-types]" & LF
            & "       rclada action type ACTION" & LF
-           & "       rclada action send_goal ACTION TYPE 'YAML' [-f|--feedback] [--timeout S]"
-           & LF
-           & "  TYPE: pkg/action/Name; YAML: the goal's fields, e.g. '{order: 5}'";
+           & "       rclada action send_goal ACTION TYPE 'YAML' [-f|--feedback] [-s|--status]"
+           & " [--timeout S]" & LF
+           & "  TYPE: pkg/action/Name; YAML: the goal's fields, e.g. '{order: 5}';" & LF
+           & "  --status: the goal's status changes (the action's status topic)";
       elsif Verb = "lifecycle" then
          return "usage: rclada lifecycle nodes [--spin-time S]" & LF
            & "       rclada lifecycle get NODE_NAME" & LF

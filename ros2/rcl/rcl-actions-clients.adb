@@ -1,30 +1,57 @@
-with Ada.Containers.Ordered_Sets;
+with Ada.Containers.Ordered_Maps;
+with Ada.Containers.Vectors;
 with Ada.Streams;
 with Ada.Strings.Fixed;
+with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
 with RCL.DDS;
+with RCL.Logging;
 with RCL.QoS;
 
 package body RCL.Actions.Clients is
 
    use ROSIDL.Dynamic;
 
-   package Id_Sets is new Ada.Containers.Ordered_Sets (Goal_Id);
+   package Status_Maps is new Ada.Containers.Ordered_Maps (Goal_Id, Goal_Status);
 
    protected type Goal_Set is
       procedure Add (Id : Goal_Id);
+      --  Id's status is Unknown until the status topic names it.
+      procedure Remove (Id : Goal_Id);
       function Contains (Id : Goal_Id) return Boolean;
+      function Status (Id : Goal_Id) return Goal_Status;
+      procedure Update (Id : Goal_Id; To : Goal_Status; Changed : out Boolean);
+      --  Id's status becomes To when Id is one of the set; Changed when it
+      --  was another status.
    private
-      Ids : Id_Sets.Set;
+      Goals : Status_Maps.Map;
    end Goal_Set;
 
    protected body Goal_Set is
       procedure Add (Id : Goal_Id) is
       begin
-         Ids.Include (Id);
+         Goals.Include (Id, Unknown);
       end Add;
-      function Contains (Id : Goal_Id) return Boolean is (Ids.Contains (Id));
+
+      procedure Remove (Id : Goal_Id) is
+      begin
+         Goals.Exclude (Id);
+      end Remove;
+
+      function Contains (Id : Goal_Id) return Boolean is (Goals.Contains (Id));
+
+      function Status (Id : Goal_Id) return Goal_Status is
+        (if Goals.Contains (Id) then Goals (Id) else Unknown);
+
+      procedure Update (Id : Goal_Id; To : Goal_Status; Changed : out Boolean) is
+         C : constant Status_Maps.Cursor := Goals.Find (Id);
+      begin
+         Changed := Status_Maps.Has_Element (C) and then Status_Maps.Element (C) /= To;
+         if Changed then
+            Goals.Replace_Element (C, To);
+         end if;
+      end Update;
    end Goal_Set;
 
    function Number (Code : Integer) return String is
@@ -83,6 +110,69 @@ package body RCL.Actions.Clients is
       end;
    end Deliver;
 
+   --  The status topic: every status array names the goals of the server
+   --  (of every client); those of Mine are followed, the others ignored.
+
+   type Status_Handler is new RCL.Nodes.Handler with record
+      Action   : Ada.Strings.Unbounded.Unbounded_String;
+      Mine     : Goal_Set_Access;
+      Callback : Status_Callback;
+   end record;
+
+   type Status_Change is record
+      Id : Goal_Id;
+      To : Goal_Status;
+   end record;
+
+   package Change_Vectors is new Ada.Containers.Vectors (Positive, Status_Change);
+
+   overriding procedure Deliver
+     (This : in out Status_Handler;
+      Node : in out RCL.Nodes.Node'Class;
+      Data : RCL.DDS.Byte_Array;
+      Info : ROSIDL.Message_Info)
+   is
+      pragma Unreferenced (Info);
+      Msg     : constant Message := ROSIDL.CDR.Decode (Status_Support, Data);
+      List    : constant Array_Ref := Msg ("status_list").As_Array;
+      Changes : Change_Vectors.Vector;
+   begin
+      --  Every entry first (an entry that is no status loses none of the
+      --  others), then the callbacks.
+      for I in 1 .. List.Length loop
+         declare
+            Item    : constant Field_Ref := List.Element (I);
+            Id      : constant Goal_Id := Get_Id (Item ("goal_info")("goal_id"));
+            Code    : constant Integer := Integer (Item ("status").As_Int8.Element.all);
+            Changed : Boolean;
+         begin
+            if not This.Mine.Contains (Id) then
+               null;  --  Another client's goal.
+            elsif Code not in Goal_Status'Pos (Goal_Status'First)
+                              .. Goal_Status'Pos (Goal_Status'Last)
+            then
+               RCL.Logging.Error
+                 ("action " & Ada.Strings.Unbounded.To_String (This.Action)
+                  & ": the status topic gives goal " & Image (Id) & " status " & Number (Code)
+                  & ", which is no goal status (0 .. 6); entry" & I'Image & " of"
+                  & List.Length'Image & " ignored, the goal stays "
+                  & Status_Image (This.Mine.Status (Id)),
+                  Logger => Node.Logger_Name);
+            else
+               This.Mine.Update (Id, Goal_Status'Val (Code), Changed);
+               if Changed then
+                  Changes.Append (Status_Change'(Id, Goal_Status'Val (Code)));
+               end if;
+            end if;
+         end;
+      end loop;
+      if This.Callback /= null then
+         for C of Changes loop
+            This.Callback (Node, C.Id, C.To);
+         end loop;
+      end if;
+   end Deliver;
+
    procedure Init
      (This        : in out Client;
       Node        : in out RCL.Nodes.Node'Class;
@@ -91,10 +181,15 @@ package body RCL.Actions.Clients is
       On_Feedback : access procedure
         (Node     : in out RCL.Nodes.Node'Class;
          Goal     : Goal_Id;
-         Feedback : ROSIDL.Dynamic.Message) := null)
+         Feedback : ROSIDL.Dynamic.Message) := null;
+      On_Status   : access procedure
+        (Node   : in out RCL.Nodes.Node'Class;
+         Goal   : Goal_Id;
+         Status : Goal_Status) := null)
    is
       Stored : constant Feedback_Callback with Import, Address => On_Feedback'Address;
-      --  GNAT: the same subprogram access, kept beyond the call.
+      Stored_Status : constant Status_Callback with Import, Address => On_Status'Address;
+      --  GNAT: the same subprogram accesses, kept beyond the call.
       FQ     : constant String := Node.Expand_Service (Name);
    begin
       This.Support := Support;
@@ -109,11 +204,21 @@ package body RCL.Actions.Clients is
             new Feedback_Handler'(Support => Support, Mine => This.Mine, Callback => Stored),
             RCL.QoS.Default);
       end if;
+      Node.Subscribe_Handler
+        (ROSIDL.Typesupport.DDS_Type_Name (Status_Support),
+         FQ & Status_Suffix,
+         new Status_Handler'(Action   => Ada.Strings.Unbounded.To_Unbounded_String (FQ),
+                             Mine     => This.Mine,
+                             Callback => Stored_Status),
+         RCL.QoS.Action_Status);
    end Init;
 
    function Name (This : Client) return String is
      (This.Send.Service_Name (This.Send.Service_Name'First
                               .. This.Send.Service_Name'Last - Send_Goal_Suffix'Length));
+
+   function Status (This : Client; Id : Goal_Id) return Goal_Status is
+     (if This.Mine = null then Unknown else This.Mine.Status (Id));
 
    function Server_Available (This : Client) return Boolean is
      (This.Send.Service_Available and then This.Cancel.Service_Available
@@ -142,6 +247,9 @@ package body RCL.Actions.Clients is
       Put_Id (Request ("goal_id"), Id);
       Request ("goal").Set_Message (Goal);
       Accepted := Boolean (This.Send.Call (Request, Timeout) ("accepted").As_Bool.Element.all);
+      if not Accepted then
+         This.Mine.Remove (Id);  --  No status, no feedback will come.
+      end if;
    end Send_Goal;
 
    function Send_Goal

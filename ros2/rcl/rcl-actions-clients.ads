@@ -1,14 +1,16 @@
 --  Action clients: send goals to an action server (rclcpp, rclpy or
 --  RCL.Actions.Servers), follow their feedback, cancel them, get their
 --  results. Goals, results and cancel requests are synchronous calls (safe
---  from several tasks at once); feedback is delivered to a callback by the
---  executor spinning the node.
+--  from several tasks at once); feedback and the status changes of the
+--  goals (the action's status topic, as rclcpp and rclpy clients follow
+--  it) are delivered to callbacks by the executor spinning the node.
 --  Example:
 --     C : Clients.Client;
 --     C.Init (Node, Get_Action_Support ("example_interfaces", "Fibonacci"),
---             "fibonacci", On_Feedback'Access);
+--             "fibonacci", On_Feedback'Access, On_Status'Access);
 --     C.Wait_For_Server (Timeout => 5.0);
 --     Id := C.Send_Goal (Goal);                 --  Goal_Rejected if refused
+--     ... C.Status (Id) ...                     --  Executing, while it runs
 --     C.Get_Result (Id, Status, Result);        --  waits for the end
 --     Code := C.Cancel_Goal (Id);
 with ROSIDL.Dynamic;
@@ -29,6 +31,11 @@ package RCL.Actions.Clients is
       Goal     : Goal_Id;
       Feedback : ROSIDL.Dynamic.Message);
 
+   type Status_Callback is access procedure
+     (Node   : in out RCL.Nodes.Node'Class;
+      Goal   : Goal_Id;
+      Status : Goal_Status);
+
    procedure Init
      (This        : in out Client;
       Node        : in out RCL.Nodes.Node'Class;
@@ -37,12 +44,31 @@ package RCL.Actions.Clients is
       On_Feedback : access procedure
         (Node     : in out RCL.Nodes.Node'Class;
          Goal     : Goal_Id;
-         Feedback : ROSIDL.Dynamic.Message) := null);
+         Feedback : ROSIDL.Dynamic.Message) := null;
+      On_Status   : access procedure
+        (Node   : in out RCL.Nodes.Node'Class;
+         Goal   : Goal_Id;
+         Status : Goal_Status) := null);
    --  Name is expanded like a service name. On_Feedback (if given) gets the
    --  feedback of the goals this client sent, while the node spins (the
-   --  feedback of other goals is dropped undecoded).
+   --  feedback of other goals is dropped undecoded). The client follows
+   --  the action's status topic (<name>/_action/status, QoS
+   --  RCL.QoS.Action_Status) while the node spins: On_Status (if given)
+   --  gets each change of status of the goals this client sent, in the
+   --  order of the server's status arrays; the statuses of other clients'
+   --  goals are ignored. The topic keeps only the last array: a status
+   --  the server replaced before the node spun is not seen. A status
+   --  array that does not decode is logged and dropped (as any malformed
+   --  sample); an entry about one of this client's goals whose status is
+   --  no GoalStatus value is logged (the value, the goal) and ignored, the
+   --  other entries applied.
 
    function Name (This : Client) return String;
+
+   function Status (This : Client; Id : Goal_Id) return Goal_Status;
+   --  The status of goal Id (sent by this client) as the status topic last
+   --  gave it: Unknown until the topic names the goal, and for a goal that
+   --  is not this client's or was rejected. Callable from any task.
 
    function Server_Available (This : Client) return Boolean;
    --  The three services of the action are available.
@@ -97,7 +123,8 @@ private
       Cancel     : RCL.Clients.Client;
       Results    : RCL.Clients.Client;
       Mine       : Goal_Set_Access;
-      --  The goals sent (feedback of others is ignored).
+      --  The goals sent and their statuses (feedback and statuses of
+      --  other goals are ignored).
    end record;
 
 end RCL.Actions.Clients;

@@ -139,10 +139,21 @@ package body RCL.Actions.Typed is
          On_Feedback (Node, Goal, To_Feedback (Progress));
       end Dynamic_On_Feedback;
 
+      procedure Dynamic_On_Status
+        (Node   : in out RCL.Nodes.Node'Class;
+         Goal   : Goal_Id;
+         Status : Goal_Status) is
+      begin
+         On_Status (Node, Goal, Status);
+      end Dynamic_On_Status;
+
       procedure Init (Node : in out RCL.Nodes.Node'Class; Name : String) is
       begin
-         The_Client.Init (Node, Support, Name, Dynamic_On_Feedback'Access);
+         The_Client.Init (Node, Support, Name, Dynamic_On_Feedback'Access,
+                          Dynamic_On_Status'Access);
       end Init;
+
+      function Status (Id : Goal_Id) return Goal_Status is (The_Client.Status (Id));
 
       function Server_Available return Boolean is (The_Client.Server_Available);
 

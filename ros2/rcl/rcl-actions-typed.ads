@@ -103,16 +103,30 @@ package RCL.Actions.Typed is
       Id       : Goal_Id;
       Progress : Feedback) is null;
 
+   procedure Ignore_Status
+     (Node   : in out RCL.Nodes.Node'Class;
+      Id     : Goal_Id;
+      Status : Goal_Status) is null;
+
    generic
       with procedure On_Feedback
         (Node     : in out RCL.Nodes.Node'Class;
          Id       : Goal_Id;
          Progress : Feedback) is Ignore_Feedback;
+      with procedure On_Status
+        (Node   : in out RCL.Nodes.Node'Class;
+         Id     : Goal_Id;
+         Status : Goal_Status) is Ignore_Status;
    package Client is
       procedure Init (Node : in out RCL.Nodes.Node'Class; Name : String);
-      --  On_Feedback gets the feedback of the goals sent by this client
-      --  while the node spins. Once per instance; the instance must live
-      --  as long as the node.
+      --  On_Feedback gets the feedback of the goals sent by this client,
+      --  On_Status each change of their status on the action's status
+      --  topic, while the node spins (as Clients.Init). Once per instance;
+      --  the instance must live as long as the node.
+
+      function Status (Id : Goal_Id) return Goal_Status;
+      --  As Clients.Status: the goal's status as the status topic last
+      --  gave it (Unknown before).
 
       function Server_Available return Boolean;
       procedure Wait_For_Server (Timeout : Duration := Clients.Forever);

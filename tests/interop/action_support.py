@@ -297,6 +297,53 @@ class ActionServer(ServingThread):
             time.sleep(0.002)
 
 
+class ScriptedStatusServer(ServingThread):
+    """An rclpy-protocol Fibonacci server `name` whose status topic plays a
+    script: it accepts every goal, then publishes, `gap` seconds apart,
+    the status arrays script(own goal UUID) lists (each a list of
+    (UUID, status value), other goals and status values that are no
+    GoalStatus allowed), answering get_result (SUCCEEDED, `result`) after
+    the last. `readers_qos` gets the QoS of the status readers matched at
+    acceptance (the client's)."""
+
+    def __init__(self, dp, name, script, result=(0, 1, 1), gap=0.3):
+        self.ep = _Endpoints(dp, name, "serviceid")
+        self.st = DataWriter(dp, Topic(dp, f"rt{name}/_action/status", GoalStatusArray),
+                             qos=status_qos())
+        self.script, self.result, self.gap = script, list(result), gap
+        self.readers_qos = []
+        self._start_serving()
+
+    def _publish(self, entries):
+        self.st.write(GoalStatusArray(status_list=[
+            GoalStatus(goal_info=GoalInfo(goal_id=g, stamp=Time(sec=1)), status=v)
+            for g, v in entries]))
+
+    def _run(self):
+        steps, waiting, next_at = [], [], 0.0
+        sg_r, sg_w = self.ep.pairs["send_goal"]
+        gr_r, gr_w = self.ep.pairs["get_result"]
+        while not self._stop:
+            for r in sg_r.take(N=16):
+                if isinstance(r, SendGoalRequest):
+                    sg_w.write(SendGoalResponse(guid=r.guid, seq=r.seq, accepted=True,
+                                                stamp=Time(sec=1)))
+                    self.readers_qos = [self.st.get_matched_subscription_data(h).qos
+                                        for h in self.st.get_matched_subscriptions()]
+                    steps = list(self.script(r.goal_id))
+                    next_at = time.monotonic()
+            waiting += [r for r in gr_r.take(N=16) if isinstance(r, GetResultRequest)]
+            if steps and time.monotonic() >= next_at:
+                self._publish(steps.pop(0))
+                next_at = time.monotonic() + self.gap
+            if not steps and next_at and time.monotonic() >= next_at:
+                for r in waiting:
+                    gr_w.write(GetResultResponse(guid=r.guid, seq=r.seq, status=4,
+                                                 sequence=self.result))
+                waiting.clear()
+            time.sleep(0.002)
+
+
 def check_goal_result(client, order):
     """Sends the Fibonacci goal `order` through `client` (an ActionClient),
     checks that it succeeds with FIB[:order + 1], then returns the goal's

@@ -8,7 +8,9 @@ which Python's cyclonedds honours too; they are defaulted here when the suite
 is run on its own.
 """
 import os
+import re
 import subprocess
+import threading
 import time
 from pathlib import Path
 
@@ -98,6 +100,56 @@ def start(program, *args):
     assert exe.exists(), f"{exe} not built (gprbuild -P build_all.gpr)"
     return subprocess.Popen([str(exe), *map(str, args)], stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, text=True)
+
+
+class Watched:
+    """The output of a program started by start(), collected line by line
+    as it comes (a thread reads it), so that a test waits for what the
+    program prints instead of a fixed time. stop() ends the program and
+    returns all of its output (use it instead of stop(proc))."""
+
+    def __init__(self, proc):
+        self.proc = proc
+        self._lines = []
+        self._lock = threading.Lock()
+        self._thread = threading.Thread(target=self._read, daemon=True)
+        self._thread.start()
+
+    def _read(self):
+        for line in self.proc.stdout:
+            with self._lock:
+                self._lines.append(line)
+
+    def text(self):
+        with self._lock:
+            return "".join(self._lines)
+
+    def count(self, pattern):
+        """How many lines match the regular expression so far."""
+        return len(re.findall(pattern, self.text(), re.M))
+
+    def wait(self, predicate, timeout, feed=None):
+        """Waits until predicate(output so far) is true, calling feed()
+        (when given) every 50 ms meanwhile; True when it became true."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if predicate(self.text()):
+                return True
+            if feed is not None:
+                feed()
+            time.sleep(0.05)
+        return predicate(self.text())
+
+    def stop(self, grace=3.0):
+        """SIGTERM, then SIGKILL after `grace` seconds; all the output."""
+        self.proc.terminate()
+        try:
+            self.proc.wait(timeout=grace)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+        self._thread.join(5)
+        return self.text()
 
 
 def finish(proc, timeout=20.0):

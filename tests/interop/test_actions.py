@@ -3,13 +3,19 @@
 implementing rclpy's action client protocol, and the Ada action client
 (rclada action send_goal, RCL.Actions.Clients) against a Python peer
 implementing rclpy's action server protocol; the rclada action verbs."""
+import os
 import subprocess
+import time
 
 import pytest
+from cyclonedds.qos import Policy
+from cyclonedds.sub import DataReader
+from cyclonedds.topic import Topic
 
 import pubsub_support as ps
-from action_support import (FIB, STATUS, ActionClient, ActionServer, check_cancel,
-                            check_goal_result)
+from action_support import (FIB, STATUS, UUID, ActionClient, ActionServer, GoalStatusArray,
+                            ScriptedStatusServer, check_cancel, check_goal_result, status_qos,
+                            uuid_hex)
 
 
 def rclada(*args, timeout=30):
@@ -52,6 +58,36 @@ def test_several_goals_at_once(client):
     client.poll()
     both = [s for s in client.statuses if sum(1 for _, st in s if st == 2) >= 2]
     assert both, "the status topic never showed two goals executing at once"
+
+
+def status_profile(qos):
+    """(history, reliability kind, durability) of a matched endpoint's QoS."""
+    reliable = isinstance(qos[Policy.Reliability], Policy.Reliability.Reliable)
+    return qos[Policy.History], "Reliable" if reliable else "BestEffort", qos[Policy.Durability]
+
+
+RCL_ACTION_STATUS = (Policy.History.KeepLast(1), "Reliable", Policy.Durability.TransientLocal)
+# rcl_action_qos_profile_status_default
+
+
+def test_server_status_topic(client):
+    """The Ada server's status topic: each goal goes ACCEPTED or EXECUTING,
+    then SUCCEEDED (never back); the writer has rcl_action's status QoS,
+    and a reader joining late gets the last array (transient local)."""
+    hex_id, _ = check_goal_result(client, 4)
+    seen = [dict(s).get(hex_id) for s in client.statuses if hex_id in dict(s)]
+    assert seen and seen[-1] == 4 and seen[0] in (1, 2), seen
+    assert seen == sorted(seen) and set(seen) <= {1, 2, 4}, seen
+    dp = ps.participant()
+    late = DataReader(dp, Topic(dp, "rt/fibonacci/_action/status", GoalStatusArray),
+                      qos=status_qos())
+    assert ps.wait_matched(late, 10), "the Ada server's status writer is not matched"
+    writers = [late.get_matched_publication_data(h).qos for h in late.get_matched_publications()]
+    assert [status_profile(q) for q in writers] == [RCL_ACTION_STATUS], writers
+    arrays = ps.take_until(late, 1, timeout=10)
+    assert arrays, "a late status reader got no status array (not transient local?)"
+    last = {uuid_hex(g.goal_info.goal_id): g.status for g in arrays[-1].status_list}
+    assert last.get(hex_id) == 4, last
 
 
 def test_rejected_goal(client):
@@ -101,3 +137,42 @@ def test_ada_client_against_python_server():
         assert rejected.returncode == 0 and "Goal was rejected." in rejected.stdout
     finally:
         server.stop()
+
+
+def test_ada_client_follows_its_goal_status():
+    """rclada action send_goal --status against a server whose status topic
+    plays a script: the client prints its own goal's status changes in
+    order, ignores other goals (even with statuses that are no GoalStatus),
+    reports an entry of its goal with status 9 (value and goal) and keeps
+    the entries after it; its status reader has rcl_action's status QoS."""
+    other_a, other_b = UUID(uuid=list(os.urandom(16))), UUID(uuid=list(os.urandom(16)))
+
+    def script(own):
+        return [[(own, 1), (other_a, 2)],
+                [(other_a, 9), (own, 2), (other_b, 6)],
+                [(own, 9), (other_a, 5)],
+                [(other_b, 3), (own, 2)],
+                [(other_a, 1), (own, 4), (other_b, -3)]]
+
+    dp = ps.participant()
+    server = ScriptedStatusServer(dp, "/fib_status", script)
+    try:
+        r = rclada("action", "send_goal", "/fib_status", "example_interfaces/action/Fibonacci",
+                   "{order: 2}", "--status")
+    finally:
+        server.stop()
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    own = next(l.split()[-1] for l in lines if l.startswith("Goal accepted with ID: "))
+    statuses = [l for l in lines if l.startswith("Goal status: ")]
+    assert statuses == ["Goal status: ACCEPTED", "Goal status: EXECUTING",
+                        "Goal status: SUCCEEDED"], r.stdout
+    assert lines.index(statuses[-1]) < lines.index("Result:"), r.stdout
+    assert lines[-1] == "Goal finished with status: SUCCEEDED", r.stdout
+    errors = r.stderr.splitlines()
+    assert len(errors) == 1, r.stderr
+    assert f"goal {own} status 9," in errors[0] and "no goal status" in errors[0], errors
+    assert "stays EXECUTING" in errors[0], errors
+    assert uuid_hex(other_a) not in r.stderr + r.stdout, r.stderr
+    assert [status_profile(q) for q in server.readers_qos] == [RCL_ACTION_STATUS], \
+        server.readers_qos

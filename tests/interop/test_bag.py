@@ -13,6 +13,7 @@ import pytest
 from cyclonedds.idl import IdlStruct
 from cyclonedds.idl.annotations import final
 from cyclonedds.idl.types import int32
+from cyclonedds.util import duration
 
 import pubsub_support as ps
 from ros_types import (Clock_, Header_, LaserScan_, MapMetaData_, OccupancyGrid_, Point_,
@@ -44,6 +45,13 @@ def scan(i):
                       range_max=30.0, ranges=[float(i) + k * 0.25 for k in range(360)])
 
 
+def acknowledged(writers, timeout=10.0):
+    """True when the recorder's readers acknowledged every sample of the
+    reliable `writers` within `timeout` seconds each (its readers have
+    them)."""
+    return all(w.wait_for_acks(duration(seconds=timeout)) for w in writers)
+
+
 @pytest.fixture(scope="module")
 def recorded(tmp_path_factory):
     """A bag recorded by `rclada bag record -a` from Python publishers of
@@ -63,15 +71,20 @@ def recorded(tmp_path_factory):
     unknown = ps.writer(dp, "rt/thing", Unknown_)
     rec = ps.start("rclada", "bag", "record", "-a", "-o", out, "--duration", 6,
                    "--discovery-period", 0.2)
-    for w in (chatter, scans, cmd, unknown):
+    for w in (grid, chatter, scans, cmd, unknown):
         assert ps.wait_matched(w, 10), "the recorder did not subscribe"
-    time.sleep(1.0)  # the recorder's side of the matches too
+    # The recorder's side of the matches: it made its readers for topics it
+    # found through these writers (so it knew them first); its map reader has
+    # acknowledged the map, written before it started.
+    assert acknowledged([grid]), "the recorder did not acknowledge the transient-local map"
     for i in range(20):
         chatter.write(String_(data=f"hello {i}"))
         scans.write(scan(i))
         cmd.write(Twist_(linear=Vector3_(x=0.1 * i), angular=Vector3_(z=-0.5)))
         unknown.write(Unknown_(value=i))
         time.sleep(0.02)
+    assert acknowledged([chatter, scans, unknown]), \
+        "the recorder did not acknowledge every message within 10 s (its --duration is 6 s)"
     log = ps.finish(rec, 30)
     assert rec.returncode == 0, log
     return out, log
@@ -254,11 +267,14 @@ def test_split_by_size(tmp_path):
     scans = ps.writer(dp, "rt/split_scan", LaserScan_)
     rec = ps.start("rclada", "bag", "record", "/split_scan", "-o", out, "-b", "20000",
                    "--duration", 4, "--discovery-period", 0.2, "--compression", "lz4")
-    assert ps.wait_matched(scans, 10)
-    time.sleep(1.0)  # the recorder's side of the match too
+    assert ps.wait_matched(scans, 10), "the recorder did not subscribe"
+    # The recorder's side of the match: it made its reader for a topic it
+    # found through this writer (it knew the writer first).
     for i in range(40):
         scans.write(scan(i))
         time.sleep(0.01)
+    assert acknowledged([scans]), \
+        "the recorder did not acknowledge every scan within 10 s (its --duration is 4 s)"
     log = ps.finish(rec, 30)
     files = sorted(out.glob("*.mcap"))
     assert len(files) >= 3, (files, log)

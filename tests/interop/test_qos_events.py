@@ -114,18 +114,24 @@ def test_liveliness_lost():
 
 
 def test_message_lost():
-    sub = start("sub", "qos_f", "reliable", "0", "1.0", "0", "by_source")
+    sub = ps.Watched(start("sub", "qos_f", "reliable", "0", "1.0", "0", "by_source"))
     dp = ps.participant()
     w = DataWriter(dp, Topic(dp, "rt/qos_f", String_), qos=qos(by_source=True))
-    assert ps.wait_matched(w, 10)
-    time.sleep(0.5)
-    now = time.time_ns()
-    w.write(String_(data="now"), timestamp=now)
-    w.write(String_(data="a second ago"), timestamp=now - 10**9)   # lost
-    w.write(String_(data="later"), timestamp=now + 10**6)
-    w.write(String_(data="two seconds ago"), timestamp=now - 2 * 10**9)   # lost
-    time.sleep(1.5)
-    out = stop(sub)
+    try:
+        assert ps.wait_matched(w, 10)
+        # The demo's side of the match too: its MATCHED event.
+        assert sub.wait(lambda out: any("current=1" in l for l in events(out, "MATCHED")), 10), \
+            "qos_events_demo's subscription did not report the match:\n" + sub.text()
+        now = time.time_ns()
+        w.write(String_(data="now"), timestamp=now)
+        w.write(String_(data="a second ago"), timestamp=now - 10**9)   # lost
+        w.write(String_(data="later"), timestamp=now + 10**6)
+        w.write(String_(data="two seconds ago"), timestamp=now - 2 * 10**9)   # lost
+        assert sub.wait(lambda out: any("total=2" in l for l in events(out, "MESSAGE_LOST")),
+                        10), "qos_events_demo did not report 2 lost messages:\n" + sub.text()
+        time.sleep(0.5)  # no third loss may follow
+    finally:
+        out = sub.stop(grace=5)
     lost = events(out, "MESSAGE_LOST")
     assert lost and "total=2" in lost[-1], out
     assert not events(out, "INCOMPATIBLE_QOS"), out

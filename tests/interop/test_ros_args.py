@@ -92,25 +92,37 @@ def test_log_level():
     assert "parameters ready" not in stop(proc), "the logger's own level must win"
 
 
+def tick_times(text, kind="tick"):
+    return [float(t) for t in re.findall(rf"^{kind} \d+ at +([0-9.]+)", text, re.M)]
+
+
 def test_timers_follow_sim_time():
     dp = ps.participant()
     clock = ps.writer(dp, "rt/clock", Clock_, reliable=False, depth=1)
-    proc = ps.start("timer_demo", "1.0", "--ros-args", "-p", "use_sim_time:=true")
+
+    def at(ns):
+        clock.write(Clock_(clock=Time_(sec=ns // 10**9, nanosec=ns % 10**9)))
+
+    demo = ps.Watched(ps.start("timer_demo", "1.0", "--ros-args", "-p", "use_sim_time:=true"))
     try:
-        assert ps.wait_matched(clock, 10)
-        time.sleep(0.5)
+        assert ps.wait_matched(clock, 10), "timer_demo did not subscribe to /clock"
+        # 100 s until the demo ticks on it (ROS time jumps from 0): its side
+        # of the match is made, no later step is lost for want of it.
+        assert demo.wait(tick_times, 20, feed=lambda: at(100 * 10**9)), \
+            "timer_demo never ticked on /clock at 100 s within 20 s:\n" + demo.text()
         # 12 s of simulated time in about 2.4 s of wall time, 0.1 s steps.
-        for k in range(0, 121):
-            ns = 100 * 10**9 + k * 10**8
-            clock.write(Clock_(clock=Time_(sec=ns // 10**9, nanosec=ns % 10**9)))
+        for k in range(1, 121):
+            at(100 * 10**9 + k * 10**8)
             time.sleep(0.02)
-        time.sleep(0.5)
+        # The last step (112 s, repeated: the clock stays there) until its tick.
+        assert demo.wait(lambda text: max(tick_times(text)) >= 112.0, 20,
+                         feed=lambda: at(112 * 10**9)), \
+            "no tick at 112 s of simulated time within 20 s:\n" + demo.text()
         # The clock stands still: nothing more may tick.
         time.sleep(1.5)
     finally:
-        out = stop(proc)
-    ticks = [float(t) for t in re.findall(r"^tick \d+ at +([0-9.]+)", out, re.M)]
-    rates = [float(t) for t in re.findall(r"^rate \d+ at +([0-9.]+)", out, re.M)]
+        out = demo.stop(grace=5)
+    ticks, rates = tick_times(out), tick_times(out, "rate")
     on_grid = [t for t in ticks if 100.5 < t <= 112.05]
     assert len(on_grid) == 12, ticks
     assert all(t >= 100.0 for t in ticks), ticks

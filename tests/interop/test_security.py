@@ -116,6 +116,75 @@ BAD_POLICIES = [
                     '</actions><acton/></profile></profiles></enclave>'),
      [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
       "unknown element 'acton' in <profile> (expected topics, services or actions)"]),
+    # What policy.xsd requires was not checked (a missing path, ns or node
+    # read as "", a group without items gave no rule silently), nor the
+    # version, text between elements, the modes of the other enclaves.
+    (POLICY.replace(' version="0.2.0"', ""),
+     [f"bad.xml:{line_of(POLICY, '<policy')}:",
+      "missing attribute 'version' in <policy> (required: version)"]),
+    (POLICY.replace('version="0.2.0"', 'version="0.1.0"'),
+     [f"bad.xml:{line_of(POLICY, '<policy')}:",
+      '<policy version="0.1.0">: expected version 0.2.0']),
+    (POLICY.replace(' path="/no_chatter"', ""),
+     [f"bad.xml:{line_of(POLICY, '<enclave ')}:",
+      "missing attribute 'path' in <enclave> (required: path)"]),
+    (POLICY.replace(' node="talker"', ""),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "missing attribute 'node' in <profile> (required: ns and node)"]),
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"/>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      "missing element <profiles> in <enclave> (required: one or more)"]),
+    ('<?xml version="1.0"?>\n<policy version="0.2.0">\n<enclaves>\n</enclaves></policy>\n',
+     ["bad.xml:3:", "missing element <enclave> in <enclaves> (required: one or more)"]),
+    ('<?xml version="1.0"?>\n<policy version="0.2.0"/>\n',
+     ["bad.xml:2:", "missing element <enclaves> in <policy> (required: one)"]),
+    (POLICY.replace("</enclaves>", "</enclaves>\n<enclaves/>"),
+     [f"bad.xml:{line_of(POLICY, '</enclaves>') + 1}:",
+      "a second <enclaves> in <policy> (allowed: one)"]),
+    (POLICY.replace("<topic>chatter</topic>", ""),
+     [f"bad.xml:{line_of(POLICY, DENY)}:",
+      "missing element <topic> in <topics> (required: one or more)"]),
+    (POLICY.replace("<profiles>", "<profiles>\n  allow everything"),
+     [f"bad.xml:{line_of(POLICY, '<profiles>') + 1}:",
+      "text 'allow everything' in <profiles> (only elements are allowed there)"]),
+    (POLICY.replace('<topics publish="DENY">', '<topics publish="DENY">chatter'),
+     [f"bad.xml:{line_of(POLICY, DENY)}:",
+      "text 'chatter' in <topics> (only elements are allowed there)"]),
+    (POLICY.replace("<profiles>", "<profiles><metadata/>"),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "<profile> after <metadata> in <profiles> (the <metadata> comes last)"]),
+    (POLICY.replace("</profiles>", "<metadata/><metadata/></profiles>"),
+     [f"bad.xml:{line_of(POLICY, '</profiles>')}:",
+      "a second <metadata> in <profiles> (allowed: one)"]),
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"><profiles>'
+                    '<profile ns="/" node="n"><topics publish="allow"><topic>a</topic>'
+                    '</topics></profile></profiles></enclave>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      '<topics publish="allow">: expected ALLOW or DENY']),
+    (POLICY.replace("<topic>chatter</topic>", "<topic>\n\t\n</topic>"),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "an empty name in the profile of node talker"]),
+    # Names SROS2 joins into topic names: a namespace without its leading
+    # '/' gave "rt/obots/chatter" (first letter cut), a space a topic no
+    # participant can have.
+    (POLICY.replace('ns="/"', 'ns="robots"'),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "in <profile>: namespace \"robots\": must start with '/'"]),
+    (POLICY.replace('node="talker"', 'node="tal ker"'),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "in <profile>: node name \"tal ker\": invalid character ' ' at position 4"]),
+    (POLICY.replace("<topic>chatter</topic>", "<topic>chat ter</topic>"),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "<topic> 'chat ter': invalid character ' ' at position 5"]),
+    (POLICY.replace("<service>*</service>", "<service>a~b</service>"),
+     [f"bad.xml:{line_of(POLICY, '<service>')}:",
+      "<service> 'a~b': invalid character '~' at position 2"]),
+    # ... in any enclave (was: only in the one asked for).
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"><profiles>'
+                    '<profile ns="/" node="other"><topics publish="ALLOW"><topic/>'
+                    '</topics></profile></profiles></enclave>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      "an empty name in the profile of node other"]),
     # 100,000 nested elements took minutes (the XML reader is quadratic in
     # the depth); a 4 MB element name overflowed its stack (internal error).
     (POLICY.replace("<profiles>", "<profiles>" + "<a>" * 100000 + "</a>" * 100000),
@@ -142,9 +211,16 @@ def test_policy_with_every_schema_construct_is_accepted(keystore, tmp_path):
     text = (POLICY.replace("<policy ", '<policy xmlns:xi="http://www.w3.org/2001/XInclude" ')
             .replace("<profiles>", '<profiles type="ros">')
             .replace('node="talker"', 'node="talker" xml:base="."')
+            .replace('ns="/"', 'ns="/robots/r1/"')
+            .replace("<topic>*</topic>", "<topic>*</topic><topic>[a-z]*</topic><topic>~</topic>"
+                     "<topic>~/state</topic><topic>/rq/*</topic>")
             .replace("</profile>\n", '<actions call="ALLOW" xml:base="."><action>fib</action>'
-                     '</actions></profile>\n<metadata><anything x="1"><topicz/></anything>'
-                     "</metadata>\n"))
+                     '</actions><!-- a comment -->\n'
+                     '<topics subscribe="ALLOW"><topic><![CDATA[cdata_topic]]></topic>'
+                     "<topic>\n\t   spaced_topic\n</topic></topics></profile>\n"
+                     '<metadata note="any attribute">any text<anything x="1"><topicz/>'
+                     '</anything>\n<profile ns="/" node="talker"><topics subscribe="ALLOW">'
+                     "<topic>in_metadata</topic></topics></profile></metadata>\n"))
     good = tmp_path / "good.xml"
     good.write_text(text)
     copy = tmp_path / "keystore"  # the other tests' keystore stays as it is
@@ -152,7 +228,13 @@ def test_policy_with_every_schema_construct_is_accepted(keystore, tmp_path):
     rc, out, err = rclada("security", "create_permission", copy, "/no_chatter", good)
     assert rc == 0, err + text
     permissions = (copy / "enclaves" / "no_chatter" / "permissions.xml").read_text()
-    assert "rq/fib/_action/send_goalRequest" in permissions, permissions
+    assert "rq/robots/r1/fib/_action/send_goalRequest" in permissions, permissions
+    assert "<topic>rt/robots/r1/cdata_topic</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/spaced_topic</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/talker/state</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/[a-z]*</topic>" in permissions, permissions
+    # <metadata> is of any content: a <profile> in it grants nothing.
+    assert "in_metadata" not in permissions, permissions
 
 
 def test_keystore_layout_and_list(keystore):

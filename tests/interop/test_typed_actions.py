@@ -4,6 +4,7 @@ protocol: the typed Ada server (examples/typed_fibonacci server) against a
 Python peer implementing rclpy's action client, and the typed Ada client
 (typed_fibonacci client) against a Python peer implementing rclpy's action
 server."""
+import re
 import subprocess
 
 import pytest
@@ -62,6 +63,10 @@ def test_typed_client_against_python_server():
         assert ok.returncode == 0, out
         assert "result (SUCCEEDED): [ 0, 1, 1, 2, 3, 5, 8 ]" in out, out
         assert out.count("feedback of ") >= 2, out
+        # The status topic (On_Status): the goal executing, from the server's
+        # first status array.
+        own = re.search(r"goal ([0-9a-f]{32}) accepted", out).group(1)
+        assert f"status of {own}: EXECUTING" in out, out
         rejected = subprocess.run([str(ps.BIN / "typed_fibonacci"), "client", "-2", "typed_fib_py",
                                    "20"], capture_output=True, text=True, timeout=60)
         assert rejected.returncode == 1
