@@ -227,8 +227,12 @@ class Reader:
 
     def __init__(self, name, seeds, argv, kind, where, mutators, timeout=10.0,
                  unlocated_ok=None, prepare=None, name_of=None, must_refuse=None,
-                 session=False):
+                 session=False, outlasts=None):
         self.name, self.seeds, self.argv, self.kind = name, seeds, argv, kind
+        # outlasts(data): the input takes longer than the time limit to
+        # process as it should (a bag whose recorded timing spans hours); the
+        # program must then stop on SIGINT at the limit (else a hang).
+        self.outlasts = outlasts
         self.where, self.mutators, self.timeout = where, mutators, timeout
         self.unlocated_ok = unlocated_ok
         self.prepare = prepare or (lambda seed, folder: None)
@@ -249,6 +253,19 @@ def xml_must_refuse(seed, data, how):
         return False
     end = seed.rstrip().rsplit(b"</", 1)
     return len(end) == 2 and b"</" + end[1] not in data
+
+
+def mcap_play_outlasts(data, rate=1000.0, limit=20.0):
+    """bag play keeps the recorded timing: the messages' log times, read by
+    the Python mcap reader, span more than the time limit at play's rate
+    (less a margin for starting). False when that reader refuses the file."""
+    import io
+    from mcap.reader import make_reader
+    try:
+        times = [m.log_time for _, _, m in make_reader(io.BytesIO(data)).iter_messages()]
+    except Exception:
+        return False
+    return len(times) > 1 and (max(times) - min(times)) / 1e9 / rate > limit - 5.0
 
 
 def mcap_must_refuse(seed, data, how):
@@ -284,8 +301,13 @@ def make_mcap_seeds(folder):
             w.start(profile="ros2", library="fuzz")
             s1 = w.register_schema("std_msgs/msg/String", "ros2msg", schema_text)
             s2 = w.register_schema("sensor_msgs/msg/LaserScan", "ros2msg", scan_text)
-            c1 = w.register_channel("/chatter", "cdr", s1, {"offered_qos_profiles": ""})
-            c2 = w.register_channel("/scan", "cdr", s2)
+            # QoS as rosbag2 writes it: Humble's numbers, Jazzy's names.
+            c1 = w.register_channel("/chatter", "cdr", s1, {"offered_qos_profiles": (
+                "- history: 1\n  depth: 10\n  reliability: 1\n  durability: 1\n"
+                if label in ("plain", "lz4") else "")})
+            c2 = w.register_channel("/scan", "cdr", s2, {} if label == "flat" else {
+                "offered_qos_profiles": "- history: keep_last\n  depth: 5\n"
+                "  reliability: best_effort\n  durability: volatile\n"})
             for i in range(6):
                 text = f"hello {i}".encode()
                 payload = (b"\x00\x01\x00\x00" + (len(text) + 1).to_bytes(4, "little")
@@ -823,7 +845,7 @@ def build_readers(seed_folder):
         Reader("mcap-play", make_mcap_seeds(seed_folder),
                ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
                None, BINARY_MUTATORS + [m_mcap_length] * 4, timeout=20.0,
-               must_refuse=mcap_must_refuse),
+               must_refuse=mcap_must_refuse, outlasts=mcap_play_outlasts),
     ]
     # Configurations that run: each agent for a second (sancta run), the team
     # demo with sancta-sim and an agent process per robot (sancta demo).
@@ -857,7 +879,10 @@ def env():
     return e
 
 
-def run(argv, timeout, stdin=None):
+def run(argv, timeout, stdin=None, interrupt=False):
+    """(exit status, output, hung, seconds). At the time limit the process
+    group is killed (hung True); with interrupt, it gets SIGINT first and
+    3 s to end (hung "interrupted" when it does)."""
     began = time.monotonic()
     p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                          stdin=subprocess.PIPE if stdin is not None else subprocess.DEVNULL,
@@ -866,9 +891,17 @@ def run(argv, timeout, stdin=None):
         out, err = p.communicate(stdin, timeout=timeout)
         hung = False
     except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        out, err = p.communicate()
         hung = True
+        if interrupt:
+            os.killpg(p.pid, signal.SIGINT)
+            try:
+                out, err = p.communicate(timeout=3.0)
+                hung = "interrupted"
+            except subprocess.TimeoutExpired:
+                pass
+        if hung is True:
+            os.killpg(p.pid, signal.SIGKILL)
+            out, err = p.communicate()
     text = (out + err).decode("utf-8", "replace")
     return p.returncode, text, hung, time.monotonic() - began
 
@@ -921,6 +954,8 @@ def run_session(argv, timeout, cwd=None):
 
 
 def judge(reader, rc, text, hung, data, seed_data, how, file_name):
+    if hung == "interrupted" and reader.outlasts is not None and reader.outlasts(data):
+        hung = False  # long as it should be, and stopped when asked: judged as it ended
     if hung:
         return "hang"
     if rc < 0:
@@ -985,7 +1020,8 @@ def fuzz_reader(reader, rng, cases, keep, log):
             if reader.session:
                 rc, text, hung, left = run_session(argv, reader.timeout, cwd=REPO)
             else:
-                (rc, text, hung, _), left = run(argv, reader.timeout), 0
+                (rc, text, hung, _), left = run(argv, reader.timeout,
+                                                interrupt=reader.outlasts is not None), 0
             verdict = judge(reader, rc, text, hung, data, seed_data if len(hows) == 1 else b"",
                             how, file_name)
             if left and not verdict:

@@ -1,11 +1,13 @@
 --  rclada bag record | info | play, as "ros2 bag" with its MCAP storage
 --  (RCL.Bags: rosbag2's directory layout and metadata.yaml).
 with Ada.Calendar.Formatting;
+with Ada.Command_Line;
 with Ada.Containers;
 with Ada.Streams;
 with Interfaces;
 with RCL.Bags.Recorders;
 with RCL.MCAP;
+with ROSIDL.Parser;
 
 separate (Rclada_Commands)
 procedure Bag_Command (Args : Arguments) is
@@ -154,6 +156,13 @@ procedure Bag_Command (Args : Arguments) is
                 & " topics into '" & Output & "'");
    end Record_Bag;
 
+   procedure Warn (Reader : RCL.Bags.Bag_Reader) is
+   begin
+      if Reader.Warning /= "" then
+         Put_Line (Standard_Error, "rclada: warning: " & Reader.Warning);
+      end if;
+   end Warn;
+
    ----------
    -- Info --
    ----------
@@ -170,12 +179,47 @@ procedure Bag_Command (Args : Arguments) is
          when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
             raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
+      Warn (Reader);
       Put (Reader.Info);
    end Info_Bag;
 
    ----------
    -- Play --
    ----------
+
+   function Type_Problem (Name : String) return String is
+      --  "" when Name is a type as rosbag2 records it, "pkg/msg/Name" (or
+      --  srv, action; generated names such as Fibonacci_FeedbackMessage),
+      --  else what is wrong: it names the DDS type of the played topic.
+      First  : constant Natural := Ada.Strings.Fixed.Index (Name, "/");
+      Second : constant Natural :=
+        (if First = 0 then 0 else Ada.Strings.Fixed.Index (Name (First + 1 .. Name'Last), "/"));
+      Quoted : constant String := "type '" & RCL.Names.Shortened (Name) & "'";
+   begin
+      if Name = "" then
+         return "no message type (the channel has no schema)";
+      elsif Second = 0 or else Ada.Strings.Fixed.Index (Name (Second + 1 .. Name'Last), "/") /= 0
+      then
+         return Quoted & ": expected package/msg/Type";
+      end if;
+      declare
+         Package_Name : String renames Name (Name'First .. First - 1);
+         Kind         : String renames Name (First + 1 .. Second - 1);
+         Type_Name    : String renames Name (Second + 1 .. Name'Last);
+      begin
+         if not ROSIDL.Parser.Is_Valid_Package_Name (Package_Name) then
+            return Quoted & ": invalid package name '" & RCL.Names.Shortened (Package_Name) & "'";
+         elsif Kind not in "msg" | "srv" | "action" then
+            return Quoted & ": expected msg, srv or action after the package, found '"
+              & RCL.Names.Shortened (Kind) & "'";
+         elsif Type_Name = "" or else Type_Name (Type_Name'First) not in 'A' .. 'Z'
+           or else (for some C of Type_Name => C not in 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_')
+         then
+            return Quoted & ": invalid type name '" & RCL.Names.Shortened (Type_Name) & "'";
+         end if;
+      end;
+      return "";
+   end Type_Problem;
 
    procedure Play_Bag is
       use Ada.Real_Time;
@@ -197,6 +241,7 @@ procedure Bag_Command (Args : Arguments) is
          when E : RCL.Bags.Bag_Error | RCL.MCAP.Format_Error =>
             raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
+      Warn (Reader);
       declare
          type Publisher_Access is access RCL.Publishers.Publisher;
          type Publisher_Array is array (RCL.Bags.Topic_Index range <>) of Publisher_Access;
@@ -208,6 +253,9 @@ procedure Bag_Command (Args : Arguments) is
            (if Clock_Hz > 0.0 then To_Time_Span (Duration (1.0 / Clock_Hz)) else Time_Span_Last);
          Next_Clock : Time;
          Played     : Natural := 0;
+         Too_Short  : Natural := 0;
+         First_Short : Unbounded_String;
+         --  Messages shorter than a CDR header (not played), where the first is.
 
          function Bag_Time_At (T : Time) return RCL.MCAP.Time_Stamp is
            (Bag_Start + RCL.MCAP.Time_Stamp
@@ -268,22 +316,57 @@ procedure Bag_Command (Args : Arguments) is
             if RCL.Contexts.Is_Shutdown then
                raise Stopped;
             end if;
-            if Topic in Pubs'Range and then Pubs (Topic) /= null and then Data'Length >= 4 then
-               Pubs (Topic).Publish_Raw (Data);
-               Played := Played + 1;
+            if Topic in Pubs'Range and then Pubs (Topic) /= null then
+               if Data'Length >= 4 then
+                  Pubs (Topic).Publish_Raw (Data);
+                  Played := Played + 1;
+               else
+                  Too_Short := Too_Short + 1;
+                  if Too_Short = 1 then
+                     First_Short := To_Unbounded_String
+                       (Reader.Message_Place & " (topic "
+                        & RCL.Names.Shortened (Reader.Topic_Name (Topic)) & "):"
+                        & Data'Length'Image & " bytes");
+                  end if;
+               end if;
             end if;
          end Each;
       begin
+         for Name of Play_Topics loop
+            if not (for some T in Pubs'Range => Reader.Topic_Name (T) = Name) then
+               raise Command_Error with "--topics: the bag has no topic '"
+                 & RCL.Names.Shortened (Name) & "'"
+                 & (if (for some T in Pubs'Range => Reader.Topic_Name (T) = "/" & Name)
+                    then " (its topics are fully qualified: '/" & RCL.Names.Shortened (Name)
+                      & "')"
+                    else "");
+            end if;
+         end loop;
+         --  Every topic to play is checked before any is: a bag whose topic
+         --  name or type is unusable is refused, naming its record.
          for T in Pubs'Range loop
             declare
                Name : constant String := Reader.Topic_Name (T);
                Kind : constant String := Reader.Topic_Type (T);
             begin
-               if (Play_Topics.Is_Empty or else Play_Topics.Contains (Name)) and then Kind /= ""
-               then
-                  Pubs (T) := new RCL.Publishers.Publisher'
-                    (Node.Publish_Raw (Graph.Mangle_Type (Kind), Name,
-                                       RCL.Bags.Playback_QoS (Reader.Topic_QoS (T))));
+               if Play_Topics.Is_Empty or else Play_Topics.Contains (Name) then
+                  if Type_Problem (Kind) /= "" then
+                     raise Command_Error with Reader.Type_Place (T) & ": topic '"
+                       & RCL.Names.Shortened (Name) & "': " & Type_Problem (Kind);
+                  elsif RCL.Bags.Offered_QoS_Problem (Reader.Topic_QoS (T)) /= "" then
+                     raise Command_Error with Reader.Topic_Place (T)
+                       & ": offered_qos_profiles: "
+                       & RCL.Bags.Offered_QoS_Problem (Reader.Topic_QoS (T));
+                  end if;
+                  begin
+                     Pubs (T) := new RCL.Publishers.Publisher'
+                       (Node.Publish_Raw (Graph.Mangle_Type (Kind), Name,
+                                          RCL.Bags.Playback_QoS (Reader.Topic_QoS (T))));
+                  exception
+                     when E : RCL.Names.Name_Error =>
+                        raise Command_Error with Reader.Topic_Place (T) & ": "
+                          & Ada.Exceptions.Exception_Message (E);
+                  end;
                end if;
             end;
          end loop;
@@ -305,6 +388,15 @@ procedure Bag_Command (Args : Arguments) is
          end loop;
          Put_Line ("Played" & Played'Image & " messages");
          delay 0.2;  --  Let reliable data reach late readers before the writers go.
+         if Too_Short > 0 then
+            --  Written here, not raised: an exception message is cut at 200
+            --  characters.
+            Put_Line (Standard_Error, "rclada: "
+                      & Ada.Strings.Fixed.Trim (Too_Short'Image, Ada.Strings.Left)
+                      & " message(s) not played, shorter than a CDR header (4 bytes); the"
+                      & " first: " & To_String (First_Short));
+            Ada.Command_Line.Set_Exit_Status (1);
+         end if;
       end;
    end Play_Bag;
 

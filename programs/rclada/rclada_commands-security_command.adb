@@ -34,6 +34,7 @@ with Sax.Readers;
 with Sax.Symbols;
 with Sax.Utils;
 with Unicode.CES;
+with RCL.Names;
 with RCL.Security.Keystores;
 
 separate (Rclada_Commands)
@@ -424,6 +425,30 @@ procedure Security_Command (Args : Arguments) is
          Add (Allow, (if Server then Publish else Subscribe), Reply);
       end Service_Rules;
 
+      function Name_Problem (Name : String) return String is
+         --  "" when Name is a ROS 2 name (relative, absolute or "~/...")
+         --  or a pattern of them (* ? [a-z] [!x] as DDS permissions match
+         --  topic names), else which character is not.
+      begin
+         for I in Name'Range loop
+            declare
+               C : constant Character := Name (I);
+            begin
+               if not (C in 'A' .. 'Z' | 'a' .. 'z' | '0' .. '9' | '_' | '/'
+                              | '*' | '?' | '[' | ']' | '!' | '^' | '-'
+                       or else (C = '~' and then I = Name'First
+                                and then (I = Name'Last or else Name (I + 1) = '/')))
+               then
+                  return "invalid character "
+                    & (if C in ' ' .. '~' then "'" & C & "'"
+                       else "(byte" & Character'Pos (C)'Image & ")")
+                    & " at position" & Natural'Image (I - Name'First + 1);
+               end if;
+            end;
+         end loop;
+         return "";
+      end Name_Problem;
+
       procedure Check_Schema (Element : DOM.Core.Node) is
          --  Refuses what SROS2's policy schema (policy.xsd, format 0.2.0)
          --  refuses, as SROS2 does: elements and attributes it does not
@@ -499,6 +524,32 @@ procedure Security_Command (Args : Arguments) is
             end;
          end loop;
          Each_Word (To_String (Rule.Needed_Attributes), Need_Attribute'Access);
+         if Name = "profile" then
+            --  The names SROS2 joins into topic names: a namespace ("" and a
+            --  final '/' as SROS2 takes them) and a node name, as in ROS 2.
+            declare
+               NS      : constant String := Attribute (Element, "ns");
+               Node    : constant String := Attribute (Element, "node");
+               Problem : constant String :=
+                 (if NS = "" then ""
+                  elsif NS'Length > 1 and then NS (NS'Last) = '/'
+                  then RCL.Names.Namespace_Problem (NS (NS'First .. NS'Last - 1))
+                  else RCL.Names.Namespace_Problem (NS));
+            begin
+               if Problem /= "" then
+                  Fail (Element, "in <profile>: " & Problem);
+               elsif RCL.Names.Node_Name_Problem (Node) /= "" then
+                  Fail (Element, "in <profile>: " & RCL.Names.Node_Name_Problem (Node));
+               end if;
+            end;
+         elsif Rule.Text and then Text (Element) = "" then
+            Fail (Element, "an empty name in the profile of node "
+                  & Attribute (DOM.Core.Nodes.Parent_Node (DOM.Core.Nodes.Parent_Node (Element)),
+                               "node"));
+         elsif Rule.Text and then Name_Problem (Text (Element)) /= "" then
+            Fail (Element, "<" & Name & "> '" & Excerpt (Text (Element)) & "': "
+                  & Name_Problem (Text (Element)));
+         end if;
          for I in 0 .. DOM.Core.Nodes.Length (Nodes) - 1 loop
             declare
                Child      : constant DOM.Core.Node := DOM.Core.Nodes.Item (Nodes, I);
@@ -557,12 +608,9 @@ procedure Security_Command (Args : Arguments) is
                        DOM.Core.Nodes.Node_Value (DOM.Core.Nodes.Item (Attrs, A));
 
                      procedure Item_Rule (I : DOM.Core.Node) is
-                        Name : constant String := Text (I);
                      begin
-                        if Name = "" then
-                           Fail (I, "an empty name in the profile of node " & Node);
-                        end if;
-                        Action (Qualified (Name, NS, Node), Mode, Value);
+                        --  (Check_Schema refused an empty name.)
+                        Action (Qualified (Text (I), NS, Node), Mode, Value);
                      end Item_Rule;
                   begin
                      if Mode = Mode_1 or else Mode = Mode_2 then

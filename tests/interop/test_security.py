@@ -164,6 +164,27 @@ BAD_POLICIES = [
     (POLICY.replace("<topic>chatter</topic>", "<topic>\n\t\n</topic>"),
      [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
       "an empty name in the profile of node talker"]),
+    # Names SROS2 joins into topic names: a namespace without its leading
+    # '/' gave "rt/obots/chatter" (first letter cut), a space a topic no
+    # participant can have.
+    (POLICY.replace('ns="/"', 'ns="robots"'),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "in <profile>: namespace \"robots\": must start with '/'"]),
+    (POLICY.replace('node="talker"', 'node="tal ker"'),
+     [f"bad.xml:{line_of(POLICY, '<profile ')}:",
+      "in <profile>: node name \"tal ker\": invalid character ' ' at position 4"]),
+    (POLICY.replace("<topic>chatter</topic>", "<topic>chat ter</topic>"),
+     [f"bad.xml:{line_of(POLICY, '<topic>chatter')}:",
+      "<topic> 'chat ter': invalid character ' ' at position 5"]),
+    (POLICY.replace("<service>*</service>", "<service>a~b</service>"),
+     [f"bad.xml:{line_of(POLICY, '<service>')}:",
+      "<service> 'a~b': invalid character '~' at position 2"]),
+    # ... in any enclave (was: only in the one asked for).
+    (POLICY.replace("<enclaves>", '<enclaves>\n<enclave path="/other"><profiles>'
+                    '<profile ns="/" node="other"><topics publish="ALLOW"><topic/>'
+                    '</topics></profile></profiles></enclave>'),
+     [f"bad.xml:{line_of(POLICY, '<enclaves>') + 1}:",
+      "an empty name in the profile of node other"]),
     # 100,000 nested elements took minutes (the XML reader is quadratic in
     # the depth); a 4 MB element name overflowed its stack (internal error).
     (POLICY.replace("<profiles>", "<profiles>" + "<a>" * 100000 + "</a>" * 100000),
@@ -190,6 +211,9 @@ def test_policy_with_every_schema_construct_is_accepted(keystore, tmp_path):
     text = (POLICY.replace("<policy ", '<policy xmlns:xi="http://www.w3.org/2001/XInclude" ')
             .replace("<profiles>", '<profiles type="ros">')
             .replace('node="talker"', 'node="talker" xml:base="."')
+            .replace('ns="/"', 'ns="/robots/r1/"')
+            .replace("<topic>*</topic>", "<topic>*</topic><topic>[a-z]*</topic><topic>~</topic>"
+                     "<topic>~/state</topic><topic>/rq/*</topic>")
             .replace("</profile>\n", '<actions call="ALLOW" xml:base="."><action>fib</action>'
                      '</actions><!-- a comment -->\n'
                      '<topics subscribe="ALLOW"><topic><![CDATA[cdata_topic]]></topic>'
@@ -204,9 +228,11 @@ def test_policy_with_every_schema_construct_is_accepted(keystore, tmp_path):
     rc, out, err = rclada("security", "create_permission", copy, "/no_chatter", good)
     assert rc == 0, err + text
     permissions = (copy / "enclaves" / "no_chatter" / "permissions.xml").read_text()
-    assert "rq/fib/_action/send_goalRequest" in permissions, permissions
-    assert "<topic>rt/cdata_topic</topic>" in permissions, permissions
-    assert "<topic>rt/spaced_topic</topic>" in permissions, permissions
+    assert "rq/robots/r1/fib/_action/send_goalRequest" in permissions, permissions
+    assert "<topic>rt/robots/r1/cdata_topic</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/spaced_topic</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/talker/state</topic>" in permissions, permissions
+    assert "<topic>rt/robots/r1/[a-z]*</topic>" in permissions, permissions
     # <metadata> is of any content: a <profile> in it grants nothing.
     assert "in_metadata" not in permissions, permissions
 

@@ -1,12 +1,14 @@
 with Ada.Calendar.Formatting;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Directories;
+with Ada.Exceptions;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.YAML_Strings;
+with RCL.Names;
 with RCL.YAML;
 
 package body RCL.Bags is
@@ -144,37 +146,82 @@ package body RCL.Bags is
    -- Playback_QoS --
    ------------------
 
-   function Playback_QoS (Offered : String) return RCL.QoS.Profile is
+   procedure Interpret_Offered
+     (Offered : String; Result : out RCL.QoS.Profile; Problem : out Unbounded_String)
+   is
+      --  Playback_QoS's answer, and what is not understood ("" when all is;
+      --  Result is then Default).
       use RCL.QoS;
       use RCL.YAML;
-      Result    : Profile := Default;
       All_Local : Boolean := True;
       Depth     : Natural := 0;
    begin
+      Result := Default;
+      Problem := Null_Unbounded_String;
       if Trim (Offered) = "" then
-         return Default;
+         return;
       end if;
       declare
          D : constant Document := Parse (Offered, "offered_qos_profiles");
       begin
-         if D.Kind (D.Root) /= Sequence or else D.Length (D.Root) = 0 then
-            return Default;
+         if D.Kind (D.Root) /= Sequence then
+            Problem := To_Unbounded_String ("expected a sequence of QoS profiles");
+            return;
+         elsif D.Length (D.Root) = 0 then
+            return;
          end if;
          for I in 1 .. D.Length (D.Root) loop
             declare
                P : constant Node := D.Item (D.Root, I);
                function Field (Key : String) return String is
                  (if D.Kind (P) = Mapping and then D.Find (P, Key) /= 0
+                    and then D.Kind (D.Find (P, Key)) = Scalar
                   then D.Text (D.Find (P, Key)) else "");
+               --  rosbag2 writes the policies as numbers (metadata version 8
+               --  and before: Humble) or names (9 on: Jazzy).
+               Reliability : constant String := Field ("reliability");
+               Durability  : constant String := Field ("durability");
+               Depth_Text  : constant String := Field ("depth");
+               Known : constant String :=
+                 " 0 1 2 3 4 system_default unknown best_available ";
+               Where : constant String := "profile" & I'Image & ": ";
             begin
-               if Field ("reliability") = "2" then
+               if D.Kind (P) /= Mapping then
+                  Problem := To_Unbounded_String (Where & "expected a mapping of policies");
+                  return;
+               elsif Ada.Strings.Fixed.Index (Known & "reliable best_effort ",
+                                              " " & Reliability & " ") = 0
+                 and then Reliability /= ""
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "reliability '" & RCL.Names.Shortened (Reliability)
+                     & "' is no reliability policy");
+                  return;
+               elsif Ada.Strings.Fixed.Index (Known & "transient_local volatile ",
+                                              " " & Durability & " ") = 0
+                 and then Durability /= ""
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "durability '" & RCL.Names.Shortened (Durability)
+                     & "' is no durability policy");
+                  return;
+               elsif Depth_Text /= ""
+                 and then (Depth_Text'Length > 9
+                           or else (for some C of Depth_Text => C not in '0' .. '9'))
+               then
+                  Problem := To_Unbounded_String
+                    (Where & "depth '" & RCL.Names.Shortened (Depth_Text)
+                     & "' is no number of messages");
+                  return;
+               end if;
+               if Reliability in "2" | "best_effort" then
                   Result.Reliability := Best_Effort;
                end if;
-               if Field ("durability") /= "1" then
+               if Durability not in "1" | "transient_local" then
                   All_Local := False;
                end if;
-               if Field ("depth") /= "" then
-                  Depth := Natural'Max (Depth, Natural'Value (Field ("depth")));
+               if Depth_Text /= "" then
+                  Depth := Natural'Max (Depth, Natural'Value (Depth_Text));
                end if;
             end;
          end loop;
@@ -183,11 +230,26 @@ package body RCL.Bags is
          Result.Durability := Transient_Local;
       end if;
       Result.Depth := (if Depth = 0 then 10 else Depth);
-      return Result;
    exception
-      when Parse_Error | Constraint_Error =>
-         return Default;
+      when E : Parse_Error =>
+         Problem := To_Unbounded_String (Ada.Exceptions.Exception_Message (E));
+   end Interpret_Offered;
+
+   function Playback_QoS (Offered : String) return RCL.QoS.Profile is
+      Result  : RCL.QoS.Profile;
+      Problem : Unbounded_String;
+   begin
+      Interpret_Offered (Offered, Result, Problem);
+      return (if Problem = Null_Unbounded_String then Result else RCL.QoS.Default);
    end Playback_QoS;
+
+   function Offered_QoS_Problem (Offered : String) return String is
+      Result  : RCL.QoS.Profile;
+      Problem : Unbounded_String;
+   begin
+      Interpret_Offered (Offered, Result, Problem);
+      return To_String (Problem);
+   end Offered_QoS_Problem;
 
    --  Writing -----------------------------------------------------------------------
 
@@ -282,7 +344,8 @@ package body RCL.Bags is
         (Topic_Entry'(Name     => To_Unbounded_String (Name),
                       Type_Name => To_Unbounded_String (Type_Name),
                       QoS_Text => To_Unbounded_String (Offered_QoS),
-                      Count    => 0, Channel => 0));
+                      Count    => 0, Channel => 0, Schema => 0, File => 0,
+                      Channel_At | Schema_At => 0));
       Ensure_Channel (This, This.Topics.Last_Index);
       return This.Topics.Last_Index;
    end Add_Topic;
@@ -408,11 +471,14 @@ package body RCL.Bags is
       return 0;
    end Find_Topic;
 
-   function Listed_Files (Directory : String) return Type_Vectors.Vector is
+   function Listed_Files
+     (Directory : String; Warning : out Unbounded_String) return Type_Vectors.Vector
+   is
       use Ada.Directories;
       Result : Type_Vectors.Vector;
       Meta   : constant String := Compose (Directory, "metadata.yaml");
    begin
+      Warning := Null_Unbounded_String;
       if Exists (Meta) then
          begin
             declare
@@ -429,8 +495,13 @@ package body RCL.Bags is
                end if;
             end;
          exception
-            when RCL.YAML.Parse_Error =>
-               Result.Clear;  --  A metadata.yaml this reader cannot parse: list the files.
+            when E : RCL.YAML.Parse_Error =>
+               --  A metadata.yaml this reader cannot parse: list the files,
+               --  and say so.
+               Result.Clear;
+               Warning := To_Unbounded_String
+                 (Ada.Exceptions.Exception_Message (E)
+                  & " (metadata.yaml not understood: the directory's .mcap files are read)");
          end;
       end if;
       if Result.Is_Empty then
@@ -463,10 +534,11 @@ package body RCL.Bags is
       This.Size := 0;
       This.Recover := Recover;
       This.Compression := Null_Unbounded_String;
+      This.Warning := Null_Unbounded_String;
       if not Exists (Path) then
          raise Bag_Error with Path & ": no such bag (directory or .mcap file)";
       elsif Kind (Path) = Directory then
-         Paths := Listed_Files (Path);
+         Paths := Listed_Files (Path, This.Warning);
          if Paths.Is_Empty then
             raise Bag_Error with Path & ": no .mcap file in this directory";
          end if;
@@ -489,14 +561,32 @@ package body RCL.Bags is
                Qos   : constant String :=
                  (if C.Metadata.Contains ("offered_qos_profiles")
                   then C.Metadata.Element ("offered_qos_profiles") else "");
+               Of_Type : constant Unbounded_String :=
+                 (if C.Schema = 0 then Null_Unbounded_String
+                  else This.Current.Find_Schema (C.Schema).Name);
             begin
-               if Found = 0 then
+               if Found /= 0 and then This.Topics (Found).Type_Name /= Of_Type then
+                  --  One topic, one type: played with one, the other
+                  --  messages would be misread.
+                  raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": byte "
+                    & Image (This.Current.Channel_Offset (I)) & ": channel" & C.Id'Image
+                    & ": topic '" & RCL.Names.Shortened (To_String (C.Topic)) & "' is '"
+                    & RCL.Names.Shortened (To_String (Of_Type)) & "' here, '"
+                    & RCL.Names.Shortened (To_String (This.Topics (Found).Type_Name)) & "' "
+                    & (if This.Topics (Found).File = Natural (This.Files.Length) + 1 then ""
+                       else "in " & Ada.Directories.Simple_Name
+                         (To_String (This.Files (This.Topics (Found).File).Name)) & " ")
+                    & "on channel" & This.Topics (Found).Channel'Image;
+               elsif Found = 0 then
                   This.Topics.Append
                     (Topic_Entry'(Name      => C.Topic,
-                                  Type_Name => (if C.Schema = 0 then Null_Unbounded_String
-                                                else This.Current.Find_Schema (C.Schema).Name),
+                                  Type_Name => Of_Type,
                                   QoS_Text  => To_Unbounded_String (Qos),
-                                  Count     => 0, Channel => 0));
+                                  Count     => 0, Channel => C.Id, Schema => C.Schema,
+                                  File      => Natural (This.Files.Length) + 1,
+                                  Channel_At => This.Current.Channel_Offset (I),
+                                  Schema_At  => (if C.Schema = 0 then 0
+                                                 else This.Current.Schema_Offset (C.Schema))));
                   Found := This.Topics.Last_Index;
                end if;
                This.Topics (Found).Count :=
@@ -527,6 +617,22 @@ package body RCL.Bags is
      (To_String (This.Topics (Topic).QoS_Text));
    function Topic_Message_Count (This : Bag_Reader; Topic : Topic_Index) return Unsigned_64 is
      (This.Topics (Topic).Count);
+   function File_Place (This : Bag_Reader; File : Positive) return String is
+     (RCL.Names.Shortened (To_String (This.Files (File).Name), 80, 57));
+
+   function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String is
+     (File_Place (This, This.Topics (Topic).File) & ": byte "
+      & Image (This.Topics (Topic).Channel_At) & ": channel"
+      & This.Topics (Topic).Channel'Image);
+
+   function Type_Place (This : Bag_Reader; Topic : Topic_Index) return String is
+     (if This.Topics (Topic).Schema = 0 then Topic_Place (This, Topic)
+      else File_Place (This, This.Topics (Topic).File) & ": byte "
+        & Image (This.Topics (Topic).Schema_At) & ": schema" & This.Topics (Topic).Schema'Image);
+
+   function Message_Place (This : Bag_Reader) return String is
+     (File_Place (This, This.Now_File) & ": " & RCL.MCAP.Readers.Place (This.Now_Message));
+
    function Message_Count (This : Bag_Reader) return Unsigned_64 is (This.Total);
    function Start_Time (This : Bag_Reader) return Time_Stamp is (This.First);
    function End_Time (This : Bag_Reader) return Time_Stamp is (This.Last);
@@ -535,6 +641,7 @@ package body RCL.Bags is
      (To_String (This.Files (Index).Name));
    function Bytes (This : Bag_Reader) return Unsigned_64 is (This.Size);
    function Compression (This : Bag_Reader) return String is (To_String (This.Compression));
+   function Warning (This : Bag_Reader) return String is (To_String (This.Warning));
 
    procedure Iterate
      (This    : in out Bag_Reader;
@@ -542,8 +649,9 @@ package body RCL.Bags is
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
    is
    begin
-      for F of This.Files loop
-         This.Current.Open (To_String (F.Name), This.Recover);
+      for File in This.Files.First_Index .. This.Files.Last_Index loop
+         This.Now_File := File;
+         This.Current.Open (To_String (This.Files (File).Name), This.Recover);
          declare
             type Topic_Map is array (RCL.MCAP.Channel_Id range <>) of Topic_Index'Base;
             Largest : RCL.MCAP.Channel_Id := 0;
@@ -555,6 +663,14 @@ package body RCL.Bags is
                Map : Topic_Map (0 .. Largest) := [others => 0];
                procedure Each (Msg : RCL.MCAP.Readers.Message; Data : RCL.MCAP.Byte_Array) is
                begin
+                  This.Now_Message := Msg;
+                  if Msg.Channel not in Map'Range or else Map (Msg.Channel) = 0 then
+                     --  Open read every channel record of the file: this one
+                     --  was not there then.
+                     raise RCL.MCAP.Format_Error with Message_Place (This)
+                       & ": message on channel" & Msg.Channel'Image
+                       & ", which the file did not define when opened: corrupt";
+                  end if;
                   Process (Map (Msg.Channel), Msg.Log_Time, Data);
                end Each;
             begin

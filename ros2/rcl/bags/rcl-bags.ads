@@ -52,8 +52,15 @@ package RCL.Bags is
    function Playback_QoS (Offered : String) return RCL.QoS.Profile;
    --  What rosbag2 play offers for a topic recorded with Offered: reliable
    --  unless a publisher was best effort, transient local when every one
-   --  was, depth 10 (or the largest recorded depth). Default when Offered is
-   --  empty or not understood.
+   --  was, depth 10 (or the largest recorded depth). The policies as
+   --  numbers (rosbag2's metadata version 8 and before: Humble) or names
+   --  (version 9 on: Jazzy, "best_effort", "transient_local"). Default when
+   --  Offered is empty or not understood.
+
+   function Offered_QoS_Problem (Offered : String) return String;
+   --  "" when Playback_QoS understands Offered, else what it does not:
+   --  "profile 1: durability 'latched' is no durability policy", or the YAML
+   --  error ("offered_qos_profiles:3:5: ...").
 
    --  Writing ---------------------------------------------------------------------
 
@@ -119,6 +126,13 @@ package RCL.Bags is
    function Topic_Message_Count
      (This : Bag_Reader; Topic : Topic_Index) return Interfaces.Unsigned_64;
 
+   function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String;
+   --  Where the topic's channel record is, for an error about the topic:
+   --  "run/run_0.mcap: byte 345: channel 2" (the first file that has it).
+   function Type_Place (This : Bag_Reader; Topic : Topic_Index) return String;
+   --  Where its schema record is, for an error about the type:
+   --  "run/run_0.mcap: byte 120: schema 1" (Topic_Place when it has none).
+
    function Message_Count (This : Bag_Reader) return Interfaces.Unsigned_64;
    function Start_Time (This : Bag_Reader) return Time_Stamp;
    function End_Time (This : Bag_Reader) return Time_Stamp;
@@ -127,11 +141,20 @@ package RCL.Bags is
    function Bytes (This : Bag_Reader) return Interfaces.Unsigned_64;
    function Compression (This : Bag_Reader) return String;
 
+   function Warning (This : Bag_Reader) return String;
+   --  What Open could not use but read the bag without ("" when nothing):
+   --  a metadata.yaml that does not parse ("run/metadata.yaml:3:7: ...";
+   --  the directory's .mcap files are read instead).
+
    procedure Iterate
      (This    : in out Bag_Reader;
       Process : not null access procedure
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array));
    --  Every message, file after file, in receive-time order within a file.
+
+   function Message_Place (This : Bag_Reader) return String;
+   --  During Iterate, where the message being processed is, for an error
+   --  about it: "run/run_0.mcap: byte 900: the chunk's uncompressed byte 56".
 
    function Info (This : Bag_Reader) return String;
    --  What "ros2 bag info" prints: files, size, storage, duration, start,
@@ -145,7 +168,12 @@ private
       Name, Type_Name, QoS_Text : Unbounded_String;
       Count  : Interfaces.Unsigned_64 := 0;
       Channel : RCL.MCAP.Channel_Id := 0;
-      --  In the writer's current file (0: not yet added to it).
+      --  In the writer's current file (0: not yet added to it); in the
+      --  reader's first file that has the topic.
+      Schema  : RCL.MCAP.Schema_Id := 0;
+      File    : Natural := 0;
+      Channel_At, Schema_At : Interfaces.Unsigned_64 := 0;
+      --  The reader's: in that file, its schema and where the records are.
    end record;
    package Topic_Vectors is new Ada.Containers.Vectors (Topic_Index, Topic_Entry);
 
@@ -181,8 +209,12 @@ private
       First, Last : Time_Stamp := 0;
       Size        : Interfaces.Unsigned_64 := 0;
       Compression : Unbounded_String;
+      Warning     : Unbounded_String;
       Recover     : Boolean := False;
       Current     : RCL.MCAP.Readers.Reader;
+      Now_File    : Natural := 0;
+      Now_Message : RCL.MCAP.Readers.Message;
+      --  During Iterate: the file and the message being processed.
    end record;
 
 end RCL.Bags;

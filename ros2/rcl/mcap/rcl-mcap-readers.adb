@@ -224,7 +224,8 @@ package body RCL.MCAP.Readers is
    --  Schemas and channels --------------------------------------------------------
 
    procedure Add_Schema (This : in out Reader; Data : Byte_Array; C : in out Cursor) is
-      S : Schema_Info;
+      S     : Schema_Info;
+      Start : constant Unsigned_64 := Where (C);
    begin
       S.Id := U16 (This, Data, C, "schema id");
       S.Name := To_Unbounded_String (Str (This, Data, C, "schema name"));
@@ -236,6 +237,7 @@ package body RCL.MCAP.Readers is
          end if;
       end loop;
       This.Schemas.Append (S);
+      This.Schema_Where.Append (Start);
    end Add_Schema;
 
    procedure Add_Channel (This : in out Reader; Data : Byte_Array; C : in out Cursor) is
@@ -341,6 +343,11 @@ package body RCL.MCAP.Readers is
       Inner : Cursor := (C with delta Pos => Pos);
       M     : Message;
    begin
+      M.Offset := Where (Inner);
+      M.In_Chunk := C.In_Chunk;
+      if C.In_Chunk then
+         M.Chunk_Byte := Unsigned_64 (Pos - C.First) - Record_Head;
+      end if;
       M.Channel := U16 (This, Data, Inner, "message channel id");
       M.Sequence := U32 (This, Data, Inner, "message sequence");
       M.Log_Time := U64 (This, Data, Inner, "message log time");
@@ -605,6 +612,7 @@ package body RCL.MCAP.Readers is
                when Op_Schema => Add_Schema (This, Content.all, R);
                when Op_Channel => Add_Channel (This, Content.all, R);
                when Op_Statistics =>
+                  This.Statistics := True;
                   This.Message_Total := U64 (This, Content.all, R, "message count");
                   R.Pos := R.Pos + 2 + 4 + 4 + 4 + 4;
                   This.First_Time := U64 (This, Content.all, R, "message start time");
@@ -707,9 +715,11 @@ package body RCL.MCAP.Readers is
       This.Size := Unsigned_64 (Stream_IO.Size (This.File));
       This.Recovered := False;
       This.Summary := False;
+      This.Statistics := False;
       This.Schemas.Clear;
       This.Channels.Clear;
       This.Channel_Where.Clear;
+      This.Schema_Where.Clear;
       This.Data.Clear;
       This.Counts.Clear;
       This.Message_Total := 0;
@@ -722,6 +732,21 @@ package body RCL.MCAP.Readers is
       end if;
       Read_At (This, 0, Head, "magic");
       if Head /= Magic then
+         declare
+            SQLite : constant String := "SQLite format 3" & ASCII.NUL;
+            --  The header of a SQLite database: rosbag2's sqlite3 storage.
+            Start  : Byte_Array (1 .. SQLite'Length) := [others => 0];
+         begin
+            if This.Size >= SQLite'Length then
+               Read_At (This, 0, Start, "magic");
+            end if;
+            if (for all I in SQLite'Range =>
+                  Start (Stream_Element_Offset (I)) = Character'Pos (SQLite (I)))
+            then
+               Fail (This, 0, "not an MCAP file but a SQLite 3 database (rosbag2's sqlite3 "
+                     & "storage, .db3): only MCAP bags are read");
+            end if;
+         end;
          Fail (This, 0, "not an MCAP file: expected the magic 89 4D 43 41 50 30 0D 0A");
       end if;
       Read_Head (This, 8, Opcode, Length);
@@ -810,11 +835,19 @@ package body RCL.MCAP.Readers is
             end if;
          end;
       end if;
-      Check_Schemas (This);
       Data_Sorting.Sort (This.Data);
-      if not This.Summary then
+      if not This.Summary
+        or else not This.Statistics
+        or else (for some E of This.Counts =>
+                   not (for some Ch of This.Channels => Ch.Id = E.Id))
+      then
+         --  No summary, or one without the message counts, or without the
+         --  channel records of counted channels (the format only advises
+         --  repeating them): every chunk is read, which finds the schema and
+         --  channel records in them and counts the messages.
          Count_Messages (This);
       end if;
+      Check_Schemas (This);
    exception
       when others =>
          if Stream_IO.Is_Open (This.File) then
@@ -841,6 +874,24 @@ package body RCL.MCAP.Readers is
       end loop;
       raise Format_Error with To_String (This.Path) & ": no schema has id" & Id'Image;
    end Find_Schema;
+
+   function Schema_Offset (This : Reader; Id : Schema_Id) return Unsigned_64 is
+   begin
+      for I in 1 .. Natural (This.Schemas.Length) loop
+         if This.Schemas (I).Id = Id then
+            return This.Schema_Where (I);
+         end if;
+      end loop;
+      raise Program_Error;  --  Excluded by the precondition.
+   end Schema_Offset;
+
+   function Channel_Offset (This : Reader; Index : Positive) return Unsigned_64 is
+     (This.Channel_Where (Index));
+
+   function Place (Msg : Message) return String is
+     ("byte " & Image (Msg.Offset)
+      & (if Msg.In_Chunk then ": the chunk's uncompressed byte " & Image (Msg.Chunk_Byte)
+         else ""));
 
    function Channel_Count (This : Reader) return Natural is (Natural (This.Channels.Length));
    function Channel (This : Reader; Index : Positive) return Channel_Info is

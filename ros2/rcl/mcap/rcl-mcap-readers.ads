@@ -41,10 +41,17 @@ package RCL.MCAP.Readers is
    function Schema (This : Reader; Index : Positive) return Schema_Info;
    function Find_Schema (This : Reader; Id : Schema_Id) return Schema_Info;
    --  Format_Error when no schema has this id.
+   function Schema_Offset (This : Reader; Id : Schema_Id) return Interfaces.Unsigned_64
+     with Pre => (for some I in 1 .. This.Schema_Count => Interfaces."=" (This.Schema (I).Id, Id));
+   --  Where the schema's record (its content) was read: a file offset; in a
+   --  chunk, the chunk record's. For the errors about what it holds.
 
    function Channel_Count (This : Reader) return Natural;
    function Channel (This : Reader; Index : Positive) return Channel_Info;
    function Find_Channel (This : Reader; Id : Channel_Id) return Channel_Info;
+   function Channel_Offset (This : Reader; Index : Positive) return Interfaces.Unsigned_64
+     with Pre => Index <= This.Channel_Count;
+   --  Where Channel (Index)'s record was read, as Schema_Offset.
 
    function Message_Count (This : Reader) return Interfaces.Unsigned_64;
    function Channel_Message_Count (This : Reader; Id : Channel_Id) return Interfaces.Unsigned_64;
@@ -60,7 +67,17 @@ package RCL.MCAP.Readers is
       Sequence     : Interfaces.Unsigned_32;
       Log_Time     : Time_Stamp;
       Publish_Time : Time_Stamp;
+      Offset       : Interfaces.Unsigned_64 := 0;
+      --  Where the message record's content is in the file; in a chunk,
+      --  where the chunk record is.
+      In_Chunk     : Boolean := False;
+      Chunk_Byte   : Interfaces.Unsigned_64 := 0;
+      --  In a chunk: where the message record is in its uncompressed records.
    end record;
+
+   function Place (Msg : Message) return String;
+   --  Where Msg is, for an error about it: "byte 1234", or "byte 1234: the
+   --  chunk's uncompressed byte 56".
 
    procedure Iterate
      (This    : in out Reader;
@@ -105,10 +122,14 @@ private
       Library       : Unbounded_String;
       Recovered     : Boolean := False;
       Summary       : Boolean := False;
+      Statistics    : Boolean := False;
+      --  The summary has a statistics record.
       Schemas       : Schema_Vectors.Vector;
       Channels      : Channel_Vectors.Vector;
       Channel_Where : Offset_Vectors.Vector;
       --  Where each of Channels was read (file offset; in a chunk, the chunk's)
+      Schema_Where  : Offset_Vectors.Vector;
+      --  The same for Schemas.
       Data          : Record_Vectors.Vector;
       Counts        : Count_Vectors.Vector;
       Message_Total : Interfaces.Unsigned_64 := 0;
