@@ -17,6 +17,7 @@ with RCL.Nodes.Tests;
 with RCL.Parameters.Tests;
 with RCL.QoS.Tests;
 with RCL.Services.Tests;
+with RCL.Actions.Clients.Tests;
 with RCL.YAML.Tests;
 with RCL.Timers.Tests;
 with ROSIDL.Parser.Tests;
@@ -60,6 +61,7 @@ package body All_Suites is
       Result.Add_Test (ROSIDL.Static.Tests.Suite);
       Result.Add_Test (ROSIDL.Static.Sequence_Contract_Tests.Suite);
       Result.Add_Test (RCL.Services.Tests.Suite);
+      Result.Add_Test (RCL.Actions.Clients.Tests.Suite);
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Writers.Contract_Tests.Suite);
