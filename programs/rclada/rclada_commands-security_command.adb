@@ -86,6 +86,7 @@ procedure Security_Command (Args : Arguments) is
       --  non-blank character of it is.
       Last    : Sax.Locators.Location;
       --  Where the last event's markup or text ended.
+      In_Cdata : Boolean := False;
       Depth   : Natural := 0;
       Too_Far : Sax.Locators.Location;
       --  The start tag that went past Max_Policy_Depth.
@@ -110,6 +111,11 @@ procedure Security_Command (Args : Arguments) is
      (Handler : in out Locating_Reader;
       Ch      : Unicode.CES.Byte_Sequence);
 
+   overriding procedure Ignorable_Whitespace
+     (Handler : in out Locating_Reader;
+      Ch      : Unicode.CES.Byte_Sequence);
+   --  (The reader's report of text made of blanks only.)
+
    overriding procedure Comment
      (Handler : in out Locating_Reader;
       Comment : Unicode.CES.Byte_Sequence);
@@ -120,8 +126,10 @@ procedure Security_Command (Args : Arguments) is
       Data    : Unicode.CES.Byte_Sequence);
 
    overriding procedure Start_Cdata (Handler : in out Locating_Reader);
-   --  These four and the two above note where each event ended (the reader
-   --  tells where an event ends, not where it starts).
+   overriding procedure End_Cdata (Handler : in out Locating_Reader);
+   --  These and the two above note where each event ended (the reader tells
+   --  where an event ends, not where it starts; of a CDATA section, it tells
+   --  where the section ends, even at its start).
 
    XML_Blanks : constant Ada.Strings.Maps.Character_Set :=
      Ada.Strings.Maps.To_Set (' ' & ASCII.HT & ASCII.LF & ASCII.CR);
@@ -161,9 +169,13 @@ procedure Security_Command (Args : Arguments) is
       Ch      : Unicode.CES.Byte_Sequence)
    is
       Place : Sax.Locators.Location := Handler.Last;
-      --  Ch starts where the last event ended: its first non-blank
-      --  character is after the blanks that come first.
+      --  Ch starts where the last event ended (in a CDATA section, after
+      --  the "<![CDATA[" there): its first non-blank character is after the
+      --  blanks that come first.
    begin
+      if Handler.In_Cdata then
+         Place.Column := Place.Column + 9;
+      end if;
       DOM.Readers.Tree_Reader (Handler).Characters (Ch);
       if not Is_Blank (Ch)
         and then (Handler.Texts.Is_Empty
@@ -182,6 +194,14 @@ procedure Security_Command (Args : Arguments) is
       end if;
       Handler.Last := Handler.Current_Location;
    end Characters;
+
+   overriding procedure Ignorable_Whitespace
+     (Handler : in out Locating_Reader;
+      Ch      : Unicode.CES.Byte_Sequence) is
+   begin
+      DOM.Readers.Tree_Reader (Handler).Ignorable_Whitespace (Ch);
+      Handler.Last := Handler.Current_Location;
+   end Ignorable_Whitespace;
 
    overriding procedure Comment
      (Handler : in out Locating_Reader;
@@ -202,8 +222,14 @@ procedure Security_Command (Args : Arguments) is
 
    overriding procedure Start_Cdata (Handler : in out Locating_Reader) is
    begin
-      Handler.Last := Handler.Current_Location;
+      Handler.In_Cdata := True;  --  Last stays where the section starts.
    end Start_Cdata;
+
+   overriding procedure End_Cdata (Handler : in out Locating_Reader) is
+   begin
+      Handler.In_Cdata := False;
+      Handler.Last := Handler.Current_Location;
+   end End_Cdata;
 
    function Image (N : Natural) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));

@@ -76,6 +76,12 @@ def line_of(text, part):
     return text[:text.index(part)].count("\n") + 1
 
 
+def column_after(text, part):
+    """The column of the character after part (1-based)."""
+    start = text.rindex("\n", 0, text.index(part)) + 1
+    return text.index(part) + len(part) - start + 1
+
+
 BAD_POLICIES = [
     # (policy text, substrings of the error) -- each names the file, line
     # and column (found by the fuzzer's policy reader: the XML encoding was
@@ -147,6 +153,13 @@ BAD_POLICIES = [
     (POLICY.replace("<profiles>", "<profiles>\n  allow everything"),
      [f"bad.xml:{line_of(POLICY, '<profiles>') + 1}:",
       "text 'allow everything' in <profiles> (only elements are allowed there)"]),
+    # Located at the text's first character, in a CDATA section or after an
+    # entity reference too (was: the column after the section, or one early).
+    (POLICY.replace("<profiles>", "<profiles>\n<![CDATA[allow]]>"),
+     [f"bad.xml:{line_of(POLICY, '<profiles>') + 1}:10: text 'allow' in <profiles>"]),
+    (POLICY.replace("<profiles>", "<profiles>\t&amp;"),
+     [f"bad.xml:{line_of(POLICY, '<profiles>')}:{column_after(POLICY, '<profiles>') + 1}: "
+      "text '&' in <profiles>"]),
     (POLICY.replace('<topics publish="DENY">', '<topics publish="DENY">chatter'),
      [f"bad.xml:{line_of(POLICY, DENY)}:",
       "text 'chatter' in <topics> (only elements are allowed there)"]),
