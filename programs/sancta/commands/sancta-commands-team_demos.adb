@@ -222,6 +222,80 @@ package body Sancta.Commands.Team_Demos is
                    & """ fill=""" & Hex & """ font-size=""11"" font-family=""sans-serif"">"
                    & Label & "</text>");
       end Mark;
+
+      function Fitted (Name : String; Room, Char_W : Natural) return String is
+        (if Name'Length * Char_W + 4 <= Room then Name
+         elsif Room < 4 + 3 * Char_W then ""
+         else Name (Name'First .. Name'First + (Room - 4) / Char_W - 2) & ".");
+      --  Name when it fits in Room pixels, else its longest prefix that
+      --  fits followed by '.' (at least two letters), else nothing.
+
+      procedure Draw_Row (R : Positive; Names : Boolean) is
+         --  Names: only the tasks' names, else the robot, bars, hatching.
+         Id    : constant String := To_String (Result.Robots (R).Id);
+         Color : constant Raster_Images.Color := Rendering.Color_Of (R);
+         Hex   : constant String := Rendering.Hex (Color);
+         Y     : constant Integer := Row_Y (R);
+         Since : Long_Float := 0.0;
+      begin
+         if not Names then
+            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
+            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
+                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
+         end if;
+         for C of Result.Completions loop
+            if To_String (C.Robot) = Id then
+               declare
+                  X0   : constant Integer := X_Of (Since);
+                  X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+                  Name : constant String := To_String (C.Task_Id);
+                  PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
+                  SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
+               begin
+                  if not Names then
+                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
+                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
+                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                               & Trim (Row_H - 8) & """ fill=""" & Hex
+                               & """ stroke=""white""><title>" & Name & " done at "
+                               & F1 (C.Time) & " s</title></rect>");
+                  else
+                     --  The task's name inside its bar, cut to fit.
+                     if PNG_Name /= "" then
+                        Box (X0 + 2, Y + Row_H / 2 - 5,
+                             X0 + 3 + Glyphs.Text_Width (PNG_Name), Y + Row_H / 2 + 5, Color);
+                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
+                                          Raster_Images.White, Halo => False);
+                     end if;
+                     if SVG_Name /= "" then
+                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                                  & Trim (SVG_Name'Length * 7) & """ fill=""white"""
+                                  & " stroke=""" & Hex & """ stroke-width=""3"""
+                                  & " paint-order=""stroke"""
+                                  & " font-size=""11"" font-family=""sans-serif"">"
+                                  & SVG_Name & "</text>");
+                     end if;
+                  end if;
+                  Since := C.Time;
+               end;
+            end if;
+         end loop;
+         if not Names and then Id = To_String (Result.Killed) then
+            --  Lost: the rest of its row hatched.
+            for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
+               for Yy in Y + 4 .. Y + Row_H - 4 loop
+                  if (X + Yy) mod 6 = 0 then
+                     Raster_Images.Set (Img, X, Yy, Red);
+                  end if;
+               end loop;
+            end loop;
+            Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
+                      & """ y=""" & Trim (Y + 4) & """ width="""
+                      & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
+                      & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
+         end if;
+      end Draw_Row;
    begin
       Create (SVG, Out_File, Dir & "/gantt.svg");
       Put_Line (SVG, "<?xml version=""1.0"" encoding=""UTF-8""?>");
@@ -261,61 +335,11 @@ package body Sancta.Commands.Team_Demos is
             T := T + Tick;
          end loop;
       end;
+      --  Bars, then the event lines over them, then the bars' names over
+      --  the lines (on a patch of the bar's colour: a line never cuts a
+      --  name).
       for R in 1 .. Rows loop
-         declare
-            Id    : constant String := To_String (Result.Robots (R).Id);
-            Color : constant Raster_Images.Color := Rendering.Color_Of (R);
-            Hex   : constant String := Rendering.Hex (Color);
-            Y     : constant Integer := Row_Y (R);
-            Since : Long_Float := 0.0;
-         begin
-            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
-            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
-                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
-            for C of Result.Completions loop
-               if To_String (C.Robot) = Id then
-                  declare
-                     X0   : constant Integer := X_Of (Since);
-                     X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
-                     Name : constant String := To_String (C.Task_Id);
-                  begin
-                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
-                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
-                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
-                               & Trim (Row_H - 8) & """ fill=""" & Hex
-                               & """ stroke=""white""><title>" & Name & " done at "
-                               & F1 (C.Time) & " s</title></rect>");
-                     --  The task's name inside its bar when it fits there.
-                     if Glyphs.Text_Width (Name) + 4 <= X1 - X0 then
-                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Raster_Images.White,
-                                          Halo => False);
-                     end if;
-                     if Name'Length * 7 + 4 <= X1 - X0 then
-                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
-                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
-                                  & Trim (Name'Length * 7) & """ fill=""white"""
-                                  & " font-size=""11"" font-family=""sans-serif"">" & Name
-                                  & "</text>");
-                     end if;
-                     Since := C.Time;
-                  end;
-               end if;
-            end loop;
-            if Id = To_String (Result.Killed) then
-               --  Lost: the rest of its row hatched.
-               for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
-                  for Yy in Y + 4 .. Y + Row_H - 4 loop
-                     if (X + Yy) mod 6 = 0 then
-                        Raster_Images.Set (Img, X, Yy, Red);
-                     end if;
-                  end loop;
-               end loop;
-               Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
-                         & """ y=""" & Trim (Y + 4) & """ width="""
-                         & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
-                         & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
-            end if;
-         end;
+         Draw_Row (R, Names => False);
       end loop;
       if Result.Killed /= Null_Unbounded_String then
          Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000", 0);
@@ -323,6 +347,9 @@ package body Sancta.Commands.Team_Demos is
             Mark (Replan, Orange, "re-planned", "#e68200", 1);
          end if;
       end if;
+      for R in 1 .. Rows loop
+         Draw_Row (R, Names => True);
+      end loop;
       Put_Line (SVG, "</svg>");
       Close (SVG);
       Raster_Images.Save_PNG (Img, Dir & "/gantt.png");
