@@ -103,6 +103,14 @@ def test_cancel(client):
     assert again.return_code == 3  # ERROR_GOAL_TERMINATED
     unknown = client.cancel(type(gid)(uuid=[7] * 16))
     assert unknown.return_code == 2  # ERROR_UNKNOWN_GOAL_ID
+    # The status topic ends the goal CANCELED (the last array stays until read),
+    # never going back (executing, canceling, canceled).
+    hex_id, deadline = uuid_hex(gid), time.monotonic() + 10
+    while 5 not in [dict(s).get(hex_id) for s in client.statuses] and time.monotonic() < deadline:
+        client.poll()
+        time.sleep(0.02)
+    seen = [dict(s)[hex_id] for s in client.statuses if hex_id in dict(s)]
+    assert seen and seen[-1] == 5 and seen == sorted(seen) and set(seen) <= {1, 2, 3, 5}, seen
 
 
 def test_action_cli_graph(client):

@@ -321,6 +321,26 @@ package body Sancta.Allocation.Annealers.Moves is
       if abs (Square - S.Total_Square) > 1.0E-7 * Long_Float'Max (1.0, Square) then
          Fail ("sum of squared costs" & S.Total_Square'Image & " vs" & Square'Image);
       end if;
+      for A in 1 .. S.Robots loop
+         --  Max_Except (its cached top three) for robot A alone and with the next robot.
+         declare
+            B : constant Positive := A mod S.Robots + 1;
+            Alone, Pair : Cost := 0;
+         begin
+            for R in 1 .. S.Robots loop
+               if R /= A then
+                  Alone := Cost'Max (Alone, S.Robot_Cost (R));
+                  if R /= B then
+                     Pair := Cost'Max (Pair, S.Robot_Cost (R));
+                  end if;
+               end if;
+            end loop;
+            if Max_Except (S, A, 0) /= Alone or else Max_Except (S, A, B) /= Pair then
+               Fail ("largest cost but robot" & A'Image & ":" & Max_Except (S, A, 0)'Image
+                     & " vs" & Alone'Image);
+            end if;
+         end;
+      end loop;
    end Verify;
 
 end Sancta.Allocation.Annealers.Moves;

@@ -11,6 +11,25 @@ package body Sancta.Allocation.Annealers.Tours is
          I := I / 2;
          S.Max_Tree (I) := Cost'Max (S.Max_Tree (2 * I), S.Max_Tree (2 * I + 1));
       end loop;
+      if S.Robots in 3 .. Top_Robots then
+         --  The three largest costs (robots in order of index among equals).
+         declare
+            Top : Count_Array renames S.Top;
+            C : Cost_Array renames S.Robot_Cost;
+         begin
+            Top := [0, 0, 0];
+            for Q in 1 .. S.Robots loop
+               if Top (1) = 0 or else C (Q) > C (Top (1)) then
+                  Top := [Q, Top (1), Top (2)];
+               elsif Top (2) = 0 or else C (Q) > C (Top (2)) then
+                  Top (3) := Top (2);
+                  Top (2) := Q;
+               elsif Top (3) = 0 or else C (Q) > C (Top (3)) then
+                  Top (3) := Q;
+               end if;
+            end loop;
+         end;
+      end if;
    end Set_Tree_Cost;
 
    function Max_Between (S : State; Lo, Hi : Natural) return Cost is
@@ -43,6 +62,12 @@ package body Sancta.Allocation.Annealers.Tours is
    begin
       if S.Robots = 1 then
          return (if A = 0 then S.Max_Tree (1) else 0);
+      elsif S.Robots <= Top_Robots and then S.Robots >= 3 then
+         for Q of S.Top loop
+            if Q /= A and then Q /= B then
+               return S.Robot_Cost (Q);
+            end if;
+         end loop;
       end if;
       return Cost'Max (Max_Between (S, 1, Lo - 1),
                        Cost'Max (Max_Between (S, Lo + 1, Hi - 1),
