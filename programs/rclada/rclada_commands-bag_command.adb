@@ -124,7 +124,18 @@ procedure Bag_Command (Args : Arguments) is
             raise Usage_Error with "--compression: " & Ada.Exceptions.Exception_Message (E);
       end;
       for I in Positionals.First_Index + 1 .. Positionals.Last_Index loop
-         Topics.Append (Positionals (I));
+         declare
+            Name : constant String := Positionals (I);
+            Full : constant String :=
+              (if Name'Length > 0 and then Name (Name'First) /= '/' then "/" & Name else Name);
+            --  As the recorder makes a relative name absolute.
+         begin
+            if RCL.Names.Topic_Problem (Full) /= "" then
+               --  Was recorded as a wish no topic can fulfil: nothing, silently.
+               raise Usage_Error with "bag record: " & RCL.Names.Topic_Problem (Full);
+            end if;
+            Topics.Append (Name);
+         end;
       end loop;
       if Topics.Is_Empty and then not Flag ("-a", "--all") then
          raise Usage_Error with "bag record needs topics, or -a to record every topic";
@@ -156,6 +167,12 @@ procedure Bag_Command (Args : Arguments) is
                 & " topics into '" & Output & "'");
    end Record_Bag;
 
+   function Extra_Argument return String is
+     (if Natural (Positionals.Length) > 2
+      then ", not also '" & RCL.Names.Shortened (Positionals (3)) & "'"
+      else "");
+   --  The first argument past the bag, for the usage error.
+
    procedure Warn (Reader : RCL.Bags.Bag_Reader) is
    begin
       if Reader.Warning /= "" then
@@ -171,7 +188,8 @@ procedure Bag_Command (Args : Arguments) is
       Reader : RCL.Bags.Bag_Reader;
    begin
       if Positionals.Length /= 2 then
-         raise Usage_Error with "bag info takes one bag (directory or .mcap file)";
+         raise Usage_Error with "bag info takes one bag (directory or .mcap file)"
+           & Extra_Argument;
       end if;
       begin
          Reader.Open (Positionals (2), Recover => Flag ("--recover", "--recover"));
@@ -233,7 +251,8 @@ procedure Bag_Command (Args : Arguments) is
       Stopped : exception;
    begin
       if Positionals.Length /= 2 then
-         raise Usage_Error with "bag play takes one bag (directory or .mcap file)";
+         raise Usage_Error with "bag play takes one bag (directory or .mcap file)"
+           & Extra_Argument;
       end if;
       begin
          Reader.Open (Positionals (2));

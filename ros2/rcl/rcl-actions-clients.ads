@@ -10,7 +10,7 @@
 --             "fibonacci", On_Feedback'Access, On_Status'Access);
 --     C.Wait_For_Server (Timeout => 5.0);
 --     Id := C.Send_Goal (Goal);                 --  Goal_Rejected if refused
---     ... C.Status (Id) ...                     --  Executing, while it runs
+--     Status := C.Status (Id);                  --  Executing, while it runs
 --     C.Get_Result (Id, Status, Result);        --  waits for the end
 --     Code := C.Cancel_Goal (Id);
 with ROSIDL.Dynamic;

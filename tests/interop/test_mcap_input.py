@@ -259,3 +259,18 @@ def test_one_topic_with_two_types_is_refused(tmp_path):
                        r"'std_msgs/msg/Int32' here, 'std_msgs/msg/String' in split_0\.mcap on "
                        r"channel 2")
     assert record_content_at((bag / "split_1.mcap").read_bytes(), offset, OP_CHANNEL, 2)
+
+
+def test_bag_command_lines(tmp_path):
+    # A topic name no topic can have was a wish recorded silently (rc 0,
+    # "Recorded 0 messages"); an argument past the bag was not named.
+    out = tmp_path / "rec"
+    r = rclada("bag", "record", "/bad topic", "-o", out, "--duration", "0.2")
+    assert r.returncode == 2, r.stdout + r.stderr
+    assert ("bag record: topic name \"/bad topic\": invalid character ' ' at position 5"
+            in r.stderr), r.stderr
+    assert not out.exists()
+    path = write(tmp_path / "ok.mcap")
+    r = rclada("bag", "play", path, "--clock", "x")
+    assert r.returncode == 2 and ("bag play takes one bag (directory or .mcap file), not also "
+                                  "'x'") in r.stderr, r.stderr

@@ -9,3 +9,5 @@ Status : Goal_Status;
 Code   : Cancel_Code;
 procedure On_Feedback (Node : in out Nodes.Node'Class; Goal : Goal_Id;
                        Feedback : ROSIDL.Dynamic.Message) is null;
+procedure On_Status (Node : in out Nodes.Node'Class; Goal : Goal_Id;
+                     Status : Goal_Status) is null;
