@@ -10,7 +10,7 @@ debian_packages=(make gnat gprbuild libxmlada-dom12-dev libxmlada-sax12-dev
                  python3 python3-venv graphviz iproute2
                  libgtkada22-dev fonts-dejavu-core xvfb x11-utils imagemagick
                  alire libfastrtps-dev g++ openssl libglpk-dev
-                 libzstd-dev liblz4-dev zlib1g-dev)
+                 libzstd-dev liblz4-dev zlib1g-dev libsqlite3-dev)
 # libgtkada22-dev: sancta-view (GtkAda, Cairo); fonts-dejavu-core: its text;
 # xvfb, x11-utils (xwininfo), imagemagick (import): its tests on a virtual display.
 # alire: the Alire crates' test (scripts/alire-build.sh).
@@ -18,6 +18,7 @@ debian_packages=(make gnat gprbuild libxmlada-dom12-dev libxmlada-sax12-dev
 # SROS2 keystores of rclada security and the secured tests.
 # libglpk-dev: the branch-and-cut solver (Sancta.Allocation.GLPK).
 # libzstd-dev, liblz4-dev, zlib1g-dev: MCAP chunk compression and CRCs (RCL.MCAP).
+# libsqlite3-dev: rosbag2 sqlite3 bags (.db3, Humble's default) read by RCL.SQLite.
 [ "${1:-}" = "--bench" ] && debian_packages+=(rt-tests)
 
 missing=()

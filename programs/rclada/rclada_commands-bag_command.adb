@@ -1,4 +1,5 @@
---  rclada bag record | info | play, as "ros2 bag" with its MCAP storage
+--  rclada bag record | info | play, as "ros2 bag" with its MCAP storage (info
+--  and play also read its sqlite3 storage, .db3)
 --  (RCL.Bags: rosbag2's directory layout and metadata.yaml).
 with Ada.Calendar.Formatting;
 with Ada.Command_Line;
@@ -188,7 +189,7 @@ procedure Bag_Command (Args : Arguments) is
       Reader : RCL.Bags.Bag_Reader;
    begin
       if Positionals.Length /= 2 then
-         raise Usage_Error with "bag info takes one bag (directory or .mcap file)"
+         raise Usage_Error with "bag info takes one bag (directory, .mcap or .db3 file)"
            & Extra_Argument;
       end if;
       begin
@@ -251,7 +252,7 @@ procedure Bag_Command (Args : Arguments) is
       Stopped : exception;
    begin
       if Positionals.Length /= 2 then
-         raise Usage_Error with "bag play takes one bag (directory or .mcap file)"
+         raise Usage_Error with "bag play takes one bag (directory, .mcap or .db3 file)"
            & Extra_Argument;
       end if;
       begin

@@ -1,5 +1,6 @@
 with Ada.Calendar.Formatting;
 with Ada.Containers.Indefinite_Ordered_Sets;
+with Ada.Containers.Ordered_Maps;
 with Ada.Directories;
 with Ada.Exceptions;
 with Ada.Streams.Stream_IO;
@@ -9,6 +10,7 @@ with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.YAML_Strings;
 with RCL.Names;
+with RCL.SQLite;
 with RCL.YAML;
 
 package body RCL.Bags is
@@ -22,6 +24,8 @@ package body RCL.Bags is
      (Ada.Strings.Fixed.Trim (S, Ada.Strings.Both));
 
    function Image (V : Unsigned_64) return String is (Trim (V'Image));
+   function Row_Image (V : Integer_64) return String is (" " & Trim (V'Image));
+   --  With a space before it, as 'Image of a positive number.
 
    function Strip_Trailing_Newlines (S : String) return String is
       Last : Natural := S'Last;
@@ -267,7 +271,7 @@ package body RCL.Bags is
       This.Files.Append
         (File_Entry'(Name => To_Unbounded_String
                        (Ada.Directories.Simple_Name (File_Path (This, Index))),
-                     First => 0, Last => 0, Count => 0));
+                     First => 0, Last => 0, Count => 0, Storage => MCAP_Storage));
       This.Schema_Types.Clear;
       for T of This.Topics loop
          T.Channel := 0;
@@ -345,7 +349,7 @@ package body RCL.Bags is
                       Type_Name => To_Unbounded_String (Type_Name),
                       QoS_Text => To_Unbounded_String (Offered_QoS),
                       Count    => 0, Channel => 0, Schema => 0, File => 0,
-                      Channel_At | Schema_At => 0));
+                      Channel_At | Schema_At => 0, Row => 0));
       Ensure_Channel (This, This.Topics.Last_Index);
       return This.Topics.Last_Index;
    end Add_Topic;
@@ -501,7 +505,8 @@ package body RCL.Bags is
                Result.Clear;
                Warning := To_Unbounded_String
                  (Ada.Exceptions.Exception_Message (E)
-                  & " (metadata.yaml not understood: the directory's .mcap files are read)");
+                  & " (metadata.yaml not understood: the directory's .mcap or .db3 files are"
+                  & " read)");
          end;
       end if;
       if Result.Is_Empty then
@@ -510,17 +515,284 @@ package body RCL.Bags is
             Search : Search_Type;
             Item   : Directory_Entry_Type;
          begin
-            Start_Search (Search, Directory, "*.mcap", [Ordinary_File => True, others => False]);
-            while More_Entries (Search) loop
-               Get_Next_Entry (Search, Item);
-               Result.Append (Full_Name (Item));
+            for Extension in 1 .. 2 loop
+               exit when not Result.Is_Empty;
+               Start_Search (Search, Directory, (if Extension = 1 then "*.mcap" else "*.db3"),
+                             [Ordinary_File => True, others => False]);
+               while More_Entries (Search) loop
+                  Get_Next_Entry (Search, Item);
+                  Result.Append (Full_Name (Item));
+               end loop;
+               End_Search (Search);
             end loop;
-            End_Search (Search);
             Sorting.Sort (Result);
          end;
       end if;
       return Result;
    end Listed_Files;
+
+   --  rosbag2's sqlite3 storage ------------------------------------------------------
+
+   function Is_SQLite_File (Path : String) return Boolean is
+      --  The database header, whatever the file's name.
+      use Ada.Streams.Stream_IO;
+      Header : constant String := "SQLite format 3" & ASCII.NUL;
+      F      : File_Type;
+      Start  : String (Header'Range);
+   begin
+      Open (F, In_File, Path);
+      if Size (F) < Header'Length then
+         Close (F);
+         return False;
+      end if;
+      String'Read (Stream (F), Start);
+      Close (F);
+      return Start = Header;
+   exception
+      when others =>
+         if Is_Open (F) then
+            Close (F);
+         end if;
+         return False;
+   end Is_SQLite_File;
+
+   package Id_Maps is new Ada.Containers.Ordered_Maps (Integer_64, Topic_Index);
+   --  A .db3 file's topics.id to the reader's topic.
+
+   procedure Check_Tables (DB : RCL.SQLite.Database; Place : String) is
+      --  The tables and columns rosbag2's sqlite3 storage has at every
+      --  schema version (offered_qos_profiles from version 2 on is optional).
+      procedure Need_Table (Table : String) is
+      begin
+         if not DB.Table_Exists (Table) then
+            raise Bag_Error with Place & ": no table '" & Table
+              & "' (a SQLite database, but no rosbag2 sqlite3 bag)";
+         end if;
+      end Need_Table;
+
+      procedure Need_Column (Table, Column : String) is
+      begin
+         if not DB.Has_Column (Table, Column) then
+            raise Bag_Error with Place & ": table " & Table & " has no column '"
+              & Column & "' (a rosbag2 sqlite3 bag has)";
+         end if;
+      end Need_Column;
+   begin
+      Need_Table ("topics");
+      Need_Table ("messages");
+      Need_Column ("topics", "id");
+      Need_Column ("topics", "name");
+      Need_Column ("topics", "type");
+      Need_Column ("topics", "serialization_format");
+      Need_Column ("messages", "id");
+      Need_Column ("messages", "topic_id");
+      Need_Column ("messages", "timestamp");
+      Need_Column ("messages", "data");
+   end Check_Tables;
+
+   procedure Open_SQLite (This : in out Bag_Reader; Path : String) is
+      use RCL.SQLite;
+      Place  : constant String := RCL.Names.Shortened (Path, 80, 57);
+      File   : constant Positive := Natural (This.Files.Length) + 1;
+      DB     : Database;
+      Ids    : Id_Maps.Map;
+      Entry_Of_File : File_Entry :=
+        (Name => To_Unbounded_String (Path), Storage => SQLite_Storage, others => <>);
+   begin
+      DB.Open_Read_Only (Path, Label => Place);
+      Check_Tables (DB, Place);
+      declare
+         Has_QoS : constant Boolean := DB.Has_Column ("topics", "offered_qos_profiles");
+         S       : Statement;
+      begin
+         S.Prepare (DB, "SELECT rowid, id, name, type, serialization_format"
+                    & (if Has_QoS then ", offered_qos_profiles" else ", NULL")
+                    & " FROM topics ORDER BY rowid");
+         while S.Step loop
+            declare
+               Row   : constant Integer_64 := S.Int (0);
+               Where : constant String := Place & ": topics row" & Row_Image (Row);
+               procedure Expect (Column : Natural; Name : String; Kind : Value_Kind) is
+               begin
+                  if S.Kind (Column) /= Kind then
+                     raise Bag_Error with Where & ": " & Name & " is "
+                       & Kind_Name (S.Kind (Column)) & ", expected " & Kind_Name (Kind);
+                  end if;
+               end Expect;
+            begin
+               Expect (1, "id", Integer_Value);
+               Expect (2, "name", Text_Value);
+               Expect (3, "type", Text_Value);
+               Expect (4, "serialization_format", Text_Value);
+               if S.Kind (5) not in Text_Value | Null_Value then
+                  Expect (5, "offered_qos_profiles", Text_Value);
+               end if;
+               declare
+                  Id      : constant Integer_64 := S.Int (1);
+                  Name    : constant String := S.Text (2);
+                  Of_Type : constant String := S.Text (3);
+                  Format  : constant String := S.Text (4);
+                  Found   : Topic_Index'Base := Find_Topic (This.Topics, Name);
+
+                  function Topic_Was return String is
+                    --  Where the topic was first: this file's row, or
+                    --  another file's row or channel record.
+                    (if This.Topics (Found).File = File
+                     then "in topics row" & Row_Image (This.Topics (Found).Row)
+                     elsif This.Files (This.Topics (Found).File).Storage = SQLite_Storage
+                     then "in " & Ada.Directories.Simple_Name
+                       (To_String (This.Files (This.Topics (Found).File).Name))
+                       & " topics row" & Row_Image (This.Topics (Found).Row)
+                     else "in " & Ada.Directories.Simple_Name
+                       (To_String (This.Files (This.Topics (Found).File).Name))
+                       & " on channel" & This.Topics (Found).Channel'Image);
+               begin
+                  if Ids.Contains (Id) then
+                     raise Bag_Error with Where & ": id" & Row_Image (Id)
+                       & " is another row's too";
+                  elsif Format /= "cdr" then
+                     raise Bag_Error with Where & ": topic '" & RCL.Names.Shortened (Name)
+                       & "': serialization_format '" & RCL.Names.Shortened (Format)
+                       & "' (only cdr is read)";
+                  elsif Found /= 0 and then This.Topics (Found).Type_Name /= Of_Type then
+                     raise Bag_Error with Where & ": topic '" & RCL.Names.Shortened (Name)
+                       & "' is '" & RCL.Names.Shortened (Of_Type) & "' here, '"
+                       & RCL.Names.Shortened (To_String (This.Topics (Found).Type_Name))
+                       & "' " & Topic_Was;
+                  elsif Found = 0 then
+                     This.Topics.Append
+                       (Topic_Entry'(Name      => To_Unbounded_String (Name),
+                                     Type_Name => To_Unbounded_String (Of_Type),
+                                     QoS_Text  => To_Unbounded_String
+                                       (if S.Kind (5) = Text_Value then S.Text (5) else ""),
+                                     Count     => 0, Channel => 0, Schema => 0,
+                                     File      => File,
+                                     Channel_At | Schema_At => 0,
+                                     Row       => Row));
+                     Found := This.Topics.Last_Index;
+                  end if;
+                  Ids.Insert (Id, Found);
+               end;
+            end;
+         end loop;
+      end;
+      declare
+         --  The first row that cannot be played, in one pass.
+         S : Statement;
+      begin
+         S.Prepare (DB, "SELECT rowid, typeof (topic_id), typeof (timestamp), typeof (data),"
+                    & " topic_id, timestamp FROM messages"
+                    & " WHERE typeof (topic_id) <> 'integer' OR typeof (timestamp) <> 'integer'"
+                    & " OR typeof (data) <> 'blob' OR length (data) = 0 OR timestamp < 0"
+                    & " OR topic_id NOT IN (SELECT id FROM topics) ORDER BY rowid LIMIT 1");
+         if S.Step then
+            declare
+               Where : constant String := Place & ": messages row" & Row_Image (S.Int (0)) & ": ";
+            begin
+               if S.Text (1) /= "integer" then
+                  raise Bag_Error with Where & "topic_id is " & S.Text (1)
+                    & ", expected integer";
+               elsif S.Text (2) /= "integer" then
+                  raise Bag_Error with Where & "timestamp is " & S.Text (2)
+                    & ", expected integer";
+               elsif S.Text (3) /= "blob" then
+                  raise Bag_Error with Where & "data is " & S.Text (3) & ", expected blob";
+               elsif S.Int (5) < 0 then
+                  raise Bag_Error with Where & "timestamp" & Row_Image (S.Int (5))
+                    & " is negative (nanoseconds since 1970)";
+               elsif not Ids.Contains (S.Int (4)) then
+                  raise Bag_Error with Where & "topic_id" & Row_Image (S.Int (4))
+                    & " names no topic";
+               end if;
+               raise Bag_Error with Where & "data is empty (0 bytes; a CDR message has 4 or"
+                 & " more)";
+            end;
+         end if;
+      end;
+      declare
+         S : Statement;
+      begin
+         S.Prepare (DB, "SELECT topic_id, count (*), min (timestamp), max (timestamp)"
+                    & " FROM messages GROUP BY topic_id");
+         while S.Step loop
+            declare
+               T     : Topic_Entry renames This.Topics (Ids (S.Int (0)));
+               Count : constant Unsigned_64 := Unsigned_64 (S.Int (1));
+               First : constant Time_Stamp := Time_Stamp (S.Int (2));
+               Last  : constant Time_Stamp := Time_Stamp (S.Int (3));
+            begin
+               T.Count := T.Count + Count;
+               if Entry_Of_File.Count = 0 or else First < Entry_Of_File.First then
+                  Entry_Of_File.First := First;
+               end if;
+               Entry_Of_File.Last := Time_Stamp'Max (Entry_Of_File.Last, Last);
+               Entry_Of_File.Count := Entry_Of_File.Count + Count;
+            end;
+         end loop;
+      end;
+      if Entry_Of_File.Count > 0 then
+         if This.Total = 0 or else Entry_Of_File.First < This.First then
+            This.First := Entry_Of_File.First;
+         end if;
+         This.Last := Time_Stamp'Max (This.Last, Entry_Of_File.Last);
+      end if;
+      This.Total := This.Total + Entry_Of_File.Count;
+      This.Size := This.Size + Unsigned_64 (Ada.Directories.Size (Path));
+      This.Files.Append (Entry_Of_File);
+   exception
+      when E : SQLite_Error =>
+         raise Bag_Error with Ada.Exceptions.Exception_Message (E);
+   end Open_SQLite;
+
+   procedure Iterate_SQLite
+     (This    : in out Bag_Reader;
+      Process : not null access procedure
+        (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
+   is
+      --  The file This.Now_File, which Open_SQLite checked.
+      use RCL.SQLite;
+      Path  : constant String := To_String (This.Files (This.Now_File).Name);
+      Place : constant String := RCL.Names.Shortened (Path, 80, 57);
+      DB    : Database;
+      Ids   : Id_Maps.Map;
+   begin
+      DB.Open_Read_Only (Path, Label => Place);
+      declare
+         S : Statement;
+      begin
+         S.Prepare (DB, "SELECT id, name FROM topics");
+         while S.Step loop
+            Ids.Include (S.Int (0), Find_Topic (This.Topics, S.Text (1)));
+         end loop;
+      end;
+      declare
+         S : Statement;
+         Topic : Topic_Index'Base;
+         Stamp : Integer_64;
+         procedure Each (Data : Ada.Streams.Stream_Element_Array) is
+         begin
+            Process (Topic, Time_Stamp (Stamp), Data);
+         end Each;
+      begin
+         S.Prepare (DB, "SELECT rowid, topic_id, timestamp, data FROM messages"
+                    & " ORDER BY timestamp, rowid");
+         while S.Step loop
+            This.Now_Row := S.Int (0);
+            Stamp := S.Int (2);
+            Topic := (if Ids.Contains (S.Int (1)) then Ids (S.Int (1)) else 0);
+            if Topic = 0 or else Stamp < 0 then
+               --  Open_SQLite checked every row: the file changed since.
+               raise Bag_Error with Place & ": messages row" & Row_Image (This.Now_Row)
+                 & ": topic_id" & Row_Image (S.Int (1)) & " or timestamp" & Row_Image (Stamp)
+                 & " is not what the file held when opened (changed since?)";
+            end if;
+            S.Blob (3, Each'Access);
+         end loop;
+      end;
+   exception
+      when E : SQLite_Error =>
+         raise Bag_Error with Ada.Exceptions.Exception_Message (E);
+   end Iterate_SQLite;
 
    procedure Open (This : in out Bag_Reader; Path : String; Recover : Boolean := False) is
       use Ada.Directories;
@@ -540,7 +812,7 @@ package body RCL.Bags is
       elsif Kind (Path) = Directory then
          Paths := Listed_Files (Path, This.Warning);
          if Paths.Is_Empty then
-            raise Bag_Error with Path & ": no .mcap file in this directory";
+            raise Bag_Error with Path & ": no .mcap or .db3 file in this directory";
          end if;
       else
          Paths.Append (Path);
@@ -548,6 +820,9 @@ package body RCL.Bags is
       for P of Paths loop
          if not Exists (P) then
             raise Bag_Error with P & ": listed in metadata.yaml but missing";
+         elsif Is_SQLite_File (P) then
+            Open_SQLite (This, P);
+            goto Next_File;
          end if;
          This.Current.Open (P, Recover);
          This.Size := This.Size + Unsigned_64 (Size (P));
@@ -586,7 +861,8 @@ package body RCL.Bags is
                                   File      => Natural (This.Files.Length) + 1,
                                   Channel_At => This.Current.Channel_Offset (I),
                                   Schema_At  => (if C.Schema = 0 then 0
-                                                 else This.Current.Schema_Offset (C.Schema))));
+                                                 else This.Current.Schema_Offset (C.Schema)),
+                                  Row        => 0));
                   Found := This.Topics.Last_Index;
                end if;
                This.Topics (Found).Count :=
@@ -603,8 +879,10 @@ package body RCL.Bags is
          This.Files.Append (File_Entry'(Name  => To_Unbounded_String (P),
                                         First => This.Current.Start_Time,
                                         Last  => This.Current.End_Time,
-                                        Count => This.Current.Message_Count));
+                                        Count => This.Current.Message_Count,
+                                        Storage => MCAP_Storage));
          This.Current.Close;
+         <<Next_File>>
       end loop;
    end Open;
 
@@ -621,17 +899,24 @@ package body RCL.Bags is
      (RCL.Names.Shortened (To_String (This.Files (File).Name), 80, 57));
 
    function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String is
-     (File_Place (This, This.Topics (Topic).File) & ": byte "
-      & Image (This.Topics (Topic).Channel_At) & ": channel"
-      & This.Topics (Topic).Channel'Image);
+     (if This.Files (This.Topics (Topic).File).Storage = SQLite_Storage
+      then File_Place (This, This.Topics (Topic).File) & ": topics row"
+        & Row_Image (This.Topics (Topic).Row)
+      else File_Place (This, This.Topics (Topic).File) & ": byte "
+        & Image (This.Topics (Topic).Channel_At) & ": channel"
+        & This.Topics (Topic).Channel'Image);
 
    function Type_Place (This : Bag_Reader; Topic : Topic_Index) return String is
-     (if This.Topics (Topic).Schema = 0 then Topic_Place (This, Topic)
+     (if This.Topics (Topic).Schema = 0
+        or else This.Files (This.Topics (Topic).File).Storage = SQLite_Storage
+      then Topic_Place (This, Topic)
       else File_Place (This, This.Topics (Topic).File) & ": byte "
         & Image (This.Topics (Topic).Schema_At) & ": schema" & This.Topics (Topic).Schema'Image);
 
    function Message_Place (This : Bag_Reader) return String is
-     (File_Place (This, This.Now_File) & ": " & RCL.MCAP.Readers.Place (This.Now_Message));
+     (if This.Files (This.Now_File).Storage = SQLite_Storage
+      then File_Place (This, This.Now_File) & ": messages row" & Row_Image (This.Now_Row)
+      else File_Place (This, This.Now_File) & ": " & RCL.MCAP.Readers.Place (This.Now_Message));
 
    function Message_Count (This : Bag_Reader) return Unsigned_64 is (This.Total);
    function Start_Time (This : Bag_Reader) return Time_Stamp is (This.First);
@@ -651,6 +936,10 @@ package body RCL.Bags is
    begin
       for File in This.Files.First_Index .. This.Files.Last_Index loop
          This.Now_File := File;
+         if This.Files (File).Storage = SQLite_Storage then
+            Iterate_SQLite (This, Process);
+            goto Next_File;
+         end if;
          This.Current.Open (To_String (This.Files (File).Name), This.Recover);
          declare
             type Topic_Map is array (RCL.MCAP.Channel_Id range <>) of Topic_Index'Base;
@@ -685,6 +974,7 @@ package body RCL.Bags is
             end;
          end;
          This.Current.Close;
+         <<Next_File>>
       end loop;
    end Iterate;
 
@@ -739,14 +1029,19 @@ package body RCL.Bags is
                  & Ada.Directories.Simple_Name (This.File_Name (I)) & LF);
       end loop;
       Append (Result, "Bag size:          " & Size_Image (This.Size) & LF);
-      Append (Result, "Storage id:        mcap" & LF);
+      Append (Result, "Storage id:        "
+              & (if not This.Files.Is_Empty
+                   and then This.Files.First_Element.Storage = SQLite_Storage
+                 then "sqlite3" else "mcap") & LF);
       Append (Result, "Duration:          " & Seconds (This.Last - This.First) & "s" & LF);
       Append (Result, "Start:             " & Date (This.First) & LF);
       Append (Result, "End:               " & Date (This.Last) & LF);
       Append (Result, "Messages:          " & Image (This.Total) & LF);
       Append (Result, "Compression:       "
-              & (if This.Compression = Null_Unbounded_String then "none"
-                 else To_String (This.Compression)) & " (chunks)" & LF);
+              & (if not This.Files.Is_Empty
+                   and then This.Files.First_Element.Storage = SQLite_Storage then "none"
+                 elsif This.Compression = Null_Unbounded_String then "none (chunks)"
+                 else To_String (This.Compression) & " (chunks)") & LF);
       for T of This.Topics loop
          Width := Natural'Max (Width, Length (T.Name));
          Type_Width := Natural'Max (Type_Width, Length (T.Type_Name));

@@ -5,7 +5,12 @@
 --  80 '=' and "MSG: pkg/msg/Name"), one channel per topic with message
 --  encoding "cdr" and metadata offered_qos_profiles (the publishers' QoS in
 --  rosbag2's YAML). RCL.Bags.Recorders records live topics; `rclada bag`
---  is the command line.
+--  is the command line. Bag_Reader also reads rosbag2's sqlite3 storage
+--  (Humble's default: bag_0.db3... SQLite databases, read-only through
+--  RCL.SQLite): tables topics (id, name, type, serialization_format, and
+--  offered_qos_profiles from schema version 2) and messages (id, topic_id,
+--  timestamp, data); the schema, metadata and message_definitions tables of
+--  schema versions 3 and 4 are not needed to play.
 --  Example:
 --     W : Bag_Writer;
 --     W.Create ("out/run", Compression => RCL.MCAP.Zstd);
@@ -114,9 +119,14 @@ package RCL.Bags is
 
    procedure Open (This : in out Bag_Reader; Path : String; Recover : Boolean := False);
    --  A bag directory (the files metadata.yaml lists, else its *.mcap files
-   --  in name order) or one .mcap file. Bag_Error when there is no MCAP
-   --  file; RCL.MCAP.Format_Error (with the byte offset) when one is bad;
-   --  Recover reads truncated files up to their last complete record.
+   --  in name order, else its *.db3 files) or one .mcap or .db3 file.
+   --  Bag_Error when there is no such file; RCL.MCAP.Format_Error (with the
+   --  byte offset) when an MCAP file is bad; Recover reads truncated MCAP
+   --  files up to their last complete record. A SQLite file (known by its
+   --  header, whatever its name) that is no rosbag2 bag raises Bag_Error
+   --  naming the file and the table, column or row ("run_0.db3: messages
+   --  row 17: topic_id 9 names no topic"); one SQLite cannot read, with
+   --  SQLite's own message ("run_0.db3: database disk image is malformed").
 
    function Topic_Count (This : Bag_Reader) return Natural;
    function Topic_Name (This : Bag_Reader; Topic : Topic_Index) return String;
@@ -128,10 +138,12 @@ package RCL.Bags is
 
    function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String;
    --  Where the topic's channel record is, for an error about the topic:
-   --  "run/run_0.mcap: byte 345: channel 2" (the first file that has it).
+   --  "run/run_0.mcap: byte 345: channel 2" (the first file that has it);
+   --  in a .db3 file its row of table topics ("run/run_0.db3: topics row 2").
    function Type_Place (This : Bag_Reader; Topic : Topic_Index) return String;
    --  Where its schema record is, for an error about the type:
-   --  "run/run_0.mcap: byte 120: schema 1" (Topic_Place when it has none).
+   --  "run/run_0.mcap: byte 120: schema 1" (Topic_Place when it has none,
+   --  and in a .db3 file).
 
    function Message_Count (This : Bag_Reader) return Interfaces.Unsigned_64;
    function Start_Time (This : Bag_Reader) return Time_Stamp;
@@ -150,11 +162,13 @@ package RCL.Bags is
      (This    : in out Bag_Reader;
       Process : not null access procedure
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array));
-   --  Every message, file after file, in receive-time order within a file.
+   --  Every message, file after file, in receive-time order within a file
+   --  (in a .db3 file, messages of one time in row order, as rosbag2).
 
    function Message_Place (This : Bag_Reader) return String;
    --  During Iterate, where the message being processed is, for an error
-   --  about it: "run/run_0.mcap: byte 900: the chunk's uncompressed byte 56".
+   --  about it: "run/run_0.mcap: byte 900: the chunk's uncompressed byte 56",
+   --  "run/run_0.db3: messages row 17".
 
    function Info (This : Bag_Reader) return String;
    --  What "ros2 bag info" prints: files, size, storage, duration, start,
@@ -174,11 +188,16 @@ private
       File    : Natural := 0;
       Channel_At, Schema_At : Interfaces.Unsigned_64 := 0;
       --  The reader's: in that file, its schema and where the records are.
+      Row : Interfaces.Integer_64 := 0;
+      --  In a .db3 file: its row (rowid) in table topics.
    end record;
    package Topic_Vectors is new Ada.Containers.Vectors (Topic_Index, Topic_Entry);
 
+   type Storage_Kind is (MCAP_Storage, SQLite_Storage);
+
    type File_Entry is record
       Name          : Unbounded_String;
+      Storage       : Storage_Kind := MCAP_Storage;
       First, Last   : Time_Stamp := 0;
       Count         : Interfaces.Unsigned_64 := 0;
    end record;
@@ -214,7 +233,9 @@ private
       Current     : RCL.MCAP.Readers.Reader;
       Now_File    : Natural := 0;
       Now_Message : RCL.MCAP.Readers.Message;
-      --  During Iterate: the file and the message being processed.
+      Now_Row     : Interfaces.Integer_64 := 0;
+      --  During Iterate: the file and the message being processed (in a
+      --  .db3 file, its row).
    end record;
 
 end RCL.Bags;
