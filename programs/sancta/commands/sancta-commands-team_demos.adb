@@ -241,12 +241,18 @@ package body Sancta.Commands.Team_Demos is
          end;
       end Mark;
 
+      function Stem (S : String) return String is
+        (if S'Length > 1 and then S (S'Last) in '_' | '-' | ' ' | '.'
+         then Stem (S (S'First .. S'Last - 1)) else S);
+      --  S without the separators it ends with ("EXIT_" -> "EXIT").
+
       function Fitted (Name : String; Room, Char_W : Natural) return String is
         (if Name'Length * Char_W + 4 <= Room then Name
          elsif Room < 4 + 3 * Char_W then ""
-         else Name (Name'First .. Name'First + (Room - 4) / Char_W - 2) & ".");
+         else Stem (Name (Name'First .. Name'First + (Room - 4) / Char_W - 2)) & ".");
       --  Name when it fits in Room pixels, else its longest prefix that
-      --  fits followed by '.' (at least two letters), else nothing.
+      --  fits (separators at its end left out) followed by '.' (at least
+      --  one letter), else nothing.
 
       procedure Draw_Row (R : Positive; Names : Boolean) is
          --  Names: only the tasks' names, else the robot, bars, hatching.
@@ -416,7 +422,7 @@ package body Sancta.Commands.Team_Demos is
                & (if Lost = "" then "" else ", " & Lost), Scene, Tasks => False);
       if Result.Plan_Before.Generation > 0 then
          Picture ("plan-before", "First plan (round" & Result.Plan_Before.Generation'Image
-                  & "), makespan " & F1 (Result.Planned_Makespan) & " m",
+                  & "), longest tour " & F1 (Result.Planned_Makespan) & " m",
                   Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
                                  Map'Access), Tasks => True);
       end if;
