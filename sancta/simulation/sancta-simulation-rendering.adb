@@ -60,10 +60,15 @@ package body Sancta.Simulation.Rendering is
      (Anchors_X, Anchors_Y : Pixel_Array;
       Widths               : Pixel_Array;
       Height               : Natural;
-      Left, Top, Right, Bottom : Integer) return Label_Boxes
+      Left, Top, Right, Bottom : Integer;
+      Marker_Radius        : Natural := 4;
+      Ink                  : access function (X, Y : Integer) return Boolean := null)
+      return Label_Boxes
    is
       N      : constant Natural := Anchors_X'Length;
       Result : Label_Boxes (1 .. N);
+      D      : constant Natural := Marker_Radius + 3;
+      --  From the anchor to the label's side.
 
       function Inside (B : Label_Box) return Boolean is
         (B.X >= Left and then B.Y >= Top and then B.X + B.Width - 1 <= Right
@@ -91,6 +96,25 @@ package body Sancta.Simulation.Rendering is
          end loop;
          return True;
       end Free;
+
+      function Inked (B : Label_Box; Limit : Natural) return Natural is
+         --  Drawn pixels under B and its margin, counted up to Limit.
+         Count : Natural := 0;
+      begin
+         if Ink /= null then
+            for Y in B.Y - 1 .. B.Y + B.Height loop
+               for X in B.X - 1 .. B.X + B.Width loop
+                  if Ink (X, Y) then
+                     Count := Count + 1;
+                     if Count >= Limit then
+                        return Count;
+                     end if;
+                  end if;
+               end loop;
+            end loop;
+         end if;
+         return Count;
+      end Inked;
    begin
       for I in 1 .. N loop
          declare
@@ -99,46 +123,55 @@ package body Sancta.Simulation.Rendering is
             W    : constant Natural := Widths (I);
             H    : constant Natural := Height;
             Near : constant array (1 .. 8) of Label_Box :=
-              [Label_Box'(AX + 7, AY - H / 2, W, H, False),
-               Label_Box'(AX - 7 - W, AY - H / 2, W, H, False),
-               Label_Box'(AX - W / 2, AY - H - 6, W, H, False),
-               Label_Box'(AX - W / 2, AY + 6, W, H, False),
-               Label_Box'(AX + 6, AY - H - 5, W, H, False),
-               Label_Box'(AX + 6, AY + 5, W, H, False),
-               Label_Box'(AX - 6 - W, AY - H - 5, W, H, False),
-               Label_Box'(AX - 6 - W, AY + 5, W, H, False)];
+              [Label_Box'(AX + D, AY - H / 2, W, H, False),
+               Label_Box'(AX - D - W, AY - H / 2, W, H, False),
+               Label_Box'(AX - W / 2, AY - H - D + 1, W, H, False),
+               Label_Box'(AX - W / 2, AY + D - 1, W, H, False),
+               Label_Box'(AX + D - 1, AY - H - D + 2, W, H, False),
+               Label_Box'(AX + D - 1, AY + D - 2, W, H, False),
+               Label_Box'(AX - D + 1 - W, AY - H - D + 2, W, H, False),
+               Label_Box'(AX - D + 1 - W, AY + D - 2, W, H, False)];
+            Best  : Natural := Natural'Last;
+            --  Score of Result (I) when Found.
             Found : Boolean := False;
+
+            procedure Consider (B : Label_Box; Penalty : Natural) is
+            begin
+               if Penalty < Best and then Inside (B) and then Free (B, I - 1, I) then
+                  declare
+                     Score : constant Natural := Penalty + Inked (B, Best - Penalty);
+                  begin
+                     if Score < Best then
+                        Best := Score;
+                        Result (I) := B;
+                        Found := True;
+                     end if;
+                  end;
+               end if;
+            end Consider;
          begin
             for B of Near loop
-               if Inside (B) and then Free (B, I - 1, I) then
-                  Result (I) := B;
-                  Found := True;
-                  exit;
-               end if;
+               Consider (B, 0);
+               exit when Best = 0;
             end loop;
             --  Farther, on rings around the marker, with a leader line.
             Ring :
             for Radius in 2 .. 12 loop
-               exit Ring when Found;
+               exit Ring when Radius * 10 + 10 >= Best;
                for Step in 0 .. 15 loop
                   declare
                      A  : constant Long_Float := 2.0 * Ada.Numerics.Pi * Long_Float (Step) / 16.0;
                      CX : constant Integer := AX + Integer (Long_Float (Radius * 10) * Cos (A));
                      CY : constant Integer := AY - Integer (Long_Float (Radius * 10) * Sin (A));
-                     B  : constant Label_Box := (CX - W / 2, CY - H / 2, W, H, True);
                   begin
-                     if Inside (B) and then Free (B, I - 1, I) then
-                        Result (I) := B;
-                        Found := True;
-                        exit Ring;
-                     end if;
+                     Consider ((CX - W / 2, CY - H / 2, W, H, True), Radius * 10 + 10);
                   end;
                end loop;
             end loop Ring;
             if not Found then
                --  Nowhere free: right of the marker, moved inside.
                Result (I) :=
-                 (Integer'Max (Left, Integer'Min (AX + 7, Right - W + 1)),
+                 (Integer'Max (Left, Integer'Min (AX + D, Right - W + 1)),
                   Integer'Max (Top, Integer'Min (AY - H / 2, Bottom - H + 1)), W, H, False);
             end if;
          end;
@@ -214,6 +247,8 @@ package body Sancta.Simulation.Rendering is
       Height : constant Natural := Natural'Max (1, To_Pixel (H_M * Scale));
       --  Of the world; the title band above it and the legend band below.
       Line_H : constant := Glyphs.Glyph_Height + 7;
+      Cross  : constant Natural := To_Pixel (Real'Min (0.3 * Scale, 1000.0)) + 1;
+      --  Half a marker's cross, pixels.
       Top    : constant Natural := (if Length (S.Title) > 0 then Line_H + 4 else 0);
       Below  : constant Natural := Layout_Height (S, Width, Glyphs.Advance, Line_H);
       Img    : Image :=
@@ -305,13 +340,19 @@ package body Sancta.Simulation.Rendering is
          end;
       end loop;
       for M of S.Markers loop
+         --  A cross of Cross pixels each side (lines one pixel thick).
          Line (M.Where - (0.3, 0.3), M.Where + (0.3, 0.3), (200, 0, 0));
          Line (M.Where + (-0.3, 0.3), M.Where + (0.3, -0.3), (200, 0, 0));
       end loop;
-      --  Labels last, over every line, where they fit (Place_Labels).
+      --  Labels last, over every line, where they fit and hide the least
+      --  of what is drawn (Place_Labels).
       declare
          N         : constant Natural := Natural (S.Markers.Length);
          AX, AY, W : Pixel_Array (1 .. N);
+
+         function Inked (X, Y : Integer) return Boolean is
+           (X in 1 .. Width and then Y in 1 .. Raster_Images.Height (Img)
+            and then Get (Img, X, Y) /= White);
       begin
          for I in 1 .. N loop
             AX (I) := PX (S.Markers (I).Where);
@@ -321,7 +362,8 @@ package body Sancta.Simulation.Rendering is
          declare
             Boxes : constant Label_Boxes :=
               Place_Labels (AX, AY, W, Glyphs.Glyph_Height + 2, 1, Top + 1, Width,
-                            Top + Height);
+                            Top + Height, Marker_Radius => Cross + 1,
+                            Ink => Inked'Access);
          begin
             for I in 1 .. N loop
                if Length (S.Markers (I).Label) > 0 then
@@ -494,16 +536,38 @@ package body Sancta.Simulation.Rendering is
          function Pix_X (X : Real) return Integer is (To_Pixel ((X - F.Origin.X) * Scale));
          function Pix_Y (Y : Real) return Integer is
            (To_Pixel ((F.Origin.Y + H_M - Y) * Scale) + Top);
+         Bare : Scene := S;
       begin
+         --  What the labels should hide least: the same picture drawn as
+         --  the PNG (without title, bands, labels), one pixel to the right.
+         Bare.Title := Null_Unbounded_String;
+         Bare.Legend.Clear;
+         Bare.Scale_Bar := False;
+         for M of Bare.Markers loop
+            M.Label := Null_Unbounded_String;
+         end loop;
          for I in 1 .. N loop
             AX (I) := Pix_X (S.Markers (I).Where.X);
             AY (I) := Pix_Y (S.Markers (I).Where.Y);
             W (I) := Length (S.Markers (I).Label) * Char_W;
          end loop;
          declare
+            function Bare_Picture return Image is
+            begin
+               return Render (World, Bare, Scale);
+            exception
+               when Format_Error =>
+                  return Create (1, 1);  --  Too large as pixels: labels ignore ink.
+            end Bare_Picture;
+            Drawn : constant Image := Bare_Picture;
+            function Inked (X, Y : Integer) return Boolean is
+              (X + 1 in 1 .. Raster_Images.Width (Drawn)
+               and then Y - Top in 1 .. Raster_Images.Height (Drawn)
+               and then Get (Drawn, X + 1, Y - Top) /= White);
             Boxes : constant Label_Boxes :=
               Place_Labels (AX, AY, W, 13, 1, Top + 1, Width - 1,
-                            Top + To_Pixel (H_M * Scale) - 1);
+                            Top + To_Pixel (H_M * Scale) - 1, Marker_Radius => 5,
+                            Ink => Inked'Access);
          begin
             for I in 1 .. N loop
                if Length (S.Markers (I).Label) > 0 then

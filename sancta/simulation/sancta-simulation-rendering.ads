@@ -48,9 +48,10 @@ package Sancta.Simulation.Rendering is
       --  A band below the world with the legend (a colour swatch and its
       --  text per entry, wrapped) and a scale bar (1, 2, 5, 10... m).
    end record;
-   --  Marker labels are placed where they stay inside the picture and
-   --  overlap no other label: right of the marker, else left, above,
-   --  below, the corners, else farther away with a leader line.
+   --  Marker labels are placed where they stay inside the picture, overlap
+   --  no other label nor marker, and cover the fewest drawn pixels (walls,
+   --  paths, crosses): right of the marker, else left, above, below, the
+   --  corners, else farther away with a leader line (Place_Labels).
 
    type Pixel_Array is array (Positive range <>) of Integer;
 
@@ -65,14 +66,24 @@ package Sancta.Simulation.Rendering is
      (Anchors_X, Anchors_Y : Pixel_Array;
       Widths               : Pixel_Array;
       Height               : Natural;
-      Left, Top, Right, Bottom : Integer) return Label_Boxes
+      Left, Top, Right, Bottom : Integer;
+      Marker_Radius        : Natural := 4;
+      Ink                  : access function (X, Y : Integer) return Boolean := null)
+      return Label_Boxes
      with Pre => Anchors_X'First = 1 and then Anchors_Y'First = 1 and then Widths'First = 1
                  and then Anchors_X'Length = Anchors_Y'Length
                  and then Anchors_X'Length = Widths'Length,
           Post => Place_Labels'Result'Length = Anchors_X'Length;
    --  Boxes for labels of the given widths at the anchors (pixels), inside
    --  Left .. Right x Top .. Bottom and not overlapping each other whenever
-   --  a place is found within 120 pixels (else clamped inside).
+   --  a place is found within 120 pixels (else clamped inside). A label
+   --  starts Marker_Radius + 3 pixels from its anchor (the marker's
+   --  symbol reaches Marker_Radius) and keeps 3 pixels from the others'
+   --  anchors. Of the free places, the one taken covers the fewest Ink
+   --  pixels (box and a one-pixel margin), a place farther away counting
+   --  as 10 pixels more per 10 pixels of distance (plus 10 for its leader
+   --  line); ties go to the nearer place in the order above. Ink (X, Y):
+   --  whether pixel (X, Y) is already drawn on (null: nothing is).
 
    function Layout_Height (S : Scene; Width : Natural; Char_Width : Positive;
                            Line_Height : Positive) return Natural;

@@ -1,6 +1,10 @@
 --  The one AUnit driver: runs every suite listed in All_Suites and sets the
 --  exit status (non-zero when any test fails or raises).
 --
+--     bin/test_driver                 every test
+--     bin/test_driver "scheduler:"    only the tests whose name starts so
+--                                     (as the report prints them after OK)
+--
 --  Network rule: the suites create DDS participants. When the driver is run
 --  by hand without scripts/env.sh, it still keeps them on loopback: an unset
 --  CYCLONEDDS_URI is pointed at share/cyclonedds-localhost.xml (found from
@@ -12,7 +16,9 @@ with Ada.Environment_Variables;
 with Ada.Text_IO;
 with AUnit;
 with AUnit.Reporter.Text;
+with AUnit.Options;
 with AUnit.Run;
+with AUnit.Test_Filters;
 with GNAT.OS_Lib;
 with Interfaces.C;
 with All_Suites;
@@ -93,11 +99,22 @@ procedure Test_Driver is
 
    function Run is new AUnit.Run.Test_Runner_With_Status (All_Suites.Suite);
    Reporter : AUnit.Reporter.Text.Text_Reporter;
+   Filter   : aliased AUnit.Test_Filters.Name_Filter;
+   Options  : AUnit.Options.AUnit_Options := AUnit.Options.Default_Options;
    use type AUnit.Status;
 begin
    Keep_DDS_On_Loopback;
+   if Ada.Command_Line.Argument_Count > 1 then
+      Ada.Text_IO.Put_Line (Ada.Text_IO.Standard_Error,
+                            "usage: test_driver [start of the test names to run]");
+      Ada.Text_IO.Flush (Ada.Text_IO.Standard_Error);
+      GNAT.OS_Lib.OS_Exit (2);
+   elsif Ada.Command_Line.Argument_Count = 1 then
+      Filter.Set_Name (Ada.Command_Line.Argument (1));
+      Options.Filter := Filter'Unchecked_Access;
+   end if;
    declare
-      Passed : constant Boolean := Run (Reporter) = AUnit.Success;
+      Passed : constant Boolean := Run (Reporter, Options) = AUnit.Success;
    begin
       --  Ends the process here: a test that failed before stopping the
       --  tasks it started (team agents, executors) would otherwise keep the

@@ -75,6 +75,19 @@ package body Sancta.Commands.Demo is
       end if;
       Sancta.Commands.Sim_Team_Demos.Run (Config, Result);
       Sancta.Commands.Team_Demos.Print_Summary (Result);
+      declare
+         Dir     : constant String := To_String (Config.Run.Out_Dir);
+         Log_Dir : constant String := (if Dir = "" then "out/demo" else Dir);
+      begin
+         --  Where everything is (the report's line is printed above).
+         Put_Line ("logs: " & Log_Dir & "/{sim,operator,<robot>"
+                   & (if Config.Record_Bag and then Dir /= "" then ",recorder" else "")
+                   & (if Config.View then ",view" else "") & "}.log"
+                   & (if Config.Record_Bag and then Dir /= ""
+                      then "; bag: " & Dir & "/mission (rclada bag info " & Dir
+                           & "/mission; rclada bag play " & Dir & "/mission --clock)"
+                      else ""));
+      end;
       if Config.Run.Check then
          if Sancta.Commands.Team_Demos.Check_Passed (Result) then
             Put_Line ("check: passed (every task done exactly once"

@@ -674,11 +674,11 @@ package body Sancta.Commands.Sim_Team_Demos is
          procedure Print_Progress is
          begin
             Put (Stamp & "progress " & Trim (Natural (Result.Completions.Length)) & "/"
-                 & Trim (Result.Tasks_Total) & "  round" & Monitor.Round.Generation'Image
-                 & "  [");
+                 & Trim (Result.Tasks_Total) & " tasks done  round" & Monitor.Round.Generation'Image
+                 & "  [ done per robot:");
             for R in 1 .. N loop
                Put (" " & Robot_Id (R) & ":" & Trim (Result.Robots (R).Tasks)
-                    & (if Alive (R) then "" else "x"));
+                    & (if Alive (R) then "" else " (lost)"));
             end loop;
             Put_Line (" ]");
          end Print_Progress;
@@ -710,8 +710,9 @@ package body Sancta.Commands.Sim_Team_Demos is
               and then Monitor.Adopted.Generation = Monitor.Round.Generation
             then
                Team_Demos.Note_First_Plan (Result, Monitor.Round, Monitor.Adopted, World);
+               Result.Plan_Time := Sim_Clock;
                Put_Line (Stamp & "first plan adopted (round" & Monitor.Round.Generation'Image
-                         & "): total " & F1 (Result.Planned_Total) & " m, makespan "
+                         & "): total " & F1 (Result.Planned_Total) & " m, longest tour "
                          & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
                          & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
             end if;

@@ -23,7 +23,9 @@ package body Sancta.Commands.Team_Demos is
    use Sancta.Simulation;
    use Sancta.Simulation.Simulators;
 
-   function Img (X : Long_Float) return String renames Runtime.Values.Real_Image;
+   function Img (X : Long_Float) return String is
+     (Runtime.Values.Real_Image (Long_Float'Rounding (X * 1000.0) / 1000.0));
+   --  Seconds and metres in summary.json, to the millisecond / millimetre.
 
    function F1 (X : Long_Float) return String is
       Scaled : constant Long_Long_Integer := Long_Long_Integer (X * 10.0);
@@ -171,8 +173,9 @@ package body Sancta.Commands.Team_Demos is
 
    procedure Write_Gantt (Result : Demo_Result; Dir : String) is
       --  Tasks per robot over simulated time: a bar per task from the
-      --  robot's previous completion (or the start) to its own; the loss
-      --  of a robot and the re-plan as vertical lines. gantt.svg, gantt.png.
+      --  robot's previous completion (or the first plan) to its own; the
+      --  first plan, the loss of a robot and the re-plan as vertical lines,
+      --  named below the axis. gantt.svg, gantt.png.
       package Glyphs renames Sancta.Simulation.Glyphs;
       Rows    : constant Natural := Natural (Result.Robots.Length);
       Left    : constant := 64;
@@ -182,7 +185,10 @@ package body Sancta.Commands.Team_Demos is
       Span    : constant Long_Float :=
         Long_Float'Max (1.0, Long_Float'Max (Result.Makespan, Result.Kill_Time + 1.0));
       Plot_W  : constant Natural := Width - Left - 16;
-      Height  : constant Natural := Top + Rows * Row_H + 44;
+      Height  : constant Natural := Top + Rows * Row_H + 55;
+      Label_Lines : constant := 3;
+      Line_End    : array (0 .. Label_Lines - 1) of Integer := [others => Integer'First / 2];
+      --  Right end of the event names on each line below the axis.
       Px      : constant Long_Float := Long_Float (Plot_W) / Span;
       Tick    : constant Long_Float :=
         (if Span <= 60.0 then 10.0 elsif Span <= 300.0 then 30.0 else 60.0);
@@ -204,24 +210,116 @@ package body Sancta.Commands.Team_Demos is
          end loop;
       end Box;
 
-      procedure Mark
-        (T : Long_Float; C : Raster_Images.Color; Label, Hex : String; Line : Natural) is
-         X : constant Integer := X_Of (T);
-         W : constant Natural := Glyphs.Text_Width (Label);
-         LX : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));
-         LY : constant Integer := Top + Rows * Row_H + 18 + Line * 11;
+      procedure Mark (T : Long_Float; C : Raster_Images.Color; Label, Hex : String) is
+         --  The line at T, its name on the first line below the axis where
+         --  it clears the names already there (SVG's wider font counted).
+         X    : constant Integer := X_Of (T);
+         W    : constant Natural := Natural'Max (Glyphs.Text_Width (Label), Label'Length * 7);
+         LX   : constant Integer := Integer'Max (2, Integer'Min (X + 3, Width - W - 2));
+         Line : Natural := Label_Lines - 1;
       begin
-         Box (X, Top - 4, X + 1, Top + Rows * Row_H, C);
-         Glyphs.Draw_Text (Img, LX, LY, Label, C, Halo => False);
-         Put_Line (SVG, "<line class=""event"" x1=""" & Trim (X) & """ y1="""
-                   & Trim (Top - 4) & """ x2=""" & Trim (X) & """ y2="""
-                   & Trim (Top + Rows * Row_H) & """ stroke=""" & Hex
-                   & """ stroke-width=""2"" stroke-dasharray=""5,3""/>");
-         Put_Line (SVG, "<text class=""label"" x=""" & Trim (LX) & """ y="""
-                   & Trim (LY + 9) & """ data-width=""" & Trim (Label'Length * 7)
-                   & """ fill=""" & Hex & """ font-size=""11"" font-family=""sans-serif"">"
-                   & Label & "</text>");
+         for L in Line_End'Range loop
+            if LX > Line_End (L) + 8 then
+               Line := L;
+               exit;
+            end if;
+         end loop;
+         Line_End (Line) := LX + W;
+         declare
+            LY : constant Integer := Top + Rows * Row_H + 18 + Line * 13;
+         begin
+            Box (X, Top - 4, X + 1, Top + Rows * Row_H, C);
+            Glyphs.Draw_Text (Img, LX, LY, Label, C, Halo => False);
+            Put_Line (SVG, "<line class=""event"" x1=""" & Trim (X) & """ y1="""
+                      & Trim (Top - 4) & """ x2=""" & Trim (X) & """ y2="""
+                      & Trim (Top + Rows * Row_H) & """ stroke=""" & Hex
+                      & """ stroke-width=""2"" stroke-dasharray=""5,3""/>");
+            Put_Line (SVG, "<text class=""label"" x=""" & Trim (LX) & """ y="""
+                      & Trim (LY + 9) & """ data-width=""" & Trim (Label'Length * 7)
+                      & """ fill=""" & Hex & """ font-size=""11"" font-family=""sans-serif"">"
+                      & Label & "</text>");
+         end;
       end Mark;
+
+      function Stem (S : String) return String is
+        (if S'Length > 1 and then S (S'Last) in '_' | '-' | ' ' | '.'
+         then Stem (S (S'First .. S'Last - 1)) else S);
+      --  S without the separators it ends with ("EXIT_" -> "EXIT").
+
+      function Fitted (Name : String; Room, Char_W : Natural) return String is
+        (if Name'Length * Char_W + 4 <= Room then Name
+         elsif Room < 4 + 3 * Char_W then ""
+         else Stem (Name (Name'First .. Name'First + (Room - 4) / Char_W - 2)) & ".");
+      --  Name when it fits in Room pixels, else its longest prefix that
+      --  fits (separators at its end left out) followed by '.' (at least
+      --  one letter), else nothing.
+
+      procedure Draw_Row (R : Positive; Names : Boolean) is
+         --  Names: only the tasks' names, else the robot, bars, hatching.
+         Id    : constant String := To_String (Result.Robots (R).Id);
+         Color : constant Raster_Images.Color := Rendering.Color_Of (R);
+         Hex   : constant String := Rendering.Hex (Color);
+         Y     : constant Integer := Row_Y (R);
+         Since : Long_Float := Result.Plan_Time;
+      begin
+         if not Names then
+            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
+            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
+                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
+         end if;
+         for C of Result.Completions loop
+            if To_String (C.Robot) = Id then
+               declare
+                  X0   : constant Integer := X_Of (Long_Float'Min (Since, C.Time));
+                  X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+                  Name : constant String := To_String (C.Task_Id);
+                  PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
+                  SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
+               begin
+                  if not Names then
+                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
+                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
+                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                               & Trim (Row_H - 8) & """ fill=""" & Hex
+                               & """ stroke=""white""><title>" & Name & " done at "
+                               & F1 (C.Time) & " s</title></rect>");
+                  else
+                     --  The task's name inside its bar, cut to fit.
+                     if PNG_Name /= "" then
+                        Box (X0 + 2, Y + Row_H / 2 - 5,
+                             X0 + 3 + Glyphs.Text_Width (PNG_Name), Y + Row_H / 2 + 5, Color);
+                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
+                                          Raster_Images.White, Halo => False);
+                     end if;
+                     if SVG_Name /= "" then
+                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                                  & Trim (SVG_Name'Length * 7) & """ fill=""white"""
+                                  & " stroke=""" & Hex & """ stroke-width=""3"""
+                                  & " paint-order=""stroke"""
+                                  & " font-size=""11"" font-family=""sans-serif"">"
+                                  & SVG_Name & "</text>");
+                     end if;
+                  end if;
+                  Since := C.Time;
+               end;
+            end if;
+         end loop;
+         if not Names and then Id = To_String (Result.Killed) then
+            --  Lost: the rest of its row hatched.
+            for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
+               for Yy in Y + 4 .. Y + Row_H - 4 loop
+                  if (X + Yy) mod 6 = 0 then
+                     Raster_Images.Set (Img, X, Yy, Red);
+                  end if;
+               end loop;
+            end loop;
+            Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
+                      & """ y=""" & Trim (Y + 4) & """ width="""
+                      & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
+                      & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
+         end if;
+      end Draw_Row;
    begin
       Create (SVG, Out_File, Dir & "/gantt.svg");
       Put_Line (SVG, "<?xml version=""1.0"" encoding=""UTF-8""?>");
@@ -261,68 +359,24 @@ package body Sancta.Commands.Team_Demos is
             T := T + Tick;
          end loop;
       end;
+      --  Bars, then the event lines over them, then the bars' names over
+      --  the lines (on a patch of the bar's colour: a line never cuts a
+      --  name).
       for R in 1 .. Rows loop
-         declare
-            Id    : constant String := To_String (Result.Robots (R).Id);
-            Color : constant Raster_Images.Color := Rendering.Color_Of (R);
-            Hex   : constant String := Rendering.Hex (Color);
-            Y     : constant Integer := Row_Y (R);
-            Since : Long_Float := 0.0;
-         begin
-            Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
-            Put_Line (SVG, "<text class=""robot"" x=""8"" y=""" & Trim (Y + Row_H / 2 + 4)
-                      & """ font-size=""12"" font-family=""sans-serif"">" & Id & "</text>");
-            for C of Result.Completions loop
-               if To_String (C.Robot) = Id then
-                  declare
-                     X0   : constant Integer := X_Of (Since);
-                     X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
-                     Name : constant String := To_String (C.Task_Id);
-                  begin
-                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
-                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
-                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
-                               & Trim (Row_H - 8) & """ fill=""" & Hex
-                               & """ stroke=""white""><title>" & Name & " done at "
-                               & F1 (C.Time) & " s</title></rect>");
-                     --  The task's name inside its bar when it fits there.
-                     if Glyphs.Text_Width (Name) + 4 <= X1 - X0 then
-                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, Name, Raster_Images.White,
-                                          Halo => False);
-                     end if;
-                     if Name'Length * 7 + 4 <= X1 - X0 then
-                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
-                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
-                                  & Trim (Name'Length * 7) & """ fill=""white"""
-                                  & " font-size=""11"" font-family=""sans-serif"">" & Name
-                                  & "</text>");
-                     end if;
-                     Since := C.Time;
-                  end;
-               end if;
-            end loop;
-            if Id = To_String (Result.Killed) then
-               --  Lost: the rest of its row hatched.
-               for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
-                  for Yy in Y + 4 .. Y + Row_H - 4 loop
-                     if (X + Yy) mod 6 = 0 then
-                        Raster_Images.Set (Img, X, Yy, Red);
-                     end if;
-                  end loop;
-               end loop;
-               Put_Line (SVG, "<rect class=""lost"" x=""" & Trim (X_Of (Result.Kill_Time))
-                         & """ y=""" & Trim (Y + 4) & """ width="""
-                         & Trim (X_Of (Span) - X_Of (Result.Kill_Time)) & """ height="""
-                         & Trim (Row_H - 8) & """ fill=""#c80000"" fill-opacity=""0.15""/>");
-            end if;
-         end;
+         Draw_Row (R, Names => False);
       end loop;
+      if Result.Plan_Time > 0.0 then
+         Mark (Result.Plan_Time, (110, 110, 110), "first plan", "#6e6e6e");
+      end if;
       if Result.Killed /= Null_Unbounded_String then
-         Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000", 0);
+         Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000");
          if Result.Replanned then
-            Mark (Replan, Orange, "re-planned", "#e68200", 1);
+            Mark (Replan, Orange, "re-planned", "#e68200");
          end if;
       end if;
+      for R in 1 .. Rows loop
+         Draw_Row (R, Names => True);
+      end loop;
       Put_Line (SVG, "</svg>");
       Close (SVG);
       Raster_Images.Save_PNG (Img, Dir & "/gantt.png");
@@ -368,7 +422,7 @@ package body Sancta.Commands.Team_Demos is
                & (if Lost = "" then "" else ", " & Lost), Scene, Tasks => False);
       if Result.Plan_Before.Generation > 0 then
          Picture ("plan-before", "First plan (round" & Result.Plan_Before.Generation'Image
-                  & "), makespan " & F1 (Result.Planned_Makespan) & " m",
+                  & "), longest tour " & F1 (Result.Planned_Makespan) & " m",
                   Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
                                  Map'Access), Tasks => True);
       end if;
@@ -409,6 +463,7 @@ package body Sancta.Commands.Team_Demos is
               & ASCII.LF);
       Append (J, "  ""converge_wall_s"": " & Img (Result.Converge_Wall) & "," & ASCII.LF);
       Append (J, "  ""converge_keys"": " & Trim (Result.Converge_Keys) & "," & ASCII.LF);
+      Append (J, "  ""first_plan_s"": " & Img (Result.Plan_Time) & "," & ASCII.LF);
       Append (J, "  ""planned_total_m"": " & Img (Result.Planned_Total) & "," & ASCII.LF);
       Append (J, "  ""planned_makespan_m"": " & Img (Result.Planned_Makespan) & ","
               & ASCII.LF);
@@ -467,13 +522,14 @@ package body Sancta.Commands.Team_Demos is
                    12) & Ada.Strings.Fixed.Tail (Trim (R.Tasks), 5) & "   "
                    & Ada.Strings.Fixed.Tail (F1 (R.Distance), 10));
       end loop;
-      Put_Line ("makespan: " & F1 (Result.Makespan) & " s (simulated)");
+      Put_Line ("makespan: " & F1 (Result.Makespan) & " s simulated, from the start to the last"
+                & " task done (first plan at " & F1 (Result.Plan_Time) & " s)");
       if Result.Killed /= Null_Unbounded_String then
          Put_Line ("robot lost: " & To_String (Result.Killed) & " at " & F1 (Result.Kill_Time)
                    & " s; re-planned: " & (if Result.Replanned then "yes" else "no")
                    & ", " & F1 (Result.Replan_Wall) & " s wall ("
                    & F1 (Result.Replan_Sim) & " s simulated) after the loss, lease included");
-         Put ("its unfinished tasks, re-allocated:");
+         Put ("its unfinished tasks, re-allocated (task>robot that did it):");
          for O of Result.Orphans loop
             Put (" " & To_String (O.Task_Id) & ">"
                  & (if O.Robot = Null_Unbounded_String then "nobody" else To_String (O.Robot)));
@@ -488,8 +544,8 @@ package body Sancta.Commands.Team_Demos is
                       else "did NOT converge"));
       end if;
       Put_Line ("planned cost (first plan): total " & F1 (Result.Planned_Total)
-                & " m, makespan " & F1 (Result.Planned_Makespan) & " m with straight"
-                & " legs; " & F1 (Result.Grid_Total) & " m, makespan "
+                & " m, longest tour " & F1 (Result.Planned_Makespan) & " m with straight"
+                & " legs; " & F1 (Result.Grid_Total) & " m, longest tour "
                 & F1 (Result.Grid_Makespan) & " m along A* paths");
       Put_Line ("executed: total distance " & F1 (Result.Executed_Total) & " m; rounds of"
                 & " allocation:" & Result.Rounds'Image & "; collisions:" & Result.Collisions'Image);
@@ -882,8 +938,9 @@ package body Sancta.Commands.Team_Demos is
                end if;
                if Result.Planned_Total = 0.0 and then Observer.Adopted.Generation > 0 then
                   Note_First_Plan (Result, Observer.Round, Observer.Adopted, World);
+                  Result.Plan_Time := Long_Float (Sim.Clock);
                   Put_Line ("t=" & F1 (Long_Float (Sim.Clock)) & " s  first plan adopted: total "
-                            & F1 (Result.Planned_Total) & " m, makespan "
+                            & F1 (Result.Planned_Total) & " m, longest tour "
                             & F1 (Result.Planned_Makespan) & " m (" & F1 (Result.Grid_Total)
                             & " m, " & F1 (Result.Grid_Makespan) & " m along A* paths)");
                end if;
@@ -922,10 +979,11 @@ package body Sancta.Commands.Team_Demos is
                   Next_Print := Next_Print + 20.0;
                   Put ("t=" & F1 (Long_Float (Sim.Clock)) & " s  progress "
                        & Trim (Operator.Done_Tasks) & "/" & Trim (Result.Tasks_Total)
-                       & "  round" & Observer.Round.Generation'Image & "  [");
+                       & " tasks done  round" & Observer.Round.Generation'Image
+                       & "  [ done per robot:");
                   for R in 1 .. N loop
                      Put (" " & To_String (M.Robots (R).Id) & ":" & Trim (Result.Robots (R).Tasks)
-                          & (if Alive (R) then "" else "x"));
+                          & (if Alive (R) then "" else " (lost)"));
                   end loop;
                   Put_Line (" ]");
                end if;

@@ -102,6 +102,9 @@ package Sancta.Commands.Team_Demos is
       --  (includes the loss detection, i.e. the lease).
       Replan_Sim      : Long_Float := 0.0;
       Replanned       : Boolean := False;
+      Plan_Time       : Long_Float := 0.0;
+      --  Simulated seconds when the first plan was adopted (before it, the
+      --  robots wait: the allocation is under way).
       Planned_Total   : Long_Float := 0.0;
       Planned_Makespan : Long_Float := 0.0;
       --  The first adopted plan's costs in the planners' model (straight

@@ -209,16 +209,29 @@ package body Sancta.Views.Drawing is
       Size   : Gdouble := 12.0;
       Bold   : Boolean := False;
       Colour : RGB := Ink;
-      Mono   : Boolean := False)
+      Mono   : Boolean := False;
+      Halo   : Boolean := False)
    is
+      --  Halo: a white outline under the letters, legible over walls and
+      --  tours.
    begin
       Select_Font_Face (Cr, (if Mono then "DejaVu Sans Mono" else "DejaVu Sans"),
                         Cairo_Font_Slant_Normal,
                         (if Bold then Cairo_Font_Weight_Bold else Cairo_Font_Weight_Normal));
       Set_Font_Size (Cr, Size);
-      Set (Cr, Colour);
       Move_To (Cr, X, Y);
-      Show_Text (Cr, Words);
+      if Halo then
+         Text_Path (Cr, Words);
+         Set (Cr, (1.0, 1.0, 1.0), 0.9);
+         Set_Line_Width (Cr, 3.0);
+         Set_Line_Join (Cr, Cairo_Line_Join_Round);
+         Stroke_Preserve (Cr);
+         Set (Cr, Colour);
+         Fill (Cr);
+      else
+         Set (Cr, Colour);
+         Show_Text (Cr, Words);
+      end if;
    end Text;
 
    procedure Label
@@ -349,7 +362,7 @@ package body Sancta.Views.Drawing is
          Stroke (Cr);
       end if;
       Text (Cr, Where.X + Radius + 2.0, Where.Y - Radius, To_String (T.Id), 10.0,
-            Colour => (0.25, 0.25, 0.25));
+            Colour => (0.25, 0.25, 0.25), Halo => True);
    end Draw_Task;
 
    procedure Draw_Tour (Cr : Cairo_Context; S : Scene; R : Robot_View; Tr : Transform) is
@@ -534,7 +547,7 @@ package body Sancta.Views.Drawing is
       Text (Cr, X, Y, "dashed: planned tours; faint: trails", 10.0,
             Colour => (0.35, 0.35, 0.35));
       Y := Y + 20.0;
-      Row ("events", 12.0, Bold => True);
+      Row ("events (s since this view started)", 12.0, Bold => True);
       declare
          Fits   : constant Positive := Chars (10.0);
          function Line (K : Positive) return String is
