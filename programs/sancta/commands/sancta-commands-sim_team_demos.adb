@@ -524,6 +524,25 @@ package body Sancta.Commands.Sim_Team_Demos is
             if Text'Length >= 10 and then Text (Text'First .. Text'First + 9) = "collision "
             then
                Collisions := Collisions + 1;
+               --  Said as it happens (the first ten), printable and at most
+               --  100 characters: the text came over the network.
+               if Collisions <= 10 then
+                  declare
+                     Shown : String := Text (Text'First .. Natural'Min (Text'Last,
+                                                                        Text'First + 99));
+                  begin
+                     for C of Shown loop
+                        if C not in ' ' .. '~' then
+                           C := '?';
+                        end if;
+                     end loop;
+                     Put_Line ("t=" & F1 (Sim_Clock) & " s (wall " & F1 (Long_Float
+                               (Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Start_Wall)))
+                               & ")  sancta-sim: " & Shown
+                               & (if Collisions = 10 then "  (further ones only counted)"
+                                  else ""));
+                  end;
+               end if;
             end if;
          end On_Event;
 
