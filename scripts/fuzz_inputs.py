@@ -7,8 +7,9 @@ Each reader takes valid seed inputs (bundled configurations, missions,
 TSPLIB files, worlds, PGM and PNG map images (every PNG colour type, bit
 depth, row filter and DEFLATE block kind), SROS2 policies (`rclada security
 create_permission`), interface definitions, parameter files, MCAP bags made
-with the `mcap` package, CDR payloads from `cdr_tool random`, --ros-args
-lists), mutates them
+with the `mcap` package, rosbag2 sqlite3 bags (.db3, mutated also through
+SQL: tables, columns, rows and values of other kinds), CDR payloads from
+`cdr_tool random`, --ros-args lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
 characters / deep nesting / long lines, duplicated and swapped lines, wrong
 values in length fields) and runs the product's own command on every copy.
@@ -322,6 +323,116 @@ def make_mcap_seeds(folder):
                 w.add_message(c2, log_time=1_000_000_000 + i * 10_000_000 + 1, data=scan,
                               publish_time=1_000_000_000 + i * 10_000_000 + 1, sequence=i)
             w.finish()
+        seeds.append(path)
+    return seeds
+
+
+DB3_VALUES = ["NULL", "0", "-1", "1", "2", "9", "1.5", "'text'", "''", "x''", "x'00'",
+              "x'000100'", "x'0001000002000000410000'", "'/chatter'", "'/bad topic'",
+              "'std_msgs/msg/Int32'", "'no/type'", "'json'", "'- [1, 2'",
+              "'- history: 1\n  depth: ten\n'", "9223372036854775807",
+              "-9223372036854775808", "4611686018427387904", "1e300"]
+DB3_STATEMENTS = [
+    "DROP TABLE {table}", "DELETE FROM {table}", "DELETE FROM {table} WHERE rowid = {row}",
+    "UPDATE {table} SET {column} = {value} WHERE rowid = {row}",
+    "UPDATE {table} SET {column} = {value}",
+    "INSERT INTO {table} SELECT * FROM {table} WHERE rowid = {row}",
+    "ALTER TABLE {table} DROP COLUMN {column}",
+    "ALTER TABLE {table} RENAME COLUMN {column} TO renamed"]
+DB3_COLUMNS = {"topics": ["id", "name", "type", "serialization_format", "offered_qos_profiles"],
+               "messages": ["id", "topic_id", "timestamp", "data"]}
+
+
+def with_database(data, change):
+    """change(connection) applied to the database `data`; its bytes after
+    (None when sqlite refuses the database or the change)."""
+    import sqlite3
+    with tempfile.TemporaryDirectory(prefix="fuzz-db3-") as tmp:
+        path = pathlib.Path(tmp) / "x.db3"
+        path.write_bytes(data)
+        try:
+            db = sqlite3.connect(path)
+            try:
+                result = change(db)
+                db.commit()
+            finally:
+                db.close()
+        except (sqlite3.Error, ValueError, OverflowError):
+            # ValueError: Python's own reading (a text not in UTF-8).
+            return None, None
+        return path.read_bytes(), result
+
+
+def m_db3_sql(rng, data, kind):
+    """A rosbag2 table changed through SQL: a table or column gone, rows
+    deleted or duplicated, a value of another kind or out of range (topic
+    ids naming no topic, empty data, texts for numbers...)."""
+    table = rng.choice(["topics", "messages"])
+    statement = rng.choice(DB3_STATEMENTS).format(
+        table=table, column=rng.choice(DB3_COLUMNS[table]), value=rng.choice(DB3_VALUES),
+        row=rng.randrange(1, 14))
+    changed, _ = with_database(data, lambda db: db.execute(statement))
+    if changed is None:
+        return m_word(rng, data, kind)
+    return changed, f"sql: {statement}"
+
+
+def db3_play_outlasts(data, rate=1000.0, limit=20.0):
+    """As mcap_play_outlasts, the timestamps read by Python's sqlite3."""
+    _, span = with_database(data, lambda db: db.execute(
+        "SELECT max(timestamp) - min(timestamp) FROM messages").fetchone()[0])
+    return isinstance(span, int) and span / 1e9 / rate > limit - 5.0
+
+
+def make_db3_seeds(folder):
+    """rosbag2 sqlite3 files in the layouts of schema version 4 (topics with
+    type_description_hash, as rosbags writes them; no message_definitions,
+    which is not read), 3 (Humble) and 1 (no QoS column): 6 strings on
+    /chatter, 6 scans on /scan (the MCAP seeds' payloads)."""
+    import sqlite3
+    seeds = []
+    for label, schema, qos in (("schema4", 4, True), ("humble", 3, True), ("old", 1, False)):
+        path = folder / f"seed-{label}.db3"
+        path.unlink(missing_ok=True)
+        db = sqlite3.connect(path)
+        if schema >= 3:
+            db.execute("CREATE TABLE schema(schema_version INTEGER PRIMARY KEY,"
+                       " ros_distro TEXT NOT NULL)")
+            db.execute("INSERT INTO schema VALUES (?, 'humble')", (schema,))
+            db.execute("CREATE TABLE metadata(id INTEGER PRIMARY KEY, metadata_version INTEGER"
+                       " NOT NULL, metadata TEXT NOT NULL)")
+        db.execute("CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT"
+                   " NOT NULL, serialization_format TEXT NOT NULL"
+                   + (", offered_qos_profiles TEXT NOT NULL" if qos else "")
+                   + (", type_description_hash TEXT NOT NULL" if schema >= 4 else "") + ")")
+        db.execute("CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER NOT NULL,"
+                   " timestamp INTEGER NOT NULL, data BLOB NOT NULL)")
+        db.execute("CREATE INDEX timestamp_idx ON messages (timestamp ASC)")
+        extra = ([("- history: 1\n  depth: 10\n  reliability: 1\n  durability: 1\n"
+                   if label == "humble" else "- history: keep_last\n  depth: 5\n"
+                   "  reliability: best_effort\n  durability: volatile\n")] if qos else [])
+        extra += [""] if schema >= 4 else []
+        marks = ", ?" * len(extra)
+        db.execute(f"INSERT INTO topics VALUES (1, '/chatter', 'std_msgs/msg/String', 'cdr'"
+                   f"{marks})", extra)
+        db.execute(f"INSERT INTO topics VALUES (2, '/scan', 'sensor_msgs/msg/LaserScan', 'cdr'"
+                   f"{marks})", extra)
+        for i in range(6):
+            text = f"hello {i}".encode()
+            payload = (b"\x00\x01\x00\x00" + (len(text) + 1).to_bytes(4, "little") + text
+                       + b"\x00")
+            scan = (b"\x00\x01\x00\x00" + i.to_bytes(4, "little") + b"\x00" * 4
+                    + (2).to_bytes(4, "little") + b"l\x00\x00\x00" + b"\x00" * 28
+                    + (2).to_bytes(4, "little") + b"\x00\x00\x80\x3f" * 2
+                    + (0).to_bytes(4, "little"))
+            stamp = 1_000_000_000 + i * 10_000_000
+            db.execute("INSERT INTO messages (topic_id, timestamp, data) VALUES (1, ?, ?)",
+                       (stamp, payload))
+            db.execute("INSERT INTO messages (topic_id, timestamp, data) VALUES (2, ?, ?)",
+                       (stamp + 1, scan))
+        db.commit()
+        db.execute("VACUUM")
+        db.close()
         seeds.append(path)
     return seeds
 
@@ -847,6 +958,13 @@ def build_readers(seed_folder):
                ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
                None, BINARY_MUTATORS + [m_mcap_length] * 4, timeout=20.0,
                must_refuse=mcap_must_refuse, outlasts=mcap_play_outlasts),
+        Reader("db3", make_db3_seeds(seed_folder),
+               ["rclada", "bag", "info", "{input}"], "binary", None,
+               BINARY_MUTATORS + [m_db3_sql] * 8),
+        Reader("db3-play", make_db3_seeds(seed_folder),
+               ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
+               None, BINARY_MUTATORS + [m_db3_sql] * 8, timeout=20.0,
+               outlasts=db3_play_outlasts),
     ]
     # Configurations that run: each agent for a second (sancta run), the team
     # demo with sancta-sim and an agent process per robot (sancta demo).
@@ -1008,6 +1126,10 @@ def judge(reader, rc, text, hung, data, seed_data, how, file_name):
     base = pathlib.PurePath(file_name).name
     if reader.kind == "binary" and reader.name.startswith("mcap"):
         if re.search(r": byte \d+", text):
+            return None
+    elif reader.name.startswith("db3"):
+        # The file, then a table, column or row, or SQLite's own message.
+        if re.search(re.escape(base) + r": \S", text):
             return None
     elif re.search(re.escape(base) + r":\d+", text):
         return None

@@ -533,12 +533,10 @@ package body RCL.Bags is
 
    --  rosbag2's sqlite3 storage ------------------------------------------------------
 
-   function Is_SQLite_File (Path : String) return Boolean is
-      --  The database header, whatever the file's name.
+   function Starts_With (Path, Header : String) return Boolean is
       use Ada.Streams.Stream_IO;
-      Header : constant String := "SQLite format 3" & ASCII.NUL;
-      F      : File_Type;
-      Start  : String (Header'Range);
+      F     : File_Type;
+      Start : String (Header'Range);
    begin
       Open (F, In_File, Path);
       if Size (F) < Header'Length then
@@ -554,7 +552,16 @@ package body RCL.Bags is
             Close (F);
          end if;
          return False;
-   end Is_SQLite_File;
+   end Starts_With;
+
+   function Is_SQLite_File (Path : String) return Boolean is
+     (Starts_With (Path, "SQLite format 3" & ASCII.NUL));
+   --  The database header, whatever the file's name.
+
+   function Is_Zstd_File (Path : String) return Boolean is
+     (Starts_With (Path, [Character'Val (16#28#), Character'Val (16#B5#),
+                          Character'Val (16#2F#), Character'Val (16#FD#)]));
+   --  A Zstandard frame: rosbag2's compression_mode file (bag_0.db3.zstd).
 
    package Id_Maps is new Ada.Containers.Ordered_Maps (Integer_64, Topic_Index);
    --  A .db3 file's topics.id to the reader's topic.
@@ -820,6 +827,10 @@ package body RCL.Bags is
       for P of Paths loop
          if not Exists (P) then
             raise Bag_Error with P & ": listed in metadata.yaml but missing";
+         elsif Is_Zstd_File (P) then
+            raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": byte 0: a file compressed"
+              & " whole with zstd (rosbag2's compression_mode file), not read: decompress it"
+              & " first (zstd -d) and list the result in metadata.yaml";
          elsif Is_SQLite_File (P) then
             Open_SQLite (This, P);
             goto Next_File;

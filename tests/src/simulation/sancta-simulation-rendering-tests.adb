@@ -152,6 +152,28 @@ package body Sancta.Simulation.Rendering.Tests is
       Glyphs.Draw_Text (Img, -3, 9, "clipped text running off", Red);
    end Text_In_Pictures;
 
+   procedure Labels_Avoid_Ink (Unused : in out Fixture) is
+      --  A 30 x 9 label at (50, 50) in a 200 x 200 picture; its marker 4
+      --  pixels each side: the label starts 7 pixels away.
+      function Right_Inked (X, Y : Integer) return Boolean is (X > 50 and then Y > 0);
+      function Low_Inked (X, Y : Integer) return Boolean is (Y > 20 and then X > 0);
+      B : Label_Boxes (1 .. 1);
+   begin
+      B := Place_Labels ([50], [50], [30], 9, 1, 1, 200, 200);
+      Assert (B (1).X = 57 and then B (1).Y = 46 and then not B (1).Leader,
+              "no ink: right of the marker, centred; got" & B (1).X'Image & B (1).Y'Image);
+      B := Place_Labels ([50], [50], [30], 9, 1, 1, 200, 200, Ink => Right_Inked'Access);
+      Assert (B (1).X = 13 and then not B (1).Leader,
+              "ink right of the marker: left of it; got" & B (1).X'Image);
+      B := Place_Labels ([50], [50], [30], 9, 1, 1, 200, 200, Marker_Radius => 9);
+      Assert (B (1).X = 62, "a larger marker: farther; got" & B (1).X'Image);
+      --  Ink everywhere below row 20: the label goes up there, with a
+      --  leader line, rather than over the ink.
+      B := Place_Labels ([50], [50], [30], 9, 1, 1, 200, 200, Ink => Low_Inked'Access);
+      Assert (B (1).Leader and then B (1).Y + B (1).Height <= 20,
+              "moved away from the ink; got" & B (1).Y'Image & B (1).Leader'Image);
+   end Labels_Avoid_Ink;
+
    procedure Map_Pair_Round_Trip (Unused : in out Fixture) is
       W : constant Worlds.World := Room;
    begin
@@ -179,6 +201,8 @@ package body Sancta.Simulation.Rendering.Tests is
                                       SVG_And_CSV'Access));
       Result.Add_Test (Caller.Create ("rendering: text in pictures (5 x 7 font)",
                                       Text_In_Pictures'Access));
+      Result.Add_Test (Caller.Create ("rendering: labels avoid drawn pixels (Place_Labels)",
+                                      Labels_Avoid_Ink'Access));
       Result.Add_Test (Caller.Create ("rendering: map-server pair round trip",
                                       Map_Pair_Round_Trip'Access));
       return Result;
