@@ -673,6 +673,9 @@ package body Rclada_Commands is
       is
          pragma Unreferenced (Node, Info);
       begin
+         if Limit > 0 and then Seen >= Limit then
+            return;  --  Taken with the last one before the shutdown took effect.
+         end if;
          Put_Block (ROSIDL.Dynamic.Image (ROSIDL.CDR.Decode (Support, Data)));
          Put_Line ("---");
          Flush;

@@ -188,6 +188,36 @@ def test_topic_echo_type_from_graph():
     assert out.startswith("data: 'Hello World: ") and out.endswith("---\n"), out
 
 
+def test_topic_echo_once_prints_one_of_a_burst():
+    """--once (and --count N) print exactly N messages also when more arrive
+    in the same take as the last one (seen once in CI under load: two)."""
+    import threading
+    dp = ps.participant()
+    wr = ps.writer(dp, "rt/burst", String_, reliable=True, depth=100)
+    stop = threading.Event()
+
+    def flood():
+        i = 0
+        while not stop.is_set():
+            wr.write(String_(data="m%d" % i))
+            i += 1
+            if i % 50 == 0:
+                time.sleep(0.001)
+
+    feeder = threading.Thread(target=flood, daemon=True)
+    feeder.start()
+    try:
+        for limit in ("--once", "--count 3", "--once"):
+            rc, out, err = rclada("topic", "echo", "/burst", "std_msgs/msg/String",
+                                  *limit.split(), timeout=30)
+            assert rc == 0, err
+            blocks = [b for b in out.split("---\n") if b.strip()]
+            assert len(blocks) == (3 if "count" in limit else 1), (limit, out)
+    finally:
+        stop.set()
+        feeder.join(5)
+
+
 def test_topic_pub():
     dp = ps.participant()
     rd = ps.reader(dp, "rt/pub_test", String_)
