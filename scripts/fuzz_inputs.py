@@ -42,7 +42,6 @@ Flagged inputs are kept in --keep (one folder per finding, with the command
 line and the output); the summary table goes to standard output. The run is
 deterministic for a seed (same mutations, same order)."""
 import argparse
-import fcntl
 import os
 import pathlib
 import random
@@ -55,6 +54,8 @@ import sys
 import tempfile
 import time
 import zlib
+
+import domain_lock  # scripts/domain_lock.py, beside this file
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 BIN = pathlib.Path(os.environ.get("SANCTA_FUZZ_BIN", REPO / "bin"))
@@ -988,41 +989,6 @@ def build_readers(seed_folder):
     return readers
 
 
-_domain_lock = None
-
-
-def _own_domain():
-    """A domain id in 1..200 no other run on this machine holds: an flock on
-    $TMPDIR/rclada-domain-locks/<id>.lock kept until this process exits (the
-    locks scripts/env.sh, tests/interop/conftest.py and the AUnit driver
-    take). Reserved once; the pid's own choice if no lock can be taken."""
-    global _domain_lock
-    if _domain_lock is not None:
-        return _domain_lock[0]
-    folder = pathlib.Path(tempfile.gettempdir()) / "rclada-domain-locks"
-    try:
-        folder.mkdir(exist_ok=True)
-        os.chmod(folder, 0o1777)
-    except OSError:
-        pass
-    start = os.getpid() % 200
-    for step in range(200):
-        domain = (start + step) % 200 + 1
-        try:
-            lock = open(folder / f"{domain}.lock", "a")
-        except OSError:
-            continue
-        try:
-            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            lock.close()
-            continue
-        _domain_lock = (domain, lock)
-        return domain
-    _domain_lock = (start + 1, None)
-    return start + 1
-
-
 def env():
     e = dict(os.environ)
     e["CYCLONEDDS_URI"] = "file://" + str(SHARE / "cyclonedds-localhost.xml")
@@ -1030,7 +996,7 @@ def env():
     if not e.get("ROS_DOMAIN_ID"):
         # Not pid % 200 + 20 unlocked: that could be the domain of a test
         # run going on (its tests would see the fuzzed programs' traffic).
-        e["ROS_DOMAIN_ID"] = str(_own_domain())
+        e["ROS_DOMAIN_ID"] = str(domain_lock.reserve())
     e["SANCTA_ROOT"] = str(REPO)
     e["RCLADA_ROOT"] = str(REPO)
     return e
