@@ -4,10 +4,12 @@ with Ada.Numerics.Generic_Elementary_Functions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with Ada.IO_Exceptions;
+with Ada.Unchecked_Deallocation;
 with Cairo.Image_Surface;
 with Cairo.Png;
 with Glib;
 with Sancta.Robot.Grids;
+with Sancta.Simulation.Rendering;
 
 package body Sancta.Views.Drawing is
 
@@ -290,9 +292,19 @@ package body Sancta.Views.Drawing is
          when Done                         => Done_Colour,
          when Assigned | Active | Reallocated => Robot_Colour (S, To_String (T.Robot)));
 
+   function Task_Radius (Tr : Transform) return Gdouble is
+     (Gdouble (Real'Max (5.0, 0.22 * Tr.Scale)));
+
+   function Path_Width (Tr : Transform) return Gdouble is
+     (Gdouble (Real'Max (4.0, 0.15 * Tr.Scale)));
+   --  Of an explore task's line.
+
+   Task_Text : constant Gdouble := 10.0;
+   --  The size of task names, drawn right of the marker, baseline at its top.
+
    procedure Draw_Task (Cr : Cairo_Context; S : Scene; T : Task_View; Tr : Transform) is
       C      : constant RGB := State_Colour (S, T);
-      Radius : constant Gdouble := Gdouble (Real'Max (5.0, 0.22 * Tr.Scale));
+      Radius : constant Gdouble := Task_Radius (Tr);
       Kind   : constant String := To_String (T.Kind);
       Filled : constant Boolean := T.State in Active | Done | Reallocated;
       Where  : constant Pixel := Px (Tr, T.Points (1));
@@ -320,7 +332,7 @@ package body Sancta.Views.Drawing is
             Mid : constant Pixel := ((A.X + B.X) / 2.0, (A.Y + B.Y) / 2.0);
          begin
             Set (Cr, C, (if T.State = Scenes.Pending then 0.6 else 0.9));
-            Set_Line_Width (Cr, Gdouble (Real'Max (4.0, 0.15 * Tr.Scale)));
+            Set_Line_Width (Cr, Path_Width (Tr));
             Line (Cr, A, B);
             Stroke (Cr);
             if T.Choice > 0 then
@@ -361,7 +373,7 @@ package body Sancta.Views.Drawing is
          Set_Line_Width (Cr, 2.5);
          Stroke (Cr);
       end if;
-      Text (Cr, Where.X + Radius + 2.0, Where.Y - Radius, To_String (T.Id), 10.0,
+      Text (Cr, Where.X + Radius + 2.0, Where.Y - Radius, To_String (T.Id), Task_Text,
             Colour => (0.25, 0.25, 0.25), Halo => True);
    end Draw_Task;
 
@@ -419,7 +431,6 @@ package body Sancta.Views.Drawing is
       Nose   : constant Pixel :=
         (Centre.X + Radius * Gdouble (Math.Cos (R.Where.Yaw)),
          Centre.Y - Radius * Gdouble (Math.Sin (R.Where.Yaw)));
-      Name   : constant String := To_String (R.Id) & (if R.Lost then " LOST" else "");
    begin
       Circle (Cr, Centre, Radius);
       Set (Cr, (if R.Lost then Lost_Colour else Colour_Of (R.Colour)));
@@ -440,9 +451,135 @@ package body Sancta.Views.Drawing is
                (Centre.X + Radius + 3.0, Centre.Y - Radius - 3.0));
          Stroke (Cr);
       end if;
-      Label (Cr, Centre.X + Radius + 4.0, Centre.Y - Radius - 2.0, Name,
-             (if R.Lost then Lost_Mark else Colour_Of (R.Colour)), 13.0);
    end Draw_Robot;
+
+   function Robot_Name (R : Robot_View) return String is
+     (To_String (R.Id) & (if R.Lost then " LOST" else ""));
+
+   Robot_Text : constant Gdouble := 13.0;
+
+   function Label_Width (Words : String; Size : Gdouble) return Gdouble is
+     (Gdouble (Words'Length) * Size * 0.62 + 6.0);
+   --  Of Label's white box.
+
+   procedure Draw_Robot_Labels
+     (Cr : Cairo_Context; S : Scene; Tr : Transform; Width, Height : Natural)
+   is
+      --  Robot names where they cover no task name, task marker nor robot
+      --  (Rendering.Place_Labels, the placer of the report pictures): drawn
+      --  up right of the robot whatever was there, r2's name hid task "s1b".
+      package R renames Sancta.Simulation.Rendering;
+      type Bits is array (Natural range <>, Natural range <>) of Boolean with Pack;
+      type Bits_Access is access Bits;
+      procedure Free is new Ada.Unchecked_Deallocation (Bits, Bits_Access);
+      N       : constant Natural := Natural (S.Robots.Length);
+      Radius  : constant Gdouble := Body_Radius (Tr);
+      Marks   : constant Gdouble := Task_Radius (Tr) + 2.0;
+      Taken   : Bits_Access;
+      --  Pixels drawn on by what a label should not cover.
+
+      procedure Mark (X1, Y1, X2, Y2 : Gdouble) is
+         Low_X  : constant Integer := Integer (Gdouble'Max (0.0, Gdouble'Floor (X1)));
+         Low_Y  : constant Integer := Integer (Gdouble'Max (0.0, Gdouble'Floor (Y1)));
+         High_X : constant Integer :=
+           Integer (Gdouble'Min (Gdouble (Width - 1), Gdouble'Ceiling (X2)));
+         High_Y : constant Integer :=
+           Integer (Gdouble'Min (Gdouble (Height - 1), Gdouble'Ceiling (Y2)));
+      begin
+         for Y in Low_Y .. High_Y loop
+            for X in Low_X .. High_X loop
+               Taken (X, Y) := True;
+            end loop;
+         end loop;
+      end Mark;
+
+      procedure Mark_Square (P : Pixel; Half : Gdouble) is
+      begin
+         if P.X in -Half .. Gdouble (Width) + Half and then P.Y in -Half .. Gdouble (Height) + Half
+         then
+            Mark (P.X - Half, P.Y - Half, P.X + Half, P.Y + Half);
+         end if;
+      end Mark_Square;
+
+      function Inked (X, Y : Integer) return Boolean is
+        (X in 0 .. Width - 1 and then Y in 0 .. Height - 1 and then Taken (X, Y));
+   begin
+      if N = 0 or else Width = 0 or else Height = 0 then
+         return;
+      end if;
+      Taken := new Bits'[0 .. Width - 1 => [0 .. Height - 1 => False]];
+      for T of S.Tasks loop
+         declare
+            Where : constant Pixel := Px (Tr, T.Points (1));
+            Left  : constant Gdouble := Where.X + Marks;
+         begin
+            --  The name as Draw_Task writes it (halo included), the markers.
+            Mark_Square (Where, Marks);
+            if Left < Gdouble (Width) and then Where.Y in -20.0 .. Gdouble (Height) + 20.0 then
+               Mark (Left - 2.0, Where.Y - Marks - Task_Text, Left
+                     + Gdouble (Length (T.Id)) * Task_Text * 0.62 + 2.0, Where.Y - Marks + 4.0);
+            end if;
+            for P of T.Points loop
+               Mark_Square (Px (Tr, P), Marks);
+            end loop;
+            if To_String (T.Kind) = "explore" and then T.Points.Length >= 2 then
+               declare
+                  A     : constant Pixel := Px (Tr, T.Points (1));
+                  B     : constant Pixel := Px (Tr, T.Points (2));
+                  Steps : constant Natural := Natural'Min
+                    (2_000, Natural (Gdouble'Max (abs (B.X - A.X), abs (B.Y - A.Y)) / 2.0));
+               begin
+                  for K in 0 .. Steps loop
+                     Mark_Square ((A.X + (B.X - A.X) * Gdouble (K) / Gdouble (Steps + 1),
+                                   A.Y + (B.Y - A.Y) * Gdouble (K) / Gdouble (Steps + 1)),
+                                  Path_Width (Tr) / 2.0 + 1.0);
+                  end loop;
+               end;
+            end if;
+         end;
+      end loop;
+      for Robot of S.Robots loop
+         Mark_Square (Px (Tr, Position (Robot.Where)), Radius + 2.0);
+      end loop;
+      declare
+         Xs, Ys, Widths : R.Pixel_Array (1 .. N);
+         K              : Natural := 0;
+      begin
+         for Robot of S.Robots loop
+            K := K + 1;
+            Xs (K) := Integer (Px (Tr, Position (Robot.Where)).X);
+            Ys (K) := Integer (Px (Tr, Position (Robot.Where)).Y);
+            Widths (K) := Integer (Label_Width (Robot_Name (Robot), Robot_Text));
+         end loop;
+         declare
+            Boxes : constant R.Label_Boxes := R.Place_Labels
+              (Xs, Ys, Widths, Integer (Robot_Text) + 4, 0, 0, Width - 1, Height - 1,
+               Marker_Radius => Natural (Radius) + 3, Ink => Inked'Access);
+            --  3 pixels beyond the body: clear of a lost robot's cross.
+         begin
+            K := 0;
+            for Robot of S.Robots loop
+               K := K + 1;
+               declare
+                  B      : constant R.Label_Box := Boxes (K);
+                  Colour : constant RGB :=
+                    (if Robot.Lost then Lost_Mark else Colour_Of (Robot.Colour));
+               begin
+                  if B.Leader then
+                     Set (Cr, Colour);
+                     Set_Line_Width (Cr, 1.5);
+                     Line (Cr, (Gdouble (Xs (K)), Gdouble (Ys (K))),
+                           (Gdouble (B.X + B.Width / 2), Gdouble (B.Y + B.Height / 2)));
+                     Stroke (Cr);
+                  end if;
+                  Label (Cr, Gdouble (B.X) + 3.0, Gdouble (B.Y) + Robot_Text, Robot_Name (Robot),
+                         Colour, Robot_Text);
+               end;
+            end loop;
+         end;
+      end;
+      Free (Taken);
+   end Draw_Robot_Labels;
 
    --  The side panel ----------------------------------------------------------
 
@@ -628,6 +765,7 @@ package body Sancta.Views.Drawing is
       for R of S.Robots loop
          Draw_Robot (Cr, R, T);
       end loop;
+      Draw_Robot_Labels (Cr, S, T, Map_W, Height);
       Label (Cr, 10.0, 20.0,
              "t " & Img (Real (S.Age)) & " s   samples" & S.Samples'Image
              & (if S.Rejected > 0 then "   rejected" & S.Rejected'Image else "")
