@@ -7,6 +7,7 @@ with Ada.IO_Exceptions;
 with Ada.Unchecked_Deallocation;
 with Cairo.Image_Surface;
 with Cairo.Png;
+with GNAT.OS_Lib;
 with Glib;
 with Sancta.Robot.Grids;
 with Sancta.Simulation.Rendering;
@@ -822,8 +823,12 @@ package body Sancta.Views.Drawing is
       function Num (X : Gdouble) return String is (Num (Real (X)));
       function Signed (X : Real) return String renames Num;
       function Channel (V : Float) return String is (Trim (Integer (V * 255.0)));
+      Part : constant String := File_Name & ".part";
+      --  Written whole, then renamed over File_Name: the window rewrites it
+      --  at every frame, and a reader must never see half of it.
+      Renamed : Boolean;
    begin
-      Create (F, Out_File, File_Name);
+      Create (F, Out_File, Part);
       Put_Line (F, "{""scale"": " & Signed (Shift.Scale) & ", ""x0"": " & Signed (Shift.X0)
                 & ", ""y0"": " & Signed (Shift.Y0) & ",");
       Put_Line (F, " ""robot_radius_px"": " & Num (Body_Radius (T)) & ",");
@@ -858,6 +863,10 @@ package body Sancta.Views.Drawing is
       end loop;
       Put_Line (F, " ]}");
       Close (F);
+      GNAT.OS_Lib.Rename_File (Part, File_Name, Renamed);
+      if not Renamed then
+         raise Ada.IO_Exceptions.Use_Error with "cannot rename " & Part & " to " & File_Name;
+      end if;
    end Write_Description;
 
 end Sancta.Views.Drawing;

@@ -82,6 +82,7 @@ package Sancta.Views.Drawing is
    --  What was drawn, as JSON (for tests and reports): the transform (with
    --  Offset, the drawing's position in a larger picture), each robot's
    --  colour, state, pose and pixel, its tour's pixel polyline, and the
-   --  team figures.
+   --  team figures. Written to File_Name & ".part", then renamed: a reader
+   --  never sees a half-written file.
 
 end Sancta.Views.Drawing;
