@@ -56,6 +56,7 @@ import time
 import zlib
 
 import domain_lock  # scripts/domain_lock.py, beside this file
+import rosbag2_db3  # scripts/rosbag2_db3.py
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 BIN = pathlib.Path(os.environ.get("SANCTA_FUZZ_BIN", REPO / "bin"))
@@ -390,34 +391,14 @@ def make_db3_seeds(folder):
     type_description_hash, as rosbags writes them; no message_definitions,
     which is not read), 3 (Humble) and 1 (no QoS column): 6 strings on
     /chatter, 6 scans on /scan (the MCAP seeds' payloads)."""
-    import sqlite3
     seeds = []
     for label, schema, qos in (("schema4", 4, True), ("humble", 3, True), ("old", 1, False)):
         path = folder / f"seed-{label}.db3"
         path.unlink(missing_ok=True)
-        db = sqlite3.connect(path)
-        if schema >= 3:
-            db.execute("CREATE TABLE schema(schema_version INTEGER PRIMARY KEY,"
-                       " ros_distro TEXT NOT NULL)")
-            db.execute("INSERT INTO schema VALUES (?, 'humble')", (schema,))
-            db.execute("CREATE TABLE metadata(id INTEGER PRIMARY KEY, metadata_version INTEGER"
-                       " NOT NULL, metadata TEXT NOT NULL)")
-        db.execute("CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT"
-                   " NOT NULL, serialization_format TEXT NOT NULL"
-                   + (", offered_qos_profiles TEXT NOT NULL" if qos else "")
-                   + (", type_description_hash TEXT NOT NULL" if schema >= 4 else "") + ")")
-        db.execute("CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER NOT NULL,"
-                   " timestamp INTEGER NOT NULL, data BLOB NOT NULL)")
-        db.execute("CREATE INDEX timestamp_idx ON messages (timestamp ASC)")
-        extra = ([("- history: 1\n  depth: 10\n  reliability: 1\n  durability: 1\n"
-                   if label == "humble" else "- history: keep_last\n  depth: 5\n"
-                   "  reliability: best_effort\n  durability: volatile\n")] if qos else [])
-        extra += [""] if schema >= 4 else []
-        marks = ", ?" * len(extra)
-        db.execute(f"INSERT INTO topics VALUES (1, '/chatter', 'std_msgs/msg/String', 'cdr'"
-                   f"{marks})", extra)
-        db.execute(f"INSERT INTO topics VALUES (2, '/scan', 'sensor_msgs/msg/LaserScan', 'cdr'"
-                   f"{marks})", extra)
+        qos_text = ("- history: 1\n  depth: 10\n  reliability: 1\n  durability: 1\n"
+                    if label == "humble" else "- history: keep_last\n  depth: 5\n"
+                    "  reliability: best_effort\n  durability: volatile\n")
+        messages = []
         for i in range(6):
             text = f"hello {i}".encode()
             payload = (b"\x00\x01\x00\x00" + (len(text) + 1).to_bytes(4, "little") + text
@@ -427,13 +408,11 @@ def make_db3_seeds(folder):
                     + (2).to_bytes(4, "little") + b"\x00\x00\x80\x3f" * 2
                     + (0).to_bytes(4, "little"))
             stamp = 1_000_000_000 + i * 10_000_000
-            db.execute("INSERT INTO messages (topic_id, timestamp, data) VALUES (1, ?, ?)",
-                       (stamp, payload))
-            db.execute("INSERT INTO messages (topic_id, timestamp, data) VALUES (2, ?, ?)",
-                       (stamp + 1, scan))
-        db.commit()
-        db.execute("VACUUM")
-        db.close()
+            messages += [(1, stamp, payload), (2, stamp + 1, scan)]
+        rosbag2_db3.write(path, schema,
+                          [(1, "/chatter", "std_msgs/msg/String", qos_text),
+                           (2, "/scan", "sensor_msgs/msg/LaserScan", qos_text)],
+                          messages, vacuum=True)
         seeds.append(path)
     return seeds
 
