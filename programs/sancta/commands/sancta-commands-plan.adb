@@ -83,6 +83,16 @@ package body Sancta.Commands.Plan is
       Put_Line ("                       below it (default 0.04)");
       Put_Line ("  --excess-reheats     minmax, hybrid schedule: that term also in the");
       Put_Line ("                       reheats (default: they anneal on the makespan)");
+      Put_Line ("  --subsets F          minmax, 3+ robots: share of the budget for re-annealing");
+      Put_Line ("                       the longest tour with tours near it as a problem of");
+      Put_Line ("                       their own, kept when their makespan falls (0 = none)");
+      Put_Line ("  --subset-robots N    tours per such subset (2 .. 5, default 3)");
+      Put_Line ("  --subset-moves M     moves per task of a subset's anneal (default 5000)");
+      Put_Line ("  --subset-fresh       a subset's anneal starts from its own construction");
+      Put_Line ("  --subset-total W     subsets minimise makespan + W x total, kept when the");
+      Put_Line ("                       plan's makespan, else its total, falls (0 = none)");
+      Put_Line ("  --subset-t0 F        a subset's anneal: start temperature factor (0.05;");
+      Put_Line ("                       0 = --t0)");
       Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
       Put_Line ("  --ruin F             share of the work spent in ruin-and-recreate moves");
@@ -615,6 +625,18 @@ package body Sancta.Commands.Plan is
                Opts.Excess_Weight := Number_In (A, 0.0, 10.0);
             elsif A = "--excess-band" then
                Opts.Excess_Band := Number_In (A, 0.0, 1.0);
+            elsif A = "--subsets" then
+               Opts.Subset_Share := Number_In (A, 0.0, 0.9);
+            elsif A = "--subset-robots" then
+               Opts.Subset_Robots := Positive (Number_In (A, 2.0, 5.0));
+            elsif A = "--subset-moves" then
+               Opts.Subset_Moves := Number_In (A, 1.0, 1.0E6);
+            elsif A = "--subset-t0" then
+               Opts.Subset_Start_Factor := Number_In (A, 0.0, 10.0);
+            elsif A = "--subset-total" then
+               Opts.Subset_Total_Weight := Number_In (A, 0.0, 10.0);
+            elsif A = "--subset-fresh" then
+               Opts.Subset_Fresh := True;
             elsif A = "--excess-reheats" then
                Opts.Excess_In_Reheats := True;
             elsif A = "--balance" then

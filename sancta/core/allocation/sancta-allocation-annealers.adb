@@ -2,6 +2,7 @@ with Ada.Real_Time;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.Annealers.Construction;
 with Sancta.Allocation.Annealers.Searches;
+with Sancta.Allocation.Annealers.Subsets;
 with Sancta.Allocation.Annealers.Tours;
 with Sancta.Allocation.Local_Search;
 
@@ -124,6 +125,10 @@ package body Sancta.Allocation.Annealers is
         (if Opts.Local_Search > 0.0 and then Opts.Time_Limit > 0.0
            and then (Single_Tour or else One_Route)
          then Long_Float'Min (0.95, Opts.Local_Search) else 0.0);
+      Subset_Share : constant Long_Float :=
+        (if Subsets.Applies (P, Opts) and then (Opts.Time_Limit > 0.0 or else Opts.Iterations > 0)
+         then Long_Float'Min (0.9, Opts.Subset_Share) else 0.0);
+      --  The share of the budget for route-subset re-optimisation.
       Anneal_Opts : Options := Opts;
       Run : Searches.Search (P.Robots, P.Tasks);
    begin
@@ -146,7 +151,12 @@ package body Sancta.Allocation.Annealers is
       Anneal_Opts.Time_Limit := Duration (Long_Float (Opts.Time_Limit)
                                           * (1.0 - (if Share > 0.0 then Share
                                                     elsif Route_Polish then Team_Polish_Share
-                                                    else 0.0)));
+                                                    else 0.0)
+                                                - Subset_Share));
+      if Opts.Iterations > 0 then
+         Anneal_Opts.Iterations := Long_Long_Integer'Max
+           (1, Long_Long_Integer (Long_Float (Opts.Iterations) * (1.0 - Subset_Share)));
+      end if;
       Searches.Start (Run, P, Anneal_Opts, Best);
       Searches.Anneal (Run, P);
       Searches.Finish (Run, P, Best, Stats);
@@ -154,7 +164,8 @@ package body Sancta.Allocation.Annealers is
          return;
          --  Reached: no search after the anneal (Time_To_Best stays the
          --  time the target was reached).
-      elsif Share > 0.0 and then Single_Tour then
+      end if;
+      if Share > 0.0 and then Single_Tour then
          Improve_Tour (P, Opts, Best, Stats);
       elsif Share > 0.0 then
          Polish_Routes (P, Opts, Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed), True,
@@ -167,6 +178,18 @@ package body Sancta.Allocation.Annealers is
             (if Opts.Time_Limit > 0.0
              then Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed) else 0.0),
             False, Best, Stats);
+      end if;
+      if Subset_Share > 0.0 then
+         --  After the routes' descents: what is left of the budget.
+         Subsets.Reoptimise
+           (P, Opts,
+            Moves => (if Opts.Iterations > 0
+                      then Long_Long_Integer'Max (1, Opts.Iterations - Anneal_Opts.Iterations)
+                      else 0),
+            Time => (if Opts.Time_Limit > 0.0
+                     then Duration'Max (0.001, Opts.Time_Limit - Stats.Elapsed)
+                     else 0.0),
+            Best => Best, Stats => Stats);
       end if;
    end Solve;
 

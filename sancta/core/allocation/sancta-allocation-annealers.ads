@@ -218,6 +218,26 @@ package Sancta.Allocation.Annealers is
       --  Stop as soon as the best value (of Criterion) is <= Target; 0 = none.
       Box          : access Best_Box := null;
       --  When set, the best so far is posted there (anytime use).
+      Subset_Share : Long_Float := 0.0;
+      --  Pure makespan, several robots (see Subsets.Applies): the share of
+      --  the budget (moves and time) given after the anneal to route-subset
+      --  re-optimisation: the longest tour and Subset_Robots - 1 tours near
+      --  it pooled, re-annealed as a problem of their own (Subset_Moves x
+      --  its tasks moves, own seed), put back when their makespan falls (or
+      --  stays and their total falls); 0 = none.
+      Subset_Robots : Positive := 3;
+      Subset_Moves  : Long_Float := 5000.0;
+      Subset_Start_Factor : Long_Float := 0.05;
+      --  The sub-anneals' Start_Factor (0.0: Start_Factor): low, so that
+      --  they refine the current tours rather than scramble them.
+      Subset_Total_Weight : Long_Float := 0.0;
+      --  > 0: the sub-anneals minimise makespan + this x total, the subset
+      --  starts from a random robot half the time (else the longest), and
+      --  a result is kept when the whole plan's makespan falls, or stays
+      --  and its total falls (lower totals give slack to later subsets).
+      Subset_Fresh  : Boolean := False;
+      --  The sub-anneal starts from its own construction (else from the
+      --  current tours of those robots).
    end record;
 
    procedure Solve

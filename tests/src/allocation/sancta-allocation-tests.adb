@@ -668,6 +668,96 @@ package body Sancta.Allocation.Tests is
       end;
    end Excess_Term_Checked;
 
+   --  Route-subset re-optimisation after the anneal (Options.Subset_Share)
+   --  under the expensive check (every sub-anneal's moves too), on random
+   --  makespan problems where it applies (distinct depots, open tours,
+   --  asymmetric costs, depots of their own, multipliers, infeasible
+   --  pairs, a minimum task count): valid, the reported best is the
+   --  allocation's recomputed makespan, the same for a seed, the moves
+   --  counted within the budget, another search than without it on most;
+   --  where it does not apply (frozen prefixes, plan trees, alternatives,
+   --  own costs, 2 robots, minsum) the plan is the one without it.
+   procedure Subset_Reoptimisation_Checked (Unused : in out Fixture) is
+      use Annealers;
+      Applying : constant array (1 .. 5) of Variant :=
+        [Variant'(others => <>),
+         (Asymmetric => True, Closed => False, others => <>),
+         (End_Depot => True, Heterogeneous => True, others => <>),
+         (Infeasible => True, Min_Tasks => 2, others => <>),
+         (Heterogeneous => True, Min_Tasks => 1, others => <>)];
+      Other : constant array (1 .. 4) of Variant :=
+        [(Frozen => Robot_1, others => <>),
+         (Plan_Trees => True, others => <>),
+         (Alternatives => True, others => <>),
+         (Own_Factor => True, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 4_700;
+      Differs : Natural := 0;
+   begin
+      for V of Applying loop
+         Seed := Seed + 1;
+         declare
+            P : constant Problem_Access := Random_Problem (36, 5, V, Seed);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 20_000,
+               Check => True, Subset_Share => 0.5, Subset_Moves => 100.0, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6,
+                    "reported best" & S.Best'Image & " is not the makespan"
+                    & Evaluate (P.all, A, Min_Max).Value'Image);
+            Assert (S.Moves in 10_000 .. 20_000 + 128, "moves" & S.Moves'Image);
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            O.Subset_Robots := 2;
+            O.Subset_Fresh := True;
+            Solve (P.all, O, B, T);
+            Assert (Validate (P.all, B) = "", Validate (P.all, B));
+            Assert (abs (Evaluate (P.all, B, Min_Max).Value - T.Best) < 1.0E-6, "fresh");
+            O.Subset_Share := 0.0;
+            Solve (P.all, O, B, T);
+            if A /= B then
+               Differs := Differs + 1;
+            end if;
+         end;
+      end loop;
+      Assert (Differs >= 3, "the subsets changed the plan on" & Differs'Image & " of 5");
+      for V of Other loop
+         Seed := Seed + 1;
+         declare
+            P : constant Problem_Access := Random_Problem (30, 4, V, Seed);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 10_000,
+               Subset_Share => 0.5, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            O.Subset_Share := 0.0;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "subsets acted where they do not apply");
+         end;
+      end loop;
+      for C of [Min_Sum, Min_Max] loop
+         declare
+            P : constant Problem_Access :=
+              Random_Problem (20, (if C = Min_Sum then 4 else 2), (others => <>), 4_790);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => C, Seed => 3, Time_Limit => 0.0, Iterations => 10_000,
+               Subset_Share => 0.5, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            O.Subset_Share := 0.0;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "subsets acted on minsum or 2 robots");
+         end;
+      end loop;
+   end Subset_Reoptimisation_Checked;
+
    --  Computed Euclidean distances (no matrix) equal the matrix ones on
    --  every bundled TSPLIB file (EUC_2D, ATSP / explicit keep a matrix), on
    --  scaled and floored random points, with robot factors and own costs,
@@ -842,6 +932,7 @@ package body Sancta.Allocation.Tests is
       Add ("ejection chains, checked after every step", Ejection_Chains_Checked'Access);
       Add ("makespan search's excess term, checked after every move",
            Excess_Term_Checked'Access);
+      Add ("route-subset re-optimisation, checked", Subset_Reoptimisation_Checked'Access);
       return Result;
    end Suite;
 
