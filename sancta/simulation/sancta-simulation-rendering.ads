@@ -40,6 +40,9 @@ package Sancta.Simulation.Rendering is
       Robots       : Pose_Vectors.Vector;
       --  Robots drawn as disks with a heading tick.
       Robot_Radius : Real := 0.2;
+      Lost         : Point_Vectors.Vector;
+      --  Where robots were lost: a red cross, larger and thicker than a
+      --  marker's (red is for losses only: no robot has it).
       Markers      : Marker_Vectors.Vector;
       Title        : Ada.Strings.Unbounded.Unbounded_String;
       --  A band above the world when set.
@@ -90,7 +93,8 @@ package Sancta.Simulation.Rendering is
    --  Pixels of the band below the world (0 without legend or scale bar).
 
    function Color_Of (Robot : Positive) return Raster_Images.Color;
-   --  A distinct colour per robot (cycling over ten).
+   --  A distinct colour per robot (cycling over ten; the first five told
+   --  apart by colour-blind readers too), never red (a loss's colour).
 
    function Hex (C : Raster_Images.Color) return String;
    --  "#rrggbb".
