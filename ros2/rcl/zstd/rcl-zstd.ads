@@ -8,7 +8,7 @@
 --  Example:
 --     Decompress_File ("run/run_0.db3.zstd", "/tmp/x.db3");
 --     D : Decompressor;
---     D.Decompress (Frame, Use'Access);   --  Use (Plain : Byte_Array)
+--     D.Decompress (Frame, Use_It'Access);   --  Use_It (Plain : Byte_Array)
 with Ada.Finalization;
 with Ada.Streams;
 
