@@ -1,7 +1,9 @@
 --  Pictures of a world with robot trajectories, robots and points of
 --  interest, as SVG (vector) or as an image saved to PNG (labels in a
---  5 x 7 pixel font, Sancta.Simulation.Glyphs). Trajectories can be read from and written to CSV
---  ("robot,x,y" per line, robots numbered from 1). A world can also be
+--  5 x 7 pixel font with lower case, Sancta.Simulation.Glyphs). Robots get
+--  colours a colour-blind reader tells apart (the first five); red marks
+--  where a robot was lost. Trajectories can be read from and written to
+--  CSV ("robot,x,y" per line, robots numbered from 1). A world can also be
 --  written as a ROS map-server pair (PGM + YAML).
 --
 --     S.Trajectories := Read_Trajectories ("run.csv");
