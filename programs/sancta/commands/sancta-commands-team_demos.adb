@@ -244,6 +244,7 @@ package body Sancta.Commands.Team_Demos is
                      --  The last sample at most Grace after the completion.
                      Entry_Point : Point;
                   begin
+                     C.Reached := -1.0;
                      for K in 1 .. Natural (Track.Length) loop
                         exit when Track (K).Time > C.Time + Grace;
                         Last := K;
