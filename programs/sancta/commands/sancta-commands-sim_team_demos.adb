@@ -830,7 +830,6 @@ package body Sancta.Commands.Sim_Team_Demos is
                                 else "?")));
          end loop;
          Team_Demos.Resolve_Orphans (Result);
-         Team_Demos.Note_Arrivals (Result, M.Tasks);
          --  A task the robot finished just before its death (its record
          --  reaching this observer after the kill) was not unfinished.
          for K in reverse 1 .. Natural (Result.Orphans.Length) loop
@@ -840,6 +839,7 @@ package body Sancta.Commands.Sim_Team_Demos is
                Result.Orphans.Delete (K);
             end if;
          end loop;
+         Team_Demos.Note_Arrivals (Result, M.Tasks);
          if Dir /= "" then
             Team_Demos.Write_Report (Result, World, Scene, Dir);
          end if;

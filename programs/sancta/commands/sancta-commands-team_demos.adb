@@ -207,7 +207,32 @@ package body Sancta.Commands.Team_Demos is
          end loop;
          return Sum;
       end Stopped_In;
+
+      function Stay_Start
+        (Track : Track_Vectors.Vector; Last : Natural; Since : Long_Float; Where : Point)
+         return Long_Float
+      is
+         --  The start of the last stay within Reach_Radius of Where among
+         --  samples 1 .. Last from Since on; -1.0 when there is none.
+         K : Natural := Last;
+
+         function Near (I : Positive) return Boolean is
+           (Track (I).Time >= Since
+            and then Long_Float (Distance (Position (Track (I).Where), Where)) <= Reach_Radius);
+      begin
+         while K > 0 and then Track (K).Time >= Since and then not Near (K) loop
+            K := K - 1;
+         end loop;
+         if K = 0 or else not Near (K) then
+            return -1.0;
+         end if;
+         while K > 1 and then Near (K - 1) loop
+            K := K - 1;
+         end loop;
+         return Track (K).Time;
+      end Stay_Start;
    begin
+      Result.Last_Leg := (others => <>);
       for R in 1 .. Natural (Result.Robots.Length) loop
          declare
             Robot : Robot_Summary renames Result.Robots (R);
@@ -269,26 +294,10 @@ package body Sancta.Commands.Team_Demos is
                               end loop;
                            end if;
                         end;
-                        --  The last stay near the entry point, back to its start.
-                        declare
-                           K : Natural := Last;
-                        begin
-                           while K > 0 and then Track (K).Time >= Since
-                             and then Long_Float (Distance (Position (Track (K).Where),
-                                                            Entry_Point)) > Reach_Radius
-                           loop
-                              K := K - 1;
-                           end loop;
-                           if K > 0 and then Track (K).Time >= Since then
-                              while K > 1 and then Track (K - 1).Time >= Since
-                                and then Long_Float (Distance (Position (Track (K - 1).Where),
-                                                               Entry_Point)) <= Reach_Radius
-                              loop
-                                 K := K - 1;
-                              end loop;
-                              C.Reached := Long_Float'Min (Track (K).Time, C.Time);
-                           end if;
-                        end;
+                        C.Reached := Stay_Start (Track, Last, Since, Entry_Point);
+                        if C.Reached >= 0.0 then
+                           C.Reached := Long_Float'Min (C.Reached, C.Time);
+                        end if;
                      end if;
                      declare
                         Reached : constant Long_Float :=
@@ -306,6 +315,33 @@ package body Sancta.Commands.Team_Demos is
                   end;
                end if;
             end loop;
+            if Robot.Id = Result.Killed and then Result.Kill_Time > Since then
+               --  Its last leg: toward (or at) the first task of its tour it
+               --  had not done, entered at any of its points.
+               Result.Last_Leg :=
+                 (Task_Id => (if Result.Orphans.Is_Empty then Null_Unbounded_String
+                              else Result.Orphans.First_Element.Task_Id),
+                  Robot   => Robot.Id,
+                  Time    => Result.Kill_Time,
+                  Reached => -1.0);
+               declare
+                  Found : Boolean;
+                  T     : constant Missions.Mission_Task :=
+                    Task_Of (Result.Last_Leg.Task_Id, Found);
+                  Last  : Natural := 0;
+               begin
+                  for K in 1 .. Natural (Track.Length) loop
+                     exit when Track (K).Time > Result.Kill_Time;
+                     Last := K;
+                  end loop;
+                  if Found then
+                     for P of T.Points loop
+                        Result.Last_Leg.Reached := Long_Float'Max
+                          (Result.Last_Leg.Reached, Stay_Start (Track, Last, Since, P));
+                     end loop;
+                  end if;
+               end;
+            end if;
          end;
       end loop;
    end Note_Arrivals;
@@ -416,6 +452,78 @@ package body Sancta.Commands.Team_Demos is
          Light : constant Raster_Images.Color := Tint (Color);
          Y     : constant Integer := Row_Y (R);
          Since : Long_Float := Result.Plan_Time;
+
+         procedure Bar (C : Completion; Done : Boolean) is
+            --  C's bar from Since; not Done: the lost robot's last leg
+            --  (C.Time its loss, C.Task_Id the task it had not done).
+         begin
+            declare
+               From : constant Long_Float := Long_Float'Min (Since, C.Time);
+               X0   : constant Integer := X_Of (From);
+               X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+               Name : constant String :=
+                 (if Done then To_String (C.Task_Id)
+                  elsif C.Task_Id = Null_Unbounded_String then "(not done)"
+                  else To_String (C.Task_Id) & " (not done)");
+               PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
+               SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
+               Reached  : constant Long_Float :=
+                 (if C.Reached < 0.0 then C.Time else Long_Float'Max (From, C.Reached));
+
+               procedure Part (T0, T1 : Long_Float; Shade : Raster_Images.Color;
+                               Class : String) is
+                  --  The bar's part from T0 to T1 (within the bar).
+                  P0 : constant Integer := Integer'Max (X0 + 1, X_Of (T0));
+                  P1 : constant Integer := Integer'Min (X1, X_Of (T1));
+               begin
+                  if P1 >= P0 then
+                     Box (P0, Y + 4, P1, Y + Row_H - 4, Shade);
+                     Put_Line (SVG, "<rect class=""" & Class & """ x=""" & Trim (P0)
+                               & """ y=""" & Trim (Y + 4) & """ width="""
+                               & Trim (P1 - P0 + 1) & """ height=""" & Trim (Row_H - 8)
+                               & """ fill=""" & Rendering.Hex (Shade) & """/>");
+                  end if;
+               end Part;
+            begin
+               if not Names then
+                  Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Light);
+                  Put_Line (SVG, "<rect class=""" & (if Done then "task" else "unfinished")
+                            & """ x=""" & Trim (X0 + 1) & """ y="""
+                            & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                            & Trim (Row_H - 8) & """ fill=""" & Rendering.Hex (Light)
+                            & """ stroke=""white""><title>" & To_String (C.Task_Id) & ": "
+                            & (if C.Reached < 0.0 then ""
+                               else "reached at " & F1 (Reached) & " s, ")
+                            & (if Done then "done at " else "not done, robot lost at ")
+                            & F1 (C.Time) & " s</title></rect>");
+                  if C.Reached >= 0.0 then
+                     Part (Reached, C.Time, Color, "at-task");
+                  end if;
+                  for S of Result.Robots (R).Stops loop
+                     if S.To > From and then S.From < C.Time then
+                        Part (S.From, S.To, Still_Grey, "stopped");
+                     end if;
+                  end loop;
+               else
+                  --  The task's name inside its bar, cut to fit, in a white
+                  --  outline (a patch would hide the shades under it).
+                  if PNG_Name /= "" then
+                     Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
+                                       Raster_Images.Black, Halo => True);
+                  end if;
+                  if SVG_Name /= "" then
+                     Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                               & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                               & Trim (SVG_Name'Length * 7) & """ fill=""black"""
+                               & " stroke=""white"" stroke-width=""3"""
+                               & " paint-order=""stroke"""
+                               & " font-size=""11"" font-family=""sans-serif"">"
+                               & SVG_Name & "</text>");
+                  end if;
+               end if;
+               Since := C.Time;
+            end;
+         end Bar;
       begin
          if not Names then
             Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
@@ -424,69 +532,12 @@ package body Sancta.Commands.Team_Demos is
          end if;
          for C of Result.Completions loop
             if To_String (C.Robot) = Id then
-               declare
-                  From : constant Long_Float := Long_Float'Min (Since, C.Time);
-                  X0   : constant Integer := X_Of (From);
-                  X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
-                  Name : constant String := To_String (C.Task_Id);
-                  PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
-                  SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
-                  Reached  : constant Long_Float :=
-                    (if C.Reached < 0.0 then C.Time else Long_Float'Max (From, C.Reached));
-
-                  procedure Part (T0, T1 : Long_Float; Shade : Raster_Images.Color;
-                                  Class : String) is
-                     --  The bar's part from T0 to T1 (within the bar).
-                     P0 : constant Integer := Integer'Max (X0 + 1, X_Of (T0));
-                     P1 : constant Integer := Integer'Min (X1, X_Of (T1));
-                  begin
-                     if P1 >= P0 then
-                        Box (P0, Y + 4, P1, Y + Row_H - 4, Shade);
-                        Put_Line (SVG, "<rect class=""" & Class & """ x=""" & Trim (P0)
-                                  & """ y=""" & Trim (Y + 4) & """ width="""
-                                  & Trim (P1 - P0 + 1) & """ height=""" & Trim (Row_H - 8)
-                                  & """ fill=""" & Rendering.Hex (Shade) & """/>");
-                     end if;
-                  end Part;
-               begin
-                  if not Names then
-                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Light);
-                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
-                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
-                               & Trim (Row_H - 8) & """ fill=""" & Rendering.Hex (Light)
-                               & """ stroke=""white""><title>" & Name & ": "
-                               & (if C.Reached < 0.0 then ""
-                                  else "reached at " & F1 (Reached) & " s, ")
-                               & "done at " & F1 (C.Time) & " s</title></rect>");
-                     if C.Reached >= 0.0 then
-                        Part (Reached, C.Time, Color, "at-task");
-                     end if;
-                     for S of Result.Robots (R).Stops loop
-                        if S.To > From and then S.From < C.Time then
-                           Part (S.From, S.To, Still_Grey, "stopped");
-                        end if;
-                     end loop;
-                  else
-                     --  The task's name inside its bar, cut to fit, in a white
-                     --  outline (a patch would hide the shades under it).
-                     if PNG_Name /= "" then
-                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
-                                          Raster_Images.Black, Halo => True);
-                     end if;
-                     if SVG_Name /= "" then
-                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
-                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
-                                  & Trim (SVG_Name'Length * 7) & """ fill=""black"""
-                                  & " stroke=""white"" stroke-width=""3"""
-                                  & " paint-order=""stroke"""
-                                  & " font-size=""11"" font-family=""sans-serif"">"
-                                  & SVG_Name & "</text>");
-                     end if;
-                  end if;
-                  Since := C.Time;
-               end;
+               Bar (C, Done => True);
             end if;
          end loop;
+         if To_String (Result.Last_Leg.Robot) = Id and then Result.Last_Leg.Time > Since then
+            Bar (Result.Last_Leg, Done => False);
+         end if;
          if not Names and then Id = To_String (Result.Killed) then
             --  Lost: the rest of its row hatched.
             for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop

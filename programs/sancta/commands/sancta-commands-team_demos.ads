@@ -163,6 +163,11 @@ package Sancta.Commands.Team_Demos is
       --  The killed robot's tasks not done at the kill (its tour in the
       --  plan before the loss), each with the robot that finally did it
       --  (Resolve_Orphans; empty Robot: nobody).
+      Last_Leg        : Completion;
+      --  The killed robot from its last completion (or the first plan) to
+      --  its loss (Time): Task_Id the first of its Orphans (the task it was
+      --  going to or at; empty: none), Reached as for a completion
+      --  (Note_Arrivals; empty Robot: no such leg).
    end record;
 
    function Unfinished
@@ -201,7 +206,8 @@ package Sancta.Commands.Team_Demos is
    --  choice, the point nearest to it) after the robot's previous
    --  completion or the first plan, up to Grace seconds after the
    --  completion: the observer may hear of a completion before the pose
-   --  that made it), and its Travel, At_Task, Stopped.
+   --  that made it), and its Travel, At_Task, Stopped; Last_Leg (call
+   --  after Resolve_Orphans).
 
    Grace : constant Long_Float := 0.5;
 

@@ -749,6 +749,13 @@ package body Sancta.Team.Tests is
       end loop;
       Result.Robots.Append (Robot);
       Result.Plan_Time := 1.0;
+      --  Lost at 20 s, still at (15, 0), with g2 at (15.2, 0) left to do.
+      Tasks.Append (Missions.Mission_Task'
+                      (Id => To_Unbounded_String ("g2"), Kind => Missions.Goto_Pose,
+                       Points => Missions.Point_Vectors.To_Vector ((15.2, 0.0), 1)));
+      Result.Killed := Robot.Id;
+      Result.Kill_Time := 20.0;
+      Result.Orphans.Append (TD.Completion'(Task_Id => To_Unbounded_String ("g2"), others => <>));
       Result.Completions.Append
         (TD.Completion'(To_Unbounded_String ("g1"), Robot.Id, 7.0, others => <>));
       Result.Completions.Append
@@ -771,6 +778,11 @@ package body Sancta.Team.Tests is
                  & R.Stopped'Image);
          Assert (abs (R.Travel + R.At_Task + R.Stopped - 16.0) < 1.0E-9,
                  "parts add up to the last completion - the first plan");
+         Assert (Result.Last_Leg.Robot = Robot.Id and then Result.Last_Leg.Task_Id = "g2"
+                 and then Result.Last_Leg.Time = 20.0
+                 and then Near (Result.Last_Leg.Reached, 17.0),
+                 "last leg: " & To_String (Result.Last_Leg.Task_Id) & Result.Last_Leg.Time'Image
+                 & Result.Last_Leg.Reached'Image);
       end;
       --  Turning on the spot is not standing still; a track that never
       --  comes near the task leaves Reached unknown.
@@ -785,6 +797,8 @@ package body Sancta.Team.Tests is
       Assert (Result.Robots (1).Stops.Is_Empty, "turning counted as stopped");
       Assert (Result.Completions (1).Reached < 0.0,
               "reached though never near:" & Result.Completions (1).Reached'Image);
+      Assert (Result.Last_Leg.Robot = Robot.Id and then Result.Last_Leg.Reached < 0.0,
+              "last leg reached though never near:" & Result.Last_Leg.Reached'Image);
    end Test_Arrivals;
 
    --  The demo end to end -----------------------------------------------------------------
