@@ -226,6 +226,9 @@ procedure Bag_Command (Args : Arguments) is
          raise Usage_Error with "bag info takes one bag (directory, .mcap or .db3 file)"
            & Extra_Argument;
       end if;
+      --  A signal stops a long decompression (a bag compressed whole); the
+      --  reader then deletes its temporary file.
+      RCL.Contexts.Install_Signal_Handlers;
       begin
          Reader.Open (Positionals (2), Recover => Flag ("--recover", "--recover"));
       exception

@@ -13,6 +13,7 @@ with Interfaces.C.Strings;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.YAML_Strings;
+with RCL.Contexts;
 with RCL.Names;
 with RCL.SQLite;
 with RCL.YAML;
@@ -733,8 +734,12 @@ package body RCL.Bags is
       This.Plain_Path := To_Unbounded_String (Temporary_File (Hint));
       This.Plain_File := File;
       RCL.Zstd.Decompress_File (Path, To_String (This.Plain_Path),
-                                Label => RCL.Names.Shortened (Path, 80, 57));
+                                Label => RCL.Names.Shortened (Path, 80, 57),
+                                Stop  => RCL.Contexts.Is_Shutdown'Access);
    exception
+      when E : RCL.Zstd.Interrupted =>
+         Close (This);
+         raise Bag_Error with Ada.Exceptions.Exception_Message (E) & " (shut down: a signal)";
       when E : RCL.Zstd.Zstd_Error =>
          Close (This);
          raise Bag_Error with Ada.Exceptions.Exception_Message (E);

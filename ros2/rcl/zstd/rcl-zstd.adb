@@ -39,7 +39,11 @@ package body RCL.Zstd is
    -- Decompress_File --
    ---------------------
 
-   procedure Decompress_File (Source, Target : String; Label : String := "") is
+   procedure Decompress_File
+     (Source, Target : String;
+      Label          : String := "";
+      Stop           : access function return Boolean := null)
+   is
       use Ada.Streams.Stream_IO;
       Name     : constant String := (if Label = "" then Source else Label);
       Input    : Byte_Array_Access :=
@@ -79,6 +83,10 @@ package body RCL.Zstd is
       Open (Src, In_File, Source);
       Create (Dst, Out_File, Target);
       loop
+         if Stop /= null and then Stop.all then
+            raise Interrupted with Name & ": byte " & Image (Before)
+              & ": decompression stopped";
+         end if;
          Read (Src, Input.all, Last);
          exit when Last < Input'First;
          declare

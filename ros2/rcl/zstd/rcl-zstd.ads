@@ -38,12 +38,20 @@ package RCL.Zstd is
    --  The largest message Decompress expands (bytes): a frame claiming or
    --  producing more is refused rather than exhausting memory.
 
-   procedure Decompress_File (Source, Target : String; Label : String := "");
+   Interrupted : exception;
+   --  Decompress_File was told to stop.
+
+   procedure Decompress_File
+     (Source, Target : String;
+      Label          : String := "";
+      Stop           : access function return Boolean := null);
    --  Source's frames (one or more, as the zstd tool and rosbag2 write
    --  them) decompressed into Target (created, or overwritten). Zstd_Error
    --  naming Label (Source when "") and the byte of Source when it is no
    --  zstd, corrupt or truncated (Target then holds what came before);
    --  Ada.IO_Exceptions' errors when a file cannot be opened or written.
+   --  Stop (when given) is asked before each 128 KiB read: True raises
+   --  Interrupted (a signal during a long decompression).
 
    procedure Compress_File (Source, Target : String; Level : Integer := 1);
    --  Source as one frame into Target (streamed as Decompress_File).
