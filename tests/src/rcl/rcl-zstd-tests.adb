@@ -1,6 +1,6 @@
 with Ada.Directories;
 with Ada.Exceptions;
-with Ada.Streams.Stream_IO;
+with Ada.Streams;
 with Ada.Strings.Fixed;
 with AUnit.Assertions; use AUnit.Assertions;
 with GNAT.OS_Lib;
@@ -32,30 +32,6 @@ package body RCL.Zstd.Tests is
         (Integer'Image (GNAT.OS_Lib.Pid_To_Integer (GNAT.OS_Lib.Current_Process_Id)),
          Ada.Strings.Left));
    --  One per process.
-
-   procedure Write (Path : String; Data : Byte_Array) is
-      use Ada.Streams.Stream_IO;
-      F : File_Type;
-   begin
-      Create (F, Out_File, Path);
-      Write (F, Data);
-      Close (F);
-   end Write;
-
-   function Read (Path : String) return Byte_Array is
-      use Ada.Streams.Stream_IO;
-      F : File_Type;
-   begin
-      Open (F, In_File, Path);
-      declare
-         Data : Byte_Array (1 .. Stream_Element_Offset (Size (F)));
-         Last : Stream_Element_Offset;
-      begin
-         Read (F, Data, Last);
-         Close (F);
-         return Data (1 .. Last);
-      end;
-   end Read;
 
    function Expand (Data : Byte_Array) return Byte_Array is
       --  Decompress's result, copied out.
@@ -89,21 +65,21 @@ package body RCL.Zstd.Tests is
       Plain : constant Byte_Array := Sample (700_000);
    begin
       Ada.Directories.Create_Path (Dir);
-      Write (Dir & "/plain", Plain);
+      Write_All (Dir & "/plain", Plain);
       Compress_File (Dir & "/plain", Dir & "/packed.zst");
       Decompress_File (Dir & "/packed.zst", Dir & "/back");
       declare
-         Packed : constant Byte_Array := Read (Dir & "/packed.zst");
+         Packed : constant Byte_Array := Read_All (Dir & "/packed.zst");
       begin
          Assert (Starts_Frame (Packed), "a zstd frame");
          Assert (Packed'Length < Plain'Length / 2,
                  "compressed to" & Packed'Length'Image & " bytes");
-         Assert (Read (Dir & "/back") = Plain, "the file back");
+         Assert (Read_All (Dir & "/back") = Plain, "the file back");
          --  Compress_File streams: the frame does not record its size, so
          --  Decompress grows its buffer (65536 bytes first) to 700000.
          Assert (Expand (Packed) = Plain, "the same frame as a message");
          --  Truncated: the file's length, and where its frame began.
-         Write (Dir & "/cut.zst", Packed (1 .. Packed'Length - 10));
+         Write_All (Dir & "/cut.zst", Packed (1 .. Packed'Length - 10));
          begin
             Decompress_File (Dir & "/cut.zst", Dir & "/back", Label => "cut.zst");
             Assert (False, "a truncated file was read");
