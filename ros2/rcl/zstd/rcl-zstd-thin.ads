@@ -65,6 +65,16 @@ private package RCL.Zstd.Thin is
       Src : System.Address; Size : size_t; Level : int) return size_t
      with Import, Convention => C, External_Name => "ZSTD_compressCCtx";
 
+   function Compress
+     (Dst : System.Address; Capacity : size_t; Src : System.Address; Size : size_t;
+      Level : int) return size_t
+     with Import, Convention => C, External_Name => "ZSTD_compress";
+   function Decompress
+     (Dst : System.Address; Capacity : size_t; Src : System.Address; Size : size_t)
+      return size_t
+     with Import, Convention => C, External_Name => "ZSTD_decompress";
+   --  One shot, each with a context of its own.
+
    function Get_Frame_Content_Size (Src : System.Address; Size : size_t)
                                     return Interfaces.C.unsigned_long_long
      with Import, Convention => C, External_Name => "ZSTD_getFrameContentSize";

@@ -35,6 +35,63 @@ package body RCL.Zstd is
    function Address_Of (Data : Byte_Array) return System.Address is
      (if Data'Length = 0 then System.Null_Address else Data (Data'First)'Address);
 
+   function Checked (Code : size_t) return size_t is
+     (if Thin.Is_Error (Code) /= 0 then raise Zstd_Error with Error_Text (Code) else Code);
+   --  Code, unless libzstd says it is an error.
+
+   --  Contexts: created (Storage_Error when libzstd cannot), freed once.
+
+   function New_DCtx return System.Address is
+     (declare
+        Context : constant System.Address := Thin.Create_DCtx;
+      begin
+        (if Context = System.Null_Address
+         then raise Storage_Error with "libzstd: no decompression context" else Context));
+
+   function New_CCtx return System.Address is
+     (declare
+        Context : constant System.Address := Thin.Create_CCtx;
+      begin
+        (if Context = System.Null_Address
+         then raise Storage_Error with "libzstd: no compression context" else Context));
+
+   procedure Free_DCtx (Context : in out System.Address) is
+      Ignored : size_t;
+   begin
+      if Context /= System.Null_Address then
+         Ignored := Thin.Free_DCtx (Context);
+         Context := System.Null_Address;
+      end if;
+   end Free_DCtx;
+
+   procedure Free_CCtx (Context : in out System.Address) is
+      Ignored : size_t;
+   begin
+      if Context /= System.Null_Address then
+         Ignored := Thin.Free_CCtx (Context);
+         Context := System.Null_Address;
+      end if;
+   end Free_CCtx;
+
+   procedure Close_All
+     (Src, Dst : in out Ada.Streams.Stream_IO.File_Type; Input, Output : in out Byte_Array_Access);
+   --  What Decompress_File and Compress_File open and allocate.
+
+   procedure Close_All
+     (Src, Dst : in out Ada.Streams.Stream_IO.File_Type; Input, Output : in out Byte_Array_Access)
+   is
+      use Ada.Streams.Stream_IO;
+   begin
+      if Is_Open (Src) then
+         Close (Src);
+      end if;
+      if Is_Open (Dst) then
+         Close (Dst);
+      end if;
+      Free (Input);
+      Free (Output);
+   end Close_All;
+
    ---------------------
    -- Decompress_File --
    ---------------------
@@ -51,7 +108,7 @@ package body RCL.Zstd is
       Output   : Byte_Array_Access :=
         new Byte_Array (1 .. Stream_Element_Offset (Thin.DStream_Out_Size));
       Src, Dst : File_Type;
-      Context  : System.Address := Thin.Create_DCtx;
+      Context  : System.Address := System.Null_Address;
       Before   : Long_Long_Integer := 0;
       --  Bytes of Source before the ones in Input.
       Frame_At : Long_Long_Integer := 0;
@@ -61,25 +118,12 @@ package body RCL.Zstd is
       Last     : Stream_Element_Offset;
 
       procedure Clean_Up is
-         Ignored : size_t;
       begin
-         if Is_Open (Src) then
-            Close (Src);
-         end if;
-         if Is_Open (Dst) then
-            Close (Dst);
-         end if;
-         Free (Input);
-         Free (Output);
-         if Context /= System.Null_Address then
-            Ignored := Thin.Free_DCtx (Context);
-            Context := System.Null_Address;
-         end if;
+         Close_All (Src, Dst, Input, Output);
+         Free_DCtx (Context);
       end Clean_Up;
    begin
-      if Context = System.Null_Address then
-         raise Storage_Error with "libzstd: no decompression context";
-      end if;
+      Context := New_DCtx;
       Open (Src, In_File, Source);
       Create (Dst, Out_File, Target);
       loop
@@ -135,25 +179,14 @@ package body RCL.Zstd is
       Output   : Byte_Array_Access :=
         new Byte_Array (1 .. Stream_Element_Offset (Thin.CStream_Out_Size));
       Src, Dst : File_Type;
-      Context  : System.Address := Thin.Create_CCtx;
+      Context  : System.Address := System.Null_Address;
       Result   : size_t;
       Last     : Stream_Element_Offset;
 
       procedure Clean_Up is
-         Ignored : size_t;
       begin
-         if Is_Open (Src) then
-            Close (Src);
-         end if;
-         if Is_Open (Dst) then
-            Close (Dst);
-         end if;
-         Free (Input);
-         Free (Output);
-         if Context /= System.Null_Address then
-            Ignored := Thin.Free_CCtx (Context);
-            Context := System.Null_Address;
-         end if;
+         Close_All (Src, Dst, Input, Output);
+         Free_CCtx (Context);
       end Clean_Up;
 
       procedure Feed (Count : Stream_Element_Offset; Directive : int) is
@@ -174,9 +207,7 @@ package body RCL.Zstd is
          end loop;
       end Feed;
    begin
-      if Context = System.Null_Address then
-         raise Storage_Error with "libzstd: no compression context";
-      end if;
+      Context := New_CCtx;
       Result := Thin.CCtx_Set_Parameter (Context, Thin.ZSTD_c_compressionLevel, int (Level));
       if Thin.Is_Error (Result) /= 0 then
          raise Zstd_Error with "level" & Level'Image & ": " & Error_Text (Result);
@@ -195,6 +226,44 @@ package body RCL.Zstd is
          Clean_Up;
          raise;
    end Compress_File;
+
+   --------------------
+   -- Compress_Bound --
+   --------------------
+
+   function Compress_Bound (Size : Stream_Element_Offset) return Stream_Element_Offset is
+     (Stream_Element_Offset (Thin.Compress_Bound (size_t (Size))));
+
+   -------------------
+   -- Compress_Into --
+   -------------------
+
+   function Compress_Into
+     (Data : Byte_Array; Into : in out Byte_Array; Level : Integer := 1)
+      return Stream_Element_Offset
+   is
+      Written : constant size_t :=
+        Checked (Thin.Compress (Into (Into'First)'Address, Into'Length, Address_Of (Data),
+                                Data'Length, int (Level)));
+   begin
+      return Into'First + Stream_Element_Offset (Written) - 1;
+   end Compress_Into;
+
+   ---------------------
+   -- Decompress_Into --
+   ---------------------
+
+   pragma Warnings (Off, "formal parameter ""Into"" is read but never assigned");
+   function Decompress_Into (Data : Byte_Array; Into : out Byte_Array)
+                             return Stream_Element_Offset
+   is
+      Written : constant size_t :=
+        Checked (Thin.Decompress (Address_Of (Into), Into'Length, Address_Of (Data),
+                                  Data'Length));
+   begin
+      return Into'First + Stream_Element_Offset (Written) - 1;
+   end Decompress_Into;
+   pragma Warnings (On, "formal parameter ""Into"" is read but never assigned");
 
    ----------------
    -- Decompress --
@@ -223,10 +292,7 @@ package body RCL.Zstd is
       end Grow;
    begin
       if This.Context = System.Null_Address then
-         This.Context := Thin.Create_DCtx;
-         if This.Context = System.Null_Address then
-            raise Storage_Error with "libzstd: no decompression context";
-         end if;
+         This.Context := New_DCtx;
       else
          Ignored := Thin.DCtx_Reset (This.Context, Thin.ZSTD_reset_session_only);
       end if;
@@ -295,20 +361,15 @@ package body RCL.Zstd is
       Result : size_t;
    begin
       if This.Context = System.Null_Address then
-         This.Context := Thin.Create_CCtx;
-         if This.Context = System.Null_Address then
-            raise Storage_Error with "libzstd: no compression context";
-         end if;
+         This.Context := New_CCtx;
       end if;
       if This.Buffer = null or else This.Buffer'Length < Need then
          Free (This.Buffer);
          This.Buffer := new Byte_Array (1 .. Stream_Element_Offset'Max (Need, 4_096));
       end if;
-      Result := Thin.Compress_CCtx (This.Context, This.Buffer (1)'Address, This.Buffer'Length,
-                                    Address_Of (Data), Data'Length, int (Level));
-      if Thin.Is_Error (Result) /= 0 then
-         raise Zstd_Error with Error_Text (Result);
-      end if;
+      Result := Checked (Thin.Compress_CCtx (This.Context, This.Buffer (1)'Address,
+                                             This.Buffer'Length, Address_Of (Data), Data'Length,
+                                             int (Level)));
       Process (This.Buffer (1 .. Stream_Element_Offset (Result)));
    end Compress;
 
@@ -317,22 +378,14 @@ package body RCL.Zstd is
    --------------
 
    overriding procedure Finalize (This : in out Decompressor) is
-      Ignored : size_t;
    begin
-      if This.Context /= System.Null_Address then
-         Ignored := Thin.Free_DCtx (This.Context);
-         This.Context := System.Null_Address;
-      end if;
+      Free_DCtx (This.Context);
       Free (This.Buffer);
    end Finalize;
 
    overriding procedure Finalize (This : in out Compressor) is
-      Ignored : size_t;
    begin
-      if This.Context /= System.Null_Address then
-         Ignored := Thin.Free_CCtx (This.Context);
-         This.Context := System.Null_Address;
-      end if;
+      Free_CCtx (This.Context);
       Free (This.Buffer);
    end Finalize;
 

@@ -9,6 +9,7 @@
 --     Decompress_File ("run/run_0.db3.zstd", "/tmp/x.db3");
 --     D : Decompressor;
 --     D.Decompress (Frame, Use_It'Access);   --  Use_It (Plain : Byte_Array)
+--     Last := Decompress_Into (Frame, Into => Buffer);  --  Buffer (1 .. Last)
 with Ada.Finalization;
 with Ada.Streams;
 
@@ -55,6 +56,26 @@ package RCL.Zstd is
 
    procedure Compress_File (Source, Target : String; Level : Integer := 1);
    --  Source as one frame into Target (streamed as Decompress_File).
+
+   function Compress_Bound (Size : Ada.Streams.Stream_Element_Offset)
+                            return Ada.Streams.Stream_Element_Offset;
+   --  The largest frame Compress_Into writes for Size bytes.
+
+   function Compress_Into
+     (Data : Byte_Array; Into : in out Byte_Array; Level : Integer := 1)
+      return Ada.Streams.Stream_Element_Offset
+     with Pre => Into'Length >= Compress_Bound (Data'Length);
+   --  Data as one frame into Into (a buffer the caller keeps, as an MCAP
+   --  writer's chunk buffer), returns the index of its last byte.
+   --  Zstd_Error "zstd: <libzstd's text>" when libzstd fails.
+
+   function Decompress_Into (Data : Byte_Array; Into : out Byte_Array)
+                             return Ada.Streams.Stream_Element_Offset;
+   --  Data's frame(s) expanded into Into (sized beforehand, as from an MCAP
+   --  chunk's header), returns the index of the last byte written.
+   --  Zstd_Error "zstd: <libzstd's text>" when Data is not whole zstd
+   --  frames or expands past Into'Length ("Destination buffer is too
+   --  small"): no byte offset, libzstd decompresses it in one call.
 
    type Decompressor is new Ada.Finalization.Limited_Controlled with private;
 

@@ -149,6 +149,34 @@ package body RCL.Zstd.Tests is
               Error_Of ([1 .. 0 => 0]));
    end Messages;
 
+   procedure Buffers (Unused : in out Fixture) is
+      --  Compress_Into / Decompress_Into, as MCAP chunks use them.
+      Plain  : constant Byte_Array := Sample (50_000);
+      Packed : Byte_Array (11 .. 10 + Compress_Bound (Plain'Length));
+      Last   : constant Stream_Element_Offset := Compress_Into (Plain, Packed);
+      Back   : Byte_Array (1 .. Plain'Length + 10);
+
+      function Message_Of (Data : Byte_Array; Room : Stream_Element_Offset) return String is
+         Into : Byte_Array (1 .. Room);
+      begin
+         return "(no error:" & Decompress_Into (Data, Into)'Image & " bytes)";
+      exception
+         when E : Zstd_Error =>
+            return Ada.Exceptions.Exception_Message (E);
+      end Message_Of;
+   begin
+      Assert (Starts_Frame (Packed (11 .. Last)) and then Last - 10 < Plain'Length / 2,
+              "one frame of" & Stream_Element_Offset'Image (Last - 10) & " bytes");
+      Assert (Decompress_Into (Packed (11 .. Last), Back) = Plain'Length
+              and then Back (1 .. Plain'Length) = Plain, "the data back (shorter than Into)");
+      Assert (Expand (Packed (11 .. Last)) = Plain, "the frame as a message");
+      Assert (Message_Of (Packed (11 .. Last), Plain'Length - 1)
+              = "zstd: Destination buffer is too small",
+              Message_Of (Packed (11 .. Last), Plain'Length - 1));
+      Assert (Message_Of ([1 .. 16 => 16#41#], 100) = "zstd: Unknown frame descriptor",
+              Message_Of ([1 .. 16 => 16#41#], 100));
+   end Buffers;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
@@ -157,6 +185,8 @@ package body RCL.Zstd.Tests is
                                       Files_Round_Trip'Access));
       Result.Add_Test (Caller.Create ("zstd: messages, concatenated frames, errors",
                                       Messages'Access));
+      Result.Add_Test (Caller.Create ("zstd: one shot into caller's buffers",
+                                      Buffers'Access));
       return Result;
    end Suite;
 

@@ -1,6 +1,7 @@
 --  Tests of RCL.Zstd: files and messages round trip (a frame with and
 --  without its content size, frames one after the other), and the errors
---  on truncated, empty and trailing-garbage input, with their byte offsets.
+--  on truncated, empty and trailing-garbage input, with their byte offsets;
+--  one-shot compression into and out of the caller's buffers.
 with AUnit.Test_Suites;
 
 package RCL.Zstd.Tests is
