@@ -21,9 +21,9 @@ import pytest
 import yaml
 
 import pubsub_support as ps
-from ros_types import LaserScan_, String_
-from test_db3_input import (START, STRING, TYPESTORE, digest, on_the_wire, recorded_data, scan,
-                            take_raw_until, text)
+from ros_types import String_
+from test_db3_input import (START, STRING, TYPESTORE, digest, on_the_wire, play, play_to_peer,
+                            rclada, recorded_data, scan, text)
 
 from rosbags.rosbag2 import Writer as BagWriter
 from rosbags.rosbag2.enums import CompressionFormat, CompressionMode, StoragePlugin
@@ -33,15 +33,6 @@ ZSTD_MAGIC = b"\x28\xb5\x2f\xfd"
 SCAN = TYPESTORE.types["sensor_msgs/msg/LaserScan"]
 STORAGES = {"sqlite3": StoragePlugin.SQLITE3, "mcap": StoragePlugin.MCAP}
 MODES = {"file": CompressionMode.FILE, "message": CompressionMode.MESSAGE}
-
-
-def rclada(*args, timeout=60):
-    return subprocess.run([str(ps.BIN / "rclada"), *map(str, args)], capture_output=True,
-                          text=True, timeout=timeout)
-
-
-def play(path, *extra):
-    return rclada("bag", "play", path, "--delay", "0", "-r", "1000", *extra)
 
 
 def write(out, storage, mode=None, strings=10):
@@ -112,18 +103,7 @@ def test_info_and_play_as_the_uncompressed_bag(tmp_path, tmpdir_env, storage, mo
     assert compression_line(r1.stdout).startswith(f"zstd ({mode})"), r1.stdout
     assert path.name in r1.stdout
     # The same bag's messages, as rosbags reads the uncompressed one.
-    expected = recorded_data(plain)
-    dp = ps.participant()
-    strings = ps.reader(dp, "rt/db3_chatter", String_, depth=100)
-    scans = ps.reader(dp, "rt/db3_scan", LaserScan_, depth=100)
-    p = ps.start("rclada", "bag", "play", packed, "--delay", "1.0", "-r", "5")
-    got = take_raw_until(strings, 10, timeout=20)
-    got_scans = take_raw_until(scans, 5, timeout=5)
-    out = ps.finish(p, 30)
-    assert p.returncode == 0, out
-    assert "Played 15 messages" in out, out
-    assert got == expected["/db3_chatter"], (got[:2], expected["/db3_chatter"][:2])
-    assert got_scans == expected["/db3_scan"]
+    play_to_peer(packed, recorded_data(plain), "-r", "5")
     assert digest(path) == before, "the bag was written"
 
 
