@@ -295,21 +295,3 @@ def test_directory_without_metadata_reads_its_db3_files(tmp_path):
     assert r.returncode == 0, r.stderr
     assert info_view(r.stdout)[:2] == ({"/db3_chatter": ("std_msgs/msg/String", 4),
                                         "/db3_scan": ("sensor_msgs/msg/LaserScan", 2)}, 6)
-
-
-def test_file_compressed_bag_is_named_as_such(tmp_path):
-    # rosbag2's compression_mode file (bag_0.db3.zstd): was 'not an MCAP
-    # file: expected the magic ...'.
-    from rosbags.rosbag2.enums import CompressionFormat, CompressionMode
-    out = tmp_path / "bag"
-    w = BagWriter(out, version=8, storage_plugin=StoragePlugin.SQLITE3)
-    w.set_compression(CompressionMode.FILE, CompressionFormat.ZSTD)
-    with w:
-        c = w.add_connection("/c", STRING.__msgtype__, typestore=TYPESTORE)
-        w.write(c, 1, text(1))
-    (listed,) = yaml.safe_load((out / "metadata.yaml").read_text())[
-        "rosbag2_bagfile_information"]["relative_file_paths"]
-    for r in (rclada("bag", "info", out), play(out)):
-        assert r.returncode == 1, r.stdout
-        assert (f"{out / listed}: byte 0: a file compressed whole with zstd (rosbag2's "
-                "compression_mode file), not read") in r.stderr, r.stderr
