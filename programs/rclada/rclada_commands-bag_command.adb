@@ -363,7 +363,15 @@ procedure Bag_Command (Args : Arguments) is
                if Clock_Pub /= null and then Next_Clock <= Due then
                   Wait_Until (Next_Clock);
                   exit when RCL.Contexts.Is_Shutdown;
-                  Publish_Clock (Bag_Time_At (Next_Clock));
+                  begin
+                     Publish_Clock (Bag_Time_At (Next_Clock));
+                  exception
+                     when RCL.ROS_Exception =>
+                        if RCL.Contexts.Is_Shutdown then
+                           raise Stopped;
+                        end if;
+                        raise;
+                  end;
                   Next_Clock := Next_Clock + Clock_Period;
                else
                   Wait_Until (Due);
@@ -375,7 +383,16 @@ procedure Bag_Command (Args : Arguments) is
             end if;
             if Topic in Pubs'Range and then Pubs (Topic) /= null then
                if Data'Length >= 4 then
-                  Pubs (Topic).Publish_Raw (Data);
+                  begin
+                     Pubs (Topic).Publish_Raw (Data);
+                  exception
+                     when RCL.ROS_Exception =>
+                        --  A signal between the check above and the write.
+                        if RCL.Contexts.Is_Shutdown then
+                           raise Stopped;
+                        end if;
+                        raise;
+                  end;
                   Played := Played + 1;
                else
                   Too_Short := Too_Short + 1;

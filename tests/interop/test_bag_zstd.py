@@ -210,6 +210,19 @@ def test_corrupt_frame_is_refused_with_its_byte(tmp_path, tmpdir_env):
         assert len(data) // 2 - 1024 < int(m.group(1)) < len(data), r.stderr
 
 
+def test_empty_frame_and_plain_text_inside(tmp_path, tmpdir_env):
+    empty, text_file = tmp_path / "empty.mcap.zstd", tmp_path / "notes.db3.zstd"
+    for path, content in ((empty, b""), (text_file, b"not a bag\n" * 100)):
+        path.write_bytes(subprocess.run(["zstd", "-q", "-c"], input=content, check=True,
+                                        capture_output=True).stdout)
+    r = rclada("bag", "info", empty)
+    assert r.returncode == 1 and "empty.mcap.zstd: decompresses to 0 bytes: no MCAP or SQLite" \
+        " file inside" in r.stderr, r.stderr
+    r = rclada("bag", "info", text_file)
+    assert r.returncode == 1 and "notes.db3.zstd (decompressed): byte 0: not an MCAP file" \
+        in r.stderr, r.stderr
+
+
 @pytest.mark.parametrize("storage", STORAGES)
 def test_metadata_says_file_but_the_file_is_plain(tmp_path, storage):
     bag = write(tmp_path / "b", storage)

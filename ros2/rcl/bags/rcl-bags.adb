@@ -1041,6 +1041,10 @@ package body RCL.Bags is
                  & " (expected 28 B5 2F FD), but metadata.yaml says compression_mode file";
             elsif Whole then
                Expand (This, P, File);
+               if Size (To_String (This.Plain_Path)) = 0 then
+                  raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": decompresses to 0"
+                    & " bytes: no MCAP or SQLite file inside";
+               end if;
             end if;
             if Is_SQLite_File (Readable (This, P, Whole)) then
                Open_SQLite (This, Readable (This, P, Whole), P, Whole);
