@@ -66,6 +66,12 @@ package body Sancta.Commands.Team_Demos is
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
+   function F2 (X : Long_Float) return String is
+     (Runtime.Values.Real_Image (Long_Float'Rounding (X * 100.0) / 100.0));
+   function F2 (P : Point) return String is
+     (F2 (Long_Float (P.X)) & "," & F2 (Long_Float (P.Y)));
+   --  Metres to the centimetre, as in the unfinished-robot lines.
+
    --  Planned tours as polylines (for the pictures) -------------------------------
 
    function Planned_Scene
@@ -1094,6 +1100,58 @@ package body Sancta.Commands.Team_Demos is
             end if;
          end Stop_All;
 
+         procedure Report_Unfinished is
+            --  The mission ran out of time: where each robot with a task
+            --  left stands, what it heads for, how far it moved in the last
+            --  60 s (the trajectory keeps a point every 0.5 s) and the
+            --  nearest other robot, so that a stall can be told from a slow
+            --  robot.
+         begin
+            for R in 1 .. N loop
+               if Alive (R) then
+                  declare
+                     Found : Boolean;
+                     Goal  : Point;
+                     Tid   : Unbounded_String;
+                     Here  : constant Point := Position (Sim.Ground_Truth (Robot_Id (R)).Pose);
+                     Path  : Rendering.Point_Vectors.Vector renames Scene.Trajectories (R);
+                     Moved : Long_Float := 0.0;
+                     Near  : Long_Float := Long_Float'Last;
+                     Who   : Natural := 0;
+                  begin
+                     Agent_List (R).Current_Goal (Found, Goal, Tid);
+                     if Found then
+                        for K in Integer'Max (Path.First_Index + 1, Path.Last_Index - 119)
+                                 .. Path.Last_Index
+                        loop
+                           Moved := Moved + Long_Float (Distance (Path (K - 1), Path (K)));
+                        end loop;
+                        for O in 1 .. N loop
+                           if O /= R and then Alive (O) and then Long_Float
+                             (Distance (Here, Position (Sim.Ground_Truth (Robot_Id (O)).Pose)))
+                             < Near
+                           then
+                              Near := Long_Float (Distance
+                                (Here, Position (Sim.Ground_Truth (Robot_Id (O)).Pose)));
+                              Who := O;
+                           end if;
+                        end loop;
+                        Put_Line
+                          ("t=" & F1 (Long_Float (Sim.Clock)) & " s  unfinished: "
+                           & To_String (M.Robots (R).Id) & " on " & To_String (Tid) & " at "
+                           & F2 (Here) & " heading for " & F2 (Navs (R).Waypoint)
+                           & (if Navs (R).Has_Path then " (A* path to " else " (no path to ")
+                           & F2 (Goal) & "), moved " & F1 (Moved) & " m in the last 60 s"
+                           & (if Who = 0 then ""
+                              else ", nearest robot " & To_String (M.Robots (Who).Id) & " at "
+                                   & F2 (Position (Sim.Ground_Truth (Robot_Id (Who)).Pose))
+                                   & " (" & F2 (Near) & " m)"));
+                     end if;
+                  end;
+               end if;
+            end loop;
+         end Report_Unfinished;
+
          function Choose_Victim return Positive is
             Best   : Positive := 1;
             Most   : Integer := -1;
@@ -1278,6 +1336,9 @@ package body Sancta.Commands.Team_Demos is
          if RCL.Contexts.Is_Shutdown then
             Put_Line ("demo: interrupted (SIGINT or SIGTERM) at" & Integer (Sim.Clock)'Image
                       & " s (simulated): stopping the agents");
+         end if;
+         if not Operator.All_Done and then not RCL.Contexts.Is_Shutdown then
+            Report_Unfinished;
          end if;
          Result.Makespan := Long_Float (Sim.Clock);
          declare
