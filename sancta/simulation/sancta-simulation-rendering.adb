@@ -26,9 +26,7 @@ package body Sancta.Simulation.Rendering is
    --  vermillion (near the red of a loss), black (walls, text) and yellow
    --  (faint on white). Then Tol's muted indigo, olive, purple, sand and a
    --  dark teal: told apart by most readers, not by all. No red: red marks
-   --  a lost robot only.
-
-   Lost_Red : constant Color := RGB (200, 0, 0);
+   --  a lost robot only (Loss_Color).
 
    function Color_Of (Robot : Positive) return Color is (Palette ((Robot - 1) mod 10));
 
@@ -349,8 +347,8 @@ package body Sancta.Simulation.Rendering is
          end;
       end loop;
       for P of S.Lost loop
-         Line (P - (0.45, 0.45), P + (0.45, 0.45), Lost_Red, 2);
-         Line (P + (-0.45, 0.45), P + (0.45, -0.45), Lost_Red, 2);
+         Line (P - (0.45, 0.45), P + (0.45, 0.45), Loss_Color, 2);
+         Line (P + (-0.45, 0.45), P + (0.45, -0.45), Loss_Color, 2);
       end loop;
       for M of S.Markers loop
          --  A cross of Cross pixels each side (lines one pixel thick).
@@ -543,7 +541,7 @@ package body Sancta.Simulation.Rendering is
          Put_Line (Out_File, "<path class=""lost"" d=""M" & SX (P.X - 0.45) & ","
                    & SY (P.Y - 0.45) & " L" & SX (P.X + 0.45) & "," & SY (P.Y + 0.45)
                    & " M" & SX (P.X - 0.45) & "," & SY (P.Y + 0.45) & " L"
-                   & SX (P.X + 0.45) & "," & SY (P.Y - 0.45) & """ stroke=""" & Hex (Lost_Red)
+                   & SX (P.X + 0.45) & "," & SY (P.Y - 0.45) & """ stroke=""" & Hex (Loss_Color)
                    & """ stroke-width=""4""/>");
       end loop;
       for M of S.Markers loop

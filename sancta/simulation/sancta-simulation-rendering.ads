@@ -97,6 +97,12 @@ package Sancta.Simulation.Rendering is
    function Color_Of (Robot : Positive) return Raster_Images.Color;
    --  A distinct colour per robot (cycling over ten; the first five told
    --  apart by colour-blind readers too), never red (a loss's colour).
+   --  The one palette of the project: the report pictures and the live
+   --  view (sancta-view) both take robot N's colour from here.
+   --  Example: Color_Of (1) = (0, 114, 178); Color_Of (11) = Color_Of (1).
+
+   Loss_Color : constant Raster_Images.Color := (200, 0, 0);
+   --  Red, for a lost robot only (its cross, its name).
 
    function Hex (C : Raster_Images.Color) return String;
    --  "#rrggbb".
