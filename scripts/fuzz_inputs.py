@@ -8,7 +8,10 @@ TSPLIB files, worlds, PGM and PNG map images (every PNG colour type, bit
 depth, row filter and DEFLATE block kind), SROS2 policies (`rclada security
 create_permission`), interface definitions, parameter files, MCAP bags made
 with the `mcap` package, rosbag2 sqlite3 bags (.db3, mutated also through
-SQL: tables, columns, rows and values of other kinds), CDR payloads from
+SQL: tables, columns, rows and values of other kinds), both compressed
+with zstd as rosbag2 does (whole files: their frames mutated, or their
+content then compressed again; each message: a frame cut or flipped),
+CDR payloads from
 `cdr_tool random`, --ros-args lists), mutates them
 (byte flips, truncations, deletions, insertions of huge numbers / control
 characters / deep nesting / long lines, duplicated and swapped lines, wrong
@@ -415,6 +418,111 @@ def make_db3_seeds(folder):
                           messages, vacuum=True)
         seeds.append(path)
     return seeds
+
+
+def zstd_frame(data, checksum):
+    import zstandard
+    return zstandard.ZstdCompressor(level=3, write_checksum=checksum).compress(data)
+
+
+def make_zstd_file_seeds(folder):
+    """rosbag2's compression_mode file: the MCAP seeds (uncompressed and
+    zstd chunks) and the db3 seeds (Humble's, schema 4) compressed whole,
+    with and without the frame checksum (rosbag2 writes none)."""
+    mcaps = {p.stem.split("-")[1]: p for p in make_mcap_seeds(folder)}
+    db3s = {p.stem.split("-")[1]: p for p in make_db3_seeds(folder)}
+    seeds = []
+    for label, source, checksum in (("plain", mcaps["plain"], False),
+                                    ("zstd", mcaps["zstd"], True),
+                                    ("humble", db3s["humble"], False),
+                                    ("schema4", db3s["schema4"], True)):
+        path = folder / f"seed-file-{label}{source.suffix}.zstd"
+        path.write_bytes(zstd_frame(source.read_bytes(), checksum))
+        seeds.append(path)
+    return seeds
+
+
+def m_zstd_inner(rng, data, kind):
+    """The compressed file's content mutated (as its storage's reader is
+    fuzzed) and compressed again: the defects reach the MCAP / SQLite
+    readers through the decompression."""
+    import zstandard
+    try:
+        inner = zstandard.ZstdDecompressor().decompressobj().decompress(data)
+    except zstandard.ZstdError:
+        return m_flip(rng, data, kind)
+    sql = inner.startswith(b"SQLite format 3\0")
+    mutator = rng.choice(BINARY_MUTATORS + ([m_db3_sql] * 3 if sql else [m_mcap_length] * 3))
+    inner, how = mutator(rng, inner, kind)
+    return zstd_frame(inner, rng.random() < 0.5), "inside: " + how
+
+
+def make_zstd_message_seeds(folder):
+    """rosbag2's compression_mode message, one file given alone (no
+    metadata.yaml: data that starts a zstd frame is decompressed): the db3
+    seeds with every data blob one zstd frame, the uncompressed-chunk MCAP
+    seed with every message's data one."""
+    import sqlite3
+    from mcap.reader import make_reader
+    from mcap.writer import Writer, CompressionType
+    seeds = []
+    for seed in make_db3_seeds(folder)[:2]:
+        path = folder / f"seed-message-{seed.stem.split('-')[1]}.db3"
+        shutil.copy(seed, path)
+        with sqlite3.connect(path) as db:
+            db.create_function("frame", 1, lambda d: zstd_frame(bytes(d), False))
+            db.execute("UPDATE messages SET data = frame (data)")
+        seeds.append(path)
+    source = [p for p in make_mcap_seeds(folder) if p.stem == "seed-plain"][0]
+    path = folder / "seed-message-plain.mcap"
+    with open(source, "rb") as f, open(path, "wb") as out:
+        reader = make_reader(f)
+        w = Writer(out, compression=CompressionType.NONE, chunk_size=300, enable_crcs=False)
+        w.start(profile="ros2", library="fuzz")
+        summary = reader.get_summary()
+        ids = {}
+        for sid, schema in summary.schemas.items():
+            ids[sid] = w.register_schema(schema.name, schema.encoding, schema.data)
+        chans = {}
+        for cid, c in summary.channels.items():
+            chans[cid] = w.register_channel(c.topic, c.message_encoding, ids[c.schema_id],
+                                            c.metadata)
+        for _, channel, m in reader.iter_messages():
+            w.add_message(chans[channel.id], log_time=m.log_time, publish_time=m.publish_time,
+                          sequence=m.sequence, data=zstd_frame(m.data, m.sequence % 2 == 0))
+        w.finish()
+    seeds.append(path)
+    return seeds
+
+
+def m_db3_frame(rng, data, kind):
+    """One message's zstd frame cut, flipped or replaced by a plain CDR
+    message (compression_mode message)."""
+    row = rng.randrange(1, 14)
+
+    def change(db):
+        found = db.execute("SELECT data FROM messages WHERE rowid = ?", (row,)).fetchone()
+        if not found or not isinstance(found[0], bytes) or not found[0]:
+            return "no row"
+        frame = bytearray(found[0])
+        what = rng.choice(["cut", "flip", "plain"])
+        if what == "cut":
+            frame = frame[:rng.randrange(len(frame))]
+        elif what == "flip":
+            frame[rng.randrange(len(frame))] ^= 1 << rng.randrange(8)
+        else:
+            frame = bytearray(b"\x00\x01\x00\x00\x02\x00\x00\x00a\x00")
+        db.execute("UPDATE messages SET data = ? WHERE rowid = ?", (bytes(frame), row))
+        return f"{what} row {row}"
+    changed, how = with_database(data, change)
+    if changed is None:
+        return m_flip(rng, data, kind)
+    return changed, f"frame: {how}"
+
+
+def zstd_message_play_outlasts(data):
+    return (db3_play_outlasts(data) if data.startswith(b"SQLite format 3\0")
+            else mcap_play_outlasts(data))
 
 
 def definition_seeds():
@@ -945,6 +1053,18 @@ def build_readers(seed_folder):
                ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
                None, BINARY_MUTATORS + [m_db3_sql] * 8, timeout=20.0,
                outlasts=db3_play_outlasts),
+        Reader("zstd-file", make_zstd_file_seeds(seed_folder),
+               ["rclada", "bag", "info", "{input}"], "binary", None,
+               BINARY_MUTATORS + [m_zstd_inner] * 6,
+               name_of=lambda seed: "input" + "".join(seed.suffixes[-2:])),
+        Reader("zstd-file-play", make_zstd_file_seeds(seed_folder),
+               ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
+               None, BINARY_MUTATORS + [m_zstd_inner] * 6, timeout=20.0,
+               name_of=lambda seed: "input" + "".join(seed.suffixes[-2:])),
+        Reader("zstd-message", make_zstd_message_seeds(seed_folder),
+               ["rclada", "bag", "play", "{input}", "--delay", "0", "-r", "1000"], "binary",
+               None, BINARY_MUTATORS + [m_db3_frame] * 4 + [m_mcap_length], timeout=20.0,
+               outlasts=zstd_message_play_outlasts),
     ]
     # Configurations that run: each agent for a second (sancta run), the team
     # demo with sancta-sim and an agent process per robot (sancta demo).
@@ -1071,6 +1191,11 @@ def judge(reader, rc, text, hung, data, seed_data, how, file_name):
     base = pathlib.PurePath(file_name).name
     if reader.kind == "binary" and reader.name.startswith("mcap"):
         if re.search(r": byte \d+", text):
+            return None
+    elif reader.name.startswith("zstd"):
+        # The file (its decompressed content), then a byte, table, column or
+        # row, or SQLite's own message.
+        if re.search(re.escape(base) + r"( \(decompressed\))?: \S", text):
             return None
     elif reader.name.startswith("db3"):
         # The file, then a table, column or row, or SQLite's own message.

@@ -113,6 +113,8 @@ procedure Action_Command (Args : Arguments) is
       Client   : RCL.Actions.Clients.Client;
       Id       : Goal_Id;
       Accepted : Boolean;
+      Saw_End  : Boolean := False with Atomic;
+      --  The status topic gave the goal a terminal status.
 
       procedure On_Feedback
         (Node : in out RCL.Nodes.Node'Class;
@@ -138,6 +140,7 @@ procedure Action_Command (Args : Arguments) is
       is
          pragma Unreferenced (Node, Goal);
       begin
+         Saw_End := Status in Terminal_Status;
          Put_Line ("Goal status: " & Status_Image (Status));
          New_Line;
          Flush;
@@ -213,12 +216,14 @@ procedure Action_Command (Args : Arguments) is
          Node.Spin (During => 0.05);  --  The last feedback, if any.
          if Statuses and then Outcome.Status in Terminal_Status then
             --  The status topic's word on the end (it may come after the
-            --  result); a server that never publishes it costs 1 s.
+            --  result); a server that never publishes it costs 1 s. Not
+            --  Client.Status: the client stops following the goal once
+            --  both came.
             declare
                Deadline : constant Ada.Real_Time.Time :=
                  Ada.Real_Time.Clock + Ada.Real_Time.Seconds (1);
             begin
-               while Client.Status (Id) not in Terminal_Status
+               while not Saw_End
                  and then Ada.Real_Time.Clock < Deadline
                loop
                   Node.Spin (During => 0.05);

@@ -2,6 +2,7 @@
 --  and play also read its sqlite3 storage, .db3)
 --  (RCL.Bags: rosbag2's directory layout and metadata.yaml).
 with Ada.Calendar.Formatting;
+with Ada.Characters.Handling;
 with Ada.Command_Line;
 with Ada.Containers;
 with Ada.Streams;
@@ -15,11 +16,14 @@ procedure Bag_Command (Args : Arguments) is
    use type Interfaces.Unsigned_64;
    use type Ada.Containers.Count_Type;
    use type Ada.Streams.Stream_Element_Offset;
+   use type RCL.MCAP.Compression_Kind;
+   use type RCL.Bags.Bag_Compression;
 
    --  Options: "--name value" pairs, flags, and the rest positional.
    Valued : constant String :=
      " -o --output --duration -b --max-bag-size -d --max-bag-duration --compression"
-     & " -r --rate --clock --delay --discovery-period ";
+     & " --compression-mode --compression-format -r --rate --clock --delay"
+     & " --discovery-period ";
    Flags  : constant String :=
      " -a --all --include-hidden-topics -l --loop --recover ";
 
@@ -109,6 +113,12 @@ procedure Bag_Command (Args : Arguments) is
       Period   : constant Long_Float :=
         Number ("--discovery-period", "--discovery-period", "0.5", 0.01, 60.0);
       Kind     : RCL.MCAP.Compression_Kind;
+      Mode_Text : constant String :=
+        Ada.Characters.Handling.To_Lower (Value_Of ("--compression-mode", "--compression-mode",
+                                                    "none"));
+      Format_Text : constant String :=
+        Value_Of ("--compression-format", "--compression-format", "zstd");
+      Mode     : RCL.Bags.Bag_Compression;
       Topics   : RCL.Bags.Recorders.Topic_List;
       Node     : RCL.Nodes.Node := Tool_Node;
       Rec      : RCL.Bags.Recorders.Recorder;
@@ -118,8 +128,26 @@ procedure Bag_Command (Args : Arguments) is
            else Ada.Real_Time.To_Time_Span (1.0e6));
       Next_Discovery : Ada.Real_Time.Time := Ada.Real_Time.Clock;
    begin
+      if Mode_Text = "file" then
+         Mode := RCL.Bags.File_Compression;
+      elsif Mode_Text = "message" then
+         Mode := RCL.Bags.Message_Compression;
+      elsif Mode_Text = "none" then
+         Mode := RCL.Bags.No_Compression;
+      else
+         raise Usage_Error with "--compression-mode: '" & RCL.Names.Shortened (Mode_Text)
+           & "': expected file, message or none";
+      end if;
+      if Format_Text /= "zstd" then
+         raise Usage_Error with "--compression-format: '" & RCL.Names.Shortened (Format_Text)
+           & "': only zstd";
+      end if;
       begin
-         Kind := RCL.MCAP.Compression_Value (Value_Of ("--compression", "--compression", "zstd"));
+         --  MCAP's chunks: zstd unless rosbag2's compression is asked for
+         --  (compressing what is compressed gains nothing).
+         Kind := RCL.MCAP.Compression_Value
+           (Value_Of ("--compression", "--compression",
+                      (if Mode = RCL.Bags.No_Compression then "zstd" else "none")));
       exception
          when E : RCL.MCAP.Format_Error =>
             raise Usage_Error with "--compression: " & Ada.Exceptions.Exception_Message (E);
@@ -145,13 +173,19 @@ procedure Bag_Command (Args : Arguments) is
       end if;
       begin
          Rec.Start (Output, Topics, Kind, Interfaces.Unsigned_64 (Max_Bytes), Duration (Max_Span),
-                    Include_Hidden => Flag ("--include-hidden-topics", "--include-hidden-topics"));
+                    Include_Hidden => Flag ("--include-hidden-topics", "--include-hidden-topics"),
+                    Mode => Mode);
       exception
          when E : RCL.Bags.Bag_Error =>
             raise Command_Error with Ada.Exceptions.Exception_Message (E);
       end;
       RCL.Contexts.Install_Signal_Handlers;
-      Put_Line ("Recording to '" & Output & "' (" & RCL.MCAP.Image (Kind) & ")...");
+      Put_Line ("Recording to '" & Output & "' ("
+                & (case Mode is
+                      when RCL.Bags.No_Compression => "",
+                      when RCL.Bags.File_Compression => "zstd files, chunks ",
+                      when RCL.Bags.Message_Compression => "zstd messages, chunks ")
+                & (if Kind = RCL.MCAP.None then "none" else RCL.MCAP.Image (Kind)) & ")...");
       Flush;
       Graph.Wait_For_Discovery (0.3);
       while not RCL.Contexts.Is_Shutdown and then Ada.Real_Time.Clock < Deadline loop
@@ -192,6 +226,9 @@ procedure Bag_Command (Args : Arguments) is
          raise Usage_Error with "bag info takes one bag (directory, .mcap or .db3 file)"
            & Extra_Argument;
       end if;
+      --  A signal stops a long decompression (a bag compressed whole); the
+      --  reader then deletes its temporary file.
+      RCL.Contexts.Install_Signal_Handlers;
       begin
          Reader.Open (Positionals (2), Recover => Flag ("--recover", "--recover"));
       exception
@@ -350,6 +387,13 @@ procedure Bag_Command (Args : Arguments) is
                   end if;
                end if;
             end if;
+         exception
+            when RCL.ROS_Exception =>
+               --  A signal between a shutdown check above and a publish.
+               if RCL.Contexts.Is_Shutdown then
+                  raise Stopped;
+               end if;
+               raise;
          end Each;
       begin
          for Name of Play_Topics loop

@@ -99,10 +99,15 @@ package body Rclada_Commands is
            & " [-b|--max-bag-size BYTES]" & LF
            & "                         [-d|--max-bag-duration S] [--compression none|zstd|lz4]"
            & " [--include-hidden-topics]" & LF
+           & "                         [--compression-mode file|message"
+           & " --compression-format zstd]" & LF
            & "       rclada bag info BAG [--recover]" & LF
            & "       rclada bag play BAG [-r|--rate R] [-l|--loop] [--clock [HZ]]"
            & " [--topics TOPIC...] [--delay S]" & LF
-           & "  BAG: a rosbag2 directory (metadata.yaml, *.mcap) or one .mcap file." & LF
+           & "  BAG: a rosbag2 directory (metadata.yaml, *.mcap or *.db3, also zstd-"
+           & "compressed)" & LF & "  or one such file." & LF
+           & "  --compression-mode: rosbag2's zstd of each file (bag_0.mcap.zstd) or"
+           & " message." & LF
            & "  record stops at Ctrl-C or after --duration; -b / -d start a new file" & LF
            & "  at that size / span. play keeps the recorded timing (scaled by --rate)" & LF
            & "  and with --clock publishes /clock (default 40 Hz).";

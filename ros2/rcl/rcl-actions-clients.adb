@@ -1,5 +1,8 @@
+with Ada.Containers.Doubly_Linked_Lists;
 with Ada.Containers.Ordered_Maps;
+with Ada.Containers.Ordered_Sets;
 with Ada.Containers.Vectors;
+with Ada.Real_Time;
 with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
@@ -13,7 +16,23 @@ package body RCL.Actions.Clients is
 
    use ROSIDL.Dynamic;
 
-   package Status_Maps is new Ada.Containers.Ordered_Maps (Goal_Id, Goal_Status);
+   --  The goals a client follows (see Goal lifetime in the spec).
+
+   type Goal_Entry is record
+      Status : Goal_Status := Unknown;
+      --  As the status topic last gave it.
+      Taken  : Boolean := False;
+      --  Get_Result returned its result.
+   end record;
+
+   package Goal_Maps is new Ada.Containers.Ordered_Maps (Goal_Id, Goal_Entry);
+   package Id_Sets is new Ada.Containers.Ordered_Sets (Goal_Id);
+
+   type Lingering is record
+      Id    : Goal_Id;
+      Due   : Ada.Real_Time.Time;
+   end record;
+   package Linger_Lists is new Ada.Containers.Doubly_Linked_Lists (Lingering);
 
    protected type Goal_Set is
       procedure Add (Id : Goal_Id);
@@ -21,17 +40,39 @@ package body RCL.Actions.Clients is
       procedure Remove (Id : Goal_Id);
       function Contains (Id : Goal_Id) return Boolean;
       function Status (Id : Goal_Id) return Goal_Status;
-      procedure Update (Id : Goal_Id; To : Goal_Status; Changed : out Boolean);
+      function Count return Natural;
+      procedure Update (Id : Goal_Id; To : Goal_Status; Changed, Done : out Boolean);
       --  Id's status becomes To when Id is one of the set; Changed when it
-      --  was another status.
+      --  was another status; Done when To is terminal and the result was
+      --  taken (the goal is to be removed, after the callbacks).
+      procedure Result_Taken (Id : Goal_Id; Status : Goal_Status);
+      --  Get_Result answered Status (terminal or Unknown) for Id.
+      procedure Remove_Ended_Absent (Listed : Id_Sets.Set);
+      --  Removes the goals whose status is terminal and that the status
+      --  array just received (its goals: Listed) no longer names.
    private
-      Goals : Status_Maps.Map;
+      procedure Prune;
+      --  Removes the goals whose result was taken Status_Linger ago.
+      Goals   : Goal_Maps.Map;
+      Waiting : Linger_Lists.List;
+      --  Goals whose result was taken, oldest first.
    end Goal_Set;
 
    protected body Goal_Set is
+      procedure Prune is
+         Now : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      begin
+         while not Waiting.Is_Empty and then Ada.Real_Time."<=" (Waiting.First_Element.Due, Now)
+         loop
+            Goals.Exclude (Waiting.First_Element.Id);
+            Waiting.Delete_First;
+         end loop;
+      end Prune;
+
       procedure Add (Id : Goal_Id) is
       begin
-         Goals.Include (Id, Unknown);
+         Prune;
+         Goals.Include (Id, (others => <>));
       end Add;
 
       procedure Remove (Id : Goal_Id) is
@@ -42,16 +83,50 @@ package body RCL.Actions.Clients is
       function Contains (Id : Goal_Id) return Boolean is (Goals.Contains (Id));
 
       function Status (Id : Goal_Id) return Goal_Status is
-        (if Goals.Contains (Id) then Goals (Id) else Unknown);
+        (if Goals.Contains (Id) then Goals (Id).Status else Unknown);
 
-      procedure Update (Id : Goal_Id; To : Goal_Status; Changed : out Boolean) is
-         C : constant Status_Maps.Cursor := Goals.Find (Id);
+      function Count return Natural is (Natural (Goals.Length));
+
+      procedure Update (Id : Goal_Id; To : Goal_Status; Changed, Done : out Boolean) is
+         C : constant Goal_Maps.Cursor := Goals.Find (Id);
       begin
-         Changed := Status_Maps.Has_Element (C) and then Status_Maps.Element (C) /= To;
+         Changed := Goal_Maps.Has_Element (C) and then Goals (C).Status /= To;
+         Done := Goal_Maps.Has_Element (C) and then Goals (C).Taken and then To in Terminal_Status;
          if Changed then
-            Goals.Replace_Element (C, To);
+            Goals (C).Status := To;
          end if;
       end Update;
+
+      procedure Result_Taken (Id : Goal_Id; Status : Goal_Status) is
+         C : constant Goal_Maps.Cursor := Goals.Find (Id);
+      begin
+         Prune;
+         if not Goal_Maps.Has_Element (C) or else Goals (C).Taken then
+            null;
+         elsif Status = Unknown or else Goals (C).Status in Terminal_Status then
+            Goals.Delete (Id);
+         else
+            Goals (C).Taken := True;
+            Waiting.Append
+              ((Id, Ada.Real_Time."+" (Ada.Real_Time.Clock,
+                                       Ada.Real_Time.To_Time_Span (Status_Linger))));
+         end if;
+      end Result_Taken;
+
+      procedure Remove_Ended_Absent (Listed : Id_Sets.Set) is
+         Gone : Id_Sets.Set;
+      begin
+         Prune;
+         for C in Goals.Iterate loop
+            if Goals (C).Status in Terminal_Status and then not Listed.Contains (Goal_Maps.Key (C))
+            then
+               Gone.Insert (Goal_Maps.Key (C));
+            end if;
+         end loop;
+         for Id of Gone loop
+            Goals.Delete (Id);
+         end loop;
+      end Remove_Ended_Absent;
    end Goal_Set;
 
    function Number (Code : Integer) return String is
@@ -136,16 +211,20 @@ package body RCL.Actions.Clients is
       Msg     : constant Message := ROSIDL.CDR.Decode (Status_Support, Data);
       List    : constant Array_Ref := Msg ("status_list").As_Array;
       Changes : Change_Vectors.Vector;
+      Done    : Id_Sets.Set;
+      --  Goals ended whose result was taken.
+      Listed  : Id_Sets.Set;
    begin
       --  Every entry first (an entry that is no status loses none of the
-      --  others), then the callbacks.
+      --  others), then the callbacks, then the goals done are dropped.
       for I in 1 .. List.Length loop
          declare
             Item    : constant Field_Ref := List.Element (I);
             Id      : constant Goal_Id := Get_Id (Item ("goal_info")("goal_id"));
             Code    : constant Integer := Integer (Item ("status").As_Int8.Element.all);
-            Changed : Boolean;
+            Changed, Ended : Boolean;
          begin
+            Listed.Include (Id);
             if not This.Mine.Contains (Id) then
                null;  --  Another client's goal.
             elsif Code not in Goal_Status'Pos (Goal_Status'First)
@@ -159,9 +238,12 @@ package body RCL.Actions.Clients is
                   & Status_Image (This.Mine.Status (Id)),
                   Logger => Node.Logger_Name);
             else
-               This.Mine.Update (Id, Goal_Status'Val (Code), Changed);
+               This.Mine.Update (Id, Goal_Status'Val (Code), Changed, Ended);
                if Changed then
                   Changes.Append (Status_Change'(Id, Goal_Status'Val (Code)));
+               end if;
+               if Ended then
+                  Done.Include (Id);
                end if;
             end if;
          end;
@@ -171,6 +253,10 @@ package body RCL.Actions.Clients is
             This.Callback (Node, C.Id, C.To);
          end loop;
       end if;
+      for Id of Done loop
+         This.Mine.Remove (Id);
+      end loop;
+      This.Mine.Remove_Ended_Absent (Listed);
    end Deliver;
 
    procedure Init
@@ -219,6 +305,19 @@ package body RCL.Actions.Clients is
 
    function Status (This : Client; Id : Goal_Id) return Goal_Status is
      (if This.Mine = null then Unknown else This.Mine.Status (Id));
+
+   function Follows (This : Client; Id : Goal_Id) return Boolean is
+     (This.Mine /= null and then This.Mine.Contains (Id));
+
+   function Followed_Goals (This : Client) return Natural is
+     (if This.Mine = null then 0 else This.Mine.Count);
+
+   procedure Forget (This : in out Client; Id : Goal_Id) is
+   begin
+      if This.Mine /= null then
+         This.Mine.Remove (Id);
+      end if;
+   end Forget;
 
    function Server_Available (This : Client) return Boolean is
      (This.Send.Service_Available and then This.Cancel.Service_Available
@@ -290,6 +389,9 @@ package body RCL.Actions.Clients is
          Status := Goal_Status'Val (Code);
          Result := To_Message (Response ("result"));
       end;
+      if Status = Unknown or else Status in Terminal_Status then
+         This.Mine.Result_Taken (Id, Status);
+      end if;
    end Get_Result;
 
    function Cancel

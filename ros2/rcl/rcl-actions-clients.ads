@@ -13,6 +13,27 @@
 --     Status := C.Status (Id);                  --  Executing, while it runs
 --     C.Get_Result (Id, Status, Result);        --  waits for the end
 --     Code := C.Cancel_Goal (Id);
+--
+--  Goal lifetime: the client follows each goal it sent (status, feedback)
+--  until the goal is done for it, so that a client sending goals for ever
+--  keeps a bounded set (as rclcpp drops a goal handle once its result has
+--  come, and rclpy once the status topic says it ended):
+--  - a goal rejected by the server is never followed;
+--  - once Get_Result has returned its result (a terminal status), the goal
+--    is dropped when the status topic gives it a terminal status, or
+--    Status_Linger after the result if the topic does not (a server that
+--    publishes no status, an array lost), or when Get_Result answers
+--    Unknown (the server no longer knows it);
+--  - a goal the topic said ended is dropped when a later status array no
+--    longer lists it: the server has expired its result (its result
+--    timeout, 15 min by default), so no result can be taken any more;
+--  - Forget drops a goal at once (e.g. one whose result is never wanted,
+--    or whose server is gone).
+--  A goal no longer followed is as one never sent: Status answers Unknown,
+--  its feedback and statuses are ignored. Get_Result and Cancel_Goal ask
+--  the server whatever the client follows: Get_Result of a goal the server
+--  has expired answers Unknown (and the default result), Cancel_Goal
+--  Error_Unknown_Goal_Id; neither raises for that.
 with ROSIDL.Dynamic;
 with RCL.Nodes;
 
@@ -23,6 +44,10 @@ package RCL.Actions.Clients is
    Goal_Rejected : exception;
 
    Forever : constant Duration := RCL.Nodes.Forever;
+
+   Status_Linger : constant Duration := 2.0;
+   --  How long a goal whose result was taken stays followed, waiting for
+   --  the status topic's terminal status (see Goal lifetime above).
 
    type Client is tagged limited private;
 
@@ -68,7 +93,20 @@ package RCL.Actions.Clients is
    function Status (This : Client; Id : Goal_Id) return Goal_Status;
    --  The status of goal Id (sent by this client) as the status topic last
    --  gave it: Unknown until the topic names the goal, and for a goal that
-   --  is not this client's or was rejected. Callable from any task.
+   --  is not this client's, was rejected or is no longer followed (see
+   --  Goal lifetime). Callable from any task.
+
+   function Follows (This : Client; Id : Goal_Id) return Boolean;
+   --  Goal Id was sent by this client and is still followed.
+
+   function Followed_Goals (This : Client) return Natural;
+   --  How many goals the client follows (the size of its goal set).
+
+   procedure Forget (This : in out Client; Id : Goal_Id);
+   --  Stop following goal Id: no more status or feedback of it; Status
+   --  answers Unknown. Nothing happens for a goal not followed. The server
+   --  is not told (it keeps the goal, which may still be canceled and its
+   --  result taken until the server expires it).
 
    function Server_Available (This : Client) return Boolean;
    --  The three services of the action are available.
@@ -97,8 +135,11 @@ package RCL.Actions.Clients is
       Result  : out ROSIDL.Dynamic.Message;
       Timeout : Duration := Forever);
    --  Waits for the goal to end (RCL_Timeout after Timeout). Status Unknown
-   --  when the server does not know the goal (expired). ROS_Exception when
-   --  the server answers a status that is no GoalStatus value.
+   --  (and the action's default result) when the server does not know the
+   --  goal: never accepted, or its result expired. ROS_Exception when the
+   --  server answers a status that is no GoalStatus value. The result may
+   --  be asked again while the server keeps it; the client stops following
+   --  the goal (see Goal lifetime).
 
    function Cancel_Goal
      (This    : in out Client;

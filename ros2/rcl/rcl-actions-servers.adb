@@ -7,6 +7,7 @@ with RCL.Clocks;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Services;
+with RCL.Timers;
 
 package body RCL.Actions.Servers is
 
@@ -40,6 +41,7 @@ package body RCL.Actions.Servers is
    end record;
 
    package Goal_Maps is new Ada.Containers.Ordered_Maps (Goal_Id, Goal_Entry);
+   package Id_Vectors is new Ada.Containers.Vectors (Positive, Goal_Id);
 
    type Status_Item is record
       Id     : Goal_Id;
@@ -65,9 +67,16 @@ package body RCL.Actions.Servers is
       --  The get_result requests to answer now (the goal ended).
    end record;
 
+   function Expired
+     (E : Goal_Entry; Now, Timeout_Ns : RCL.Clocks.Nanoseconds) return Boolean is
+     (E.Status in Terminal_Status and then Now - E.Ended_At > Timeout_Ns);
+   --  E's result has expired (the goal is gone, even if still in the map).
+
    protected type Goal_Table (Timeout_Ns : RCL.Clocks.Nanoseconds) is
       procedure Add (Id : Goal_Id; Goal : Message; Stamp : Long_Long_Integer; Added : out Boolean);
       function Status_Of (Id : Goal_Id) return Goal_Status;
+      --  Unknown for a goal never accepted or whose result has expired (as
+      --  the other operations: an expired goal is as one never accepted).
       function Goal_Of (Id : Goal_Id) return Message;
       procedure Transition
         (Id : Goal_Id; To : Goal_Status; Result : Message; Outcome : out Transition_Outcome);
@@ -79,7 +88,11 @@ package body RCL.Actions.Servers is
       --  Status terminal or Unknown: answer now with Result; else queued.
       procedure Snapshot (List : out Status_Vectors.Vector);
       --  Every goal, after dropping expired results.
+      procedure Expire (Dropped : out Natural);
+      --  Drops the goals whose result has expired.
       function Active return Natural;
+      function Count return Natural;
+      --  Goals in the table (expired ones not dropped yet included).
       function Cancel_Candidates
         (Id : Goal_Id; Before : Long_Long_Integer) return Status_Vectors.Vector;
       --  The goals a cancel request designates (action_msgs/CancelGoal:
@@ -94,6 +107,8 @@ package body RCL.Actions.Servers is
    type Result_Server_Access is access all Result_Server;
 
    type Server_State (Timeout_Ns : RCL.Clocks.Nanoseconds) is limited record
+      Expiry      : RCL.Timers.Timer;
+      --  Drops expired results (Expire_Results) while the node spins.
       Support     : Action_Support;
       Name        : Ada.Strings.Unbounded.Unbounded_String;
       On_Goal     : Goal_Callback;
@@ -144,7 +159,9 @@ package body RCL.Actions.Servers is
 
       procedure Add (Id : Goal_Id; Goal : Message; Stamp : Long_Long_Integer; Added : out Boolean)
       is
+         Dropped : Natural;
       begin
+         Expire (Dropped);
          Added := not Goals.Contains (Id);
          if Added then
             Goals.Insert (Id, (Goal => Goal, Stamp => Stamp, others => <>));
@@ -152,10 +169,12 @@ package body RCL.Actions.Servers is
       end Add;
 
       function Status_Of (Id : Goal_Id) return Goal_Status is
-        (if Goals.Contains (Id) then Goals (Id).Status else Unknown);
+        (if Goals.Contains (Id)
+           and then not Expired (Goals (Id), RCL.Clocks.Now (RCL.Clocks.Steady), Timeout_Ns)
+         then Goals (Id).Status else Unknown);
 
       function Goal_Of (Id : Goal_Id) return Message is
-        (if Goals.Contains (Id) then Goals (Id).Goal else raise ROS_Exception
+        (if Status_Of (Id) /= Unknown then Goals (Id).Goal else raise ROS_Exception
            with "goal " & Image (Id) & " is unknown (expired?)");
 
       procedure Transition
@@ -191,25 +210,31 @@ package body RCL.Actions.Servers is
       end Wait_Result;
 
       procedure Snapshot (List : out Status_Vectors.Vector) is
-         Now     : constant RCL.Clocks.Nanoseconds := RCL.Clocks.Now (RCL.Clocks.Steady);
-         Expired : Status_Vectors.Vector;
+         Dropped : Natural;
       begin
+         Expire (Dropped);
          List.Clear;
          for C in Goals.Iterate loop
-            declare
-               E : Goal_Entry renames Goals (C);
-            begin
-               if E.Status in Terminal_Status and then Now - E.Ended_At > Timeout_Ns then
-                  Expired.Append (Status_Item'(Goal_Maps.Key (C), E.Stamp, E.Status));
-               else
-                  List.Append (Status_Item'(Goal_Maps.Key (C), E.Stamp, E.Status));
-               end if;
-            end;
-         end loop;
-         for X of Expired loop
-            Goals.Delete (X.Id);
+            List.Append (Status_Item'(Goal_Maps.Key (C), Goals (C).Stamp, Goals (C).Status));
          end loop;
       end Snapshot;
+
+      procedure Expire (Dropped : out Natural) is
+         Now  : constant RCL.Clocks.Nanoseconds := RCL.Clocks.Now (RCL.Clocks.Steady);
+         Gone : Id_Vectors.Vector;
+      begin
+         for C in Goals.Iterate loop
+            if Expired (Goals (C), Now, Timeout_Ns) then
+               Gone.Append (Goal_Maps.Key (C));
+            end if;
+         end loop;
+         for Id of Gone loop
+            Goals.Delete (Id);
+         end loop;
+         Dropped := Natural (Gone.Length);
+      end Expire;
+
+      function Count return Natural is (Natural (Goals.Length));
 
       function Active return Natural is
          N : Natural := 0;
@@ -232,7 +257,9 @@ package body RCL.Actions.Servers is
                E : Goal_Entry renames Goals (C);
                K : constant Goal_Id := Goal_Maps.Key (C);
             begin
-               if (Id = Null_Goal_Id and Before = 0)
+               if Expired (E, RCL.Clocks.Now (RCL.Clocks.Steady), Timeout_Ns) then
+                  null;  --  Gone.
+               elsif (Id = Null_Goal_Id and Before = 0)
                  or else K = Id
                  or else (Before /= 0 and then E.Stamp <= Before)
                then
@@ -267,6 +294,66 @@ package body RCL.Actions.Servers is
       end loop;
       State.Status.Publish_Raw (ROSIDL.CDR.Encode (Msg));
    end Publish_Status;
+
+   --------------------
+   -- Result expiry --
+   --------------------
+
+   type Expiry_Entry is record
+      Timer : RCL.Timers.Timer;
+      State : State_Access;
+   end record;
+   package Expiry_Vectors is new Ada.Containers.Vectors (Positive, Expiry_Entry);
+
+   protected Expiry_Timers is
+      procedure Add (Timer : RCL.Timers.Timer; State : State_Access);
+      function Server_Of (Timer : RCL.Timers.Timer) return State_Access;
+      --  Null for a timer not added.
+   private
+      Entries : Expiry_Vectors.Vector;
+   end Expiry_Timers;
+   --  The server of each expiry timer (a timer callback gets its timer).
+
+   protected body Expiry_Timers is
+      procedure Add (Timer : RCL.Timers.Timer; State : State_Access) is
+      begin
+         Entries.Append (Expiry_Entry'(Timer, State));
+      end Add;
+
+      function Server_Of (Timer : RCL.Timers.Timer) return State_Access is
+      begin
+         for E of Entries loop
+            if RCL.Timers."=" (E.Timer, Timer) then
+               return E.State;
+            end if;
+         end loop;
+         return null;
+      end Server_Of;
+   end Expiry_Timers;
+
+   procedure Expire_Results
+     (Node    : in out RCL.Nodes.Node'Class;
+      Timer   : in out RCL.Timers.Timer;
+      Elapsed : Duration)
+   is
+      pragma Unreferenced (Node, Elapsed);
+      State   : constant State_Access := Expiry_Timers.Server_Of (Timer);
+      Dropped : Natural;
+   begin
+      if State /= null then
+         State.Goals.Expire (Dropped);
+         if Dropped > 0 then
+            Publish_Status (State);
+            --  The status array stops naming them (rclcpp names them no
+            --  more in its next array only); late readers get this one.
+         end if;
+      end if;
+   end Expire_Results;
+
+   function Expiry_Period (Result_Timeout : Duration) return Duration is
+     (Duration'Max (0.05, Duration'Min (10.0, Result_Timeout / 10)));
+   --  How often a server drops its expired results: a tenth of the
+   --  timeout, within 0.05 .. 10 s.
 
    ------------------
    -- Send a result --
@@ -448,6 +535,9 @@ package body RCL.Actions.Servers is
       RCL.Services.Open (Node, Cancel, Cancel_Support, FQ & Cancel_Suffix);
       RCL.Services.Open (Node, RCL.Services.Server_Access (State.Results),
                          Get_Result_Support (Support), FQ & Get_Result_Suffix);
+      State.Expiry := Node.Timer_Add
+        (Expiry_Period (Result_Timeout), Expire_Results'Access, RCL.Timers.Steady_Clock);
+      Expiry_Timers.Add (State.Expiry, State);
       This.State := State;
       Publish_Status (State);
    end Init;
@@ -456,6 +546,8 @@ package body RCL.Actions.Servers is
      (Ada.Strings.Unbounded.To_String (This.State.Name));
 
    function Active_Goals (This : Server) return Natural is (This.State.Goals.Active);
+
+   function Kept_Goals (This : Server) return Natural is (This.State.Goals.Count);
 
    -----------
    -- Goals --

@@ -8,7 +8,13 @@
 --
 --  Several goals may be active at once. Results are kept for Result_Timeout
 --  after the goal ended (a get_result request for a goal still running is
---  answered when it ends).
+--  answered when it ends), as rcl_action's result_timeout (15 min by
+--  default); then the goal is forgotten: dropped from the server (within a
+--  tenth of the timeout, at most 10 s, while the node spins) and from the
+--  status array (published again without it), get_result answers it
+--  UNKNOWN, cancel_goal ERROR_UNKNOWN_GOAL_ID, Goal_Handle.Status Unknown.
+--  A server answering goals at a steady rate thus keeps a bounded number
+--  of them (Kept_Goals): those active and those ended within the timeout.
 --  Example:
 --     function On_Goal (Node : in out Nodes.Node'Class; Id : Goal_Id;
 --                       Goal : Message) return Goal_Response is
@@ -60,16 +66,25 @@ package RCL.Actions.Servers is
       On_Cancel   : access function
         (Node : in out RCL.Nodes.Node'Class;
          Goal : Goal_Handle) return Cancel_Response := null;
-      Result_Timeout : Duration := Default_Result_Timeout);
+      Result_Timeout : Duration := Default_Result_Timeout)
+     with Pre => Result_Timeout >= 0.0;
    --  Offers action Name (expanded like a service name). On_Cancel null
    --  accepts every cancel request. The callbacks must stay callable as
    --  long as the node exists (they may be nested in the main subprogram).
+   --  Results expire Result_Timeout after their goal ended (on the steady
+   --  clock); 0.0 keeps them only for the get_result requests already
+   --  waiting when the goal ends.
 
    function Name (This : Server) return String;
    --  The fully qualified action name.
 
    function Active_Goals (This : Server) return Natural;
    --  Goals accepted, executing or canceling.
+
+   function Kept_Goals (This : Server) return Natural;
+   --  Goals the server holds: the active ones and the ended ones not yet
+   --  dropped (their results have not expired, or expired since the last
+   --  drop).
 
    --  Goals ----------------------------------------------------------------
 

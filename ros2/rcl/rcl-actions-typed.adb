@@ -121,6 +121,8 @@ package body RCL.Actions.Typed is
 
       function Active_Goals return Natural is (The_Server.Active_Goals);
 
+      function Kept_Goals return Natural is (The_Server.Kept_Goals);
+
    end Server;
 
    ------------
@@ -154,6 +156,15 @@ package body RCL.Actions.Typed is
       end Init;
 
       function Status (Id : Goal_Id) return Goal_Status is (The_Client.Status (Id));
+
+      function Follows (Id : Goal_Id) return Boolean is (The_Client.Follows (Id));
+
+      function Followed_Goals return Natural is (The_Client.Followed_Goals);
+
+      procedure Forget (Id : Goal_Id) is
+      begin
+         The_Client.Forget (Id);
+      end Forget;
 
       function Server_Available return Boolean is (The_Client.Server_Available);
 

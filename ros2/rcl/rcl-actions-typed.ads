@@ -92,6 +92,8 @@ package RCL.Actions.Typed is
 
       function Name return String;
       function Active_Goals return Natural;
+      function Kept_Goals return Natural;
+      --  As Servers.Active_Goals and Kept_Goals.
    end Server;
 
    ------------
@@ -126,7 +128,13 @@ package RCL.Actions.Typed is
 
       function Status (Id : Goal_Id) return Goal_Status;
       --  As Clients.Status: the goal's status as the status topic last
-      --  gave it (Unknown before).
+      --  gave it (Unknown before, and once the goal is no longer followed).
+
+      function Follows (Id : Goal_Id) return Boolean;
+      function Followed_Goals return Natural;
+      procedure Forget (Id : Goal_Id);
+      --  As Clients.Follows, Followed_Goals and Forget (the goal lifetime of
+      --  RCL.Actions.Clients).
 
       function Server_Available return Boolean;
       procedure Wait_For_Server (Timeout : Duration := Clients.Forever);

@@ -125,8 +125,10 @@ package body Sancta.Standard_Components.GUI_Relay is
       elsif State = "assigned" then (0.2, 0.4, 0.9)
       elsif State = "reallocated" then (0.85, 0.1, 0.1)
       else (0.6, 0.6, 0.6));
-   --  Tasks by state: pending grey, assigned blue, active orange, done
-   --  green, reallocated red (the view's colours).
+   --  Tasks by state for RViz/Foxglove: pending grey, assigned blue,
+   --  active orange, done green, reallocated red. Not sancta-view's
+   --  colours (greys and robots' colours, Rendering.Color_Of): these
+   --  markers keep their own, checked by test_team_demo.
 
    Robot_Colours : constant array (0 .. 5) of Colour :=
      [Colour'(0.12, 0.47, 0.71), Colour'(1.0, 0.5, 0.05), Colour'(0.17, 0.63, 0.17),

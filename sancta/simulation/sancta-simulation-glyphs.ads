@@ -1,6 +1,7 @@
 --  A 5 x 7 pixel font to write labels into raster pictures (the PNG
---  renderings): digits, letters (lower case drawn as upper case), space
---  and - _ . , : > < ( ) / + = % # ? '; other characters are drawn as '?'.
+--  renderings; 5 x 9 with the tails of g j p q y): digits, letters
+--  (lower case with a 5-row x-height), space and - _ . , : > < ( ) / + =
+--  % # ? '; other characters are drawn as '?'.
 --
 --     Glyphs.Draw_Text (Img, X => 10, Y => 4, Text => "r1: 7 tasks", Color => Black);
 with Sancta.Simulation.Raster_Images;
@@ -8,7 +9,10 @@ with Sancta.Simulation.Raster_Images;
 package Sancta.Simulation.Glyphs is
 
    Glyph_Width  : constant := 5;
-   Glyph_Height : constant := 7;
+   Cap_Height   : constant := 7;
+   --  Rows of a capital letter or a digit, from the top of the cell.
+   Glyph_Height : constant := Cap_Height + 2;
+   --  Rows of the cell: two more below the base line for g j p q y.
    Advance      : constant := Glyph_Width + 1;
    --  Pixels from one character to the next.
 

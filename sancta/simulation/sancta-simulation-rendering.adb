@@ -17,9 +17,16 @@ package body Sancta.Simulation.Rendering is
    function RGB (R, G, B : Byte) return Color is ((R, G, B));
 
    Palette : constant array (0 .. 9) of Color :=
-     [RGB (31, 119, 180), RGB (255, 127, 14), RGB (44, 160, 44), RGB (214, 39, 40),
-      RGB (148, 103, 189), RGB (140, 86, 75), RGB (227, 119, 194), RGB (127, 127, 127),
-      RGB (188, 189, 34), RGB (23, 190, 207)];
+     [RGB (0, 114, 178), RGB (230, 159, 0), RGB (0, 158, 115), RGB (204, 121, 167),
+      RGB (86, 180, 233),
+      RGB (51, 34, 136), RGB (153, 153, 51), RGB (170, 68, 153), RGB (221, 204, 119),
+      RGB (0, 90, 90)];
+   --  The first five: Okabe and Ito's colours for colour-blind readers
+   --  (blue, orange, bluish green, reddish purple, sky blue), without their
+   --  vermillion (near the red of a loss), black (walls, text) and yellow
+   --  (faint on white). Then Tol's muted indigo, olive, purple, sand and a
+   --  dark teal: told apart by most readers, not by all. No red: red marks
+   --  a lost robot only (Loss_Color).
 
    function Color_Of (Robot : Positive) return Color is (Palette ((Robot - 1) mod 10));
 
@@ -339,10 +346,14 @@ package body Sancta.Simulation.Rendering is
             Line (Position (P), Transform (P, (S.Robot_Radius, 0.0)), Black, 0);
          end;
       end loop;
+      for P of S.Lost loop
+         Line (P - (0.45, 0.45), P + (0.45, 0.45), Loss_Color, 2);
+         Line (P + (-0.45, 0.45), P + (0.45, -0.45), Loss_Color, 2);
+      end loop;
       for M of S.Markers loop
          --  A cross of Cross pixels each side (lines one pixel thick).
-         Line (M.Where - (0.3, 0.3), M.Where + (0.3, 0.3), (200, 0, 0));
-         Line (M.Where + (-0.3, 0.3), M.Where + (0.3, -0.3), (200, 0, 0));
+         Line (M.Where - (0.3, 0.3), M.Where + (0.3, 0.3), Black);
+         Line (M.Where + (-0.3, 0.3), M.Where + (0.3, -0.3), Black);
       end loop;
       --  Labels last, over every line, where they fit and hide the least
       --  of what is drawn (Place_Labels).
@@ -375,7 +386,7 @@ package body Sancta.Simulation.Rendering is
                            (160, 160, 160), 0);
                   end if;
                   Glyphs.Draw_Text (Img, Boxes (I).X + 1, Boxes (I).Y + 1,
-                                    To_String (S.Markers (I).Label), (120, 0, 0));
+                                    To_String (S.Markers (I).Label), Black);
                end if;
             end loop;
          end;
@@ -400,7 +411,7 @@ package body Sancta.Simulation.Rendering is
                         Set (Img, Xs (I) + DX, Y + DY, S.Legend (I).Color);
                      end loop;
                   end loop;
-                  Glyphs.Draw_Text (Img, Xs (I) + 20, Y - Glyphs.Glyph_Height / 2,
+                  Glyphs.Draw_Text (Img, Xs (I) + 20, Y - Glyphs.Cap_Height / 2,
                                     To_String (S.Legend (I).Text), Black, Halo => False);
                end;
             end loop;
@@ -422,7 +433,7 @@ package body Sancta.Simulation.Rendering is
                      Set (Img, X1, Y + DY, Black);
                   end loop;
                   Glyphs.Draw_Text (Img, X0 - Glyphs.Text_Width (Text) - 4,
-                                    Y - Glyphs.Glyph_Height / 2, Text, Black, Halo => False);
+                                    Y - Glyphs.Cap_Height / 2, Text, Black, Halo => False);
                end;
             end if;
          end;
@@ -526,9 +537,20 @@ package body Sancta.Simulation.Rendering is
                       & """ stroke=""black""/>");
          end;
       end loop;
+      for P of S.Lost loop
+         Put_Line (Out_File, "<path class=""lost"" d=""M" & SX (P.X - 0.45) & ","
+                   & SY (P.Y - 0.45) & " L" & SX (P.X + 0.45) & "," & SY (P.Y + 0.45)
+                   & " M" & SX (P.X - 0.45) & "," & SY (P.Y + 0.45) & " L"
+                   & SX (P.X + 0.45) & "," & SY (P.Y - 0.45) & """ stroke=""" & Hex (Loss_Color)
+                   & """ stroke-width=""4""/>");
+      end loop;
       for M of S.Markers loop
-         Put_Line (Out_File, "<circle cx=""" & SX (M.Where.X) & """ cy=""" & SY (M.Where.Y)
-                   & """ r=""5"" fill=""#c80000""/>");
+         --  A cross as in the PNG (black: red is a loss's colour).
+         Put_Line (Out_File, "<path class=""marker"" d=""M" & SX (M.Where.X - 0.3) & ","
+                   & SY (M.Where.Y - 0.3) & " L" & SX (M.Where.X + 0.3) & ","
+                   & SY (M.Where.Y + 0.3) & " M" & SX (M.Where.X - 0.3) & ","
+                   & SY (M.Where.Y + 0.3) & " L" & SX (M.Where.X + 0.3) & ","
+                   & SY (M.Where.Y - 0.3) & """ stroke=""black"" stroke-width=""1.5""/>");
       end loop;
       declare
          N         : constant Natural := Natural (S.Markers.Length);

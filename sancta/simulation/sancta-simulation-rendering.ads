@@ -1,7 +1,9 @@
 --  Pictures of a world with robot trajectories, robots and points of
 --  interest, as SVG (vector) or as an image saved to PNG (labels in a
---  5 x 7 pixel font, Sancta.Simulation.Glyphs). Trajectories can be read from and written to CSV
---  ("robot,x,y" per line, robots numbered from 1). A world can also be
+--  5 x 7 pixel font with lower case, Sancta.Simulation.Glyphs). Robots get
+--  colours a colour-blind reader tells apart (the first five); red marks
+--  where a robot was lost. Trajectories can be read from and written to
+--  CSV ("robot,x,y" per line, robots numbered from 1). A world can also be
 --  written as a ROS map-server pair (PGM + YAML).
 --
 --     S.Trajectories := Read_Trajectories ("run.csv");
@@ -40,6 +42,9 @@ package Sancta.Simulation.Rendering is
       Robots       : Pose_Vectors.Vector;
       --  Robots drawn as disks with a heading tick.
       Robot_Radius : Real := 0.2;
+      Lost         : Point_Vectors.Vector;
+      --  Where robots were lost: a red cross, larger and thicker than a
+      --  marker's (red is for losses only: no robot has it).
       Markers      : Marker_Vectors.Vector;
       Title        : Ada.Strings.Unbounded.Unbounded_String;
       --  A band above the world when set.
@@ -90,7 +95,14 @@ package Sancta.Simulation.Rendering is
    --  Pixels of the band below the world (0 without legend or scale bar).
 
    function Color_Of (Robot : Positive) return Raster_Images.Color;
-   --  A distinct colour per robot (cycling over ten).
+   --  A distinct colour per robot (cycling over ten; the first five told
+   --  apart by colour-blind readers too), never red (a loss's colour).
+   --  The one palette of the project: the report pictures and the live
+   --  view (sancta-view) both take robot N's colour from here.
+   --  Example: Color_Of (1) = (0, 114, 178); Color_Of (11) = Color_Of (1).
+
+   Loss_Color : constant Raster_Images.Color := (200, 0, 0);
+   --  Red, for a lost robot only (its cross, its name).
 
    function Hex (C : Raster_Images.Color) return String;
    --  "#rrggbb".

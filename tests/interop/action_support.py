@@ -214,19 +214,27 @@ class _Goal:
 class ActionServer(ServingThread):
     """rclpy's ActionServer protocol for Fibonacci `name`: accepts orders >= 0,
     one number per `step` seconds (feedback), accepts every cancel request.
-    Runs in a thread of its own until stop()."""
+    With `result_timeout` (s), forgets goals that long after they ended (as
+    rcl_action; by default it keeps them all). Runs in a thread of its own
+    until stop()."""
 
-    def __init__(self, dp, name="/fibonacci", step=0.05):
+    def __init__(self, dp, name="/fibonacci", step=0.05, result_timeout=None):
         self.ep = _Endpoints(dp, name, "serviceid")
         self.fb = ps.writer(dp, f"rt{name}/_action/feedback", FeedbackMessage)
         self.st = DataWriter(dp, Topic(dp, f"rt{name}/_action/status", GoalStatusArray),
                              qos=status_qos())
         self.step = step
+        self.result_timeout = result_timeout
+        self.ended = {}  # goal id hex -> time.monotonic() of its end
         self.goals = {}
         self.canceled = []
         self._start_serving()
 
     def _publish_status(self):
+        if self.result_timeout is not None:
+            now = time.monotonic()
+            for k in [k for k, t in self.ended.items() if now - t > self.result_timeout]:
+                del self.goals[k], self.ended[k]
         self.st.write(GoalStatusArray(status_list=[
             GoalStatus(goal_info=GoalInfo(goal_id=g.gid, stamp=g.stamp), status=g.status)
             for g in self.goals.values()]))
@@ -279,7 +287,7 @@ class ActionServer(ServingThread):
                     g.waiting.append((r.guid, r.seq))
             if time.monotonic() >= next_step:
                 next_step += self.step
-                for g in self.goals.values():
+                for g in list(self.goals.values()):
                     if g.status == 3:
                         g.status = 5
                     elif g.status == 2 and len(g.seq) < g.order + 1:
@@ -290,6 +298,8 @@ class ActionServer(ServingThread):
                         g.status = 4
                     else:
                         continue
+                    if g.status >= 4:
+                        self.ended[uuid_hex(g.gid)] = time.monotonic()
                     self._publish_status()
                     for guid, seq in g.waiting:
                         gr_w.write(self._result(g, guid, seq))

@@ -184,3 +184,80 @@ def test_ada_client_follows_its_goal_status():
     assert uuid_hex(other_a) not in r.stderr + r.stdout, r.stderr
     assert [status_profile(q) for q in server.readers_qos] == [RCL_ACTION_STATUS], \
         server.readers_qos
+
+
+CHURN = 1000  # goals sent by the goal-lifetime tests
+
+
+def test_ada_client_goal_set_stays_bounded():
+    """tests/src/tools/action_churn: the Ada client sends 1000 goals one
+    after the other to an rclpy-protocol server and takes each result; the
+    set of goals it follows stays small (it drops a goal once its result
+    was taken and the status topic ended it; before, it kept all 1000)
+    and is empty at the end."""
+    dp = ps.participant()
+    server = ActionServer(dp, "/churn_py", step=0.002, result_timeout=3.0)
+    try:
+        r = subprocess.run([str(ps.BIN / "action_churn"), "client", "/churn_py", str(CHURN)],
+                           capture_output=True, text=True, timeout=300)
+    finally:
+        server.stop()
+    assert r.returncode == 0, r.stdout + r.stderr
+    rows = [l.split() for l in r.stdout.splitlines() if l.startswith("goals ")]
+    assert [int(x[1]) for x in rows] == list(range(100, CHURN + 1, 100)), r.stdout
+    followed = [int(x[3]) for x in rows]
+    # Before: every goal sent (100, 200, ... 1000). Now at most the goals
+    # whose result came within Status_Linger (2 s) but whose terminal status
+    # did not come yet: 0 or 1 measured (9 in process, AUnit).
+    assert max(followed) < 100, r.stdout
+    assert r.stdout.splitlines()[-1].startswith("done followed 0 "), r.stdout
+    print(r.stdout)
+
+
+def test_ada_server_goal_set_stays_bounded():
+    """tests/src/tools/action_churn server with a 2 s result timeout: an
+    rclpy-protocol client sends 1000 goals and takes each result; every
+    status array it gets lists no goal whose result it got more than the
+    timeout (plus 2 s of margin) before (the server drops expired goals,
+    which it did before only while publishing), the server keeps fewer
+    than half of the goals, and once idle drops them all and publishes an
+    empty array (a late reader gets it; before, the last array stayed); an
+    expired goal's result is UNKNOWN and its cancel ERROR_UNKNOWN_GOAL_ID."""
+    timeout = 2.0
+    watched = ps.Watched(ps.start("action_churn", "server", "churn_ada", timeout))
+    try:
+        dp = ps.participant()
+        c = ActionClient(dp, "/churn_ada")
+        assert c.wait_for_server(15), "the Ada churn server's services are not matched"
+        started, first, taken, longest = time.monotonic(), None, {}, 0
+        for i in range(CHURN):
+            before = time.monotonic()
+            hex_id, gid, resp = c.send_goal(i % 5)
+            assert resp.accepted
+            res = c.get_result(gid)
+            assert res is not None and res.status == 4 and list(res.sequence) == [i % 5], res
+            taken[hex_id] = time.monotonic()
+            first = first or gid
+            # The arrays polled during the two calls (after `before`): none may
+            # list a goal whose result came more than timeout + 2 s before.
+            stale = [g for s in c.statuses for g, _ in s
+                     if g in taken and taken[g] < before - timeout - 2.0]
+            assert not stale, f"goal {i}: arrays still list goals ended long ago: {stale[:3]}"
+            longest = max([longest] + [len(s) for s in c.statuses])
+            c.statuses.clear()
+        rate = CHURN / (time.monotonic() - started)
+        assert watched.wait(lambda out: "\nkept 0 " in out, timeout + 10), watched.text()[-500:]
+        rows = [l.split() for l in watched.text().splitlines() if l.startswith("kept ")]
+        kept = [int(x[1]) for x in rows]
+        assert max(kept) < CHURN // 2, max(kept)
+        res = c.get_result(first)
+        assert res is not None and STATUS[res.status] == "UNKNOWN"
+        assert c.cancel(first).return_code == 2  # ERROR_UNKNOWN_GOAL_ID
+        late = DataReader(dp, Topic(dp, "rt/churn_ada/_action/status", GoalStatusArray),
+                          qos=status_qos())
+        arrays = ps.take_until(late, 1, timeout=10)
+        assert arrays and arrays[-1].status_list == [], arrays[-1:]
+        print(f"{CHURN} goals at {rate:.0f}/s: kept at most {max(kept)}, longest status array "
+              f"{longest}, rss {rows[0][3]} -> {max(int(x[3]) for x in rows)} (max) kB")
+    finally:
+        watched.stop()

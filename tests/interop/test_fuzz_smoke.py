@@ -13,7 +13,7 @@ import time
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 READERS = ("config,mission,team,tsp,world,walls,trajectories,pgm,png,definition,params,policy,"
-           "mcap,mcap-recover,db3,cdr,typed")
+           "mcap,mcap-recover,db3,zstd-file,zstd-message,cdr,typed")
 
 
 def test_fuzz_smoke():

@@ -20,6 +20,13 @@ def mission_tasks():
     return {e.get("id") for e in root if e.tag in ("goto", "explore", "choose")}
 
 
+def mission_segments():
+    root = ET.parse(MISSION).getroot()
+    return {e.get("id"): ((float(e.get("x1")), float(e.get("y1"))),
+                          (float(e.get("x2")), float(e.get("y2"))))
+            for e in root if e.tag == "explore"}
+
+
 def run_demo(out, *extra):
     exe = ps.BIN / "sancta"
     assert exe.exists(), f"{exe} not built"
@@ -56,12 +63,41 @@ def check_summary(out, output):
     for o in orphans:
         assert o["done_by"] not in ("", killed), f"{o} not done by a survivor{context}"
     assert summary["executed_total_m"] > 0 and summary["planned_total_m"] > 0, context
+    check_time_split(summary, context)
     # The same first plan along A* paths is never much shorter than along
     # straight lines (grid cells: a few cm per leg).
     assert summary["planned_grid_total_m"] >= 0.98 * summary["planned_total_m"], context
     for name in ("trajectories.svg", "trajectories.png", "plan-before.svg", "plan-after.svg",
                  "sim.log", "operator.log", f"{killed}.log"):
         assert (out / name).exists(), f"{name} missing{context}"
+
+
+def check_time_split(summary, context):
+    """Where each robot's time went (the Gantt's shades): reached_s within
+    the task's bar, a segment's traversal taking at least its length at
+    the robots' top speed (0.8 m/s), and travel + at task + stopped adding
+    up to the time from the first plan to the robot's last task done."""
+    segments = mission_segments()
+    last = {}
+    for c in summary["completions"]:
+        since = max(last.get(c["robot"], summary["first_plan_s"]), summary["first_plan_s"])
+        if "reached_s" in c:
+            assert since - 0.01 <= c["reached_s"] <= c["time_s"] + 0.01, f"{c}{context}"
+            if c["task"] in segments:
+                (x1, y1), (x2, y2) = segments[c["task"]]
+                length = ((x2 - x1) ** 2 + (y2 - y1) ** 2) ** 0.5
+                assert c["time_s"] - c["reached_s"] >= (length - 1.0) / 0.8, \
+                    f"{c}: {length:.1f} m segment{context}"
+        last[c["robot"]] = c["time_s"]
+    reached = [c for c in summary["completions"] if "reached_s" in c]
+    assert len(reached) >= len(summary["completions"]) - 2, f"few arrivals seen{context}"
+    for r in summary["robots"]:
+        parts = r["travel_s"] + r["at_task_s"] + r["stopped_s"]
+        assert min(r["travel_s"], r["at_task_s"], r["stopped_s"]) >= 0, f"{r}{context}"
+        if r["id"] in last:
+            span = last[r["id"]] - summary["first_plan_s"]
+            assert abs(parts - span) < 0.05, f"{r}: {parts} s of {span} s{context}"
+            assert r["travel_s"] > 0, f"{r}{context}"
 
 
 def check_bag(out):
@@ -139,6 +175,9 @@ def check_pictures(out):
     gantt = (out / "gantt.svg").read_text()
     assert "lost</text>" in gantt and "re-planned</text>" in gantt
     assert gantt.count('class="task"') >= len(mission_tasks())
+    # Each bar light while going, dark once at the task; a key says so.
+    assert gantt.count('class="at-task"') >= len(mission_segments()), "no at-task parts"
+    assert ">going to the task</text>" in gantt and ">stopped</text>" in gantt
 
 
 def test_demo_annealer_robot_lost(tmp_path):

@@ -24,9 +24,14 @@ def test_twenty_robots_finish_a_campus_mission(tmp_path):
                         "--no-kill", "--check", "--quiet", "--out", str(tmp_path / "out")],
                        capture_output=True, text=True, timeout=240)
     out = p.stdout + p.stderr
-    assert p.returncode == 0, out[-3000:]
+    # At the time limit the demo prints a line per robot still on a task
+    # (pose, waypoint, metres moved in the last 60 s, nearest robot): kept
+    # whole in the message, whatever the length of the rest.
+    unfinished = "\n".join(line for line in out.splitlines() if " unfinished: " in line)
+    assert p.returncode == 0, unfinished + "\n" + out[-3000:]
     assert "check: passed (every task done exactly once)" in out, out[-3000:]
-    rows = re.findall(r"^r([0-9]+) +([0-9]+) +[0-9.]+$", p.stdout, re.MULTILINE)
+    # robot, tasks, distance, then the times (going, at tasks, stopped)
+    rows = re.findall(r"^r([0-9]+) +([0-9]+)(?: +[0-9.]+)+$", p.stdout, re.MULTILINE)
     assert sorted(int(r) for r, _ in rows) == list(range(1, 21)), p.stdout
     assert sum(int(t) for _, t in rows) == 30, p.stdout
 

@@ -149,8 +149,58 @@ def to_pixel(desc, x, y):
     return desc["x0"] + desc["scale"] * x, desc["y0"] - desc["scale"] * y
 
 
+# The report pictures' palette (Sancta.Simulation.Rendering.Color_Of, Loss_Color):
+# the view must draw robot rN and a loss in the same colours as gantt.png.
+REPORT_COLOURS = {"r1": [0, 114, 178], "r2": [230, 159, 0], "r3": [0, 158, 115],
+                  "r4": [204, 121, 167], "r5": [86, 180, 233]}
+LOSS_RED = [200, 0, 0]
+
+
 def is_lost_mark(c):
-    return c[0] > 200 and c[1] < 50 and c[2] < 50
+    return all(abs(a - b) <= 30 for a, b in zip(c, LOSS_RED))
+
+
+def chroma(c):
+    return max(c) - min(c)
+
+
+def check_palette(desc, context):
+    """Robots in the report's colours; a loss in the report's red."""
+    assert desc["loss_colour"] == LOSS_RED, f"{desc['loss_colour']}{context}"
+    for r in desc["robots"]:
+        if not r["lost"] and r["id"] in REPORT_COLOURS:
+            assert r["colour"] == REPORT_COLOURS[r["id"]], (
+                f"{r['id']} drawn in {r['colour']}, the report draws it in "
+                f"{REPORT_COLOURS[r['id']]}{context}")
+
+
+def check_done_tasks(picture, desc, context):
+    """Done and pending tasks are drawn in greys, which no robot has (their
+    colours are strong: chroma >= 80, as the loss's red), done ones with a
+    black tick inside."""
+    for r in desc["robots"]:
+        assert r["lost"] or chroma(r["colour"]) >= 80, f"{r}{context}"
+    for t in desc["task_markers"]:
+        if t["state"] in ("done", "pending"):
+            assert chroma(t["fill"]) <= 10, (f"task {t['id']} ({t['state']}) filled "
+                                             f"{t['fill']}: not a grey{context}")
+    # An OR task without a choice has only its greyed alternatives drawn.
+    done = [t for t in desc["task_markers"] if t["state"] == "done"
+            and (t["kind"] != "choose" or t["choice"] > 0)]
+    assert len(done) >= 2, f"done tasks drawn: {done}{context}"
+    radius = desc["task_radius_px"]
+    shown = 0
+    for t in done:
+        inside = radius - 1.5    # within the grey edge
+        filled = count_near(picture, *t["px"], inside, tuple(t["fill"]), tolerance=12)
+        ticked = count_near(picture, *t["px"], inside, lambda c: max(c) < 100)
+        # The tick covers about a third of the disk; an explore task's start
+        # is a smaller disk (0.6 radius) on its grey line. Robots may stand
+        # on a task they just finished: most, not all, must show.
+        part = 0.2 if t["kind"] == "explore" else 0.3
+        shown += filled >= part * math.pi * inside ** 2 and ticked >= 3
+    assert shown >= 0.6 * len(done), (f"only {shown} of {len(done)} done tasks drawn as done "
+                                      f"(fill {done[0]['fill']} and a black tick){context}")
 
 
 def check_robots_at_truth(picture, desc, truth, moments, context):
@@ -336,6 +386,7 @@ def test_demo_watched_live(tmp_path):
         window = read_png(tmp_path / "window.png")
         context += f"\n(pictures in {tmp_path})"
         # The window: robots at their ground truth, the killed one crossed.
+        check_palette(desc, context)
         check_robots_at_truth(window, desc, truth, (before - 0.4, after), context)
         lost = [r for r in desc["robots"] if r["lost"]]
         assert [r["id"] for r in lost] == [killed], f"lost: {lost}, killed {killed}{context}"
@@ -357,6 +408,7 @@ def test_demo_watched_live(tmp_path):
         sdesc = json.loads((tmp_path / "snapshot.json").read_text())
         assert (picture[0], picture[1]) == SIZE
         check_robots_at_truth(picture, sdesc, truth, (snap_done - 2.0, snap_done), context)
+        check_done_tasks(picture, sdesc, context)
         # The early snapshot (just after the first plan): tours drawn.
         assert early is not None, f"no first plan adopted{context}"
         early_out = end(early, timeout=30)

@@ -12,6 +12,7 @@ with RCL.Graph.Tests;
 with RCL.Logging.Tests;
 with RCL.MCAP.Tests;
 with RCL.MCAP.Writers.Contract_Tests;
+with RCL.Zstd.Tests;
 with RCL.Names.Tests;
 with RCL.Nodes.Tests;
 with RCL.Parameters.Tests;
@@ -65,6 +66,7 @@ package body All_Suites is
       Result.Add_Test (RCL.YAML.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Tests.Suite);
       Result.Add_Test (RCL.MCAP.Writers.Contract_Tests.Suite);
+      Result.Add_Test (RCL.Zstd.Tests.Suite);
       Result.Add_Test (RCL.Parameters.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Tests.Suite);
       Result.Add_Test (Sancta.Allocation.Test_Support.Plan_Tests.Suite);

@@ -4,6 +4,7 @@ with Ada.Containers.Indefinite_Vectors;
 with Ada.Directories;
 with Ada.Environment_Variables;
 with Ada.Exceptions;
+with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
@@ -453,6 +454,7 @@ package body Sancta.Commands.Sim_Team_Demos is
          Has_Pose   : array (1 .. N) of Boolean := [others => False];
          Final_Pose : array (1 .. N) of Pose;
          Next_Rec   : array (1 .. N) of Long_Float := [others => 0.0];
+         Next_Track : array (1 .. N) of Long_Float := [others => 0.0];
          Alive      : array (1 .. N) of Boolean := [others => True];
          Scene      : Rendering.Scene;
          Victim     : Natural := 0;
@@ -465,10 +467,16 @@ package body Sancta.Commands.Sim_Team_Demos is
          Stop_Why   : Unbounded_String;
 
          procedure On_Truth (R : Positive; Msg : ROSIDL.Dynamic.Message) is
+            Qz : constant Long_Float :=
+              Long_Float (ROSIDL.Float64'(Msg ("pose")("orientation")("z").As_Float64));
+            Qw : constant Long_Float :=
+              Long_Float (ROSIDL.Float64'(Msg ("pose")("orientation")("w").As_Float64));
             P : constant Pose :=
               (Real (ROSIDL.Float64'(Msg ("pose")("position")("x").As_Float64)),
                Real (ROSIDL.Float64'(Msg ("pose")("position")("y").As_Float64)),
-               0.0);
+               (if Qz = 0.0 and then Qw = 0.0 then 0.0
+                else Real (2.0 * Ada.Numerics.Long_Elementary_Functions.Arctan (Qz, Qw))));
+            --  Yaw of a rotation about Z (sancta-sim's poses are planar).
             T : constant Long_Float :=
               Long_Float (Sancta.Standard_Components.Robot_Messages.Stamp_Of (Msg ("header")));
          begin
@@ -486,6 +494,10 @@ package body Sancta.Commands.Sim_Team_Demos is
             if T >= Next_Rec (R) then
                Scene.Trajectories (R).Append (Here (R));
                Next_Rec (R) := T + 0.5;
+            end if;
+            if T >= Next_Track (R) then
+               Result.Robots (R).Track.Append (Team_Demos.Track_Sample'(T, P));
+               Next_Track (R) := T + 0.9 * Team_Demos.Track_Period;
             end if;
          end On_Truth;
 
@@ -577,7 +589,8 @@ package body Sancta.Commands.Sim_Team_Demos is
                      begin
                         Seen.Insert (Id, 1);
                         Result.Completions.Append
-                          (Team_Demos.Completion'(T.Id, To_Unbounded_String (Who), Sim_Clock));
+                          (Team_Demos.Completion'(T.Id, To_Unbounded_String (Who), Sim_Clock,
+                                                  others => <>));
                         if R > 0 then
                            Result.Robots (R).Tasks := Result.Robots (R).Tasks + 1;
                         end if;
@@ -804,6 +817,9 @@ package body Sancta.Commands.Sim_Team_Demos is
          for R in 1 .. N loop
             Result.Executed_Total := Result.Executed_Total + Result.Robots (R).Distance;
             Scene.Robots.Append (Final_Pose (R));
+            if not Alive (R) then
+               Scene.Lost.Append (Position (Final_Pose (R)));
+            end if;
          end loop;
          for T of M.Tasks loop
             Scene.Markers.Append
@@ -823,6 +839,7 @@ package body Sancta.Commands.Sim_Team_Demos is
                Result.Orphans.Delete (K);
             end if;
          end loop;
+         Team_Demos.Note_Arrivals (Result, M.Tasks);
          if Dir /= "" then
             Team_Demos.Write_Report (Result, World, Scene, Dir);
          end if;

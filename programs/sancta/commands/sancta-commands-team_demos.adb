@@ -13,7 +13,6 @@ with Sancta.Simulation.Glyphs;
 with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Map_Files;
 with Sancta.Simulation.Simulators;
-with Sancta.Team.Missions;
 with Sancta.Team.Replicated_Databases;
 
 package body Sancta.Commands.Team_Demos is
@@ -66,6 +65,12 @@ package body Sancta.Commands.Team_Demos is
 
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
+   function F2 (X : Long_Float) return String is
+     (Runtime.Values.Real_Image (Long_Float'Rounding (X * 100.0) / 100.0));
+   function F2 (P : Point) return String is
+     (F2 (Long_Float (P.X)) & "," & F2 (Long_Float (P.Y)));
+   --  Metres to the centimetre, as in the unfinished-robot lines.
 
    --  Planned tours as polylines (for the pictures) -------------------------------
 
@@ -167,15 +172,197 @@ package body Sancta.Commands.Team_Demos is
       end loop;
    end Resolve_Orphans;
 
+   -------------------
+   -- Note_Arrivals --
+   -------------------
+
+   procedure Note_Arrivals
+     (Result : in out Demo_Result;
+      Tasks  : Missions.Task_Vectors.Vector)
+   is
+      use type Missions.Task_Kind;
+
+      function Task_Of (Id : Unbounded_String; Found : out Boolean)
+        return Missions.Mission_Task is
+      begin
+         for T of Tasks loop
+            if T.Id = Id then
+               Found := True;
+               return T;
+            end if;
+         end loop;
+         Found := False;
+         return (others => <>);
+      end Task_Of;
+
+      function Moving (A, B : Track_Sample) return Boolean is
+         DT : constant Long_Float := Long_Float'Max (B.Time - A.Time, 1.0E-6);
+      begin
+         return Long_Float (Distance (Position (A.Where), Position (B.Where))) / DT
+                  >= Still_Speed
+           or else abs Long_Float (Normalize_Angle (B.Where.Yaw - A.Where.Yaw)) / DT
+                     >= Still_Turn;
+      end Moving;
+
+      function Stopped_In (R : Positive; From, To : Long_Float) return Long_Float is
+         Sum : Long_Float := 0.0;
+      begin
+         for S of Result.Robots (R).Stops loop
+            Sum := Sum + Long_Float'Max
+              (0.0, Long_Float'Min (S.To, To) - Long_Float'Max (S.From, From));
+         end loop;
+         return Sum;
+      end Stopped_In;
+
+      function Stay_Start
+        (Track : Track_Vectors.Vector; Last : Natural; Since : Long_Float; Where : Point)
+         return Long_Float
+      is
+         --  The start of the last stay within Reach_Radius of Where among
+         --  samples 1 .. Last from Since on; -1.0 when there is none.
+         K : Natural := Last;
+
+         function Near (I : Positive) return Boolean is
+           (Track (I).Time >= Since
+            and then Long_Float (Distance (Position (Track (I).Where), Where)) <= Reach_Radius);
+      begin
+         while K > 0 and then Track (K).Time >= Since and then not Near (K) loop
+            K := K - 1;
+         end loop;
+         if K = 0 or else not Near (K) then
+            return -1.0;
+         end if;
+         while K > 1 and then Near (K - 1) loop
+            K := K - 1;
+         end loop;
+         return Track (K).Time;
+      end Stay_Start;
+   begin
+      Result.Last_Leg := (others => <>);
+      for R in 1 .. Natural (Result.Robots.Length) loop
+         declare
+            Robot : Robot_Summary renames Result.Robots (R);
+            Track : Track_Vectors.Vector renames Robot.Track;
+            Since : Long_Float := Result.Plan_Time;
+            Still : Natural := 0;
+            --  The first sample of the current still run (0: moving).
+         begin
+            Robot.Stops.Clear;
+            for K in 2 .. Natural (Track.Length) loop
+               if not Moving (Track (K - 1), Track (K)) then
+                  if Still = 0 then
+                     Still := K - 1;
+                  end if;
+               else
+                  if Still > 0 and then Track (K - 1).Time - Track (Still).Time >= Min_Stop then
+                     Robot.Stops.Append (Span'(Track (Still).Time, Track (K - 1).Time));
+                  end if;
+                  Still := 0;
+               end if;
+            end loop;
+            if Still > 0 and then Track.Last_Element.Time - Track (Still).Time >= Min_Stop then
+               Robot.Stops.Append (Span'(Track (Still).Time, Track.Last_Element.Time));
+            end if;
+            Robot.Travel := 0.0;
+            Robot.At_Task := 0.0;
+            Robot.Stopped := 0.0;
+            for C of Result.Completions loop
+               if C.Robot = Robot.Id then
+                  declare
+                     Found : Boolean;
+                     T     : constant Missions.Mission_Task := Task_Of (C.Task_Id, Found);
+                     Last  : Natural := 0;
+                     --  The last sample at most Grace after the completion.
+                     Entry_Point : Point;
+                  begin
+                     C.Reached := -1.0;
+                     for K in 1 .. Natural (Track.Length) loop
+                        exit when Track (K).Time > C.Time + Grace;
+                        Last := K;
+                     end loop;
+                     if Found and then Last > 0 and then not T.Points.Is_Empty then
+                        declare
+                           Here : constant Point := Position (Track (Last).Where);
+                           Best : Real := Real'Last;
+                        begin
+                           if T.Kind = Missions.Explore_Segment then
+                              --  Entered at the end away from where it finished.
+                              Entry_Point :=
+                                (if Distance (Here, T.Points.First_Element)
+                                      >= Distance (Here, T.Points.Last_Element)
+                                 then T.Points.First_Element else T.Points.Last_Element);
+                           else
+                              for P of T.Points loop
+                                 if Distance (Here, P) < Best then
+                                    Best := Distance (Here, P);
+                                    Entry_Point := P;
+                                 end if;
+                              end loop;
+                           end if;
+                        end;
+                        C.Reached := Stay_Start (Track, Last, Since, Entry_Point);
+                        if C.Reached >= 0.0 then
+                           C.Reached := Long_Float'Min (C.Reached, C.Time);
+                        end if;
+                     end if;
+                     declare
+                        Reached : constant Long_Float :=
+                          (if C.Reached < 0.0 then C.Time else C.Reached);
+                        Away    : constant Long_Float := Stopped_In (R, Since, Reached);
+                        There   : constant Long_Float := Stopped_In (R, Reached, C.Time);
+                     begin
+                        Robot.Travel := Robot.Travel
+                          + Long_Float'Max (0.0, Reached - Since - Away);
+                        Robot.At_Task := Robot.At_Task
+                          + Long_Float'Max (0.0, C.Time - Reached - There);
+                        Robot.Stopped := Robot.Stopped + Away + There;
+                     end;
+                     Since := Long_Float'Max (Since, C.Time);
+                  end;
+               end if;
+            end loop;
+            if Robot.Id = Result.Killed and then Result.Kill_Time > Since then
+               --  Its last leg: toward (or at) the first task of its tour it
+               --  had not done, entered at any of its points.
+               Result.Last_Leg :=
+                 (Task_Id => (if Result.Orphans.Is_Empty then Null_Unbounded_String
+                              else Result.Orphans.First_Element.Task_Id),
+                  Robot   => Robot.Id,
+                  Time    => Result.Kill_Time,
+                  Reached => -1.0);
+               declare
+                  Found : Boolean;
+                  T     : constant Missions.Mission_Task :=
+                    Task_Of (Result.Last_Leg.Task_Id, Found);
+                  Last  : Natural := 0;
+               begin
+                  for K in 1 .. Natural (Track.Length) loop
+                     exit when Track (K).Time > Result.Kill_Time;
+                     Last := K;
+                  end loop;
+                  if Found then
+                     for P of T.Points loop
+                        Result.Last_Leg.Reached := Long_Float'Max
+                          (Result.Last_Leg.Reached, Stay_Start (Track, Last, Since, P));
+                     end loop;
+                  end if;
+               end;
+            end if;
+         end;
+      end loop;
+   end Note_Arrivals;
+
    -----------------
    -- Write_Gantt --
    -----------------
 
    procedure Write_Gantt (Result : Demo_Result; Dir : String) is
       --  Tasks per robot over simulated time: a bar per task from the
-      --  robot's previous completion (or the first plan) to its own; the
-      --  first plan, the loss of a robot and the re-plan as vertical lines,
-      --  named below the axis. gantt.svg, gantt.png.
+      --  robot's previous completion (or the first plan) to its own, light
+      --  until the robot reached the task, dark from there, grey where it
+      --  stood still (Note_Arrivals); the first plan, the loss of a robot
+      --  and the re-plan as vertical lines, named below the axis.
+      --  gantt.svg, gantt.png.
       package Glyphs renames Sancta.Simulation.Glyphs;
       Rows    : constant Natural := Natural (Result.Robots.Length);
       Left    : constant := 64;
@@ -194,7 +381,14 @@ package body Sancta.Commands.Team_Demos is
         (if Span <= 60.0 then 10.0 elsif Span <= 300.0 then 30.0 else 60.0);
       Replan  : constant Long_Float := Result.Kill_Time + Result.Replan_Sim;
       Red     : constant Raster_Images.Color := (200, 0, 0);
-      Orange  : constant Raster_Images.Color := (230, 130, 0);
+      Replan_Ink : constant Raster_Images.Color := (40, 40, 40);
+      --  Red is the loss's only; robots have the palette's colours.
+      Still_Grey : constant Raster_Images.Color := (160, 160, 160);
+      function Tint (C : Raster_Images.Color) return Raster_Images.Color is
+        ((Raster_Images.Byte ((Natural (C.R) + 255) / 2),
+          Raster_Images.Byte ((Natural (C.G) + 255) / 2),
+          Raster_Images.Byte ((Natural (C.B) + 255) / 2)));
+      --  Half way to white: a bar's travel part.
       Img     : Raster_Images.Image := Raster_Images.Create (Width, Height);
       SVG     : File_Type;
 
@@ -255,12 +449,87 @@ package body Sancta.Commands.Team_Demos is
       --  one letter), else nothing.
 
       procedure Draw_Row (R : Positive; Names : Boolean) is
-         --  Names: only the tasks' names, else the robot, bars, hatching.
+         --  Names: only the tasks' names, else the robot and the bars:
+         --  light from the previous completion to reaching the task
+         --  (travel), dark from there to the completion (at the task),
+         --  grey where the robot stood still.
          Id    : constant String := To_String (Result.Robots (R).Id);
          Color : constant Raster_Images.Color := Rendering.Color_Of (R);
-         Hex   : constant String := Rendering.Hex (Color);
+         Light : constant Raster_Images.Color := Tint (Color);
          Y     : constant Integer := Row_Y (R);
          Since : Long_Float := Result.Plan_Time;
+
+         procedure Bar (C : Completion; Done : Boolean) is
+            --  C's bar from Since; not Done: the lost robot's last leg
+            --  (C.Time its loss, C.Task_Id the task it had not done).
+         begin
+            declare
+               From : constant Long_Float := Long_Float'Min (Since, C.Time);
+               X0   : constant Integer := X_Of (From);
+               X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
+               Name : constant String :=
+                 (if Done then To_String (C.Task_Id)
+                  elsif C.Task_Id = Null_Unbounded_String then "(not done)"
+                  else To_String (C.Task_Id) & " (not done)");
+               PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
+               SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
+               Reached  : constant Long_Float :=
+                 (if C.Reached < 0.0 then C.Time else Long_Float'Max (From, C.Reached));
+
+               procedure Part (T0, T1 : Long_Float; Shade : Raster_Images.Color;
+                               Class : String) is
+                  --  The bar's part from T0 to T1 (within the bar).
+                  P0 : constant Integer := Integer'Max (X0 + 1, X_Of (T0));
+                  P1 : constant Integer := Integer'Min (X1, X_Of (T1));
+               begin
+                  if P1 >= P0 then
+                     Box (P0, Y + 4, P1, Y + Row_H - 4, Shade);
+                     Put_Line (SVG, "<rect class=""" & Class & """ x=""" & Trim (P0)
+                               & """ y=""" & Trim (Y + 4) & """ width="""
+                               & Trim (P1 - P0 + 1) & """ height=""" & Trim (Row_H - 8)
+                               & """ fill=""" & Rendering.Hex (Shade) & """/>");
+                  end if;
+               end Part;
+            begin
+               if not Names then
+                  Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Light);
+                  Put_Line (SVG, "<rect class=""" & (if Done then "task" else "unfinished")
+                            & """ x=""" & Trim (X0 + 1) & """ y="""
+                            & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
+                            & Trim (Row_H - 8) & """ fill=""" & Rendering.Hex (Light)
+                            & """ stroke=""white""><title>" & To_String (C.Task_Id) & ": "
+                            & (if C.Reached < 0.0 then ""
+                               else "reached at " & F1 (Reached) & " s, ")
+                            & (if Done then "done at " else "not done, robot lost at ")
+                            & F1 (C.Time) & " s</title></rect>");
+                  if C.Reached >= 0.0 then
+                     Part (Reached, C.Time, Color, "at-task");
+                  end if;
+                  for S of Result.Robots (R).Stops loop
+                     if S.To > From and then S.From < C.Time then
+                        Part (S.From, S.To, Still_Grey, "stopped");
+                     end if;
+                  end loop;
+               else
+                  --  The task's name inside its bar, cut to fit, in a white
+                  --  outline (a patch would hide the shades under it).
+                  if PNG_Name /= "" then
+                     Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
+                                       Raster_Images.Black, Halo => True);
+                  end if;
+                  if SVG_Name /= "" then
+                     Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
+                               & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
+                               & Trim (SVG_Name'Length * 7) & """ fill=""black"""
+                               & " stroke=""white"" stroke-width=""3"""
+                               & " paint-order=""stroke"""
+                               & " font-size=""11"" font-family=""sans-serif"">"
+                               & SVG_Name & "</text>");
+                  end if;
+               end if;
+               Since := C.Time;
+            end;
+         end Bar;
       begin
          if not Names then
             Glyphs.Draw_Text (Img, 8, Y + Row_H / 2 - 3, Id, Raster_Images.Black, Halo => False);
@@ -269,42 +538,12 @@ package body Sancta.Commands.Team_Demos is
          end if;
          for C of Result.Completions loop
             if To_String (C.Robot) = Id then
-               declare
-                  X0   : constant Integer := X_Of (Long_Float'Min (Since, C.Time));
-                  X1   : constant Integer := Integer'Max (X0 + 2, X_Of (C.Time) - 1);
-                  Name : constant String := To_String (C.Task_Id);
-                  PNG_Name : constant String := Fitted (Name, X1 - X0, Glyphs.Advance);
-                  SVG_Name : constant String := Fitted (Name, X1 - X0, 7);
-               begin
-                  if not Names then
-                     Box (X0 + 1, Y + 4, X1, Y + Row_H - 4, Color);
-                     Put_Line (SVG, "<rect class=""task"" x=""" & Trim (X0 + 1) & """ y="""
-                               & Trim (Y + 4) & """ width=""" & Trim (X1 - X0) & """ height="""
-                               & Trim (Row_H - 8) & """ fill=""" & Hex
-                               & """ stroke=""white""><title>" & Name & " done at "
-                               & F1 (C.Time) & " s</title></rect>");
-                  else
-                     --  The task's name inside its bar, cut to fit.
-                     if PNG_Name /= "" then
-                        Box (X0 + 2, Y + Row_H / 2 - 5,
-                             X0 + 3 + Glyphs.Text_Width (PNG_Name), Y + Row_H / 2 + 5, Color);
-                        Glyphs.Draw_Text (Img, X0 + 3, Y + Row_H / 2 - 3, PNG_Name,
-                                          Raster_Images.White, Halo => False);
-                     end if;
-                     if SVG_Name /= "" then
-                        Put_Line (SVG, "<text class=""label"" x=""" & Trim (X0 + 3)
-                                  & """ y=""" & Trim (Y + Row_H / 2 + 4) & """ data-width="""
-                                  & Trim (SVG_Name'Length * 7) & """ fill=""white"""
-                                  & " stroke=""" & Hex & """ stroke-width=""3"""
-                                  & " paint-order=""stroke"""
-                                  & " font-size=""11"" font-family=""sans-serif"">"
-                                  & SVG_Name & "</text>");
-                     end if;
-                  end if;
-                  Since := C.Time;
-               end;
+               Bar (C, Done => True);
             end if;
          end loop;
+         if To_String (Result.Last_Leg.Robot) = Id and then Result.Last_Leg.Time > Since then
+            Bar (Result.Last_Leg, Done => False);
+         end if;
          if not Names and then Id = To_String (Result.Killed) then
             --  Lost: the rest of its row hatched.
             for X in X_Of (Result.Kill_Time) .. X_Of (Span) loop
@@ -332,6 +571,27 @@ package body Sancta.Commands.Team_Demos is
                 & " simulated time (s)</text>");
       Glyphs.Draw_Text (Img, 8, 8, "Tasks per robot over simulated time (s)", Raster_Images.Black,
                         Halo => False);
+      --  What the shades mean, in the first robot's colours.
+      declare
+         X : Integer := 360;
+
+         procedure Key (Shade : Raster_Images.Color; Text : String) is
+            W : constant Natural := Natural'Max (Glyphs.Text_Width (Text), Text'Length * 7);
+         begin
+            Box (X, 8, X + 15, 15, Shade);
+            Put_Line (SVG, "<rect class=""key"" x=""" & Trim (X) & """ y=""8"" width=""16"""
+                      & " height=""8"" fill=""" & Rendering.Hex (Shade) & """/>");
+            Glyphs.Draw_Text (Img, X + 20, 8, Text, Raster_Images.Black, Halo => False);
+            Put_Line (SVG, "<text class=""legend"" x=""" & Trim (X + 20) & """ y=""17"""
+                      & " data-width=""" & Trim (Text'Length * 7) & """ font-size=""11"""
+                      & " font-family=""sans-serif"">" & Text & "</text>");
+            X := X + 20 + W + 14;
+         end Key;
+      begin
+         Key (Tint (Rendering.Color_Of (1)), "going to the task");
+         Key (Rendering.Color_Of (1), "at the task");
+         Key (Still_Grey, "stopped");
+      end;
       --  Time axis.
       declare
          T : Long_Float := 0.0;
@@ -360,8 +620,7 @@ package body Sancta.Commands.Team_Demos is
          end loop;
       end;
       --  Bars, then the event lines over them, then the bars' names over
-      --  the lines (on a patch of the bar's colour: a line never cuts a
-      --  name).
+      --  the lines (in a white outline: a line never cuts a name).
       for R in 1 .. Rows loop
          Draw_Row (R, Names => False);
       end loop;
@@ -371,7 +630,7 @@ package body Sancta.Commands.Team_Demos is
       if Result.Killed /= Null_Unbounded_String then
          Mark (Result.Kill_Time, Red, To_String (Result.Killed) & " lost", "#c80000");
          if Result.Replanned then
-            Mark (Replan, Orange, "re-planned", "#e68200");
+            Mark (Replan, Replan_Ink, "re-planned", Rendering.Hex (Replan_Ink));
          end if;
       end if;
       for R in 1 .. Rows loop
@@ -406,9 +665,14 @@ package body Sancta.Commands.Team_Demos is
                 Result.Robots (R).Id
                 & (if Result.Robots (R).Id = Result.Killed then " (lost)" else "")));
          end loop;
+         if not S.Lost.Is_Empty then
+            Framed.Legend.Append
+              (Rendering.Legend_Entry'((200, 0, 0), To_Unbounded_String ("x robot lost")));
+         end if;
          if Tasks then
             Framed.Legend.Append
-              (Rendering.Legend_Entry'((200, 0, 0), To_Unbounded_String ("x task>robot")));
+              (Rendering.Legend_Entry'(Raster_Images.Black,
+                                        To_Unbounded_String ("x task>robot")));
          end if;
          Framed.Scale_Bar := True;
          Rendering.Write_SVG (World, Framed, Dir & "/" & Name & ".svg");
@@ -480,7 +744,9 @@ package body Sancta.Commands.Team_Demos is
          begin
             Append (J, "    {""id"": " & Q (To_String (R.Id)) & ", ""tasks"": "
                     & Trim (R.Tasks) & ", ""distance_m"": " & Img (R.Distance)
-                    & ", ""alive"": " & (if R.Alive then "true" else "false") & "}"
+                    & ", ""alive"": " & (if R.Alive then "true" else "false")
+                    & ", ""travel_s"": " & Img (R.Travel) & ", ""at_task_s"": "
+                    & Img (R.At_Task) & ", ""stopped_s"": " & Img (R.Stopped) & "}"
                     & (if K < Natural (Result.Robots.Length) then "," else "") & ASCII.LF);
          end;
       end loop;
@@ -490,8 +756,9 @@ package body Sancta.Commands.Team_Demos is
             C : constant Completion := Result.Completions (K);
          begin
             Append (J, "    {""task"": " & Q (To_String (C.Task_Id)) & ", ""robot"": "
-                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time) & "}"
-                    & (if K < Natural (Result.Completions.Length) then "," else "")
+                    & Q (To_String (C.Robot)) & ", ""time_s"": " & Img (C.Time)
+                    & (if C.Reached < 0.0 then "" else ", ""reached_s"": " & Img (C.Reached))
+                    & "}" & (if K < Natural (Result.Completions.Length) then "," else "")
                     & ASCII.LF);
          end;
       end loop;
@@ -516,12 +783,17 @@ package body Sancta.Commands.Team_Demos is
       Put_Line ("tasks done:" & Result.Tasks_Done'Image & " /" & Result.Tasks_Total'Image
                 & (if Result.All_Done then "  (all done)" else "  (NOT all done)")
                 & "; completed more than once:" & Result.Duplicates'Image);
-      Put_Line ("robot       tasks   distance (m)");
+      Put_Line ("robot       tasks   distance (m)   going (s)   at tasks (s)   stopped (s)");
       for R of Result.Robots loop
          Put_Line (Ada.Strings.Fixed.Head (To_String (R.Id) & (if R.Alive then "" else " (lost)"),
                    12) & Ada.Strings.Fixed.Tail (Trim (R.Tasks), 5) & "   "
-                   & Ada.Strings.Fixed.Tail (F1 (R.Distance), 10));
+                   & Ada.Strings.Fixed.Tail (F1 (R.Distance), 12)
+                   & Ada.Strings.Fixed.Tail (F1 (R.Travel), 12)
+                   & Ada.Strings.Fixed.Tail (F1 (R.At_Task), 15)
+                   & Ada.Strings.Fixed.Tail (F1 (R.Stopped), 14));
       end loop;
+      Put_Line ("(going, at tasks, stopped: from the first plan to the robot's last task done;"
+                & " gantt.png)");
       Put_Line ("makespan: " & F1 (Result.Makespan) & " s simulated, from the start to the last"
                 & " task done (first plan at " & F1 (Result.Plan_Time) & " s)");
       if Result.Killed /= Null_Unbounded_String then
@@ -621,6 +893,7 @@ package body Sancta.Commands.Team_Demos is
          Nav_Goal   : array (1 .. N) of Point := [others => (Real'Last, Real'Last)];
          Last_Pos   : array (1 .. N) of Point;
          Next_Pose  : Long_Float := 0.0;
+         Next_Track : array (1 .. N) of Long_Float := [others => 0.0];
          Next_Rec   : Long_Float := 0.0;
          Next_Print : Long_Float := 0.0;
          Alive      : array (1 .. N) of Boolean := [others => True];
@@ -679,7 +952,7 @@ package body Sancta.Commands.Team_Demos is
          procedure Record_Completion (R : Positive; Task_Id : Unbounded_String) is
          begin
             Result.Completions.Append
-              (Completion'(Task_Id, M.Robots (R).Id, Long_Float (Sim.Clock)));
+              (Completion'(Task_Id, M.Robots (R).Id, Long_Float (Sim.Clock), others => <>));
             Result.Robots (R).Tasks := Result.Robots (R).Tasks + 1;
             for T in 1 .. Natural (M.Tasks.Length) loop
                if M.Tasks (T).Id = Task_Id then
@@ -827,6 +1100,58 @@ package body Sancta.Commands.Team_Demos is
             end if;
          end Stop_All;
 
+         procedure Report_Unfinished is
+            --  The mission ran out of time: where each robot with a task
+            --  left stands, what it heads for, how far it moved in the last
+            --  60 s (the trajectory keeps a point every 0.5 s) and the
+            --  nearest other robot, so that a stall can be told from a slow
+            --  robot.
+         begin
+            for R in 1 .. N loop
+               if Alive (R) then
+                  declare
+                     Found : Boolean;
+                     Goal  : Point;
+                     Tid   : Unbounded_String;
+                     Here  : constant Point := Position (Sim.Ground_Truth (Robot_Id (R)).Pose);
+                     Path  : Rendering.Point_Vectors.Vector renames Scene.Trajectories (R);
+                     Moved : Long_Float := 0.0;
+                     Near  : Long_Float := Long_Float'Last;
+                     Who   : Natural := 0;
+                  begin
+                     Agent_List (R).Current_Goal (Found, Goal, Tid);
+                     if Found then
+                        for K in Integer'Max (Path.First_Index + 1, Path.Last_Index - 119)
+                                 .. Path.Last_Index
+                        loop
+                           Moved := Moved + Long_Float (Distance (Path (K - 1), Path (K)));
+                        end loop;
+                        for O in 1 .. N loop
+                           if O /= R and then Alive (O) and then Long_Float
+                             (Distance (Here, Position (Sim.Ground_Truth (Robot_Id (O)).Pose)))
+                             < Near
+                           then
+                              Near := Long_Float (Distance
+                                (Here, Position (Sim.Ground_Truth (Robot_Id (O)).Pose)));
+                              Who := O;
+                           end if;
+                        end loop;
+                        Put_Line
+                          ("t=" & F1 (Long_Float (Sim.Clock)) & " s  unfinished: "
+                           & To_String (M.Robots (R).Id) & " on " & To_String (Tid) & " at "
+                           & F2 (Here) & " heading for " & F2 (Navs (R).Waypoint)
+                           & (if Navs (R).Has_Path then " (A* path to " else " (no path to ")
+                           & F2 (Goal) & "), moved " & F1 (Moved) & " m in the last 60 s"
+                           & (if Who = 0 then ""
+                              else ", nearest robot " & To_String (M.Robots (Who).Id) & " at "
+                                   & F2 (Position (Sim.Ground_Truth (Robot_Id (Who)).Pose))
+                                   & " (" & F2 (Near) & " m)"));
+                     end if;
+                  end;
+               end if;
+            end loop;
+         end Report_Unfinished;
+
          function Choose_Victim return Positive is
             Best   : Positive := 1;
             Most   : Integer := -1;
@@ -927,6 +1252,11 @@ package body Sancta.Commands.Team_Demos is
                         if Long_Float (Sim.Clock) >= Next_Rec then
                            Scene.Trajectories (R).Append (Here);
                         end if;
+                        if Long_Float (Sim.Clock) >= Next_Track (R) then
+                           Result.Robots (R).Track.Append
+                             (Track_Sample'(Long_Float (Sim.Clock), Truth));
+                           Next_Track (R) := Long_Float (Sim.Clock) + 0.9 * Track_Period;
+                        end if;
                      end;
                   end if;
                end loop;
@@ -1007,6 +1337,9 @@ package body Sancta.Commands.Team_Demos is
             Put_Line ("demo: interrupted (SIGINT or SIGTERM) at" & Integer (Sim.Clock)'Image
                       & " s (simulated): stopping the agents");
          end if;
+         if not Operator.All_Done and then not RCL.Contexts.Is_Shutdown then
+            Report_Unfinished;
+         end if;
          Result.Makespan := Long_Float (Sim.Clock);
          declare
             Give_Up : constant Ada.Real_Time.Time :=
@@ -1033,6 +1366,9 @@ package body Sancta.Commands.Team_Demos is
             Result.Executed_Total := Result.Executed_Total + Result.Robots (R).Distance;
             Result.Collisions := Result.Collisions + Sim.Collision_Count (Robot_Id (R));
             Scene.Robots.Append (Sim.Ground_Truth (Robot_Id (R)).Pose);
+            if not Alive (R) then
+               Scene.Lost.Append (Position (Sim.Ground_Truth (Robot_Id (R)).Pose));
+            end if;
          end loop;
          for T of M.Tasks loop
             Scene.Markers.Append
@@ -1042,6 +1378,7 @@ package body Sancta.Commands.Team_Demos is
          end loop;
          Stop_All;
          Resolve_Orphans (Result);
+         Note_Arrivals (Result, M.Tasks);
          if Config.Run.Out_Dir /= Null_Unbounded_String then
             Write_Report (Result, World, Scene, To_String (Config.Run.Out_Dir));
          end if;

@@ -15,6 +15,7 @@ with Sancta.Robot.Path_Costs;
 with Sancta.Simulation.Rendering;
 with Sancta.Simulation.Worlds;
 with Sancta.Team.Agents;
+with Sancta.Team.Missions;
 with Sancta.Team.Plans;
 with Sancta.Team;
 use Sancta.Team;  --  the team library's units by their short names (Agents, Plans, ...)
@@ -75,14 +76,44 @@ package Sancta.Commands.Team_Demos is
       Task_Id : Unbounded_String;
       Robot   : Unbounded_String;
       Time    : Long_Float := 0.0;
+      Reached : Long_Float := -1.0;
+      --  When the robot reached the task (arrived at its point, or at the
+      --  end of the segment it explored from); negative: not known. Set by
+      --  Note_Arrivals.
    end record;
    package Completion_Vectors is new Ada.Containers.Vectors (Positive, Completion);
+
+   type Track_Sample is record
+      Time  : Long_Float := 0.0;
+      Where : Sancta.Geometry.Pose;
+   end record;
+   package Track_Vectors is new Ada.Containers.Vectors (Positive, Track_Sample);
+
+   Track_Period : constant Long_Float := 0.1;
+   --  Simulated seconds between two samples of a robot's track (sancta-sim
+   --  publishes ground truth every 0.1 s: every pose it sends). A sample
+   --  is taken when 0.9 periods have passed since the last, so that a
+   --  rounding error never skips one.
+
+   type Span is record
+      From, To : Long_Float := 0.0;
+   end record;
+   package Span_Vectors is new Ada.Containers.Vectors (Positive, Span);
 
    type Robot_Summary is record
       Id       : Unbounded_String;
       Tasks    : Natural := 0;
       Distance : Long_Float := 0.0;
       Alive    : Boolean := True;
+      Track    : Track_Vectors.Vector;
+      --  Ground-truth poses every Track_Period (until the robot's loss).
+      Stops    : Span_Vectors.Vector;
+      --  Spans of at least Min_Stop seconds in which it did not move
+      --  (Note_Arrivals).
+      Travel, At_Task, Stopped : Long_Float := 0.0;
+      --  Seconds from the first plan to its last completion: going to its
+      --  tasks, at them (from reaching a task to its completion: along an
+      --  explored segment), not moving (out of the other two).
    end record;
    package Robot_Summary_Vectors is new Ada.Containers.Vectors (Positive, Robot_Summary);
 
@@ -132,6 +163,11 @@ package Sancta.Commands.Team_Demos is
       --  The killed robot's tasks not done at the kill (its tour in the
       --  plan before the loss), each with the robot that finally did it
       --  (Resolve_Orphans; empty Robot: nobody).
+      Last_Leg        : Completion;
+      --  The killed robot from its last completion (or the first plan) to
+      --  its loss (Time): Task_Id the first of its Orphans (the task it was
+      --  going to or at; empty: none), Reached as for a completion
+      --  (Note_Arrivals; empty Robot: no such leg).
    end record;
 
    function Unfinished
@@ -151,6 +187,29 @@ package Sancta.Commands.Team_Demos is
 
    procedure Resolve_Orphans (Result : in out Demo_Result);
    --  Fills each orphan's Robot and Time from Result.Completions.
+
+   Reach_Radius : constant Long_Float := 0.5;
+   --  Metres from a task's point at which a robot counts as there (the
+   --  team members' arrival tolerance is 0.35 m).
+   Min_Stop     : constant Long_Float := 1.0;
+   Still_Speed  : constant Long_Float := 0.05;
+   Still_Turn   : constant Long_Float := 0.1;
+   --  A robot is stopped while it moves slower than Still_Speed m/s and
+   --  turns slower than Still_Turn rad/s, for Min_Stop seconds or more.
+
+   procedure Note_Arrivals
+     (Result : in out Demo_Result;
+      Tasks  : Missions.Task_Vectors.Vector);
+   --  From each robot's Track: its Stops, each completion's Reached (the
+   --  start of the last stay within Reach_Radius of the task's entry
+   --  point (for a segment, the end away from where it finished; for a
+   --  choice, the point nearest to it) after the robot's previous
+   --  completion or the first plan, up to Grace seconds after the
+   --  completion: the observer may hear of a completion before the pose
+   --  that made it), and its Travel, At_Task, Stopped; Last_Leg (call
+   --  after Resolve_Orphans).
+
+   Grace : constant Long_Float := 0.5;
 
    function Planned_Scene
      (S   : Plans.Snapshot;

@@ -1,3 +1,4 @@
+with Ada.Characters.Handling;
 with Ada.Containers;
 with Ada.Numerics;
 with Ada.Numerics.Generic_Elementary_Functions;
@@ -10,9 +11,13 @@ with Cairo.Png;
 with GNAT.OS_Lib;
 with Glib;
 with Sancta.Robot.Grids;
+with Sancta.Simulation.Raster_Images;
 with Sancta.Simulation.Rendering;
 
 package body Sancta.Views.Drawing is
+
+   package Raster_Images renames Sancta.Simulation.Raster_Images;
+   package Rendering renames Sancta.Simulation.Rendering;
 
    use Cairo;
    use Glib;
@@ -22,29 +27,27 @@ package body Sancta.Views.Drawing is
 
    package Math is new Ada.Numerics.Generic_Elementary_Functions (Real);
 
-   Blue   : constant RGB := (0.12, 0.47, 0.71);
-   Orange : constant RGB := (1.00, 0.50, 0.05);
-   Purple : constant RGB := (0.58, 0.25, 0.75);
-   Cyan   : constant RGB := (0.00, 0.70, 0.80);
-   Brown  : constant RGB := (0.55, 0.34, 0.29);
-   Pink   : constant RGB := (0.89, 0.40, 0.76);
-   Olive  : constant RGB := (0.60, 0.60, 0.00);
-   Navy   : constant RGB := (0.15, 0.15, 0.55);
-   Teal   : constant RGB := (0.00, 0.50, 0.50);
-   Gold   : constant RGB := (0.85, 0.70, 0.00);
-   Palette : constant array (0 .. 9) of RGB :=
-     [Blue, Orange, Purple, Cyan, Brown, Pink, Olive, Navy, Teal, Gold];
-   --  No red (lost robots are crossed in red), no green (tasks done).
+   function To_RGB (C : Raster_Images.Color) return RGB is
+     ((Float (C.R) / 255.0, Float (C.G) / 255.0, Float (C.B) / 255.0));
 
    function Colour_Of (Index : Natural) return RGB is
-     (Palette ((if Index = 0 then 0 else (Index - 1) mod 10)));
+     (To_RGB (Rendering.Color_Of (Positive'Max (1, Index))));
+   --  The report pictures' palette: robot 3 is the same bluish green in
+   --  the view and in gantt.png (it was purple here, green there).
 
-   Lost_Mark   : constant RGB := (0.90, 0.00, 0.00);
-   Done_Colour : constant RGB := (0.15, 0.60, 0.20);
-   Pending     : constant RGB := (0.50, 0.50, 0.50);
-   Greyed      : constant RGB := (0.78, 0.78, 0.78);
-   Realloc     : constant RGB := (1.00, 0.55, 0.00);
-   Ink         : constant RGB := (0.10, 0.10, 0.10);
+   Lost_Mark : constant RGB := To_RGB (Rendering.Loss_Color);
+   Ink       : constant RGB := (0.10, 0.10, 0.10);
+
+   --  Task states in greys and black only: every hue is a robot's (the
+   --  palette's ten) or the loss's red. Pending: white, grey edge;
+   --  assigned: white, the robot's edge; under way: the robot's fill;
+   --  done: light grey with a black tick; re-allocated (its robot lost):
+   --  the new robot's colour in a dashed black ring.
+   Pending   : constant RGB := (0.50, 0.50, 0.50);
+   Done_Fill : constant RGB := (0.75, 0.75, 0.75);
+   Done_Edge : constant RGB := (0.45, 0.45, 0.45);
+   Greyed    : constant RGB := (0.78, 0.78, 0.78);
+   Realloc   : RGB renames Ink;
 
    function Robot_Colour (S : Scene; Id : String) return RGB is
      (if S.Robots.Contains (Id) then Colour_Of (S.Robots (Id).Colour) else Pending);
@@ -290,8 +293,19 @@ package body Sancta.Views.Drawing is
    function State_Colour (S : Scene; T : Task_View) return RGB is
      (case T.State is
          when Scenes.Pending               => Pending,
-         when Done                         => Done_Colour,
+         when Done                         => Done_Fill,
          when Assigned | Active | Reallocated => Robot_Colour (S, To_String (T.Robot)));
+
+   procedure Tick (Cr : Cairo_Context; Centre : Pixel; Radius : Gdouble) is
+      --  A done task's check mark, black, inside its marker.
+   begin
+      Move_To (Cr, Centre.X - 0.55 * Radius, Centre.Y);
+      Line_To (Cr, Centre.X - 0.15 * Radius, Centre.Y + 0.45 * Radius);
+      Line_To (Cr, Centre.X + 0.6 * Radius, Centre.Y - 0.5 * Radius);
+      Set (Cr, Ink);
+      Set_Line_Width (Cr, Gdouble'Max (1.5, 0.3 * Radius));
+      Stroke (Cr);
+   end Tick;
 
    function Task_Radius (Tr : Transform) return Gdouble is
      (Gdouble (Real'Max (5.0, 0.22 * Tr.Scale)));
@@ -319,9 +333,12 @@ package body Sancta.Views.Drawing is
          end if;
          Set (Cr, (if Fill_It then Colour else (1.0, 1.0, 1.0)));
          Fill_Preserve (Cr);
-         Set (Cr, Colour);
+         Set (Cr, (if Colour = Done_Fill then Done_Edge else Colour));
          Set_Line_Width (Cr, 2.0);
          Stroke (Cr);
+         if Colour = Done_Fill then
+            Tick (Cr, P, Radius);
+         end if;
       end Marker;
    begin
       Set_Dash (Cr, No_Dashes, 0.0);
@@ -352,6 +369,9 @@ package body Sancta.Views.Drawing is
             Circle (Cr, B, Radius * 0.6);
             Set (Cr, C);
             Fill (Cr);
+            if T.State = Done then
+               Tick (Cr, A, Radius);
+            end if;
          end;
       elsif Kind = "choose" then
          for K in 1 .. Natural (T.Points.Length) loop
@@ -371,8 +391,10 @@ package body Sancta.Views.Drawing is
       if T.State = Reallocated then
          Circle (Cr, Px (Tr, Entry_Of (T, T.Choice)), Radius + 3.0);
          Set (Cr, Realloc);
-         Set_Line_Width (Cr, 2.5);
+         Set_Line_Width (Cr, 2.0);
+         Set_Dash (Cr, [3.0, 2.0], 0.0);
          Stroke (Cr);
+         Set_Dash (Cr, No_Dashes, 0.0);
       end if;
       Text (Cr, Where.X + Radius + 2.0, Where.Y - Radius, To_String (T.Id), Task_Text,
             Colour => (0.25, 0.25, 0.25), Halo => True);
@@ -655,28 +677,52 @@ package body Sancta.Views.Drawing is
       Y := Y + 6.0;
       Row ("tasks", 12.0, Bold => True);
       declare
-         Items : constant array (1 .. 6) of Unbounded_String :=
+         Items : constant array (1 .. 7) of Unbounded_String :=
            [To_Unbounded_String ("pending"), To_Unbounded_String ("assigned (robot's colour)"),
             To_Unbounded_String ("under way"), To_Unbounded_String ("done"),
-            To_Unbounded_String ("re-allocated"),
-            To_Unbounded_String ("OR alternative not chosen")];
+            To_Unbounded_String ("re-allocated (its robot lost)"),
+            To_Unbounded_String ("OR alternative not chosen"),
+            To_Unbounded_String ("robot lost (last pose seen)")];
+         function Here return Pixel is ((X + 6.0, Y - 5.0));
+         --  The centre of this row's round swatch.
       begin
          for K in Items'Range loop
             case K is
                when 1 => Swatch (Cr, X, Y, (1.0, 1.0, 1.0), Round => True);
+                  Circle (Cr, Here, 6.0);
+                  Set (Cr, Pending);
+                  Set_Line_Width (Cr, 2.0);
+                  Stroke (Cr);
                when 2 => Swatch (Cr, X, Y, (1.0, 1.0, 1.0), Round => True);
-                  Circle (Cr, (X + 6.0, Y - 5.0), 6.0);
+                  Circle (Cr, Here, 6.0);
                   Set (Cr, Colour_Of (1));
                   Set_Line_Width (Cr, 2.0);
                   Stroke (Cr);
                when 3 => Swatch (Cr, X, Y, Colour_Of (1), Round => True);
-               when 4 => Swatch (Cr, X, Y, Done_Colour, Round => True);
+               when 4 => Swatch (Cr, X, Y, Done_Fill, Round => True);
+                  Tick (Cr, Here, 6.0);
                when 5 => Swatch (Cr, X, Y, Colour_Of (1), Round => True);
-                  Circle (Cr, (X + 6.0, Y - 5.0), 8.0);
+                  Circle (Cr, Here, 9.0);
                   Set (Cr, Realloc);
                   Set_Line_Width (Cr, 2.0);
+                  Set_Dash (Cr, [3.0, 2.0], 0.0);
                   Stroke (Cr);
-               when others => Swatch (Cr, X, Y, Greyed);
+                  Set_Dash (Cr, No_Dashes, 0.0);
+               when 6 =>
+                  Set_Dash (Cr, [3.0, 3.0], 0.0);
+                  Rectangle (Cr, X, Y - 11.0, 12.0, 12.0);
+                  Set (Cr, Greyed);
+                  Set_Line_Width (Cr, 2.0);
+                  Stroke (Cr);
+                  Set_Dash (Cr, No_Dashes, 0.0);
+               when others => Swatch (Cr, X, Y, Lost_Colour, Round => True);
+                  Set (Cr, Lost_Mark);
+                  Set_Line_Width (Cr, 2.5);
+                  Line (Cr, (Here.X - 7.0, Here.Y - 7.0),
+                        (Here.X + 7.0, Here.Y + 7.0));
+                  Line (Cr, (Here.X - 7.0, Here.Y + 7.0),
+                        (Here.X + 7.0, Here.Y - 7.0));
+                  Stroke (Cr);
             end case;
             Text (Cr, X + 20.0, Y, To_String (Items (K)), 11.0);
             Y := Y + 16.0;
@@ -823,6 +869,23 @@ package body Sancta.Views.Drawing is
       function Num (X : Gdouble) return String is (Num (Real (X)));
       function Signed (X : Real) return String renames Num;
       function Channel (V : Float) return String is (Trim (Integer (V * 255.0)));
+
+      function Escaped (Words : String) return String is
+         --  A JSON string's content: quotes and backslashes escaped, other
+         --  control characters as '?' (ids come from the wire).
+         Result : Unbounded_String;
+      begin
+         for C of Words loop
+            if C = '"' or else C = '\' then
+               Append (Result, '\' & C);
+            elsif C < ' ' then
+               Append (Result, '?');
+            else
+               Append (Result, C);
+            end if;
+         end loop;
+         return To_String (Result);
+      end Escaped;
       Part : constant String := File_Name & ".part";
       --  Written whole, then renamed over File_Name: the window rewrites it
       --  at every frame, and a reader must never see half of it.
@@ -844,7 +907,7 @@ package body Sancta.Views.Drawing is
             P    : constant Pixel := Px (Shift, Position (R.Where));
             Tour : constant Point_Vectors.Vector := Tour_Points (S, R);
          begin
-            Put (F, (if First then "  " else " ,") & "{""id"": """ & To_String (R.Id)
+            Put (F, (if First then "  " else " ,") & "{""id"": """ & Escaped (To_String (R.Id))
                  & """, ""lost"": " & (if R.Lost then "true" else "false")
                  & ", ""colour"": [" & Channel (C.R) & ", " & Channel (C.G) & ", "
                  & Channel (C.B) & "], ""x"": " & Signed (R.Where.X) & ", ""y"": "
@@ -858,6 +921,28 @@ package body Sancta.Views.Drawing is
                end loop;
             end if;
             Put_Line (F, "]}");
+            First := False;
+         end;
+      end loop;
+      Put_Line (F, " ],");
+      Put_Line (F, " ""loss_colour"": [" & Channel (Lost_Mark.R) & ", " & Channel (Lost_Mark.G)
+                & ", " & Channel (Lost_Mark.B) & "], ""task_radius_px"": "
+                & Num (Task_Radius (T)) & ",");
+      Put_Line (F, " ""task_markers"": [");
+      First := True;
+      for Task_Item of S.Tasks loop
+         declare
+            C : constant RGB := State_Colour (S, Task_Item);
+            P : constant Pixel := Px (Shift, Entry_Of (Task_Item, Task_Item.Choice));
+         begin
+            Put_Line (F, (if First then "  " else " ,") & "{""id"": """
+                      & Escaped (To_String (Task_Item.Id)) & """, ""kind"": """
+                      & Escaped (To_String (Task_Item.Kind)) & """, ""choice"": "
+                      & Trim (Task_Item.Choice) & ", ""state"": """
+                      & Ada.Characters.Handling.To_Lower (Task_Item.State'Image)
+                      & """, ""fill"": [" & Channel (C.R) & ", " & Channel (C.G) & ", "
+                      & Channel (C.B) & "], ""px"": [" & Signed (Real (P.X)) & ", "
+                      & Signed (Real (P.Y)) & "]}");
             First := False;
          end;
       end loop;

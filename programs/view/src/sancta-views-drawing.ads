@@ -22,8 +22,12 @@ package Sancta.Views.Drawing is
    end record;
 
    function Colour_Of (Index : Natural) return RGB;
-   --  The palette (ten strong colours, cycling); a robot's colour is
-   --  Colour_Of (Scenes.Colour_Index (Id)).
+   --  The report pictures' palette (Sancta.Simulation.Rendering.Color_Of:
+   --  ten colours, cycling; 0 reads as 1): robot "r3" has the same colour
+   --  here as in gantt.png. A robot's colour is Colour_Of
+   --  (Scenes.Colour_Index (Id)). Task states are drawn in greys and black
+   --  (no hue of a robot nor the loss's red), explained by the panel's
+   --  legend.
 
    Lost_Colour : constant RGB := (0.55, 0.55, 0.55);
 
@@ -81,8 +85,11 @@ package Sancta.Views.Drawing is
       Offset_Y  : Real := 0.0);
    --  What was drawn, as JSON (for tests and reports): the transform (with
    --  Offset, the drawing's position in a larger picture), each robot's
-   --  colour, state, pose and pixel, its tour's pixel polyline, and the
-   --  team figures. Written to File_Name & ".part", then renamed: a reader
-   --  never sees a half-written file.
+   --  colour, state, pose and pixel, its tour's pixel polyline, the team
+   --  figures, the red of a loss, and each task's kind, choice, state,
+   --  fill colour and marker centre (pixel; an explore task's: the end it
+   --  starts from; an OR task's: its choice's, the first when none).
+   --  Written to File_Name & ".part", then renamed: a reader never sees a
+   --  half-written file.
 
 end Sancta.Views.Drawing;

@@ -44,12 +44,14 @@ package body RCL.Bags.Recorders is
       Compression    : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes      : Interfaces.Unsigned_64 := 0;
       Max_Duration   : Duration := 0.0;
-      Include_Hidden : Boolean := False) is
+      Include_Hidden : Boolean := False;
+      Mode           : Bag_Compression := No_Compression) is
    begin
       if This.Shared = null then
          This.Shared := new State;
       end if;
-      This.Shared.Bag.Create (Output, Compression, Max_Bytes, Max_Duration, Background => True);
+      This.Shared.Bag.Create (Output, Compression, Max_Bytes, Max_Duration, Background => True,
+                              Mode => Mode);
       This.Shared.Recording := True;
       This.Shared.Count := 0;
       This.Wanted.Clear;

@@ -37,10 +37,12 @@ package RCL.Bags.Recorders is
       Compression    : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes      : Interfaces.Unsigned_64 := 0;
       Max_Duration   : Duration := 0.0;
-      Include_Hidden : Boolean := False);
+      Include_Hidden : Boolean := False;
+      Mode           : Bag_Compression := No_Compression);
    --  Creates the bag (Bag_Error when Output exists). Topics: names to
    --  record (relative ones are made absolute); empty: every topic except
    --  hidden ones (a name part starting with '_') unless Include_Hidden.
+   --  Mode: rosbag2's zstd compression of files or messages (Create).
 
    procedure Discover (This : in out Recorder; Node : in out RCL.Nodes.Node'Class);
    --  Subscribes Node to each wanted topic that has a publisher on the graph

@@ -1,14 +1,19 @@
 with Ada.Calendar.Formatting;
+with Ada.Characters.Handling;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Containers.Ordered_Maps;
 with Ada.Directories;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Fixed;
+with Ada.Strings.Maps;
 with Ada.Text_IO;
+with Interfaces.C.Strings;
 with ROSIDL.Definitions.Rendering;
 with ROSIDL.Interfaces;
 with ROSIDL.YAML_Strings;
+with RCL.Contexts;
 with RCL.Names;
 with RCL.SQLite;
 with RCL.YAML;
@@ -271,7 +276,8 @@ package body RCL.Bags is
       This.Files.Append
         (File_Entry'(Name => To_Unbounded_String
                        (Ada.Directories.Simple_Name (File_Path (This, Index))),
-                     First => 0, Last => 0, Count => 0, Storage => MCAP_Storage));
+                     First => 0, Last => 0, Count => 0, Storage => MCAP_Storage,
+                     Whole_Zstd => False));
       This.Schema_Types.Clear;
       for T of This.Topics loop
          T.Channel := 0;
@@ -309,13 +315,34 @@ package body RCL.Bags is
       T.Channel := This.File.Add_Channel (To_String (T.Name), Schema, "cdr", Meta);
    end Ensure_Channel;
 
+   procedure Close_File (This : in out Bag_Writer) is
+      --  The current file closed; with File_Compression, compressed whole
+      --  (name.mcap.zstd, as rosbag2) and the uncompressed one deleted.
+      Last : File_Entry renames This.Files (This.Files.Last_Index);
+      Path : constant String := File_Path (This, This.Files.Last_Index);
+   begin
+      This.File.Close;
+      if This.Mode = File_Compression then
+         begin
+            RCL.Zstd.Compress_File (Path, Path & ".zstd");
+         exception
+            when E : others =>
+               raise Bag_Error with Path & ": cannot compress into " & Path & ".zstd: "
+                 & Ada.Exceptions.Exception_Message (E);
+         end;
+         Ada.Directories.Delete_File (Path);
+         Last.Name := Last.Name & ".zstd";
+      end if;
+   end Close_File;
+
    procedure Create
      (This         : in out Bag_Writer;
       Directory    : String;
       Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes    : Interfaces.Unsigned_64 := 0;
       Max_Duration : Duration := 0.0;
-      Background   : Boolean := False) is
+      Background   : Boolean := False;
+      Mode         : Bag_Compression := No_Compression) is
    begin
       if Ada.Directories.Exists (Directory) then
          raise Bag_Error with Directory & ": the output directory exists already (choose "
@@ -330,6 +357,7 @@ package body RCL.Bags is
       This.Directory := To_Unbounded_String (Directory);
       This.Compression := Compression;
       This.Background := Background;
+      This.Mode := Mode;
       This.Max_Bytes := Max_Bytes;
       This.Max_Span := Time_Stamp (Max_Duration * 1_000_000_000);
       This.Files.Clear;
@@ -371,13 +399,25 @@ package body RCL.Bags is
                               and then Receive_Time >= Current.First
                               and then Receive_Time - Current.First >= This.Max_Span))
          then
-            This.File.Close;
+            Close_File (This);
             Start_File (This);
          end if;
       end;
       Ensure_Channel (This, Topic);
-      This.File.Write (This.Topics (Topic).Channel, Receive_Time, Data,
-                       Publish_Time => Publish_Time);
+      if This.Mode = Message_Compression then
+         declare
+            procedure Put (Frame : RCL.MCAP.Byte_Array) is
+            begin
+               This.File.Write (This.Topics (Topic).Channel, Receive_Time, Frame,
+                                Publish_Time => Publish_Time);
+            end Put;
+         begin
+            This.Zipper.Compress (Data, Put'Access);
+         end;
+      else
+         This.File.Write (This.Topics (Topic).Channel, Receive_Time, Data,
+                          Publish_Time => Publish_Time);
+      end if;
       declare
          Current : File_Entry renames This.Files (This.Files.Last_Index);
          T       : Topic_Entry renames This.Topics (Topic);
@@ -429,8 +469,17 @@ package body RCL.Bags is
                    & ROSIDL.YAML_Strings.Double_Quoted (To_String (T.QoS_Text)));
          Put_Line (F, "      message_count: " & Image (T.Count));
       end loop;
-      Put_Line (F, "  compression_format: """"");
-      Put_Line (F, "  compression_mode: """"");
+      case This.Mode is
+         when No_Compression =>
+            Put_Line (F, "  compression_format: """"");
+            Put_Line (F, "  compression_mode: """"");
+         when File_Compression =>
+            Put_Line (F, "  compression_format: zstd");
+            Put_Line (F, "  compression_mode: FILE");
+         when Message_Compression =>
+            Put_Line (F, "  compression_format: zstd");
+            Put_Line (F, "  compression_mode: MESSAGE");
+      end case;
       Put_Line (F, "  relative_file_paths:");
       for E of This.Files loop
          Put_Line (F, "    - " & To_String (E.Name));
@@ -451,7 +500,7 @@ package body RCL.Bags is
    begin
       if This.Open then
          This.Open := False;
-         This.File.Close;
+         Close_File (This);
          Write_Metadata (This);
       end if;
    end Close;
@@ -476,13 +525,15 @@ package body RCL.Bags is
    end Find_Topic;
 
    function Listed_Files
-     (Directory : String; Warning : out Unbounded_String) return Type_Vectors.Vector
+     (Directory : String; Warning : out Unbounded_String; Mode : out Compression_Mode)
+      return Type_Vectors.Vector
    is
       use Ada.Directories;
       Result : Type_Vectors.Vector;
       Meta   : constant String := Compose (Directory, "metadata.yaml");
    begin
       Warning := Null_Unbounded_String;
+      Mode := Not_Said;
       if Exists (Meta) then
          begin
             declare
@@ -491,7 +542,45 @@ package body RCL.Bags is
                Info  : constant Natural := D.Find (D.Root, "rosbag2_bagfile_information");
                Paths : constant Natural :=
                  (if Info /= 0 then D.Find (Info, "relative_file_paths") else 0);
+               function Field (Key : String) return String is
+                  --  compression_mode or _format: "" when absent or empty.
+                  N : constant Natural := (if Info /= 0 then D.Find (Info, Key) else 0);
+               begin
+                  if N = 0 or else D.Kind (N) = Null_Value then
+                     return "";
+                  elsif D.Kind (N) /= Scalar then
+                     raise Bag_Error with D.Where (N) & ": " & Key
+                       & ": expected a word (file, message, zstd...)";
+                  end if;
+                  return Ada.Characters.Handling.To_Lower (D.Text (N));
+               end Field;
+               Mode_Text   : constant String := Field ("compression_mode");
+               Format_Text : constant String := Field ("compression_format");
+               Mode_At     : constant String :=
+                 (if Info /= 0 and then D.Find (Info, "compression_mode") /= 0
+                  then D.Where (D.Find (Info, "compression_mode")) else Meta);
             begin
+               if Mode_Text = ""
+                 and then (Info = 0 or else D.Find (Info, "compression_mode") = 0)
+               then
+                  Mode := Not_Said;
+               elsif Mode_Text in "" | "none" then
+                  Mode := None_Said;
+               elsif Mode_Text = "file" then
+                  Mode := File_Said;
+               elsif Mode_Text = "message" then
+                  Mode := Message_Said;
+               else
+                  raise Bag_Error with Mode_At & ": compression_mode '"
+                    & RCL.Names.Shortened (Mode_Text) & "': expected file, message or none";
+               end if;
+               if Mode in File_Said | Message_Said and then Format_Text /= "zstd" then
+                  raise Bag_Error with
+                    (if D.Find (Info, "compression_format") /= 0
+                     then D.Where (D.Find (Info, "compression_format")) else Meta)
+                    & ": compression_format '" & RCL.Names.Shortened (Format_Text)
+                    & "' (compression_mode " & Mode_Text & "): only zstd is read";
+               end if;
                if Paths /= 0 then
                   for I in 1 .. D.Length (Paths) loop
                      Result.Append (Compose (Directory, Simple_Name (D.Text (D.Item (Paths, I)))));
@@ -503,6 +592,7 @@ package body RCL.Bags is
                --  A metadata.yaml this reader cannot parse: list the files,
                --  and say so.
                Result.Clear;
+               Mode := Not_Said;
                Warning := To_Unbounded_String
                  (Ada.Exceptions.Exception_Message (E)
                   & " (metadata.yaml not understood: the directory's .mcap or .db3 files are"
@@ -515,9 +605,13 @@ package body RCL.Bags is
             Search : Search_Type;
             Item   : Directory_Entry_Type;
          begin
-            for Extension in 1 .. 2 loop
-               exit when not Result.Is_Empty;
-               Start_Search (Search, Directory, (if Extension = 1 then "*.mcap" else "*.db3"),
+            for Extension in 1 .. 4 loop
+               --  .mcap files (or compressed whole: .mcap.zstd), else .db3.
+               exit when not Result.Is_Empty and then Extension = 3;
+               Start_Search (Search, Directory,
+                             (case Extension is
+                                 when 1 => "*.mcap", when 2 => "*.mcap.zstd",
+                                 when 3 => "*.db3", when others => "*.db3.zstd"),
                              [Ordinary_File => True, others => False]);
                while More_Entries (Search) loop
                   Get_Next_Entry (Search, Item);
@@ -563,6 +657,103 @@ package body RCL.Bags is
                           Character'Val (16#2F#), Character'Val (16#FD#)]));
    --  A Zstandard frame: rosbag2's compression_mode file (bag_0.db3.zstd).
 
+   function Place_Of (Path : String; Whole : Boolean) return String is
+     (RCL.Names.Shortened (Path, 80, 57) & (if Whole then " (decompressed)" else ""));
+   --  A file's name in errors about what it holds; for one compressed whole,
+   --  a byte offset after it counts in the decompressed data.
+
+   function File_Place (This : Bag_Reader; File : Positive) return String is
+     (Place_Of (To_String (This.Files (File).Name), This.Files (File).Whole_Zstd));
+
+   --  Files compressed whole (rosbag2's compression_mode file) ---------------------
+
+   function Temporary_File (Hint : String) return String is
+      --  A new empty file of ours in $TMPDIR (else /tmp), made by mkstemp:
+      --  no other process's file is overwritten.
+      use Interfaces.C;
+      function Mkstemp (Template : Strings.chars_ptr) return int
+        with Import, Convention => C, External_Name => "mkstemp";
+      function C_Close (Fd : int) return int
+        with Import, Convention => C, External_Name => "close";
+      function Get_Env (Name : String) return String is
+         function C_Getenv (Name : Strings.chars_ptr) return Strings.chars_ptr
+           with Import, Convention => C, External_Name => "getenv";
+         N : Strings.chars_ptr := Strings.New_String (Name);
+         V : constant Strings.chars_ptr := C_Getenv (N);
+      begin
+         Strings.Free (N);
+         return (if Strings."=" (V, Strings.Null_Ptr) then "" else Strings.Value (V));
+      end Get_Env;
+      Folder   : constant String := (if Get_Env ("TMPDIR") /= "" then Get_Env ("TMPDIR")
+                                     else "/tmp");
+      Template : Strings.chars_ptr :=
+        Strings.New_String (Folder & "/rclada-" & Hint & "-XXXXXX");
+      Fd       : constant int := Mkstemp (Template);
+      Name     : constant String := Strings.Value (Template);
+      Ignored  : int;
+   begin
+      Strings.Free (Template);
+      if Fd < 0 then
+         raise Bag_Error with Name & ": cannot create a temporary file to decompress into"
+           & " (set TMPDIR to a writable folder)";
+      end if;
+      Ignored := C_Close (Fd);
+      return Name;
+   end Temporary_File;
+
+   procedure Close (This : in out Bag_Reader) is
+   begin
+      if This.Plain_File /= 0 then
+         This.Plain_File := 0;
+         if Ada.Directories.Exists (To_String (This.Plain_Path)) then
+            Ada.Directories.Delete_File (To_String (This.Plain_Path));
+         end if;
+      end if;
+   end Close;
+
+   overriding procedure Finalize (This : in out Bag_Reader) is
+   begin
+      Close (This);
+   exception
+      when others => null;
+   end Finalize;
+
+   procedure Expand (This : in out Bag_Reader; Path : String; File : Positive) is
+      --  Path (the bag's File-th file, compressed whole) decompressed into
+      --  a temporary file, unless it is there already: one at a time.
+      Simple : constant String := Ada.Directories.Simple_Name (Path);
+      Hint   : constant String :=
+        Ada.Strings.Fixed.Translate
+          (Simple (Simple'First .. Simple'First - 1 + Natural'Min (Simple'Length, 40)),
+           Ada.Strings.Maps.To_Mapping (" /", "__"));
+   begin
+      if This.Plain_File = File then
+         return;
+      end if;
+      Close (This);
+      This.Plain_Path := To_Unbounded_String (Temporary_File (Hint));
+      This.Plain_File := File;
+      RCL.Zstd.Decompress_File (Path, To_String (This.Plain_Path),
+                                Label => RCL.Names.Shortened (Path, 80, 57),
+                                Stop  => RCL.Contexts.Is_Shutdown'Access);
+   exception
+      when E : RCL.Zstd.Interrupted =>
+         Close (This);
+         raise Bag_Error with Ada.Exceptions.Exception_Message (E) & " (shut down: a signal)";
+      when E : RCL.Zstd.Zstd_Error =>
+         Close (This);
+         raise Bag_Error with Ada.Exceptions.Exception_Message (E);
+      when E : Ada.IO_Exceptions.Use_Error | Ada.IO_Exceptions.Device_Error =>
+         Close (This);
+         raise Bag_Error with RCL.Names.Shortened (Path, 80, 57) & ": cannot decompress into "
+           & To_String (This.Plain_Path) & ": " & Ada.Exceptions.Exception_Message (E)
+           & " (full disk? set TMPDIR)";
+   end Expand;
+
+   function Readable (This : Bag_Reader; Path : String; Whole : Boolean) return String is
+     (if Whole then To_String (This.Plain_Path) else Path);
+   --  The file to open for Path: itself, or its decompressed copy.
+
    package Id_Maps is new Ada.Containers.Ordered_Maps (Integer_64, Topic_Index);
    --  A .db3 file's topics.id to the reader's topic.
 
@@ -597,14 +788,17 @@ package body RCL.Bags is
       Need_Column ("messages", "data");
    end Check_Tables;
 
-   procedure Open_SQLite (This : in out Bag_Reader; Path : String) is
+   procedure Open_SQLite (This : in out Bag_Reader; Path, Name : String; Whole : Boolean) is
+      --  Path: the database; Name: the bag's file (Path, or the file
+      --  compressed whole that Path was decompressed from).
       use RCL.SQLite;
-      Place  : constant String := RCL.Names.Shortened (Path, 80, 57);
+      Place  : constant String := Place_Of (Name, Whole);
       File   : constant Positive := Natural (This.Files.Length) + 1;
       DB     : Database;
       Ids    : Id_Maps.Map;
       Entry_Of_File : File_Entry :=
-        (Name => To_Unbounded_String (Path), Storage => SQLite_Storage, others => <>);
+        (Name => To_Unbounded_String (Name), Storage => SQLite_Storage, Whole_Zstd => Whole,
+         others => <>);
    begin
       DB.Open_Read_Only (Path, Label => Place);
       Check_Tables (DB, Place);
@@ -688,10 +882,14 @@ package body RCL.Bags is
          S : Statement;
       begin
          S.Prepare (DB, "SELECT rowid, typeof (topic_id), typeof (timestamp), typeof (data),"
-                    & " topic_id, timestamp FROM messages"
+                    & " topic_id, timestamp, CASE WHEN length (data) > 0 THEN data END"
+                    & " FROM messages"
                     & " WHERE typeof (topic_id) <> 'integer' OR typeof (timestamp) <> 'integer'"
                     & " OR typeof (data) <> 'blob' OR length (data) = 0 OR timestamp < 0"
-                    & " OR topic_id NOT IN (SELECT id FROM topics) ORDER BY rowid LIMIT 1");
+                    & " OR topic_id NOT IN (SELECT id FROM topics)"
+                    & (if This.Mode = Message_Said
+                       then " OR substr (data, 1, 4) <> X'28B52FFD'" else "")
+                    & " ORDER BY rowid LIMIT 1");
          if S.Step then
             declare
                Where : constant String := Place & ": messages row" & Row_Image (S.Int (0)) & ": ";
@@ -710,6 +908,9 @@ package body RCL.Bags is
                elsif not Ids.Contains (S.Int (4)) then
                   raise Bag_Error with Where & "topic_id" & Row_Image (S.Int (4))
                     & " names no topic";
+               elsif This.Mode = Message_Said and then S.Kind (6) = Blob_Value then
+                  raise Bag_Error with Where & "data is no zstd frame, but metadata.yaml says"
+                    & " compression_mode message";
                end if;
                raise Bag_Error with Where & "data is empty (0 bytes; a CDR message has 4 or"
                  & " more)";
@@ -744,7 +945,7 @@ package body RCL.Bags is
          This.Last := Time_Stamp'Max (This.Last, Entry_Of_File.Last);
       end if;
       This.Total := This.Total + Entry_Of_File.Count;
-      This.Size := This.Size + Unsigned_64 (Ada.Directories.Size (Path));
+      This.Size := This.Size + Unsigned_64 (Ada.Directories.Size (Name));
       This.Files.Append (Entry_Of_File);
    exception
       when E : SQLite_Error =>
@@ -753,13 +954,14 @@ package body RCL.Bags is
 
    procedure Iterate_SQLite
      (This    : in out Bag_Reader;
+      Path    : String;
       Process : not null access procedure
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
    is
-      --  The file This.Now_File, which Open_SQLite checked.
+      --  The file This.Now_File, which Open_SQLite checked (Path: the
+      --  database, decompressed if the file is compressed whole).
       use RCL.SQLite;
-      Path  : constant String := To_String (This.Files (This.Now_File).Name);
-      Place : constant String := RCL.Names.Shortened (Path, 80, 57);
+      Place : constant String := File_Place (This, This.Now_File);
       DB    : Database;
       Ids   : Id_Maps.Map;
    begin
@@ -814,10 +1016,12 @@ package body RCL.Bags is
       This.Recover := Recover;
       This.Compression := Null_Unbounded_String;
       This.Warning := Null_Unbounded_String;
+      This.Mode := Not_Said;
+      Close (This);
       if not Exists (Path) then
          raise Bag_Error with Path & ": no such bag (directory or .mcap file)";
       elsif Kind (Path) = Directory then
-         Paths := Listed_Files (Path, This.Warning);
+         Paths := Listed_Files (Path, This.Warning, This.Mode);
          if Paths.Is_Empty then
             raise Bag_Error with Path & ": no .mcap or .db3 file in this directory";
          end if;
@@ -827,15 +1031,28 @@ package body RCL.Bags is
       for P of Paths loop
          if not Exists (P) then
             raise Bag_Error with P & ": listed in metadata.yaml but missing";
-         elsif Is_Zstd_File (P) then
-            raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": byte 0: a file compressed"
-              & " whole with zstd (rosbag2's compression_mode file), not read: decompress it"
-              & " first (zstd -d) and list the result in metadata.yaml";
-         elsif Is_SQLite_File (P) then
-            Open_SQLite (This, P);
-            goto Next_File;
          end if;
-         This.Current.Open (P, Recover);
+         declare
+            File  : constant Positive := Natural (This.Files.Length) + 1;
+            Whole : constant Boolean := Is_Zstd_File (P);
+         begin
+            if This.Mode = File_Said and then not Whole then
+               raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": byte 0: no zstd frame"
+                 & " (expected 28 B5 2F FD), but metadata.yaml says compression_mode file";
+            elsif Whole then
+               Expand (This, P, File);
+               if Size (To_String (This.Plain_Path)) = 0 then
+                  raise Bag_Error with RCL.Names.Shortened (P, 80, 57) & ": decompresses to 0"
+                    & " bytes: no MCAP or SQLite file inside";
+               end if;
+            end if;
+            if Is_SQLite_File (Readable (This, P, Whole)) then
+               Open_SQLite (This, Readable (This, P, Whole), P, Whole);
+               goto Next_File;
+            end if;
+            This.Current.Open (Readable (This, P, Whole), Recover,
+                               Label => Place_Of (P, Whole));
+         end;
          This.Size := This.Size + Unsigned_64 (Size (P));
          if This.Compression = Null_Unbounded_String then
             This.Compression := To_Unbounded_String (This.Current.Compression);
@@ -891,7 +1108,8 @@ package body RCL.Bags is
                                         First => This.Current.Start_Time,
                                         Last  => This.Current.End_Time,
                                         Count => This.Current.Message_Count,
-                                        Storage => MCAP_Storage));
+                                        Storage => MCAP_Storage,
+                                        Whole_Zstd => Is_Zstd_File (P)));
          This.Current.Close;
          <<Next_File>>
       end loop;
@@ -906,8 +1124,6 @@ package body RCL.Bags is
      (To_String (This.Topics (Topic).QoS_Text));
    function Topic_Message_Count (This : Bag_Reader; Topic : Topic_Index) return Unsigned_64 is
      (This.Topics (Topic).Count);
-   function File_Place (This : Bag_Reader; File : Positive) return String is
-     (RCL.Names.Shortened (To_String (This.Files (File).Name), 80, 57));
 
    function Topic_Place (This : Bag_Reader; Topic : Topic_Index) return String is
      (if This.Files (This.Topics (Topic).File).Storage = SQLite_Storage
@@ -944,14 +1160,44 @@ package body RCL.Bags is
       Process : not null access procedure
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array))
    is
+      procedure Deliver
+        (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array) is
+         --  Data to Process, decompressed first when it is a zstd frame
+         --  (compression_mode message; a CDR message starts with 00).
+         procedure Give (Plain : RCL.MCAP.Byte_Array) is
+         begin
+            Process (Topic, Receive_Time, Plain);
+         end Give;
+      begin
+         if RCL.Zstd.Starts_Frame (Data) then
+            begin
+               This.Unzstd.Decompress (Data, Give'Access);
+            exception
+               when E : RCL.Zstd.Zstd_Error =>
+                  raise Bag_Error with Message_Place (This) & ": data: "
+                    & Ada.Exceptions.Exception_Message (E);
+            end;
+         elsif This.Mode = Message_Said then
+            raise Bag_Error with Message_Place (This) & ": data is no zstd frame, but"
+              & " metadata.yaml says compression_mode message";
+         else
+            Process (Topic, Receive_Time, Data);
+         end if;
+      end Deliver;
    begin
       for File in This.Files.First_Index .. This.Files.Last_Index loop
          This.Now_File := File;
+         if This.Files (File).Whole_Zstd then
+            Expand (This, To_String (This.Files (File).Name), File);
+         end if;
          if This.Files (File).Storage = SQLite_Storage then
-            Iterate_SQLite (This, Process);
+            Iterate_SQLite (This, Readable (This, To_String (This.Files (File).Name),
+                                            This.Files (File).Whole_Zstd), Deliver'Access);
             goto Next_File;
          end if;
-         This.Current.Open (To_String (This.Files (File).Name), This.Recover);
+         This.Current.Open (Readable (This, To_String (This.Files (File).Name),
+                                      This.Files (File).Whole_Zstd), This.Recover,
+                            Label => File_Place (This, File));
          declare
             type Topic_Map is array (RCL.MCAP.Channel_Id range <>) of Topic_Index'Base;
             Largest : RCL.MCAP.Channel_Id := 0;
@@ -971,7 +1217,7 @@ package body RCL.Bags is
                        & ": message on channel" & Msg.Channel'Image
                        & ", which the file did not define when opened: corrupt";
                   end if;
-                  Process (Map (Msg.Channel), Msg.Log_Time, Data);
+                  Deliver (Map (Msg.Channel), Msg.Log_Time, Data);
                end Each;
             begin
                for I in 1 .. This.Current.Channel_Count loop
@@ -1048,11 +1294,25 @@ package body RCL.Bags is
       Append (Result, "Start:             " & Date (This.First) & LF);
       Append (Result, "End:               " & Date (This.Last) & LF);
       Append (Result, "Messages:          " & Image (This.Total) & LF);
-      Append (Result, "Compression:       "
-              & (if not This.Files.Is_Empty
-                   and then This.Files.First_Element.Storage = SQLite_Storage then "none"
-                 elsif This.Compression = Null_Unbounded_String then "none (chunks)"
-                 else To_String (This.Compression) & " (chunks)") & LF);
+      declare
+         SQLite : constant Boolean :=
+           not This.Files.Is_Empty and then This.Files.First_Element.Storage = SQLite_Storage;
+         Chunks : constant String :=
+           (if SQLite then ""
+            elsif This.Compression = Null_Unbounded_String then "none (chunks)"
+            else To_String (This.Compression) & " (chunks)");
+         Rosbag2 : constant String :=
+           --  rosbag2's own: of files or messages.
+           (if (for some F of This.Files => F.Whole_Zstd) then "zstd (file)"
+            elsif This.Mode = Message_Said then "zstd (message)"
+            else "");
+      begin
+         Append (Result, "Compression:       "
+                 & (if Rosbag2 /= "" and then Chunks /= "" then Rosbag2 & ", " & Chunks
+                    elsif Rosbag2 /= "" then Rosbag2
+                    elsif SQLite then "none"
+                    else Chunks) & LF);
+      end;
       for T of This.Topics loop
          Width := Natural'Max (Width, Length (T.Name));
          Type_Width := Natural'Max (Type_Width, Length (T.Type_Name));

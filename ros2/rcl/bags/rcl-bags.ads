@@ -32,6 +32,7 @@ private with Ada.Containers.Vectors;
 private with Ada.Strings.Unbounded;
 private with RCL.MCAP.Writers;
 private with RCL.MCAP.Readers;
+private with RCL.Zstd;
 
 package RCL.Bags is
 
@@ -73,19 +74,29 @@ package RCL.Bags is
 
    type Topic_Index is new Positive;
 
+   type Bag_Compression is (No_Compression, File_Compression, Message_Compression);
+   --  rosbag2's own compression (ros2 bag record --compression-mode, with
+   --  --compression-format zstd), besides MCAP's chunk compression: each
+   --  file compressed whole once closed (bag_0.mcap.zstd), or each
+   --  message's data one zstd frame.
+
    procedure Create
      (This         : in out Bag_Writer;
       Directory    : String;
       Compression  : RCL.MCAP.Compression_Kind := RCL.MCAP.Zstd;
       Max_Bytes    : Interfaces.Unsigned_64 := 0;
       Max_Duration : Duration := 0.0;
-      Background   : Boolean := False)
+      Background   : Boolean := False;
+      Mode         : Bag_Compression := No_Compression)
      with Pre => not This.Is_Open;
    --  Makes Directory (Bag_Error when it exists already, as ros2 bag record)
    --  and its first file. Max_Bytes / Max_Duration (0: none) start a new
    --  file once the current one is that large / spans that long.
    --  Background: each file's full chunks are compressed and written by a
-   --  task while the next fills (RCL.MCAP.Writers.Create).
+   --  task while the next fills (RCL.MCAP.Writers.Create). Mode:
+   --  metadata.yaml then says compression_mode FILE or MESSAGE,
+   --  compression_format zstd, as rosbag2 writes it (File_Compression
+   --  compresses each file as it is closed, streaming, then deletes it).
 
    function Is_Open (This : Bag_Writer) return Boolean;
 
@@ -127,6 +138,15 @@ package RCL.Bags is
    --  naming the file and the table, column or row ("run_0.db3: messages
    --  row 17: topic_id 9 names no topic"); one SQLite cannot read, with
    --  SQLite's own message ("run_0.db3: database disk image is malformed").
+   --  rosbag2's zstd compression is read: a file compressed whole
+   --  (compression_mode file, "run_0.db3.zstd", "run_0.mcap.zstd"; known by
+   --  its first bytes, whatever metadata.yaml says) is decompressed as a
+   --  stream into a temporary file ($TMPDIR, else /tmp; one at a time,
+   --  deleted by Close and Finalize) and read from there; messages
+   --  compressed one by one (compression_mode message) are decompressed by
+   --  Iterate. Bag_Error naming the file and byte for a corrupt or
+   --  truncated zstd frame, a compression_format other than zstd, a file or
+   --  message that metadata.yaml says is compressed and is not.
 
    function Topic_Count (This : Bag_Reader) return Natural;
    function Topic_Name (This : Bag_Reader; Topic : Topic_Index) return String;
@@ -152,6 +172,12 @@ package RCL.Bags is
    function File_Name (This : Bag_Reader; Index : Positive) return String;
    function Bytes (This : Bag_Reader) return Interfaces.Unsigned_64;
    function Compression (This : Bag_Reader) return String;
+   --  Of the first MCAP file's chunks ("" when none or not MCAP).
+
+   procedure Close (This : in out Bag_Reader);
+   --  Deletes the temporary decompressed file, if any; Open may follow.
+
+   overriding procedure Finalize (This : in out Bag_Reader);
 
    function Warning (This : Bag_Reader) return String;
    --  What Open could not use but read the bag without ("" when nothing):
@@ -164,6 +190,8 @@ package RCL.Bags is
         (Topic : Topic_Index; Receive_Time : Time_Stamp; Data : RCL.MCAP.Byte_Array));
    --  Every message, file after file, in receive-time order within a file
    --  (in a .db3 file, messages of one time in row order, as rosbag2).
+   --  Data is decompressed first when it is a zstd frame (compression_mode
+   --  message); Bag_Error when it is not one and metadata.yaml says it is.
 
    function Message_Place (This : Bag_Reader) return String;
    --  During Iterate, where the message being processed is, for an error
@@ -198,6 +226,9 @@ private
    type File_Entry is record
       Name          : Unbounded_String;
       Storage       : Storage_Kind := MCAP_Storage;
+      Whole_Zstd    : Boolean := False;
+      --  Compressed whole (rosbag2's compression_mode file): read from a
+      --  temporary decompressed copy.
       First, Last   : Time_Stamp := 0;
       Count         : Interfaces.Unsigned_64 := 0;
    end record;
@@ -218,7 +249,13 @@ private
       --  The types whose schema the current file has, by schema id.
       Total        : Interfaces.Unsigned_64 := 0;
       Open         : Boolean := False;
+      Mode         : Bag_Compression := No_Compression;
+      Zipper       : RCL.Zstd.Compressor;
    end record;
+
+   type Compression_Mode is (Not_Said, None_Said, File_Said, Message_Said);
+   --  rosbag2's compression_mode in metadata.yaml (Not_Said: no
+   --  metadata.yaml, or one without compression_mode).
 
    type Bag_Reader is new Ada.Finalization.Limited_Controlled with record
       Files       : File_Vectors.Vector;
@@ -236,6 +273,13 @@ private
       Now_Row     : Interfaces.Integer_64 := 0;
       --  During Iterate: the file and the message being processed (in a
       --  .db3 file, its row).
+      Mode        : Compression_Mode := Not_Said;
+      Plain_File  : Natural := 0;
+      Plain_Path  : Unbounded_String;
+      --  The one file compressed whole that is decompressed now (0: none),
+      --  and where: a temporary file, deleted by Close and Finalize.
+      Unzstd      : RCL.Zstd.Decompressor;
+      --  Of messages compressed one by one (compression_mode message).
    end record;
 
 end RCL.Bags;

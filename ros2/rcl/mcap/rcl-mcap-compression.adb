@@ -1,26 +1,14 @@
+with Ada.Exceptions;
 with Interfaces.C.Strings;
 with System;
+with RCL.Zstd;
 
 package body RCL.MCAP.Compression is
 
    use Interfaces.C;
 
-   --  libzstd ---------------------------------------------------------------
-
-   function ZSTD_compressBound (Size : size_t) return size_t
-     with Import, Convention => C, External_Name => "ZSTD_compressBound";
-   function ZSTD_compress
-     (Dst : System.Address; Capacity : size_t; Src : System.Address; Size : size_t;
-      Level : int) return size_t
-     with Import, Convention => C, External_Name => "ZSTD_compress";
-   function ZSTD_decompress
-     (Dst : System.Address; Capacity : size_t; Src : System.Address; Size : size_t)
-      return size_t
-     with Import, Convention => C, External_Name => "ZSTD_decompress";
-   function ZSTD_isError (Code : size_t) return unsigned
-     with Import, Convention => C, External_Name => "ZSTD_isError";
-   function ZSTD_getErrorName (Code : size_t) return Strings.chars_ptr
-     with Import, Convention => C, External_Name => "ZSTD_getErrorName";
+   --  libzstd: through RCL.Zstd (one binding); its Zstd_Error texts
+   --  ("zstd: Unknown frame descriptor") become Compression_Error.
 
    --  liblz4 (frame API) ------------------------------------------------------
 
@@ -58,7 +46,7 @@ package body RCL.MCAP.Compression is
    begin
       case Kind is
          when Zstd =>
-            return Ada.Streams.Stream_Element_Offset (ZSTD_compressBound (size_t (Size)));
+            return RCL.Zstd.Compress_Bound (Size);
          when LZ4 =>
             return Ada.Streams.Stream_Element_Offset
               (LZ4F_compressFrameBound (size_t (Size), System.Null_Address));
@@ -77,19 +65,18 @@ package body RCL.MCAP.Compression is
    begin
       case Kind is
          when Zstd =>
-            Result := ZSTD_compress (Into (Into'First)'Address, Into'Length, Address_Of (Data),
-                                     Data'Length, 1);
-            if ZSTD_isError (Result) /= 0 then
-               raise Compression_Error with "zstd: " & Strings.Value (ZSTD_getErrorName (Result));
-            end if;
+            return RCL.Zstd.Compress_Into (Data, Into, Level => 1);
          when LZ4 =>
             Result := LZ4F_compressFrame (Into (Into'First)'Address, Into'Length,
                                           Address_Of (Data), Data'Length, System.Null_Address);
             if LZ4F_isError (Result) /= 0 then
                raise Compression_Error with "lz4: " & Strings.Value (LZ4F_getErrorName (Result));
             end if;
+            return Into'First + Ada.Streams.Stream_Element_Offset (Result) - 1;
       end case;
-      return Into'First + Ada.Streams.Stream_Element_Offset (Result) - 1;
+   exception
+      when E : RCL.Zstd.Zstd_Error =>
+         raise Compression_Error with Ada.Exceptions.Exception_Message (E);
    end Compress;
 
    ----------------
@@ -102,14 +89,16 @@ package body RCL.MCAP.Compression is
    begin
       case Kind is
          when Zstd =>
-            Result := ZSTD_decompress (Address_Of (Into), Into'Length, Address_Of (Data),
-                                       Data'Length);
-            if ZSTD_isError (Result) /= 0 then
-               raise Compression_Error with "zstd: " & Strings.Value (ZSTD_getErrorName (Result));
-            elsif Result /= Into'Length then
-               raise Compression_Error with "zstd: expands to" & Result'Image
-                 & " bytes, the chunk says" & Into'Length'Image;
-            end if;
+            declare
+               Last : constant Ada.Streams.Stream_Element_Offset :=
+                 RCL.Zstd.Decompress_Into (Data, Into);
+            begin
+               if Last /= Into'Last then
+                  raise Compression_Error with "zstd: expands to"
+                    & Ada.Streams.Stream_Element_Offset'Image (Last - Into'First + 1)
+                    & " bytes, the chunk says" & Into'Length'Image;
+               end if;
+            end;
          when LZ4 =>
             declare
                Context  : aliased System.Address := System.Null_Address;
@@ -135,6 +124,9 @@ package body RCL.MCAP.Compression is
                end if;
             end;
       end case;
+   exception
+      when E : RCL.Zstd.Zstd_Error =>
+         raise Compression_Error with Ada.Exceptions.Exception_Message (E);
    end Decompress;
    pragma Warnings (On, "formal parameter ""Into"" is read but never assigned");
 

@@ -1,5 +1,5 @@
---  Chunk compression through thin bindings to the system's
---  libzstd (Zstandard frames) and liblz4 (LZ4 frames, as MCAP requires).
+--  Chunk compression: Zstandard frames through RCL.Zstd (the system's
+--  libzstd), LZ4 frames (as MCAP requires) through a thin binding to liblz4.
 --  Example:
 --     Last := Compress (Zstd, Chunk, Into => Buffer);  --  Buffer (1 .. Last)
 private package RCL.MCAP.Compression is

@@ -702,7 +702,9 @@ package body RCL.MCAP.Readers is
       This.Iterate (Count'Access);
    end Count_Messages;
 
-   procedure Open (This : in out Reader; Path : String; Recover : Boolean := False) is
+   procedure Open
+     (This : in out Reader; Path : String; Recover : Boolean := False; Label : String := "")
+   is
       Head      : Byte_Array (1 .. 8);
       Opcode    : Unsigned_8;
       Length    : Unsigned_64;
@@ -710,7 +712,7 @@ package body RCL.MCAP.Readers is
       Has_Footer   : Boolean := False;
    begin
       Close (This);
-      This.Path := To_Unbounded_String (Path);
+      This.Path := To_Unbounded_String (if Label = "" then Path else Label);
       Stream_IO.Open (This.File, Stream_IO.In_File, Path);
       This.Size := Unsigned_64 (Stream_IO.Size (This.File));
       This.Recovered := False;

@@ -20,11 +20,13 @@ package RCL.MCAP.Readers is
 
    type Reader is new Ada.Finalization.Limited_Controlled with private;
 
-   procedure Open (This : in out Reader; Path : String; Recover : Boolean := False);
+   procedure Open
+     (This : in out Reader; Path : String; Recover : Boolean := False; Label : String := "");
    --  Format_Error (with the byte offset) when Path is not MCAP, truncated
    --  or corrupt; with Recover, a truncated file is read up to its last
    --  complete record instead. Ada.IO_Exceptions.Name_Error when Path
-   --  cannot be opened.
+   --  cannot be opened. Errors name the file Label (Path when ""): a
+   --  temporary file decompressed from "run_0.mcap.zstd" is named so.
 
    function Is_Open (This : Reader) return Boolean;
 

@@ -63,7 +63,7 @@ package body Sancta.Allocation.Annealers.Moves is
             G : Segment renames T.Segments (K);
          begin
             if G.Kind = Single then
-               Time := Time + Robot_Distance (P, R, Here, G.Location);
+               Time := Time + Arc (P, S, R, Here, G.Location);
                Sum := Sum + Time;
                Here := G.Location;
                Count := Count + 1;
@@ -83,19 +83,19 @@ package body Sancta.Allocation.Annealers.Moves is
                            I : constant Positive :=
                              (if G.Reversed then G.Last - (K2 - G.First) else K2);
                         begin
-                           Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, I));
+                           Time := Time + Arc (P, S, R, Here, S.Location_At (RS, I));
                            Sum := Sum + Time;
                            Here := S.Location_At (RS, I);
                         end;
                      end loop;
                   elsif not G.Reversed then
-                     Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, G.First));
+                     Time := Time + Arc (P, S, R, Here, S.Location_At (RS, G.First));
                      Sum := Sum + N * (Time - S.Forward_Cost (RS, G.First))
                        + S.Forward_Sum (RS, G.Last) - S.Forward_Sum (RS, G.First - 1);
                      Time := Time + S.Forward_Cost (RS, G.Last) - S.Forward_Cost (RS, G.First);
                      Here := S.Location_At (RS, G.Last);
                   else
-                     Time := Time + Robot_Distance (P, R, Here, S.Location_At (RS, G.Last));
+                     Time := Time + Arc (P, S, R, Here, S.Location_At (RS, G.Last));
                      Sum := Sum + N * (Time + S.Backward_Cost (RS, G.Last))
                        - (S.Backward_Sum (RS, G.Last) - S.Backward_Sum (RS, G.First - 1));
                      Time := Time + S.Backward_Cost (RS, G.Last)
@@ -114,7 +114,7 @@ package body Sancta.Allocation.Annealers.Moves is
             end if;
          end;
       end loop;
-      Time := Time + Robot_Distance (P, R, Here, P.Finish (R));
+      Time := Time + Arc (P, S, R, Here, P.Finish (R));
       Length := M * Time + Cost (Bad) * Infinity;
       Completion := M * Sum + Cost (Bad) * Infinity;
    end Evaluate_Tour;

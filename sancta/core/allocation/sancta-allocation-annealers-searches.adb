@@ -34,6 +34,9 @@ package body Sancta.Allocation.Annealers.Searches is
 
    overriding procedure Finalize (This : in out Search) is
    begin
+      if This.Tours /= null then
+         Free (This.Tours.Compact);
+      end if;
       Free (This.Tours);
       Free (This.Switch);
       Chains.Free (This.Chain_Space);
@@ -759,6 +762,7 @@ package body Sancta.Allocation.Annealers.Searches is
       end if;
       This.Neighbours := Positive'Min (Opts.Neighbours, Positive'Max (1, P.Tasks - 1));
       This.Tours := New_State (P, This.Neighbours);
+      This.Tours.Compact := Compact_Matrix (P);
       This.Generator := Random.Seeded (Opts.Seed);
       This.Started := Now (This);
       This.Next_Report := This.Started + To_Time_Span (Opts.Report_Every);

@@ -74,6 +74,155 @@ package body Sancta.Allocation.Annealers.Tours is
                                  Max_Between (S, Hi + 1, S.Robots)));
    end Max_Except;
 
+   --  The index of (X, Y) along a Hilbert curve over a 2 ** 16 grid.
+   function Hilbert_Index (X, Y : Natural) return Long_Long_Integer is
+      Side : constant := 2 ** 16;
+      XX : Natural := X;
+      YY : Natural := Y;
+      D  : Long_Long_Integer := 0;
+      H  : Natural := Side / 2;
+   begin
+      while H > 0 loop
+         declare
+            RX : constant Natural := (if XX / H mod 2 = 1 then 1 else 0);
+            RY : constant Natural := (if YY / H mod 2 = 1 then 1 else 0);
+            T  : Natural;
+         begin
+            D := D + Long_Long_Integer (H) * Long_Long_Integer (H)
+              * Long_Long_Integer (if RX = 0 then RY elsif RY = 0 then 3 else 2);
+            if RY = 0 then
+               if RX = 1 then
+                  XX := Side - 1 - XX;
+                  YY := Side - 1 - YY;
+               end if;
+               T := XX;
+               XX := YY;
+               YY := T;
+            end if;
+         end;
+         H := H / 2;
+      end loop;
+      return D;
+   end Hilbert_Index;
+
+   --  The ranks of P's locations (0 first) along a Hilbert curve through
+   --  their coordinates (ties and no coordinates: by number).
+   function Hilbert_Ranks (P : Problem) return Index_Table is
+      Rank : Index_Table (0 .. P.Locations) := [for L in 0 .. P.Locations => L];
+   begin
+      if not P.Has_Coordinates then
+         return Rank;
+      end if;
+      declare
+         Min_X, Min_Y : Long_Float := Long_Float'Last;
+         Max_X, Max_Y : Long_Float := Long_Float'First;
+         Key   : array (1 .. P.Locations) of Long_Long_Integer;
+         Order : Index_Table (1 .. P.Locations) := [for L in 1 .. P.Locations => L];
+         Span  : Long_Float;
+      begin
+         for C of P.Coordinates loop
+            Min_X := Long_Float'Min (Min_X, Long_Float (C.X));
+            Max_X := Long_Float'Max (Max_X, Long_Float (C.X));
+            Min_Y := Long_Float'Min (Min_Y, Long_Float (C.Y));
+            Max_Y := Long_Float'Max (Max_Y, Long_Float (C.Y));
+         end loop;
+         Span := Long_Float'Max (1.0E-9, Long_Float'Max (Max_X - Min_X, Max_Y - Min_Y));
+         for L in 1 .. P.Locations loop
+            Key (L) := Hilbert_Index
+              (Natural (Long_Float'Floor
+                 ((Long_Float (P.Coordinates (L).X) - Min_X) / Span * 65535.0)),
+               Natural (Long_Float'Floor
+                 ((Long_Float (P.Coordinates (L).Y) - Min_Y) / Span * 65535.0)));
+         end loop;
+         --  Insertion sort by (key, number): at most Compact_Limit items.
+         for I in 2 .. P.Locations loop
+            declare
+               L : constant Positive := Order (I);
+               J : Natural := I - 1;
+            begin
+               while J >= 1 and then Key (Order (J)) > Key (L) loop
+                  Order (J + 1) := Order (J);
+                  J := J - 1;
+               end loop;
+               Order (J + 1) := L;
+            end;
+         end loop;
+         for I in 1 .. P.Locations loop
+            Rank (Order (I)) := I;
+         end loop;
+      end;
+      return Rank;
+   end Hilbert_Ranks;
+
+   function Compact_Matrix (P : Problem) return Compact_Distances is
+      Tile  : constant := 16;
+      Side  : constant Positive := (P.Locations + Tile) / Tile * Tile;
+      --  Locations 0 .. P.Locations, padded to whole tiles.
+      Tiles : constant Positive := Side / Tile;
+      Largest : Cost := 0;
+      C : Compact_Distances;
+   begin
+      if not Has_Matrix (P) or else P.Locations > Compact_Limit
+        or else (for some R in 1 .. P.Robots => Has_Own_Costs (P, R))
+      then
+         return C;
+      end if;
+      for From in 0 .. P.Locations loop
+         for To in 0 .. P.Locations loop
+            declare
+               D : constant Cost := Distance (P, From, To);
+            begin
+               if D < 0 or else D > Cost (Wide_Cost'Last) then
+                  return C;
+               end if;
+               Largest := Cost'Max (Largest, D);
+            end;
+         end loop;
+      end loop;
+      declare
+         Rank : constant Index_Table := Hilbert_Ranks (P);
+      begin
+         --  Rank R is row R mod Tile of tile row R / Tile, column R mod
+         --  Tile of tile column R / Tile; a tile is Tile rows of Tile.
+         C.Row := new Index_Table'
+           ([for L in 0 .. P.Locations =>
+               Rank (L) / Tile * Tiles * Tile * Tile + Rank (L) mod Tile * Tile]);
+         C.Column := new Index_Table'
+           ([for L in 0 .. P.Locations => Rank (L) / Tile * Tile * Tile + Rank (L) mod Tile]);
+      end;
+      if Largest <= Cost (Narrow_Cost'Last) then
+         C.Narrow := new Narrow_Matrix'(0 .. Side * Side - 1 => 0);
+      else
+         C.Wide := new Wide_Matrix'(0 .. Side * Side - 1 => 0);
+      end if;
+      for From in 0 .. P.Locations loop
+         for To in 0 .. P.Locations loop
+            declare
+               I : constant Natural := C.Row (From) + C.Column (To);
+               D : constant Cost := Distance (P, From, To);
+            begin
+               if C.Narrow /= null then
+                  C.Narrow (I) := Narrow_Cost (D);
+               else
+                  C.Wide (I) := Wide_Cost (D);
+               end if;
+            end;
+         end loop;
+      end loop;
+      return C;
+   end Compact_Matrix;
+
+   procedure Free (C : in out Compact_Distances) is
+      procedure Free is new Ada.Unchecked_Deallocation (Narrow_Matrix, Narrow_Access);
+      procedure Free is new Ada.Unchecked_Deallocation (Wide_Matrix, Wide_Access);
+      procedure Free is new Ada.Unchecked_Deallocation (Index_Table, Index_Access);
+   begin
+      Free (C.Narrow);
+      Free (C.Wide);
+      Free (C.Row);
+      Free (C.Column);
+   end Free;
+
    procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive) is
       N : constant Natural := S.Length (R);
       M : constant Cost := Cost (P.Multiplier (R));
@@ -92,18 +241,18 @@ package body Sancta.Allocation.Annealers.Tours is
             S.Owner (T) := R;
             S.Position (T) := I;
             S.Forward_Cost (R, I) :=
-              S.Forward_Cost (R, I - 1) + Robot_Distance (P, R, S.Location_At (R, I - 1), L);
+              S.Forward_Cost (R, I - 1) + Arc (P, S, R, S.Location_At (R, I - 1), L);
             S.Backward_Cost (R, I) :=
-              S.Backward_Cost (R, I - 1) + Robot_Distance (P, R, L, S.Location_At (R, I - 1));
+              S.Backward_Cost (R, I - 1) + Arc (P, S, R, L, S.Location_At (R, I - 1));
             S.Forward_Sum (R, I) := S.Forward_Sum (R, I - 1) + S.Forward_Cost (R, I);
             S.Backward_Sum (R, I) := S.Backward_Sum (R, I - 1) + S.Backward_Cost (R, I);
          end;
       end loop;
       S.Location_At (R, N + 1) := P.Finish (R);
       S.Forward_Cost (R, N + 1) :=
-        S.Forward_Cost (R, N) + Robot_Distance (P, R, S.Location_At (R, N), P.Finish (R));
+        S.Forward_Cost (R, N) + Arc (P, S, R, S.Location_At (R, N), P.Finish (R));
       S.Backward_Cost (R, N + 1) :=
-        S.Backward_Cost (R, N) + Robot_Distance (P, R, P.Finish (R), S.Location_At (R, N));
+        S.Backward_Cost (R, N) + Arc (P, S, R, P.Finish (R), S.Location_At (R, N));
       if not P.All_Feasible then
          for I in 1 .. N loop
             if not P.Can_Do (R, S.Task_At (R, I)) then

@@ -18,9 +18,54 @@ private package Sancta.Allocation.Annealers.Tours is
    type Cost_Grid is array (Positive range <>, Natural range <>) of Cost;
    type Neighbour_Grid is array (Positive range <>, Positive range <>) of Natural;
 
+   type Narrow_Cost is range 0 .. 2 ** 16 - 1 with Size => 16;
+   type Wide_Cost is range 0 .. 2 ** 31 - 1 with Size => 32;
+   type Narrow_Matrix is array (Natural range <>) of Narrow_Cost;
+   type Wide_Matrix is array (Natural range <>) of Wide_Cost;
+   type Index_Table is array (Natural range <>) of Natural;
+   type Narrow_Access is access Narrow_Matrix;
+   type Wide_Access is access Wide_Matrix;
+   type Index_Access is access Index_Table;
+
+   type Compact_Distances is record
+      Narrow : Narrow_Access;
+      Wide   : Wide_Access;
+      --  At most one of them: the distances in 16 bits when they all fit,
+      --  else in 32 bits when they fit (null, null: read the problem).
+      Row, Column : Index_Access;
+      --  The distance From -> To is at Row (From) + Column (To).
+   end record;
+   --  A compact copy of a problem's shared distance matrix for the hot loops
+   --  of the annealer (Evaluate_Tour, Rebuild): the same integers in a
+   --  quarter or half of the bytes. Locations are ranked along a Hilbert
+   --  curve of their coordinates (when they have some) and the matrix is
+   --  stored in 16 x 16 tiles, so that near locations' rows and columns
+   --  share cache lines and pages. Measured (release build, 10 robots,
+   --  1-2 M moves, two runs beside the 64-bit reads; plans identical):
+   --  CPU -17% at 300 tasks, -26% at 500, -30% at 1000, with the route
+   --  search's own matrix (Local_Search); of which 32 bits in location
+   --  order alone gave -10% / -12% at 300 / 1000, 16 bits -8% more, the
+   --  Hilbert order -12% more at 1000 (about 0 at 300-500).
+
+   Compact_Limit : constant := Matrix_Limit;
+   --  Problems of at most this many locations get a compact copy (2 MB in
+   --  16 bits at 1000 locations, beside the problem's 8 MB); larger ones
+   --  have no matrix (computed Euclidean distances: memory O (n) kept) or
+   --  one of their own too big to copy.
+
+   function Compact_Matrix (P : Problem) return Compact_Distances;
+   --  The compact copy of P's distances when no robot has costs of its own,
+   --  P has a matrix of at most Compact_Limit locations and every distance
+   --  fits in 32 bits (location 0 included); all null otherwise.
+
+   procedure Free (C : in out Compact_Distances);
+
    type State (Robots, Tasks, Neighbours, Positions, Tree_Size : Positive) is record
       --  Positions = Tasks + 1, Tree_Size = 2 Robots (discriminants must
       --  appear alone in component constraints).
+      Compact         : Compact_Distances;
+      --  Compact_Matrix (P) or nothing, shared with its owner (Searches),
+      --  which frees it; first in the record for a fixed offset.
       Task_At         : Position_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
       --  The task at each position 1 .. Length of each robot's tour.
       Location_At     : Position_Grid (1 .. Robots, 0 .. Positions) := [others => [others => 0]];
@@ -74,6 +119,16 @@ private package Sancta.Allocation.Annealers.Tours is
 
    function New_State (P : Problem; Neighbours : Positive) return State_Access
    is (new State (P.Robots, P.Tasks, Neighbours, P.Tasks + 1, 2 * P.Robots));
+
+   function Arc (P : Problem; S : State; R : Positive; From, To : Natural) return Cost
+   is (if S.Compact.Narrow /= null
+       then Cost (S.Compact.Narrow (S.Compact.Row (From) + S.Compact.Column (To)))
+       elsif S.Compact.Wide /= null
+       then Cost (S.Compact.Wide (S.Compact.Row (From) + S.Compact.Column (To)))
+       else Robot_Distance (P, R, From, To))
+     with Inline;
+   --  Robot_Distance (P, R, From, To), from S.Compact when there is one
+   --  (then no robot has costs of its own).
 
    function Square_Of (S : State; C : Cost) return Long_Float is
      (if Is_Infinite (C) or else C <= S.Square_Floor then 0.0

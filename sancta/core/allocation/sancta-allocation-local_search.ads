@@ -5,7 +5,9 @@
 --  Or-opt style kicks (a double bridge inside a window of nearby
 --  positions) accepted when the tour does not get longer. Memory and work
 --  per move are O(n K) and O(K) (a 2-opt reversal is O(n) at worst, the
---  shorter side); distances come from the problem's matrix.
+--  shorter side); distances come from the problem's matrix (a route of at
+--  most 1000 nodes of a problem with a matrix: a 32-bit copy of the
+--  route's own, filled with the candidate lists).
 --
 --     if Applies (P.all) then
 --        Improve (P.all, A, (Time_Limit => 5.0, others => <>), Stats);   --  one robot's tour

@@ -1,5 +1,6 @@
 with Ada.Directories;
 with Ada.Exceptions;
+with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with AUnit.Assertions;        use AUnit.Assertions;
@@ -903,6 +904,61 @@ package body Sancta.Allocation.Tests is
       Same (-(2.0 ** 52) - 1.0);
    end Fast_Rounding;
 
+   --  The annealer reads a compact copy of the distance matrix (16 bits when
+   --  every distance fits, else 32, else the problem's 64-bit costs; none
+   --  when a robot has costs of its own): the same random 60-task problem
+   --  with its distances times 1, 1 000 and 1 000 000 (largest about 14 000,
+   --  14 M and 14 G), and with a robot of its own factor, annealed under the
+   --  expensive check (every cost recomputed arc by arc from the problem
+   --  after every move): valid, the reported best, deterministic.
+   procedure Compact_Distances_Checked (Unused : in out Fixture) is
+      use Ada.Numerics.Long_Elementary_Functions;
+      N : constant := 61;
+      G : Random.Generator := Random.Seeded (77);
+      X, Y : array (1 .. N) of Long_Float;
+   begin
+      for I in 1 .. N loop
+         X (I) := Long_Float'Floor (Random.Uniform (G) * 10_000.0);
+         Y (I) := Long_Float'Floor (Random.Uniform (G) * 10_000.0);
+      end loop;
+      for Case_Number in 1 .. 4 loop
+         declare
+            Times : constant Cost :=
+              (case Case_Number is when 2 => 1_000, when 3 => 1_000_000, when others => 1);
+            P : constant Problem_Access := Create (Locations => N, Tasks => N - 1, Robots => 3);
+            O : constant Annealers.Options :=
+              (Criterion => Min_Max, Seed => 9, Time_Limit => 0.0, Iterations => 20_000,
+               Check => True, others => <>);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Annealers.Progress;
+         begin
+            for I in 1 .. N loop
+               for J in 1 .. N loop
+                  if I /= J then
+                     Set_Distance
+                       (P.all, I, J,
+                        Times * Cost (Long_Float'Floor
+                                        (Sqrt ((X (I) - X (J)) ** 2 + (Y (I) - Y (J)) ** 2)
+                                         + 0.5)));
+                  end if;
+               end loop;
+            end loop;
+            for T in 1 .. N - 1 loop
+               Set_Task (P.all, T, T + 1);
+            end loop;
+            if Case_Number = 4 then
+               Set_Robot_Factor (P.all, 2, 1.5);
+            end if;
+            Annealers.Solve (P.all, O, A, S);
+            Assert (Validate (P.all, A) = "", Validate (P.all, A));
+            Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6,
+                    "reported best, case" & Case_Number'Image);
+            Annealers.Solve (P.all, O, B, T);
+            Assert (A = B, "two runs with the same seed differ, case" & Case_Number'Image);
+         end;
+      end loop;
+   end Compact_Distances_Checked;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -933,6 +989,8 @@ package body Sancta.Allocation.Tests is
       Add ("makespan search's excess term, checked after every move",
            Excess_Term_Checked'Access);
       Add ("route-subset re-optimisation, checked", Subset_Reoptimisation_Checked'Access);
+      Add ("compact distance matrices (16, 32, 64 bits, own costs), checked",
+           Compact_Distances_Checked'Access);
       return Result;
    end Suite;
 

@@ -1,5 +1,6 @@
 with Ada.Containers.Vectors;
 with Ada.Real_Time;
+with Ada.Text_IO; use Ada.Text_IO;
 with AUnit.Assertions; use AUnit.Assertions;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
@@ -10,6 +11,7 @@ package body RCL.Actions.Clients.Tests is
 
    use type Ada.Real_Time.Time;
    use type ROSIDL.Int32;
+   use type ROSIDL.Dynamic.Int32_Array;
 
    function Fibonacci return Action_Support is
      (Get_Action_Support ("example_interfaces", "Fibonacci"));
@@ -190,12 +192,201 @@ package body RCL.Actions.Clients.Tests is
               "the other client's callback: its goal only");
    end Follows_Status;
 
+   --------------------
+   -- Goal lifetime --
+   --------------------
+
+   Quick_Orders : constant := 50;
+   --  The lifetime test's server ends goals of lower orders at once, keeps
+   --  the others executing (Parked) until the test ends them.
+
+   protected Parked is
+      procedure Put (Goal : Servers.Goal_Handle);
+      function Get return Servers.Goal_Handle;
+   private
+      Last : Servers.Goal_Handle;
+   end Parked;
+
+   protected body Parked is
+      procedure Put (Goal : Servers.Goal_Handle) is
+      begin
+         Last := Goal;
+      end Put;
+      function Get return Servers.Goal_Handle is (Last);
+   end Parked;
+
+   function On_Any_Goal
+     (Node : in out RCL.Nodes.Node'Class;
+      Id   : Goal_Id;
+      Goal : ROSIDL.Dynamic.Message) return Servers.Goal_Response
+   is
+      pragma Unreferenced (Node, Id, Goal);
+   begin
+      return Servers.Accept_And_Execute;
+   end On_Any_Goal;
+
+   procedure On_Executing (Node : in out RCL.Nodes.Node'Class; Goal : Servers.Goal_Handle) is
+      pragma Unreferenced (Node);
+      Result : constant ROSIDL.Dynamic.Message := Result_Message (Fibonacci);
+   begin
+      if Servers.Goal (Goal) ("order").As_Int32 < Quick_Orders then
+         Result ("sequence").Set_Int32_Array ([Servers.Goal (Goal) ("order").As_Int32]);
+         Servers.Succeed (Goal, Result);
+      else
+         Parked.Put (Goal);
+      end if;
+   end On_Executing;
+
+   procedure Bounded_Lifetime (Unused : in out Fixture) is
+      Timeout     : constant Duration := 2.0;
+      --  The server's result timeout: a result is asked for right after
+      --  its goal's acceptance, so shorter would do on a machine not loaded
+      --  (0.5 s failed once with a load average of 19 on 2 cores).
+      Server_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_server", "/act_tests");
+      Client_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_client", "/act_tests");
+      Stop        : Boolean := False with Atomic;
+
+      task type Spinner (Node : not null access RCL.Nodes.Node);
+      task body Spinner is
+      begin
+         while not Stop loop
+            Node.Spin (During => 0.05);
+         end loop;
+      end Spinner;
+
+      Server : Servers.Server;
+      Client : Clients.Client;
+      Empty  : constant ROSIDL.Dynamic.Message := Result_Message (Fibonacci);
+
+      Goals : constant := 1000;
+      Taken : array (1 .. Goals) of Ada.Real_Time.Time;
+      --  When each goal's result was taken.
+
+      --  Goals whose result was taken within Window before goal Last's.
+      function Recent (Last : Positive; Window : Duration) return Natural is
+         From : constant Ada.Real_Time.Time :=
+           Taken (Last) - Ada.Real_Time.To_Time_Span (Window);
+         N    : Natural := 0;
+      begin
+         for I in reverse 1 .. Last loop
+            exit when Taken (I) < From;
+            N := N + 1;
+         end loop;
+         return N;
+      end Recent;
+
+      procedure Wait_Until
+        (Done : not null access function return Boolean; What : String; Limit : Duration := 10.0)
+      is
+         Deadline : constant Ada.Real_Time.Time :=
+           Ada.Real_Time.Clock + Ada.Real_Time.To_Time_Span (Limit);
+      begin
+         while not Done.all and then Ada.Real_Time.Clock < Deadline loop
+            delay 0.01;
+         end loop;
+         Assert (Done.all, What & " (after" & Limit'Image & " s)");
+      end Wait_Until;
+
+      Max_Followed, Max_Kept, Max_Followed_Bound, Max_Kept_Bound : Natural := 0;
+      Started : Ada.Real_Time.Time;
+      Id      : Goal_Id;
+      Status  : Goal_Status;
+      Result  : ROSIDL.Dynamic.Message;
+   begin
+      Server.Init (Server_Node, Fibonacci, "life", On_Any_Goal'Access, On_Executing'Access,
+                   Result_Timeout => Timeout);
+      Client.Init (Client_Node, Fibonacci, "life");
+      declare
+         S1 : Spinner (Server_Node'Access);
+         S2 : Spinner (Client_Node'Access);
+
+         function Client_Empty return Boolean is (Client.Followed_Goals = 0);
+         function Server_Empty return Boolean is (Server.Kept_Goals = 0);
+         function Not_Followed return Boolean is (not Client.Follows (Id));
+         function Ended return Boolean is (Client.Status (Id) = Succeeded);
+      begin
+         Client.Wait_For_Server (10.0);
+         Started := Ada.Real_Time.Clock;
+         for I in 1 .. Goals loop
+            Id := Client.Send_Goal (Goal_Of (ROSIDL.Int32 (I mod Quick_Orders)));
+            Client.Get_Result (Id, Status, Result, Timeout => 10.0);
+            Taken (I) := Ada.Real_Time.Clock;
+            Assert (Status = Succeeded, "goal" & I'Image & ": " & Status_Image (Status));
+            Assert (Result ("sequence").Get_Int32_Array = [ROSIDL.Int32 (I mod Quick_Orders)],
+                    "goal" & I'Image & "'s result");
+            --  The client follows the goals whose results were taken within
+            --  Status_Linger (if their terminal status did not come yet);
+            --  the server keeps those ended within its result timeout. The
+            --  margins: the time between a count and the goal's end.
+            declare
+               Followed : constant Natural := Client.Followed_Goals;
+               Kept     : constant Natural := Server.Kept_Goals;
+               Followed_Bound : constant Natural := Recent (I, Clients.Status_Linger + 0.5);
+               Kept_Bound     : constant Natural := Recent (I, Timeout + 2.0);
+            begin
+               Assert (Followed <= Followed_Bound,
+                       "goal" & I'Image & ": the client follows" & Followed'Image
+                       & " goals, more than the" & Followed_Bound'Image & " taken lately");
+               Assert (Kept <= Kept_Bound,
+                       "goal" & I'Image & ": the server keeps" & Kept'Image
+                       & " goals, more than the" & Kept_Bound'Image & " ended lately");
+               Max_Followed := Natural'Max (Max_Followed, Followed);
+               Max_Kept := Natural'Max (Max_Kept, Kept);
+               Max_Followed_Bound := Natural'Max (Max_Followed_Bound, Followed_Bound);
+               Max_Kept_Bound := Natural'Max (Max_Kept_Bound, Kept_Bound);
+            end;
+         end loop;
+         Put_Line ("actions lifetime:" & Goals'Image & " goals in"
+                   & Duration'Image (Ada.Real_Time.To_Duration
+                       (Ada.Real_Time.Clock - Started))
+                   & " s; client followed at most" & Max_Followed'Image & " (bound"
+                   & Max_Followed_Bound'Image & "), server kept at most" & Max_Kept'Image
+                   & " (bound" & Max_Kept_Bound'Image & ")");
+         Wait_Until (Client_Empty'Access, "the client follows no goal once all results came");
+         Wait_Until (Server_Empty'Access, "the server drops every goal after its result timeout");
+
+         --  A goal whose result is never taken: followed until the server
+         --  expires it (its status array, published again, omits it).
+         Id := Client.Send_Goal (Goal_Of (3));
+         Wait_Until (Ended'Access, "goal 3 ends on the status topic");
+         Assert (Client.Follows (Id), "a goal ended but whose result was not taken is followed");
+         Wait_Until (Not_Followed'Access, "a goal the server expired is no longer followed");
+         Assert (Client.Status (Id) = Unknown, "an expired goal's status is Unknown");
+         Client.Get_Result (Id, Status, Result, Timeout => 10.0);
+         Assert (Status = Unknown, "get_result of an expired goal: " & Status_Image (Status));
+         Assert (Client.Cancel_Goal (Id) = Error_Unknown_Goal_Id, "cancel of an expired goal");
+
+         --  Forget: the server keeps the goal, the client no longer follows it.
+         Id := Client.Send_Goal (Goal_Of (Quick_Orders));
+         Assert (Client.Follows (Id) and Client.Followed_Goals = 1, "a running goal is followed");
+         Client.Forget (Id);
+         Client.Forget (Id);  --  Again: nothing.
+         Client.Forget (New_Goal_Id);  --  Never sent: nothing.
+         Assert (not Client.Follows (Id) and Client.Followed_Goals = 0, "a forgotten goal");
+         Assert (Client.Status (Id) = Unknown, "a forgotten goal's status is Unknown");
+         Assert (Client.Cancel_Goal (Id) = Error_None, "a forgotten goal can still be canceled");
+         Servers.Canceled (Parked.Get, Empty);
+         Client.Get_Result (Id, Status, Result, Timeout => 10.0);
+         Assert (Status = Canceled, "a forgotten goal's result: " & Status_Image (Status));
+         Assert (not Client.Follows (Id), "taking a forgotten goal's result follows it not again");
+         Wait_Until (Server_Empty'Access, "the server drops the canceled goal");
+         Assert (Servers.Status (Parked.Get) = Unknown, "an expired goal handle's status");
+         Stop := True;
+      exception
+         when others =>
+            Stop := True;
+            raise;
+      end;
+   end Bounded_Lifetime;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
    begin
       Result.Add_Test (Caller.Create ("actions: clients follow their goals' status topic",
                                       Follows_Status'Access));
+      Result.Add_Test (Caller.Create ("actions: 1000 goals, bounded client and server goal sets",
+                                      Bounded_Lifetime'Access));
       return Result;
    end Suite;
 

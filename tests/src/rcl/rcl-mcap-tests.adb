@@ -1,7 +1,7 @@
 with Ada.Directories;
 with Ada.Exceptions;
 with Ada.IO_Exceptions;
-with Ada.Streams.Stream_IO;
+with Ada.Streams;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with AUnit.Assertions; use AUnit.Assertions;
@@ -127,21 +127,6 @@ package body RCL.MCAP.Tests is
       end loop;
    end Round_Trip;
 
-   function Read_All (Path : String) return Byte_Array is
-      use Ada.Streams.Stream_IO;
-      F : File_Type;
-   begin
-      Open (F, In_File, Path);
-      declare
-         Data : Byte_Array (1 .. Stream_Element_Offset (Size (F)));
-         Last : Stream_Element_Offset;
-      begin
-         Read (F, Data, Last);
-         Close (F);
-         return Data;
-      end;
-   end Read_All;
-
    procedure Background_Writer (Unused : in out Fixture) is
    begin
       for Kind in Compression_Kind loop
@@ -184,15 +169,6 @@ package body RCL.MCAP.Tests is
          Assert (Raised, "no error writing to /dev/full");
       end;
    end Background_Writer;
-
-   procedure Write_All (Path : String; Data : Byte_Array) is
-      use Ada.Streams.Stream_IO;
-      F : File_Type;
-   begin
-      Create (F, Out_File, Path);
-      Write (F, Data);
-      Close (F);
-   end Write_All;
 
    procedure Open_And_Read (Path : String; Recover : Boolean; Count : out Natural) is
       R : Readers.Reader;
@@ -357,7 +333,6 @@ package body RCL.MCAP.Tests is
       end Put_Record;
 
       Header, Channel, Message, Data_End, Footer : Buffers.Buffer;
-      F : Stream_IO.File_Type;
    begin
       File.Put_Bytes (Magic);
       Header.Put_String ("ros2");
@@ -382,9 +357,7 @@ package body RCL.MCAP.Tests is
       Footer.Put_U32 (0);
       Put_Record (Op_Footer, Footer);
       File.Put_Bytes (Magic);
-      Stream_IO.Create (F, Stream_IO.Out_File, Path);
-      Stream_IO.Write (F, File.Data (1 .. File.Length));
-      Stream_IO.Close (F);
+      Write_All (Path, File.Data (1 .. File.Length));
    end Write_Orphan_Channel;
 
    procedure Channel_Without_Schema (Unused : in out Fixture) is

@@ -1,3 +1,4 @@
+with Ada.Characters.Handling;
 with Ada.Directories;
 with Ada.Exceptions;
 with Ada.Text_IO;
@@ -129,9 +130,27 @@ package body Sancta.Simulation.Rendering.Tests is
       Assert (Glyphs.Is_Inked ('1', 3, 1) and then not Glyphs.Is_Inked ('1', 1, 1), "glyph 1");
       Assert (Glyphs.Is_Inked ('T', 1, 1) and then Glyphs.Is_Inked ('T', 3, 7)
               and then not Glyphs.Is_Inked ('T', 1, 7), "glyph T");
-      Assert ((for all Row in 1 .. 7 => (for all Column in 1 .. 5 =>
-                Glyphs.Is_Inked ('r', Column, Row) = Glyphs.Is_Inked ('R', Column, Row))),
-              "lower case drawn as upper case");
+      for C in Character range 'a' .. 'z' loop
+         Assert ((for some Row in 1 .. 7 => (for some Column in 1 .. 5 =>
+                   Glyphs.Is_Inked (C, Column, Row)
+                   /= Glyphs.Is_Inked (Ada.Characters.Handling.To_Upper (C), Column, Row))),
+                 "lower case " & C & " drawn as its upper case");
+         Assert ((for some Row in 1 .. 7 => (for some Column in 1 .. 5 =>
+                   Glyphs.Is_Inked (C, Column, Row) /= Glyphs.Is_Inked ('?', Column, Row))),
+                 "lower case " & C & " has no glyph");
+      end loop;
+      --  Short letters stay below the capitals' top two rows; only g j p
+      --  q y reach below the base line (rows 8 and 9).
+      for C of String'("acegmnopqrsuvwxyz") loop
+         Assert ((for all Row in 1 .. 2 => (for all Column in 1 .. 5 =>
+                   not Glyphs.Is_Inked (C, Column, Row))),
+                 "x-height of " & C);
+      end loop;
+      for C in Character range ' ' .. '~' loop
+         Assert ((for some Row in 8 .. Glyphs.Glyph_Height => (for some Column in 1 .. 5 =>
+                   Glyphs.Is_Inked (C, Column, Row))) = (C in 'g' | 'j' | 'p' | 'q' | 'y'),
+                 "below the base line: " & C);
+      end loop;
       Assert ((for all Row in 1 .. 7 => (for all Column in 1 .. 5 =>
                 Glyphs.Is_Inked ('~', Column, Row) = Glyphs.Is_Inked ('?', Column, Row))),
               "no glyph: '?'");
@@ -199,7 +218,7 @@ package body Sancta.Simulation.Rendering.Tests is
       Result.Add_Test (Caller.Create ("rendering: PNG picture", Picture'Access));
       Result.Add_Test (Caller.Create ("rendering: SVG and trajectories CSV",
                                       SVG_And_CSV'Access));
-      Result.Add_Test (Caller.Create ("rendering: text in pictures (5 x 7 font)",
+      Result.Add_Test (Caller.Create ("rendering: text in pictures (5 x 9 font, lower case)",
                                       Text_In_Pictures'Access));
       Result.Add_Test (Caller.Create ("rendering: labels avoid drawn pixels (Place_Labels)",
                                       Labels_Avoid_Ink'Access));

@@ -5,6 +5,8 @@
 --     procedure Rejects_Empty_Name (Unused : in out Fixture) is ...
 --     Result.Add_Test (Caller.Create ("rcl: empty name", Rejects_Empty_Name'Access));
 --     Assert (Contains (Message, ":1:5:"), Message);
+--  Also whole files as bytes (Read_All, Write_All).
+with Ada.Streams;
 with Ada.Strings.Fixed;
 with AUnit.Test_Caller;
 with AUnit.Test_Fixtures;
@@ -18,5 +20,11 @@ package Suite_Support is
    function Contains (Text, Part : String) return Boolean is
      (Ada.Strings.Fixed.Index (Text, Part) > 0);
    --  Whether Part occurs in Text.
+
+   function Read_All (Path : String) return Ada.Streams.Stream_Element_Array;
+   --  The file's bytes, indexed from 1.
+
+   procedure Write_All (Path : String; Data : Ada.Streams.Stream_Element_Array);
+   --  The file created (or overwritten) with Data.
 
 end Suite_Support;

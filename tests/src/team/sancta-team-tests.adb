@@ -710,6 +710,97 @@ package body Sancta.Team.Tests is
       end;
    end Test_Grid_Costs;
 
+   --  The report's time split ---------------------------------------------------------------
+
+   procedure Test_Arrivals (T : in out Fixture) is
+      --  A robot on the x axis at 1 m/s: still until 2 s (first plan at
+      --  1 s), to goto g1 at (5, 0) (done at 7 s), on to segment s1 from
+      --  (10, 0) (reached within 0.5 m at 11.5 s) to (15, 0) (done at
+      --  17 s), still until 20 s.
+      pragma Unreferenced (T);
+      use type Geometry.Real;
+      package TD renames Commands.Team_Demos;
+      Result : TD.Demo_Result;
+      Tasks  : Missions.Task_Vectors.Vector;
+      Robot  : TD.Robot_Summary;
+
+      function X_At (Time : Long_Float) return Long_Float is
+        (if Time <= 2.0 then 0.0 elsif Time <= 17.0 then Time - 2.0 else 15.0);
+
+      function Near (A, B : Long_Float) return Boolean is (abs (A - B) <= 0.11);
+   begin
+      Tasks.Append (Missions.Mission_Task'
+                      (Id => To_Unbounded_String ("g1"), Kind => Missions.Goto_Pose,
+                       Points => Missions.Point_Vectors.To_Vector ((5.0, 0.0), 1)));
+      declare
+         S : Missions.Mission_Task :=
+           (Id => To_Unbounded_String ("s1"), Kind => Missions.Explore_Segment, others => <>);
+      begin
+         --  Listed from its exit end: the entry is found from where it finished.
+         S.Points.Append (Geometry.Point'(15.0, 0.0));
+         S.Points.Append (Geometry.Point'(10.0, 0.0));
+         Tasks.Append (S);
+      end;
+      Robot.Id := To_Unbounded_String ("r1");
+      for K in 0 .. 200 loop
+         Robot.Track.Append
+           (TD.Track_Sample'(Time  => Long_Float (K) * 0.1,
+                             Where => (Geometry.Real (X_At (Long_Float (K) * 0.1)), 0.0, 0.0)));
+      end loop;
+      Result.Robots.Append (Robot);
+      Result.Plan_Time := 1.0;
+      --  Lost at 20 s, still at (15, 0), with g2 at (15.2, 0) left to do.
+      Tasks.Append (Missions.Mission_Task'
+                      (Id => To_Unbounded_String ("g2"), Kind => Missions.Goto_Pose,
+                       Points => Missions.Point_Vectors.To_Vector ((15.2, 0.0), 1)));
+      Result.Killed := Robot.Id;
+      Result.Kill_Time := 20.0;
+      Result.Orphans.Append (TD.Completion'(Task_Id => To_Unbounded_String ("g2"), others => <>));
+      Result.Completions.Append
+        (TD.Completion'(To_Unbounded_String ("g1"), Robot.Id, 7.0, others => <>));
+      Result.Completions.Append
+        (TD.Completion'(To_Unbounded_String ("s1"), Robot.Id, 17.0, others => <>));
+      TD.Note_Arrivals (Result, Tasks);
+      declare
+         R : TD.Robot_Summary renames Result.Robots (1);
+      begin
+         Assert (Near (Result.Completions (1).Reached, 6.5),
+                 "g1 reached at" & Result.Completions (1).Reached'Image);
+         Assert (Near (Result.Completions (2).Reached, 11.5),
+                 "s1 entered at" & Result.Completions (2).Reached'Image);
+         Assert (Natural (R.Stops.Length) = 2
+                 and then Near (R.Stops (1).From, 0.0) and then Near (R.Stops (1).To, 2.0)
+                 and then Near (R.Stops (2).From, 17.0) and then Near (R.Stops (2).To, 20.0),
+                 "stops:" & R.Stops.Length'Image);
+         Assert (Near (R.Travel, 9.0) and then Near (R.At_Task, 6.0)
+                 and then Near (R.Stopped, 1.0),
+                 "going" & R.Travel'Image & ", at tasks" & R.At_Task'Image & ", stopped"
+                 & R.Stopped'Image);
+         Assert (abs (R.Travel + R.At_Task + R.Stopped - 16.0) < 1.0E-9,
+                 "parts add up to the last completion - the first plan");
+         Assert (Result.Last_Leg.Robot = Robot.Id and then Result.Last_Leg.Task_Id = "g2"
+                 and then Result.Last_Leg.Time = 20.0
+                 and then Near (Result.Last_Leg.Reached, 17.0),
+                 "last leg: " & To_String (Result.Last_Leg.Task_Id) & Result.Last_Leg.Time'Image
+                 & Result.Last_Leg.Reached'Image);
+      end;
+      --  Turning on the spot is not standing still; a track that never
+      --  comes near the task leaves Reached unknown.
+      Result.Robots (1).Track.Clear;
+      for K in 0 .. 50 loop
+         Result.Robots (1).Track.Append
+           (TD.Track_Sample'(Time => Long_Float (K) * 0.1,
+                             Where => (20.0, 0.0, Geometry.Real (K) * 0.05)));
+      end loop;
+      Result.Completions.Delete_Last;
+      TD.Note_Arrivals (Result, Tasks);
+      Assert (Result.Robots (1).Stops.Is_Empty, "turning counted as stopped");
+      Assert (Result.Completions (1).Reached < 0.0,
+              "reached though never near:" & Result.Completions (1).Reached'Image);
+      Assert (Result.Last_Leg.Robot = Robot.Id and then Result.Last_Leg.Reached < 0.0,
+              "last leg reached though never near:" & Result.Last_Leg.Reached'Image);
+   end Test_Arrivals;
+
    --  The demo end to end -----------------------------------------------------------------
 
    procedure Check_Demo (How : Agents.Method; Team : String) is
@@ -780,6 +871,8 @@ package body Sancta.Team.Tests is
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
       Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
       Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
+      Add ("time per task: going, at the task, stopped (Note_Arrivals)",
+           Test_Arrivals'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
       Result.Add_Test (Goal_Trackers.Contract_Tests.Suite);
