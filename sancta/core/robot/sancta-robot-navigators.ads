@@ -1,7 +1,13 @@
 --  Goal-to-velocity navigation: plans a path on the path-cost grid (A*),
 --  follows its waypoints with the go-to-goal controller (which keeps
 --  avoiding what the laser sees), and replans when the robot makes no
---  progress for a while.
+--  progress for a while. A* knows only the map, so a robot standing in a
+--  gap would get the same path through it again: the stall replan also
+--  blocks what the laser sees where the map is free (other robots),
+--  inflated like the walls. That layer is temporary: it is dropped once
+--  the robot has got Clear_Progress closer to the goal, and the next
+--  replan builds it afresh from the scan of that moment (so a robot that
+--  has moved away leaves no ghost).
 --
 --     N.Set_Goal (Planner, Pose, Goal);
 --     loop
@@ -55,6 +61,11 @@ private
       Best       : Real := Real'Last;
       --  Closest distance to the goal so far.
       Best_Time  : Real := 0.0;
+      Seen       : Path_Costs.Point_Vectors.Vector;
+      --  The temporary obstacle layer (laser points off the map's walls
+      --  at the last stall replan); empty when not in use.
+      Seen_From  : Real := 0.0;
+      --  Distance to the goal when Seen was taken.
    end record;
 
 end Sancta.Robot.Navigators;

@@ -30,6 +30,42 @@ package body Sancta.Robot.Path_Costs is
       end if;
    end Finalize;
 
+   package Index_Vectors is new Ada.Containers.Vectors (Positive, Natural);
+
+   procedure Block_Around
+     (Blocked : in out Boolean_Matrix;
+      F       : Frame;
+      Radius  : Real;
+      I, J    : Integer;
+      Changed : access Index_Vectors.Vector := null)
+   is
+      --  A cell is blocked when its centre is closer than the radius to an
+      --  occupied cell (its nearest point): the cells around occupied (I, J).
+      --  Cells newly blocked are added to Changed (as J * Width + I).
+      Reach : constant Integer := Integer (Real'Ceiling (Radius / F.Resolution));
+   begin
+      for DI in -Reach .. Reach loop
+         for DJ in -Reach .. Reach loop
+            if Contains (F, I + DI, J + DJ) then
+               declare
+                  GX : constant Real := Real'Max (0.0, Real (abs DI) - 0.5) * F.Resolution;
+                  GY : constant Real := Real'Max (0.0, Real (abs DJ) - 0.5) * F.Resolution;
+               begin
+                  if (GX * GX + GY * GY < Radius * Radius
+                      or else (DI = 0 and then DJ = 0))
+                    and then not Blocked (I + DI, J + DJ)
+                  then
+                     Blocked (I + DI, J + DJ) := True;
+                     if Changed /= null then
+                        Changed.Append ((J + DJ) * F.Width + I + DI);
+                     end if;
+                  end if;
+               end;
+            end if;
+         end loop;
+      end loop;
+   end Block_Around;
+
    procedure Initialize
      (This         : in out Planner;
       Occupancy    : Grid;
@@ -38,38 +74,16 @@ package body Sancta.Robot.Path_Costs is
    is
       F     : constant Frame := Frame_Of (Occupancy);
       N     : constant Natural := F.Width * F.Height;
-      Reach : constant Integer := Integer (Real'Ceiling (Robot_Radius / F.Resolution));
-
-      --  A cell is blocked when its centre is closer than the radius to an
-      --  occupied cell (its nearest point): the cells around occupied (I, J).
-      procedure Block_Around (I, J : Integer) is
-      begin
-         for DI in -Reach .. Reach loop
-            for DJ in -Reach .. Reach loop
-               if Contains (F, I + DI, J + DJ) then
-                  declare
-                     GX : constant Real := Real'Max (0.0, Real (abs DI) - 0.5) * F.Resolution;
-                     GY : constant Real := Real'Max (0.0, Real (abs DJ) - 0.5) * F.Resolution;
-                  begin
-                     if GX * GX + GY * GY < Robot_Radius * Robot_Radius
-                       or else (DI = 0 and then DJ = 0)
-                     then
-                        This.Blocked (I + DI, J + DJ) := True;
-                     end if;
-                  end;
-               end if;
-            end loop;
-         end loop;
-      end Block_Around;
    begin
       Finalize (This);
       This.Frame := F;
       This.Connect := Connect;
+      This.Radius := Robot_Radius;
       This.Blocked := new Boolean_Matrix'(0 .. F.Width - 1 => [0 .. F.Height - 1 => False]);
       for I in 0 .. F.Width - 1 loop
          for J in 0 .. F.Height - 1 loop
             if Occupancy.Occupied (I, J) then
-               Block_Around (I, J);
+               Block_Around (This.Blocked.all, F, Robot_Radius, I, J);
             end if;
          end loop;
       end loop;
@@ -318,6 +332,34 @@ package body Sancta.Robot.Path_Costs is
          end loop;
       end;
       return Result;
+   end Path;
+
+   function Path
+     (This      : Planner;
+      From, To  : Point;
+      Obstacles : Point_Vectors.Vector) return Point_Vectors.Vector
+   is
+      Changed : aliased Index_Vectors.Vector;
+   begin
+      if This.Blocked = null then
+         return Point_Vectors.Empty_Vector;
+      end if;
+      for P of Obstacles loop
+         declare
+            I : constant Integer := Column (This.Frame, P.X);
+            J : constant Integer := Row (This.Frame, P.Y);
+         begin
+            if Contains (This.Frame, I, J) then
+               Block_Around (This.Blocked.all, This.Frame, This.Radius, I, J,
+                             Changed'Access);
+            end if;
+         end;
+      end loop;
+      return Result : constant Point_Vectors.Vector := Path (This, From, To) do
+         for C of Changed loop
+            This.Blocked (C mod This.Frame.Width, C / This.Frame.Width) := False;
+         end loop;
+      end return;
    end Path;
 
 end Sancta.Robot.Path_Costs;

@@ -56,6 +56,15 @@ package Sancta.Robot.Path_Costs is
    function Path (This : Planner; From, To : Point) return Point_Vectors.Vector;
    --  Waypoints after From, ending with To; empty when unreachable.
 
+   function Path
+     (This      : Planner;
+      From, To  : Point;
+      Obstacles : Point_Vectors.Vector) return Point_Vectors.Vector;
+   --  As Path, with each of Obstacles (e.g. laser points on another robot)
+   --  also blocked, inflated by the robot radius like the walls, for this
+   --  search only: the planner is unchanged afterwards (and Cost's cache
+   --  is not touched).
+
    function Line_Of_Sight (This : Planner; A, B : Point) return Boolean;
    --  The straight segment A-B stays in free (inflated) space.
 
@@ -100,6 +109,7 @@ private
       Frame   : Grids.Frame;
       Blocked : Boolean_Access;
       Connect : Connectivity := Eight;
+      Radius  : Real := 0.0;
       Work    : Scratch_Access;
       Cache   : Cost_Map_Access;
    end record;

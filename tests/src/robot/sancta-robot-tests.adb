@@ -110,6 +110,21 @@ package body Sancta.Robot.Tests is
             Last := W;
          end loop;
       end;
+      --  Points across the corridor (what a laser would see of a robot in
+      --  it) close it for that one search; the planner is unchanged after.
+      declare
+         Seen : Path_Costs.Point_Vectors.Vector;
+      begin
+         for K in 0 .. 24 loop
+            Seen.Append (Pt (7.0, 2.4 + Real (K) * 0.05));
+         end loop;
+         Assert (P8.Path (From, To, Seen).Is_Empty, "points across the corridor: no path");
+         Assert (P8.Is_Free ((7.0, 3.0)) and then not P8.Path (From, To).Is_Empty,
+                 "the points were blocked for that search only");
+         Seen.Clear;
+         Seen.Append (Pt (7.0, 2.75));
+         Assert (not P8.Path (From, To, Seen).Is_Empty, "one point leaves room to pass");
+      end;
       --  Close the corridor: unreachable.
       declare
          Closed : Grids.Grid := G;
@@ -263,6 +278,39 @@ package body Sancta.Robot.Tests is
               & Img (S.Ground_Truth (A).Pose.X) & ", B at" & Img (S.Ground_Truth (B).Pose.X));
       Assert (S.Collision_Count (A) + S.Collision_Count (B) = 0, "no collision");
    end Robots_Pass_Each_Other;
+
+   procedure Round_A_Robot_At_A_Wall_End (Unused : in out Fixture) is
+      --  A wall with a free end (x 0 .. 6 at y 11) and robot B standing
+      --  still 0.8 m east of the end: the map's A* path for A (from the
+      --  north-east to the south-west) rounds the end through the 0.5 m
+      --  left between the end and B, which A cannot pass. The stall replan
+      --  must go round B (which it knows only from its laser); replanning
+      --  on the map alone gave the same path again and A turned in place
+      --  for good (the campus-20 stall at its 4 m wall, flake3 session 13).
+      G      : constant Grids.Grid :=
+        Make_Grid (12.0, 16.0, [Seg (0.0, 11.0, 6.0, 11.0, 0.2)]);
+      S      : Simulator;
+      A, B   : Robot_Id;
+      Map    : Path_Costs.Planner;
+      NA     : Navigators.Navigator;
+      Goal   : constant Point := (3.5, 1.5);
+   begin
+      Map.Initialize (G, Robot_Radius => 0.3);
+      S.Initialize (Worlds.Create (G), Seed => 1);
+      S.Add_Robot (Default_Robot, (7.7, 15.0, 0.0), A);
+      S.Add_Robot (Default_Robot, (6.8, 11.2, 0.0), B);
+      S.Step (0.1);
+      NA.Set_Goal (Map, S.Ground_Truth (A).Pose, Goal);
+      while S.Clock < 90.0 and then not NA.Arrived loop
+         S.Set_Command
+           (A, NA.Command (Map, S.Ground_Truth (A).Pose, S.Latest_Scan (A), S.Clock));
+         S.Step (0.1);
+      end loop;
+      Assert (NA.Arrived, "A went round B within 90 s; A at"
+              & Img (S.Ground_Truth (A).Pose.X) & Img (S.Ground_Truth (A).Pose.Y)
+              & ", heading for" & Img (NA.Waypoint.X) & Img (NA.Waypoint.Y));
+      Assert (S.Collision_Count (A) + S.Collision_Count (B) = 0, "no collision");
+   end Round_A_Robot_At_A_Wall_End;
 
    procedure Team_Demo (Unused : in out Fixture) is
       --  Three robots on random tours in a room with a partition.
@@ -515,6 +563,8 @@ package body Sancta.Robot.Tests is
       Add ("closed loop: through a corridor, no collision", Closed_Loop_Corridor'Access);
       Add ("closed loop: two robots pass each other head on",
            Robots_Pass_Each_Other'Access);
+      Add ("closed loop: round a robot standing at a wall's end",
+           Round_A_Robot_At_A_Wall_End'Access);
       Add ("closed loop: team demo, no collision", Team_Demo'Access);
       Add ("mapper agrees with the world", Mapper_Agrees_With_World'Access);
       Add ("scan matching recovers a known offset", Scan_Match_Single'Access);
