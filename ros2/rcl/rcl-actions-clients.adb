@@ -8,13 +8,17 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with ROSIDL.CDR;
 with ROSIDL.Typesupport;
+with RCL.Client_Endpoints;
+with RCL.Contexts;
 with RCL.DDS;
 with RCL.Logging;
+with RCL.Names;
 with RCL.QoS;
 
 package body RCL.Actions.Clients is
 
    use ROSIDL.Dynamic;
+   use type RCL.Node_Entities.Subscription_Access;
 
    --  The goals a client follows (see Goal lifetime in the spec).
 
@@ -259,6 +263,24 @@ package body RCL.Actions.Clients is
       This.Mine.Remove_Ended_Absent (Listed);
    end Deliver;
 
+   function Subscribe
+     (Node      : in out RCL.Nodes.Node'Class;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null RCL.Nodes.Handler_Access;
+      QoS       : RCL.QoS.Profile) return RCL.Node_Entities.Subscription_Access
+   is
+      --  Node.Subscribe_Handler (the same expansion and remapping of Topic),
+      --  keeping the subscription (owned by Node) for its matches.
+      FQ    : constant String := Node.Expand (Topic);
+      Added : RCL.Node_Entities.Subscription_Access;
+   begin
+      RCL.Node_Entities.Add_Endpoint
+        (Node, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
+         Handle => RCL.Node_Entities.Handler_Access (Handle), QoS => QoS, Added => Added);
+      return Added;
+   end Subscribe;
+
    procedure Init
      (This        : in out Client;
       Node        : in out RCL.Nodes.Node'Class;
@@ -284,14 +306,14 @@ package body RCL.Actions.Clients is
       This.Cancel.Init (Node, Cancel_Support, FQ & Cancel_Suffix);
       This.Results.Init (Node, Get_Result_Support (Support), FQ & Get_Result_Suffix);
       if Stored /= null then
-         Node.Subscribe_Handler
-           (ROSIDL.Typesupport.DDS_Type_Name (Feedback_Message_Support (Support)),
+         This.Feedback := Subscribe
+           (Node, ROSIDL.Typesupport.DDS_Type_Name (Feedback_Message_Support (Support)),
             FQ & Feedback_Suffix,
             new Feedback_Handler'(Support => Support, Mine => This.Mine, Callback => Stored),
             RCL.QoS.Default);
       end if;
-      Node.Subscribe_Handler
-        (ROSIDL.Typesupport.DDS_Type_Name (Status_Support),
+      This.Statuses := Subscribe
+        (Node, ROSIDL.Typesupport.DDS_Type_Name (Status_Support),
          FQ & Status_Suffix,
          new Status_Handler'(Action   => Ada.Strings.Unbounded.To_Unbounded_String (FQ),
                              Mine     => This.Mine,
@@ -319,15 +341,55 @@ package body RCL.Actions.Clients is
       end if;
    end Forget;
 
+   function Matched (Sub : RCL.Node_Entities.Subscription_Access) return Boolean is
+     (RCL.DDS.Matched_Writers (Sub.Reader) > 0);
+
    function Server_Available (This : Client) return Boolean is
-     (This.Send.Service_Available and then This.Cancel.Service_Available
-      and then This.Results.Service_Available);
+     (This.Statuses /= null
+      and then This.Send.Service_Available and then This.Cancel.Service_Available
+      and then This.Results.Service_Available
+      and then Matched (This.Statuses)
+      and then (This.Feedback = null or else Matched (This.Feedback)));
+
+   function Missing (This : Client) return String is
+      --  What Server_Available lacks, as "send_goal service, status
+      --  publisher"; "" when nothing.
+      function Item (Absent : Boolean; What : String) return String is
+        (if Absent then ", " & What else "");
+      All_Of : constant String :=
+        Item (not This.Send.Service_Available, "send_goal service")
+        & Item (not This.Cancel.Service_Available, "cancel_goal service")
+        & Item (not This.Results.Service_Available, "get_result service")
+        & Item (not Matched (This.Statuses), "status publisher")
+        & Item (This.Feedback /= null and then not Matched (This.Feedback),
+                "feedback publisher");
+   begin
+      return All_Of (All_Of'First + (if All_Of = "" then 0 else 2) .. All_Of'Last);
+   end Missing;
 
    procedure Wait_For_Server (This : Client; Timeout : Duration := Forever) is
+      --  Polls every 10 ms (as RCL.Clients.Wait_For_Service does): the
+      --  matches of three services and two subscriptions have no single
+      --  event to wait on.
+      use Ada.Real_Time;
+      Deadline : constant Time := RCL.Client_Endpoints.Deadline_Of (Timeout);
    begin
-      This.Send.Wait_For_Service (Timeout);
-      This.Cancel.Wait_For_Service (Timeout);
-      This.Results.Wait_For_Service (Timeout);
+      if This.Statuses = null then
+         raise ROS_Exception with "Wait_For_Server of an action client not initialised";
+      end if;
+      while not Server_Available (This) loop
+         if Clock >= Deadline or else RCL.Contexts.Is_Shutdown then
+            declare
+               Lacks : constant String := Missing (This);
+            begin
+               exit when Lacks = "";  --  Came just now.
+               raise RCL_Timeout with "action " & This.Name & ": no server available after"
+                 & RCL.Client_Endpoints.Seconds_Image (Timeout) & " (missing: " & Lacks & ")";
+            end;
+         end if;
+         delay until (if Deadline < Clock + Milliseconds (10) then Deadline
+                      else Clock + Milliseconds (10));
+      end loop;
    end Wait_For_Server;
 
    procedure Send_Goal

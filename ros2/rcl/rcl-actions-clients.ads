@@ -38,6 +38,7 @@ with ROSIDL.Dynamic;
 with RCL.Nodes;
 
 private with RCL.Clients;
+private with RCL.Node_Entities;
 
 package RCL.Actions.Clients is
 
@@ -109,10 +110,17 @@ package RCL.Actions.Clients is
    --  result taken until the server expires it).
 
    function Server_Available (This : Client) return Boolean;
-   --  The three services of the action are available.
+   --  As rcl_action_server_is_available: the three services of the action
+   --  are available, and the client's status subscription (and feedback
+   --  subscription, when Init had an On_Feedback) has matched a writer, so
+   --  that a goal sent now does not lose its first feedback (volatile) and
+   --  statuses to subscriptions not matched yet. False before Init; the
+   --  node of Init must still exist.
 
    procedure Wait_For_Server (This : Client; Timeout : Duration := Forever);
-   --  RCL_Timeout when not available within Timeout.
+   --  Waits until Server_Available, all of it within Timeout (one
+   --  deadline); RCL_Timeout naming what is missing otherwise, or at
+   --  shutdown. ROS_Exception before Init.
 
    procedure Send_Goal
      (This     : in out Client;
@@ -166,6 +174,10 @@ private
       Mine       : Goal_Set_Access;
       --  The goals sent and their statuses (feedback and statuses of
       --  other goals are ignored).
+      Feedback   : RCL.Node_Entities.Subscription_Access;
+      --  Null without On_Feedback.
+      Statuses   : RCL.Node_Entities.Subscription_Access;
+      --  The node's (owned by it); Server_Available asks their matches.
    end record;
 
 end RCL.Actions.Clients;

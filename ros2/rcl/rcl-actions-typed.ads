@@ -138,7 +138,9 @@ package RCL.Actions.Typed is
 
       function Server_Available return Boolean;
       procedure Wait_For_Server (Timeout : Duration := Clients.Forever);
-      --  RCL_Timeout when not available within Timeout.
+      --  As Clients.Server_Available and Wait_For_Server: the services,
+      --  status and feedback topics matched (RCL_Timeout when not all
+      --  within Timeout).
 
       function Send_Goal (Item : Goal; Timeout : Duration := 10.0) return Goal_Id;
       --  Clients.Goal_Rejected when the server refuses it.

@@ -158,8 +158,14 @@ class ActionClient:
         self.statuses = []   # every GoalStatusArray seen: [(id hex, status)]
 
     def wait_for_server(self, timeout=10.0):
-        return all(ps.wait_matched(w, timeout) and ps.wait_matched(r, timeout)
-                   for w, r in self.ep.pairs.values())
+        """The three services and, as rcl_action_server_is_available, the
+        feedback and status readers matched (else the first feedback of a
+        goal sent at once may be published before they match, and lost).
+        One deadline for all."""
+        deadline = time.monotonic() + timeout
+        return all(ps.wait_matched(e, max(0.01, deadline - time.monotonic()))
+                   for e in [x for pair in self.ep.pairs.values() for x in pair]
+                   + [self.feedback, self.status])
 
     def _call(self, srv, make, timeout=10.0):
         w, r = self.ep.pairs[srv]
@@ -199,6 +205,15 @@ class ActionClient:
         gid = gid or UUID(uuid=[0] * 16)
         return self._call("cancel_goal", lambda g, s: CancelRequest(
             guid=g, seq=s, goal_info=GoalInfo(goal_id=gid, stamp=stamp)))
+
+
+def services_only(dp, name):
+    """The three services of Fibonacci action `name` as a server offers
+    them (request readers, reply writers), answering nothing, with no
+    feedback nor status publisher: no action server for
+    rcl_action_server_is_available. Returns the endpoints (.pairs[srv] is
+    (request reader, reply writer))."""
+    return _Endpoints(dp, name, "serviceid")
 
 
 @dataclass

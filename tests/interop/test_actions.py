@@ -14,8 +14,8 @@ from cyclonedds.topic import Topic
 
 import pubsub_support as ps
 from action_support import (FIB, STATUS, UUID, ActionClient, ActionServer, GoalStatusArray,
-                            ScriptedStatusServer, check_cancel, check_goal_result, status_qos,
-                            uuid_hex)
+                            ScriptedStatusServer, check_cancel, check_goal_result,
+                            services_only, status_qos, uuid_hex)
 
 
 def rclada(*args, timeout=30):
@@ -145,6 +145,27 @@ def test_ada_client_against_python_server():
         assert rejected.returncode == 0 and "Goal was rejected." in rejected.stdout
     finally:
         server.stop()
+
+
+def test_ada_client_waits_for_feedback_and_status_publishers():
+    """A peer offering only the three services of an action is no action
+    server (rcl_action_server_is_available): rclada action send_goal
+    --feedback waits for the status and feedback publishers too, then times
+    out saying what is missing, sending no goal. Before, the services alone
+    let it send the goal, and feedback published before its feedback reader
+    matched was lost (0 'Feedback:' lines in a fresh-clone CI run)."""
+    dp = ps.participant()
+    half = services_only(dp, "/fib_half")
+    started = time.monotonic()
+    r = rclada("action", "send_goal", "/fib_half", "example_interfaces/action/Fibonacci",
+               "{order: 2}", "--feedback", "--timeout", "1.5")
+    took = time.monotonic() - started
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert "action /fib_half: no server available after" in r.stderr, r.stderr
+    assert "(missing: status publisher, feedback publisher)" in r.stderr, r.stderr
+    assert "Sending goal:" not in r.stdout, r.stdout
+    assert not half.pairs["send_goal"][0].take(N=4), "a goal was sent"
+    assert took < 10, took
 
 
 def test_ada_client_follows_its_goal_status():

@@ -1,10 +1,14 @@
 with Ada.Containers.Vectors;
+with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Text_IO; use Ada.Text_IO;
 with AUnit.Assertions; use AUnit.Assertions;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
 with RCL.Nodes;
+with RCL.Publishers;
+with RCL.QoS;
+with RCL.Services;
 with Suite_Support; use Suite_Support;
 
 package body RCL.Actions.Clients.Tests is
@@ -379,6 +383,100 @@ package body RCL.Actions.Clients.Tests is
       end;
    end Bounded_Lifetime;
 
+   ---------------------------
+   -- Server availability --
+   ---------------------------
+
+   procedure Never_Answer
+     (Node     : in out RCL.Nodes.Node'Class;
+      Request  : ROSIDL.Dynamic.Message;
+      Response : in out ROSIDL.Dynamic.Message) is null;
+
+   procedure Ignore_Feedback
+     (Node     : in out RCL.Nodes.Node'Class;
+      Goal     : Goal_Id;
+      Feedback : ROSIDL.Dynamic.Message) is null;
+
+   procedure Availability (Unused : in out Fixture) is
+      --  A peer serving the three services of an action, then publishing
+      --  its status topic, then its feedback topic: as
+      --  rcl_action_server_is_available, a client has a server only once
+      --  its status (and, with On_Feedback, feedback) subscription matched
+      --  too. Before, the services alone made a server: a goal could be
+      --  sent while the feedback reader matched no writer yet, and the
+      --  first feedback was lost (test_actions, fresh-clone CI).
+      use type Ada.Real_Time.Time_Span;
+      Action      : constant String := "/act_tests/avail";
+      Peer_Node   : RCL.Nodes.Node := RCL.Nodes.Init ("act_avail_peer", "/act_tests");
+      Client_Node : RCL.Nodes.Node := RCL.Nodes.Init ("act_avail_client", "/act_tests");
+      Fed, Plain, Unopened : Clients.Client;
+      --  With a feedback subscription, without, not initialised.
+
+      function Services_Up return Boolean is
+        (Fed.Send.Service_Available and then Fed.Cancel.Service_Available
+         and then Fed.Results.Service_Available and then Plain.Send.Service_Available
+         and then Plain.Cancel.Service_Available and then Plain.Results.Service_Available);
+
+      procedure Expect_Timeout (C : Clients.Client; Timeout : Duration; Missing : String) is
+         Started : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+         Waited  : Duration;
+      begin
+         C.Wait_For_Server (Timeout);
+         Assert (False, "Wait_For_Server returned, " & Missing & " missing");
+      exception
+         when E : RCL_Timeout =>
+            Waited := Ada.Real_Time.To_Duration (Ada.Real_Time.Clock - Started);
+            Assert (Contains (Ada.Exceptions.Exception_Message (E),
+                              "action " & Action & ": no server available after")
+                    and then Contains (Ada.Exceptions.Exception_Message (E),
+                                       "(missing: " & Missing & ")"),
+                    Ada.Exceptions.Exception_Message (E));
+            Assert (Waited >= Timeout and then Waited < Timeout + 2.0,
+                    "Wait_For_Server (" & Timeout'Image & ") took" & Waited'Image & " s");
+      end Expect_Timeout;
+
+      Deadline : constant Ada.Real_Time.Time := Ada.Real_Time.Clock + Ada.Real_Time.Seconds (10);
+   begin
+      RCL.Services.Serve (Peer_Node, Send_Goal_Support (Fibonacci), Action & Send_Goal_Suffix,
+                          Never_Answer'Access);
+      RCL.Services.Serve (Peer_Node, Cancel_Support, Action & Cancel_Suffix,
+                          Never_Answer'Access);
+      RCL.Services.Serve (Peer_Node, Get_Result_Support (Fibonacci), Action & Get_Result_Suffix,
+                          Never_Answer'Access);
+      Fed.Init (Client_Node, Fibonacci, "avail", On_Feedback => Ignore_Feedback'Access);
+      Plain.Init (Client_Node, Fibonacci, "avail");
+      while not Services_Up and then Ada.Real_Time.Clock < Deadline loop
+         delay 0.01;
+      end loop;
+      Assert (Services_Up, "the three services are available to both clients (10 s)");
+      Assert (not Fed.Server_Available and then not Plain.Server_Available,
+              "the three services alone make no server");
+      Expect_Timeout (Fed, 0.3, "status publisher, feedback publisher");
+      Expect_Timeout (Plain, 0.3, "status publisher");
+      declare
+         Status : constant RCL.Publishers.Publisher :=
+           Peer_Node.Publish (Status_Support, Action & Status_Suffix, RCL.QoS.Action_Status);
+         pragma Unreferenced (Status);
+      begin
+         Plain.Wait_For_Server (10.0);
+         Assert (Plain.Server_Available, "services and status: a server for a client without "
+                 & "feedback subscription");
+         Assert (not Fed.Server_Available, "no feedback publisher: no server for a client "
+                 & "with a feedback subscription");
+         Expect_Timeout (Fed, 0.2, "feedback publisher");
+         declare
+            Feedback : constant RCL.Publishers.Publisher :=
+              Peer_Node.Publish (Feedback_Message_Support (Fibonacci), Action & Feedback_Suffix);
+            pragma Unreferenced (Feedback);
+         begin
+            Fed.Wait_For_Server (10.0);
+            Assert (Fed.Server_Available and then Plain.Server_Available,
+                    "services, status and feedback: a server for both clients");
+         end;
+      end;
+      Assert (not Unopened.Server_Available, "a client not initialised has no server");
+   end Availability;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite :=
         new AUnit.Test_Suites.Test_Suite;
@@ -387,6 +485,9 @@ package body RCL.Actions.Clients.Tests is
                                       Follows_Status'Access));
       Result.Add_Test (Caller.Create ("actions: 1000 goals, bounded client and server goal sets",
                                       Bounded_Lifetime'Access));
+      Result.Add_Test (Caller.Create ("actions: a server is available once its services, "
+                                      & "status and feedback topics matched",
+                                      Availability'Access));
       return Result;
    end Suite;
 
