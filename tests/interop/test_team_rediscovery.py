@@ -28,13 +28,13 @@ def others(parts, own_key):
             for s in parts.take(N=100) if s.key != own_key]
 
 
-def wait_state(parts, own_key, key, alive, timeout):
-    """Seconds until `key` (or any other participant when None) is seen in
-    state `alive`; None when it is not within `timeout`."""
+def wait_state(parts, own_key, key, alive, timeout, exclude=frozenset()):
+    """Seconds until `key` (or any other participant not in `exclude` when
+    None) is seen in state `alive`; None when it is not within `timeout`."""
     start = time.monotonic()
     while time.monotonic() - start < timeout:
         for k, a in others(parts, own_key):
-            if (key is None or k == key) and a == alive:
+            if (k == key if key is not None else k not in exclude) and a == alive:
                 return time.monotonic() - start, k
         time.sleep(0.05)
     return None, None
@@ -45,12 +45,16 @@ def test_stopped_team_agent_is_dropped_within_its_participant_lease(tmp_path):
     parts = BuiltinDataReader(dp, BuiltinTopicDcpsParticipant)
     own_key = dp.guid
     log = tmp_path / "agent.log"
+    # Participants alive before the agent starts (a peer of an earlier test
+    # still shutting down) are not the agent's.
+    time.sleep(1.0)
+    before = {k for k, _ in others(parts, own_key)}
     agent = subprocess.Popen(
         [str(SANCTA), "team-agent", "--team", f"rediscovery{os.getpid()}", "--id", "r1",
          "--x", "0", "--y", "0", "--lease", "1.0", "--for", "60"],
         stdout=open(log, "w"), stderr=subprocess.STDOUT)
     try:
-        seen, key = wait_state(parts, own_key, None, True, 20)
+        seen, key = wait_state(parts, own_key, None, True, 20, exclude=before)
         assert seen is not None, "the team agent's participant was never discovered"
         time.sleep(1.0)
         others(parts, own_key)  # drop the samples of the start
