@@ -224,22 +224,29 @@ class _Goal:
     status: int = 2
     seq: list = field(default_factory=lambda: [0, 1])
     waiting: list = field(default_factory=list)
+    since: float = field(default_factory=time.monotonic)  # acceptance
 
 
 class ActionServer(ServingThread):
     """rclpy's ActionServer protocol for Fibonacci `name`: accepts orders >= 0,
     one number per `step` seconds (feedback), accepts every cancel request.
     With `result_timeout` (s), forgets goals that long after they ended (as
-    rcl_action; by default it keeps them all). Runs in a thread of its own
-    until stop()."""
+    rcl_action; by default it keeps them all). With `await_reader` (s), a
+    goal publishes its first feedback only once the feedback writer has
+    matched a reader, waiting that long at most: the writer is volatile, so
+    a client whose feedback reader this server discovers after the goal
+    (a lost discovery packet, repaired only later) would lose it; the
+    same as rmw_cyclonedds waits for a service client's reply reader.
+    Runs in a thread of its own until stop()."""
 
-    def __init__(self, dp, name="/fibonacci", step=0.05, result_timeout=None):
+    def __init__(self, dp, name="/fibonacci", step=0.05, result_timeout=None, await_reader=0.0):
         self.ep = _Endpoints(dp, name, "serviceid")
         self.fb = ps.writer(dp, f"rt{name}/_action/feedback", FeedbackMessage)
         self.st = DataWriter(dp, Topic(dp, f"rt{name}/_action/status", GoalStatusArray),
                              qos=status_qos())
         self.step = step
         self.result_timeout = result_timeout
+        self.await_reader = await_reader
         self.ended = {}  # goal id hex -> time.monotonic() of its end
         self.goals = {}
         self.canceled = []
@@ -306,6 +313,9 @@ class ActionServer(ServingThread):
                     if g.status == 3:
                         g.status = 5
                     elif g.status == 2 and len(g.seq) < g.order + 1:
+                        if (len(g.seq) == 2 and time.monotonic() < g.since + self.await_reader
+                                and self.fb.get_publication_matched_status().current_count == 0):
+                            continue
                         g.seq.append(g.seq[-1] + g.seq[-2])
                         self.fb.write(FeedbackMessage(goal_id=g.gid, sequence=list(g.seq)))
                         continue
@@ -329,7 +339,7 @@ class ScriptedStatusServer(ServingThread):
     (UUID, status value), other goals and status values that are no
     GoalStatus allowed), answering get_result (SUCCEEDED, `result`) after
     the last. `readers_qos` gets the QoS of the status readers matched at
-    acceptance (the client's)."""
+    acceptance (the client's; waiting 2 s at most for one)."""
 
     def __init__(self, dp, name, script, result=(0, 1, 1), gap=0.3):
         self.ep = _Endpoints(dp, name, "serviceid")
@@ -353,6 +363,7 @@ class ScriptedStatusServer(ServingThread):
                 if isinstance(r, SendGoalRequest):
                     sg_w.write(SendGoalResponse(guid=r.guid, seq=r.seq, accepted=True,
                                                 stamp=Time(sec=1)))
+                    ps.wait_matched(self.st, 2.0)  # see ActionServer's await_reader
                     self.readers_qos = [self.st.get_matched_subscription_data(h).qos
                                         for h in self.st.get_matched_subscriptions()]
                     steps = list(self.script(r.goal_id))

@@ -127,7 +127,7 @@ def test_action_cli_graph(client):
 
 def test_ada_client_against_python_server():
     dp = ps.participant()
-    server = ActionServer(dp, "/fib_py", step=0.03)
+    server = ActionServer(dp, "/fib_py", step=0.03, await_reader=2.0)
     try:
         r = rclada("action", "send_goal", "/fib_py", "example_interfaces/action/Fibonacci",
                    "{order: 5}", "--feedback")

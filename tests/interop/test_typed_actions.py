@@ -55,7 +55,7 @@ def test_typed_server_cancel(client):
 
 def test_typed_client_against_python_server():
     dp = ps.participant()
-    server = ActionServer(dp, "/typed_fib_py", step=0.03)
+    server = ActionServer(dp, "/typed_fib_py", step=0.03, await_reader=2.0)
     try:
         ok = subprocess.run([str(ps.BIN / "typed_fibonacci"), "client", "6", "typed_fib_py", "20"],
                             capture_output=True, text=True, timeout=60)
