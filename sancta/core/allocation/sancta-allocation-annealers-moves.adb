@@ -75,9 +75,13 @@ package body Sancta.Allocation.Annealers.Moves is
                   RS : constant Positive := G.Robot;
                   N  : constant Cost := Cost (G.Last - G.First + 1);
                begin
-                  if RS /= R and then (Has_Own_Costs (P, R) or else Has_Own_Costs (P, RS)) then
+                  if RS /= R and then S.Compact.Row = null
+                    and then (Has_Own_Costs (P, R) or else Has_Own_Costs (P, RS))
+                  then
                      --  Another robot's segment in a different metric: arc
                      --  by arc in R's own costs (its prefix sums are RS's).
+                     --  Never with a compact matrix (no robot has costs of
+                     --  its own then): that test first, the cheaper.
                      for K2 in G.First .. G.Last loop
                         declare
                            I : constant Positive :=
@@ -202,11 +206,40 @@ package body Sancta.Allocation.Annealers.Moves is
       end loop;
    end Render;
 
+   --  Rebuild of the robot of T, whose new tour (in S.Task_At, S.Length)
+   --  keeps the first Keep positions of its old tour of Old_Length tasks:
+   --  when T ends with the end of that old tour (a span neither reversed
+   --  nor part of the kept prefix), Rebuild offsets its arcs' old sums.
+   procedure Rebuild_Planned
+     (P : Problem; S : in out State; T : Tour_Plan; Keep, Old_Length : Natural)
+   is
+      R : constant Positive := T.Robot;
+   begin
+      if T.Count >= 1 then
+         declare
+            Z : Segment renames T.Segments (T.Count);
+            --  Z.First now at the position Anchor.
+            Anchor : constant Integer := S.Length (R) - (Z.Last - Z.First);
+         begin
+            if Z.Kind = Span and then Z.Robot = R and then not Z.Reversed
+              and then Z.Last = Old_Length and then Anchor > Keep
+            then
+               Rebuild (P, S, R, Keep + 1, Same_From => Anchor + 1,
+                        Shift => Z.First - Anchor);
+               return;
+            end if;
+         end;
+      end if;
+      Rebuild (P, S, R, Keep + 1);
+   end Rebuild_Planned;
+
    procedure Apply (P : Problem; S : in out State; Mv : Move) is
       Length_A, Length_B, Keep_A, Keep_B : Natural := 0;
       Buffer_A, Buffer_B : Count_Array (1 .. S.Positions);
       A : constant Positive := Mv.A.Robot;
       B : constant Natural := Mv.B.Robot;
+      Old_Length_A : constant Natural := S.Length (A);
+      Old_Length_B : constant Natural := (if B /= 0 then S.Length (B) else 0);
    begin
       Render (S, Mv.A, Buffer_A, Length_A, Keep_A);
       if B /= 0 then
@@ -225,9 +258,9 @@ package body Sancta.Allocation.Annealers.Moves is
          end loop;
          S.Length (B) := Length_B;
       end if;
-      Rebuild (P, S, A, Keep_A + 1);
+      Rebuild_Planned (P, S, Mv.A, Keep_A, Old_Length_A);
       if B /= 0 then
-         Rebuild (P, S, B, Keep_B + 1);
+         Rebuild_Planned (P, S, Mv.B, Keep_B, Old_Length_B);
       end if;
    end Apply;
 
@@ -241,6 +274,39 @@ package body Sancta.Allocation.Annealers.Moves is
       begin
          raise Program_Error with "annealer check failed: " & What;
       end Fail;
+
+      --  Robot R's locations and prefix sums (Rebuild's caches, which the
+      --  moves' predictions read) against its tasks and the distances.
+      procedure Check_Caches (R : Positive) is
+         N : constant Natural := S.Length (R);
+         Forward, Backward, Forward_Sum, Backward_Sum : Cost := 0;
+      begin
+         if S.Location_At (R, 0) /= P.Start (R) then
+            Fail ("robot" & R'Image & " start location");
+         end if;
+         for I in 1 .. N + 1 loop
+            declare
+               L : constant Natural :=
+                 (if I <= N then Location_Of (P, S.Task_At (R, I), S.Choice (S.Task_At (R, I)))
+                  else P.Finish (R));
+               Before : constant Natural := S.Location_At (R, I - 1);
+            begin
+               Forward := Forward + Robot_Distance (P, R, Before, L);
+               Backward := Backward + Robot_Distance (P, R, L, Before);
+               if I <= N then
+                  Forward_Sum := Forward_Sum + Forward;
+                  Backward_Sum := Backward_Sum + Backward;
+               end if;
+               if S.Location_At (R, I) /= L or else S.Forward_Cost (R, I) /= Forward
+                 or else S.Backward_Cost (R, I) /= Backward
+                 or else (I <= N and then (S.Forward_Sum (R, I) /= Forward_Sum
+                                           or else S.Backward_Sum (R, I) /= Backward_Sum))
+               then
+                  Fail ("caches of robot" & R'Image & " at position" & I'Image);
+               end if;
+            end;
+         end loop;
+      end Check_Caches;
    begin
       for R in 1 .. S.Robots loop
          declare
@@ -262,6 +328,7 @@ package body Sancta.Allocation.Annealers.Moves is
                   end if;
                end;
             end loop;
+            Check_Caches (R);
             Cost_From_Scratch (P, R, S.Task_At, S.Length (R), S.Choice, RC, RCm);
             if RC /= S.Robot_Cost (R) or else RCm /= S.Robot_Completion (R) then
                Fail ("robot" & R'Image & " cost" & S.Robot_Cost (R)'Image & " /"

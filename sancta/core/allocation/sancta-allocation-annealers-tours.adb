@@ -223,16 +223,44 @@ package body Sancta.Allocation.Annealers.Tours is
       Free (C.Column);
    end Free;
 
-   procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive) is
+   procedure Rebuild
+     (P : Problem; S : in out State; R : Positive; From : Positive;
+      Same_From : Positive := Positive'Last; Shift : Integer := 0)
+   is
       N : constant Natural := S.Length (R);
       M : constant Cost := Cost (P.Multiplier (R));
       F : constant Positive := Positive'Min (From, N + 1);
+      Tail : constant Positive := Positive'Min (Same_From, N + 2);
+      --  The arcs into positions Tail .. N + 1 are the old tour's (N + 2:
+      --  none); position Tail - 1 is their anchor, recomputed below.
       Old_Cost       : constant Cost := S.Robot_Cost (R);
       Old_Completion : constant Cost := S.Robot_Completion (R);
+      Old_Forward, Old_Backward : Cost := 0;
+      --  The anchor's old prefix costs.
       Bad : Natural := 0;
    begin
+      if Tail <= N + 1 then
+         --  The old tail's locations and prefix costs to their new places
+         --  (in the direction that reads each old entry before it is
+         --  overwritten), then the anchor's old costs aside.
+         if Shift > 0 then
+            for I in Tail - 1 .. N + 1 loop
+               S.Location_At (R, I) := S.Location_At (R, I + Shift);
+               S.Forward_Cost (R, I) := S.Forward_Cost (R, I + Shift);
+               S.Backward_Cost (R, I) := S.Backward_Cost (R, I + Shift);
+            end loop;
+         elsif Shift < 0 then
+            for I in reverse Tail - 1 .. N + 1 loop
+               S.Location_At (R, I) := S.Location_At (R, I + Shift);
+               S.Forward_Cost (R, I) := S.Forward_Cost (R, I + Shift);
+               S.Backward_Cost (R, I) := S.Backward_Cost (R, I + Shift);
+            end loop;
+         end if;
+         Old_Forward := S.Forward_Cost (R, Tail - 1);
+         Old_Backward := S.Backward_Cost (R, Tail - 1);
+      end if;
       S.Location_At (R, 0) := P.Start (R);
-      for I in F .. N loop
+      for I in F .. Positive'Min (N, Tail - 1) loop
          declare
             T : constant Positive := S.Task_At (R, I);
             L : constant Natural := Location_Of (P, T, S.Choice (T));
@@ -248,11 +276,32 @@ package body Sancta.Allocation.Annealers.Tours is
             S.Backward_Sum (R, I) := S.Backward_Sum (R, I - 1) + S.Backward_Cost (R, I);
          end;
       end loop;
-      S.Location_At (R, N + 1) := P.Finish (R);
-      S.Forward_Cost (R, N + 1) :=
-        S.Forward_Cost (R, N) + Arc (P, S, R, S.Location_At (R, N), P.Finish (R));
-      S.Backward_Cost (R, N + 1) :=
-        S.Backward_Cost (R, N) + Arc (P, S, R, P.Finish (R), S.Location_At (R, N));
+      if Tail <= N + 1 then
+         declare
+            Forward_Change : constant Cost := S.Forward_Cost (R, Tail - 1) - Old_Forward;
+            Backward_Change : constant Cost := S.Backward_Cost (R, Tail - 1) - Old_Backward;
+         begin
+            for I in Tail .. N loop
+               S.Forward_Cost (R, I) := S.Forward_Cost (R, I) + Forward_Change;
+               S.Backward_Cost (R, I) := S.Backward_Cost (R, I) + Backward_Change;
+               S.Forward_Sum (R, I) := S.Forward_Sum (R, I - 1) + S.Forward_Cost (R, I);
+               S.Backward_Sum (R, I) := S.Backward_Sum (R, I - 1) + S.Backward_Cost (R, I);
+            end loop;
+            if Shift /= 0 then
+               for I in Tail .. N loop
+                  S.Position (S.Task_At (R, I)) := I;
+               end loop;
+            end if;
+            S.Forward_Cost (R, N + 1) := S.Forward_Cost (R, N + 1) + Forward_Change;
+            S.Backward_Cost (R, N + 1) := S.Backward_Cost (R, N + 1) + Backward_Change;
+         end;
+      else
+         S.Location_At (R, N + 1) := P.Finish (R);
+         S.Forward_Cost (R, N + 1) :=
+           S.Forward_Cost (R, N) + Arc (P, S, R, S.Location_At (R, N), P.Finish (R));
+         S.Backward_Cost (R, N + 1) :=
+           S.Backward_Cost (R, N) + Arc (P, S, R, P.Finish (R), S.Location_At (R, N));
+      end if;
       if not P.All_Feasible then
          for I in 1 .. N loop
             if not P.Can_Do (R, S.Task_At (R, I)) then

@@ -154,9 +154,22 @@ private package Sancta.Allocation.Annealers.Tours is
    function Current_Max (S : State) return Cost is (S.Max_Tree (1));
    --  The makespan (with one robot the single leaf is Max_Tree (1) itself).
 
-   procedure Rebuild (P : Problem; S : in out State; R : Positive; From : Positive);
+   procedure Rebuild
+     (P : Problem; S : in out State; R : Positive; From : Positive;
+      Same_From : Positive := Positive'Last; Shift : Integer := 0)
+     with Pre => Same_From = Positive'Last
+                 or else (Same_From > From and then Same_From <= S.Length (R) + 1
+                          and then Same_From - 1 + Shift >= 1);
    --  Recomputes the caches of robot R from position From on (its tasks in
    --  Task_At (R, 1 .. Length (R))), its costs, the totals and the tree.
+   --  When the new tour ends with a piece of the old one (Moves.Apply):
+   --  the tasks at positions Same_From - 1 .. Length (R) were at the old
+   --  positions Same_From - 1 + Shift .. Length (R) + Shift, in the same
+   --  order, and the caches still hold the old tour there. The arcs into
+   --  Same_From .. Length (R) + 1 (the finish) are then the old ones: their
+   --  prefix sums are moved and offset instead of read again from the
+   --  distances (each position's own task and location lookups and two
+   --  matrix reads saved; Moves.Verify checks every cache under Check).
 
    procedure Cost_From_Scratch
      (P : Problem; R : Positive; Task_At : Position_Grid; Length : Natural;

@@ -1,3 +1,4 @@
+with Ada.Containers.Generic_Constrained_Array_Sort;
 with Ada.Real_Time;
 with Ada.Unchecked_Deallocation;
 with Sancta.Allocation.Random;
@@ -80,6 +81,12 @@ package body Sancta.Allocation.Local_Search is
       --  most Local_Limit nodes, P a matrix, and they fit in 32 bits
       --  (filled before the candidate lists): a dense, small matrix for
       --  the hot reads instead of scattered rows of the problem's.
+      By_Location : Node_Array := [for V in Node => V];
+      function Location_Before (U, V : Node) return Boolean is (Location (U) < Location (V));
+      procedure Sort is new Ada.Containers.Generic_Constrained_Array_Sort
+        (Node, Node, Node_Array, Location_Before);
+      --  The nodes by location, the order in which Local is filled: each
+      --  row of the problem's matrix read forwards, not at random.
       function D (U, V : Node) return Cost is
         (if Forced (U, V) then -Bound
          elsif Local /= null then Cost (Local (U * N + V))
@@ -448,9 +455,10 @@ package body Sancta.Allocation.Local_Search is
       end if;
       if N <= Local_Limit and then Has_Matrix (P) then
          Local := new Local_Matrix (0 .. N * N - 1);
+         Sort (By_Location);
          Fill :
-         for U in Node loop
-            for V in Node loop
+         for U of By_Location loop
+            for V of By_Location loop
                declare
                   X : constant Cost := Robot_Distance (P, Robot, Location (U), Location (V));
                begin

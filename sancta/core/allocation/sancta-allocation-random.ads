@@ -13,13 +13,14 @@ is
 
    function Seeded (Seed : Interfaces.Unsigned_64) return Generator;
 
-   procedure Next (This : in out Generator; Value : out Interfaces.Unsigned_64);
+   procedure Next (This : in out Generator; Value : out Interfaces.Unsigned_64)
+     with Inline;
 
    function Below (This : in out Generator; N : Positive) return Natural
-     with Post => Below'Result < N;
+     with Inline, Post => Below'Result < N;
    --  Uniform in 0 .. N - 1 (up to a negligible bias).
 
    function Uniform (This : in out Generator) return Long_Float
-     with Post => Uniform'Result >= 0.0 and then Uniform'Result < 1.0;
+     with Inline, Post => Uniform'Result >= 0.0 and then Uniform'Result < 1.0;
 
 end Sancta.Allocation.Random;

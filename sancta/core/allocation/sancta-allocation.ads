@@ -47,9 +47,10 @@ is
      (C : Criterion; Max, Sum, Completion_Sum : Cost; Tasks : Natural)
       return Long_Float
    is (C.Max_Weight * Long_Float (Max) + C.Sum_Weight * Long_Float (Sum)
-       + (if Tasks = 0 then 0.0
+       + (if Tasks = 0 or else C.Ave_Weight = 0.0 then 0.0
           else C.Ave_Weight * Long_Float (Completion_Sum) / Long_Float (Tasks)));
-   --  The objective, always computed afresh from exact integer parts.
+   --  The objective, always computed afresh from exact integer parts (no
+   --  division for a criterion without the mean: its term is 0.0 anyway).
 
    function Preset (Name : String; Found : out Boolean) return Criterion;
    --  minmax, minsum, minave, minmix, mintim; Found False otherwise.
