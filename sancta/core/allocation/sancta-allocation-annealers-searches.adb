@@ -56,11 +56,24 @@ package body Sancta.Allocation.Annealers.Searches is
       This.Best_Saved := True;
    end Save_Best;
 
+   function Sum_Of (W : Kind_Reals) return Long_Float is
+      Total : Long_Float := 0.0;
+   begin
+      for M in Move_Kind loop
+         Total := Total + W (M);
+      end loop;
+      return Total;
+   end Sum_Of;
+   --  In Move_Kind order (Search.Weight_Total).
+
    procedure Check (This : Search; P : Problem; Mv : Move := No_Move;
                     Predicted : Boolean := False) is
    begin
       if This.Opts.Check then
          Verify (P, This.Tours.all, Mv, Predicted);
+         if This.Weight_Total /= Sum_Of (This.Weight) then
+            raise Program_Error with "annealer check failed: move weight total";
+         end if;
       end if;
    end Check;
 
@@ -139,13 +152,8 @@ package body Sancta.Allocation.Annealers.Searches is
    --  Drawing and proposing moves.
 
    function Pick_Kind (This : in out Search) return Move_Kind is
-      Total : Long_Float := 0.0;
-      X     : Long_Float;
+      X : Long_Float := Random.Uniform (This.Generator) * This.Weight_Total;
    begin
-      for M in Move_Kind loop
-         Total := Total + This.Weight (M);
-      end loop;
-      X := Random.Uniform (This.Generator) * Total;
       for M in Move_Kind loop
          X := X - This.Weight (M);
          if X < 0.0 then
@@ -175,7 +183,10 @@ package body Sancta.Allocation.Annealers.Searches is
    is
       S : State renames This.Tours.all;
       Source : Natural := T;
-      Best_Mv, Candidate : Move;
+      Slots : array (Boolean) of Move;
+      Best : Boolean := False;
+      --  The best candidate so far in Slots (Best), the next one drawn in
+      --  the other slot (no copy of a move per improvement).
       Found, Legal : Boolean := False;
    begin
       Ok := False;
@@ -193,17 +204,21 @@ package body Sancta.Allocation.Annealers.Searches is
          end;
       end if;
       for Try in 1 .. This.Log_Tries loop
-         Random_Insert (P, S, This.Generator, Source, Guided, Candidate, Legal);
-         if Legal then
-            Evaluate_Move (P, S, This.Guide, Candidate, Legal);
-            if Legal and then (not Found or else Candidate.Value < Best_Mv.Value) then
-               Best_Mv := Candidate;
-               Found := True;
+         declare
+            Candidate : Move renames Slots (not Best);
+         begin
+            Random_Insert (P, S, This.Generator, Source, Guided, Candidate, Legal);
+            if Legal then
+               Evaluate_Move (P, S, This.Guide, Candidate, Legal);
+               if Legal and then (not Found or else Candidate.Value < Slots (Best).Value) then
+                  Best := not Best;
+                  Found := True;
+               end if;
             end if;
-         end if;
+         end;
       end loop;
       if Found then
-         Mv := Best_Mv;
+         Mv := Slots (Best);
          Ok := True;
       end if;
    end Propose_Best_Insert;
@@ -699,6 +714,7 @@ package body Sancta.Allocation.Annealers.Searches is
          end if;
          This.Only_Ruin := True;
       end if;
+      This.Weight_Total := Sum_Of (W);
    end Choose_Move_Kinds;
 
    --  Temperatures from the mean uphill delta of 300 sampled moves.
@@ -986,6 +1002,7 @@ package body Sancta.Allocation.Annealers.Searches is
          This.Score (M) := 0.0;
          This.Tries (M) := 0.0;
       end loop;
+      This.Weight_Total := Sum_Of (This.Weight);
    end Adapt_Weights;
 
    --  Everything done every 128 moves: budget, balance decay, temperature,

@@ -79,6 +79,9 @@ private package Sancta.Allocation.Annealers.Searches is
       Weight          : Kind_Reals := [others => 0.0];
       Score, Tries    : Kind_Reals := [others => 0.0];
       --  Adaptive move weights: draws and successes since the last update.
+      Weight_Total    : Long_Float := 0.0;
+      --  The sum of Weight (Sum_Of), set wherever Weight changes: what
+      --  Pick_Kind draws against (checked under Options.Check).
       Only_Ruin       : Boolean := False;
       --  No drawn move kind is enabled: every move is a ruin and recreate.
       Kinds           : Kind_Stats_Array;
