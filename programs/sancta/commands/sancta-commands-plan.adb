@@ -27,10 +27,6 @@ package body Sancta.Commands.Plan is
 
    Usage_Error : exception;
 
-   Default_Subset_Share : constant := 0.2;
-   --  --subsets when not given, with the annealer (Annealers.Options'
-   --  Subset_Share, whose comment has the figures measured).
-
    --  CPU seconds used so far by the main task (set-up and search; runs of
    --  --restarts work in tasks of their own).
    function CPU_Seconds return Long_Float is
@@ -90,9 +86,9 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --subsets F          minmax, 3+ robots: share of the budget for re-annealing");
       Put_Line ("                       the longest tour with tours near it as a problem of");
       Put_Line ("                       their own, kept when their makespan falls (default");
-      Put_Line ("                       0.2, 0 = none; measured against none given the same");
-      Put_Line ("                       CPU time, 60-1000 tasks x 3/5/10 robots: mean");
-      Put_Line ("                       makespan -0.16% at 10 s, -0.13% at 1 s, -0.01% at 0.1 s)");
+      Put_Line ("                       0 = none; 0.2: mean makespan -0.16% at 10 s, -0.13%");
+      Put_Line ("                       at 1 s on 60-1000 tasks at the same CPU time, but");
+      Put_Line ("                       worse at 1000 tasks)");
       Put_Line ("  --subset-robots N    tours per such subset (2 .. 5, default 3)");
       Put_Line ("  --subset-moves M     moves per task of a subset's anneal (default 5000)");
       Put_Line ("  --subset-fresh       a subset's anneal starts from its own construction");
@@ -461,7 +457,6 @@ package body Sancta.Commands.Plan is
       SVG, JSON  : Unbounded_String;
       I          : Natural := First_Argument;
       Time_Set   : Boolean := False;
-      Subsets_Set : Boolean := False;
       Proven     : Boolean := False;
       Lower_Bound : Cost := 0;
       Exact_Note : Unbounded_String;
@@ -635,7 +630,6 @@ package body Sancta.Commands.Plan is
                Opts.Excess_Band := Number_In (A, 0.0, 1.0);
             elsif A = "--subsets" then
                Opts.Subset_Share := Number_In (A, 0.0, 0.9);
-               Subsets_Set := True;
             elsif A = "--subset-robots" then
                Opts.Subset_Robots := Positive (Number_In (A, 2.0, 5.0));
             elsif A = "--subset-moves" then
@@ -700,11 +694,6 @@ package body Sancta.Commands.Plan is
          raise Usage_Error with "no FILE given (see sancta plan --help)";
       end if;
       Opts.Criterion := Crit;
-      if not Subsets_Set and then To_String (Solver) = "anneal" then
-         Opts.Subset_Share := Default_Subset_Share;
-         --  Only where Subsets.Applies: a pure makespan with 3+ robots
-         --  (minsum, minave and TSP plans are unchanged).
-      end if;
 
       declare
          Name : constant String := To_String (File);

@@ -224,17 +224,19 @@ package Sancta.Allocation.Annealers is
       --  re-optimisation: the longest tour and Subset_Robots - 1 tours near
       --  it pooled, re-annealed as a problem of their own (Subset_Moves x
       --  its tasks moves, own seed), put back when their makespan falls (or
-      --  stays and their total falls); 0 = none here; sancta plan's default
-      --  is 0.2 (--subsets 0 turns it off). Session 14, 0.2 against none
-      --  given the same CPU time (the anneal alone stops at ~92% of a time
-      --  budget: --time x 1.07 / 1.085 for it), 6 unseen instances of
-      --  60-1000 tasks x 3 / 5 / 10 robots: 10 s CPU, 3 seeds -0.16% mean
-      --  makespan (22 better / 15 worse / 17 equal; no group of m or size
-      --  worse); 1 s, 6 seeds -0.13% (44 / 39 / 25); 0.1 s, 9 seeds -0.01%
-      --  (71 / 57 / 34); at fixed move budgets 10 M -0.22% (17 / 6 / 13),
-      --  2 M +0.04% (19 / 22 / 13; m = 10 +0.37%, 3 / 8). Session 13, 10
-      --  robots, 300-800 tasks, 10 s CPU (8% more CPU than without): -0.30%
-      --  (13 / 7); bench random300/500 x 10, 6 seeds: -0.31%, -0.67%.
+      --  stays and their total falls); 0 = none. Not the default: session 14,
+      --  0.2 against none given the same CPU time (the anneal alone stops
+      --  at ~92% of a time budget), 6 unseen instances of 60-1000 tasks x
+      --  3 / 5 / 10 robots: 10 s CPU -0.16% mean makespan (22 better / 15
+      --  worse / 17 equal), 1 s -0.13% (44 / 39), 0.1 s -0.01% (71 / 57);
+      --  10 M moves -0.22% (17 / 6), 2 M +0.04% (19 / 22); but worse at
+      --  1000 tasks under time budgets (u1001: 10 s +0.20%, 3 / 6; 1 s
+      --  +0.36%, 6 / 12) and on bench rows at 10 s, 3 seeds (against none
+      --  at 10 s): pr2392-first1000 x 10 +1.35% -> +2.10% of LKH-3 (over
+      --  the 2% target), x 3 +0.65%; rat99 x 5 median 454 -> 458 (9
+      --  seeds); better on random300 x 10 (+3.22% -> +1.65%) and random500
+      --  x 10 (+1.77% -> +0.98%). Session 13 (10 robots, 300-800 tasks,
+      --  10 s, 8% more CPU than without): -0.30% (13 / 7).
       Subset_Robots : Positive := 3;
       Subset_Moves  : Long_Float := 5000.0;
       Subset_Start_Factor : Long_Float := 0.05;
