@@ -144,3 +144,17 @@ def test_excess_term_options():
         p = run(eil51, option, value)
         assert p.returncode != 0
         assert "%s: '%s' is not a number in %s" % (option, value, message) in p.stderr, p.stderr
+
+
+def test_subset_robots_is_a_whole_count():
+    """--subset-robots takes a whole count in 2 .. 5: a fraction is refused,
+    not rounded."""
+    eil51 = str(REPO / "share" / "tsplib" / "eil51.tsp")
+    for value in ["2.5", "7", "three"]:
+        p = run(eil51, "--robots", "5", "--objective", "minmax", "--subsets", "0.2",
+                "--subset-robots", value)
+        assert p.returncode != 0, value
+        assert "--subset-robots: '%s' is not a count in 2 .. 5" % value in p.stderr, p.stderr
+    p = run(eil51, "--robots", "5", "--objective", "minmax", "--subsets", "0.2",
+            "--subset-robots", "3", "--time", "0", "--iterations", "20000", "--quiet")
+    assert p.returncode == 0, p.stderr

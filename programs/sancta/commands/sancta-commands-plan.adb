@@ -631,7 +631,17 @@ package body Sancta.Commands.Plan is
             elsif A = "--subsets" then
                Opts.Subset_Share := Number_In (A, 0.0, 0.9);
             elsif A = "--subset-robots" then
-               Opts.Subset_Robots := Positive (Number_In (A, 2.0, 5.0));
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Subset_Robots := Positive'Value (S);
+                  if Opts.Subset_Robots not in 2 .. 5 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--subset-robots: '" & S & "' is not a count in 2 .. 5";
+               end;
             elsif A = "--subset-moves" then
                Opts.Subset_Moves := Number_In (A, 1.0, 1.0E6);
             elsif A = "--subset-t0" then
