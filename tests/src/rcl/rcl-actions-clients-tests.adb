@@ -3,6 +3,7 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Text_IO; use Ada.Text_IO;
 with AUnit.Assertions; use AUnit.Assertions;
+with Action_Test_Support;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
 with RCL.Nodes;
@@ -219,23 +220,11 @@ package body RCL.Actions.Clients.Tests is
       function Get return Servers.Goal_Handle is (Last);
    end Parked;
 
-   function On_Any_Goal
-     (Node : in out RCL.Nodes.Node'Class;
-      Id   : Goal_Id;
-      Goal : ROSIDL.Dynamic.Message) return Servers.Goal_Response
-   is
-      pragma Unreferenced (Node, Id, Goal);
-   begin
-      return Servers.Accept_And_Execute;
-   end On_Any_Goal;
-
    procedure On_Executing (Node : in out RCL.Nodes.Node'Class; Goal : Servers.Goal_Handle) is
       pragma Unreferenced (Node);
-      Result : constant ROSIDL.Dynamic.Message := Result_Message (Fibonacci);
    begin
       if Servers.Goal (Goal) ("order").As_Int32 < Quick_Orders then
-         Result ("sequence").Set_Int32_Array ([Servers.Goal (Goal) ("order").As_Int32]);
-         Servers.Succeed (Goal, Result);
+         Action_Test_Support.Succeed_With_Order (Fibonacci, Goal);
       else
          Parked.Put (Goal);
       end if;
@@ -297,8 +286,8 @@ package body RCL.Actions.Clients.Tests is
       Status  : Goal_Status;
       Result  : ROSIDL.Dynamic.Message;
    begin
-      Server.Init (Server_Node, Fibonacci, "life", On_Any_Goal'Access, On_Executing'Access,
-                   Result_Timeout => Timeout);
+      Server.Init (Server_Node, Fibonacci, "life", Action_Test_Support.Accept_Every_Goal'Access,
+                   On_Executing'Access, Result_Timeout => Timeout);
       Client.Init (Client_Node, Fibonacci, "life");
       declare
          S1 : Spinner (Server_Node'Access);

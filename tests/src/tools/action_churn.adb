@@ -17,6 +17,7 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with ROSIDL.Dynamic;
+with Action_Test_Support;
 with RCL.Actions.Clients;
 with RCL.Actions.Servers;
 with RCL.Nodes;
@@ -109,22 +110,10 @@ procedure Action_Churn is
          raise;
    end Run_Client;
 
-   function On_Goal
-     (Node : in out RCL.Nodes.Node'Class;
-      Id   : Goal_Id;
-      Goal : ROSIDL.Dynamic.Message) return Servers.Goal_Response
-   is
-      pragma Unreferenced (Node, Id, Goal);
-   begin
-      return Servers.Accept_And_Execute;
-   end On_Goal;
-
    procedure On_Accepted (Node : in out RCL.Nodes.Node'Class; Goal : Servers.Goal_Handle) is
       pragma Unreferenced (Node);
-      Result : constant ROSIDL.Dynamic.Message := Result_Message (Support);
    begin
-      Result ("sequence").Set_Int32_Array ([Servers.Goal (Goal) ("order").As_Int32]);
-      Servers.Succeed (Goal, Result);
+      Action_Test_Support.Succeed_With_Order (Support, Goal);
    end On_Accepted;
 
    procedure Run_Server (Name : String; Timeout : Duration) is
@@ -132,8 +121,8 @@ procedure Action_Churn is
       Server : Servers.Server;
       Next   : Ada.Real_Time.Time := Ada.Real_Time.Clock;
    begin
-      Server.Init (Node, Support, Name, On_Goal'Access, On_Accepted'Access,
-                   Result_Timeout => Timeout);
+      Server.Init (Node, Support, Name, Action_Test_Support.Accept_Every_Goal'Access,
+                   On_Accepted'Access, Result_Timeout => Timeout);
       loop
          Next := Next + Ada.Real_Time.Milliseconds (200);
          Node.Spin (During => Duration'Max
