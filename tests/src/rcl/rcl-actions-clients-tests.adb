@@ -3,13 +3,13 @@ with Ada.Exceptions;
 with Ada.Real_Time;
 with Ada.Text_IO; use Ada.Text_IO;
 with AUnit.Assertions; use AUnit.Assertions;
-with Action_Test_Support;
 with ROSIDL.Dynamic;
 with RCL.Actions.Servers;
 with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Services;
+with Action_Test_Support;
 with Suite_Support; use Suite_Support;
 
 package body RCL.Actions.Clients.Tests is

@@ -17,10 +17,10 @@ with Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with ROSIDL.Dynamic;
-with Action_Test_Support;
 with RCL.Actions.Clients;
 with RCL.Actions.Servers;
 with RCL.Nodes;
+with Action_Test_Support;
 
 procedure Action_Churn is
    use Ada.Text_IO;
