@@ -17,6 +17,7 @@ package body RCL.Actions.Clients.Tests is
    use type Ada.Real_Time.Time;
    use type ROSIDL.Int32;
    use type ROSIDL.Dynamic.Int32_Array;
+   use all type Action_Test_Support.Stop_Flag;
 
    function Fibonacci return Action_Support is
      (Get_Action_Support ("example_interfaces", "Fibonacci"));
@@ -100,7 +101,7 @@ package body RCL.Actions.Clients.Tests is
       Server_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_server", "/act_tests");
       Client_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_client", "/act_tests");
       Other_Node  : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_other", "/act_tests");
-      Stop        : Boolean := False with Atomic;
+      Stop        : aliased Action_Test_Support.Stop_Flag := False;
       Mine, Theirs : Change_Log;
 
       procedure Log_Mine
@@ -116,14 +117,6 @@ package body RCL.Actions.Clients.Tests is
       begin
          Theirs.Add ((Goal, Status));
       end Log_Theirs;
-
-      task type Spinner (Node : not null access RCL.Nodes.Node);
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
 
       Server : Servers.Server;
       Client, Other : Clients.Client;
@@ -149,9 +142,9 @@ package body RCL.Actions.Clients.Tests is
       Client.Init (Client_Node, Fibonacci, "fib", On_Status => Log_Mine'Access);
       Other.Init (Other_Node, Fibonacci, "/act_tests/fib", On_Status => Log_Theirs'Access);
       declare
-         S1 : Spinner (Server_Node'Access);
-         S2 : Spinner (Client_Node'Access);
-         S3 : Spinner (Other_Node'Access);
+         S1 : Action_Test_Support.Spinner (Server_Node'Access, Stop'Access);
+         S2 : Action_Test_Support.Spinner (Client_Node'Access, Stop'Access);
+         S3 : Action_Test_Support.Spinner (Other_Node'Access, Stop'Access);
       begin
          Client.Wait_For_Server (10.0);
          Other.Wait_For_Server (10.0);
@@ -237,15 +230,7 @@ package body RCL.Actions.Clients.Tests is
       --  (0.5 s failed once with a load average of 19 on 2 cores).
       Server_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_server", "/act_tests");
       Client_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_client", "/act_tests");
-      Stop        : Boolean := False with Atomic;
-
-      task type Spinner (Node : not null access RCL.Nodes.Node);
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
+      Stop        : aliased Action_Test_Support.Stop_Flag := False;
 
       Server : Servers.Server;
       Client : Clients.Client;
@@ -290,8 +275,8 @@ package body RCL.Actions.Clients.Tests is
                    On_Executing'Access, Result_Timeout => Timeout);
       Client.Init (Client_Node, Fibonacci, "life");
       declare
-         S1 : Spinner (Server_Node'Access);
-         S2 : Spinner (Client_Node'Access);
+         S1 : Action_Test_Support.Spinner (Server_Node'Access, Stop'Access);
+         S2 : Action_Test_Support.Spinner (Client_Node'Access, Stop'Access);
 
          function Client_Empty return Boolean is (Client.Followed_Goals = 0);
          function Server_Empty return Boolean is (Server.Kept_Goals = 0);

@@ -20,4 +20,11 @@ package body Action_Test_Support is
       RCL.Actions.Servers.Succeed (Goal, Result);
    end Succeed_With_Order;
 
+   task body Spinner is
+   begin
+      while not Stop.all loop
+         Node.Spin (During => 0.05);
+      end loop;
+   end Spinner;
+
 end Action_Test_Support;

@@ -1,7 +1,7 @@
 --  What the action tests and the action_churn test program share: a
 --  Fibonacci action server's callbacks that accept every goal and end it
---  with the result [order]. No AUnit here: the test programs of
---  tests/src/tools use it too.
+--  with the result [order], and a task spinning a node until told to stop.
+--  No AUnit here: the test programs of tests/src/tools use it too.
 --
 --     Server.Init (Node, Support, "fib", Accept_Every_Goal'Access, On_Accepted'Access);
 --     ...
@@ -26,5 +26,11 @@ package Action_Test_Support is
       Goal    : RCL.Actions.Servers.Goal_Handle);
    --  Ends Goal (of the Fibonacci action, Support) Succeeded, its result's
    --  sequence holding the goal's order alone.
+
+   type Stop_Flag is new Boolean with Atomic;
+
+   task type Spinner (Node : not null access RCL.Nodes.Node; Stop : not null access Stop_Flag);
+   --  Spins Node, 0.05 s at a time, until Stop is True.
+   --  Example: S : Spinner (Server_Node'Access, Stop'Access);  --  Stop : aliased Stop_Flag
 
 end Action_Test_Support;

@@ -26,6 +26,7 @@ procedure Action_Churn is
    use Ada.Text_IO;
    use RCL.Actions;
    use type Ada.Real_Time.Time;
+   use all type Action_Test_Support.Stop_Flag;
 
    package CL renames Ada.Command_Line;
 
@@ -58,17 +59,10 @@ procedure Action_Churn is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
    procedure Run_Client (Name : String; Count : Positive) is
-      Node   : RCL.Nodes.Node := RCL.Nodes.Init ("action_churn_client");
+      Node   : aliased RCL.Nodes.Node := RCL.Nodes.Init ("action_churn_client");
       Client : Clients.Client;
-      Stop   : Boolean := False with Atomic;
-
-      task Spinner;
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
+      Stop   : aliased Action_Test_Support.Stop_Flag := False;
+      Spin   : Action_Test_Support.Spinner (Node'Access, Stop'Access);
    begin
       Client.Init (Node, Support, Name);
       Client.Wait_For_Server (15.0);
