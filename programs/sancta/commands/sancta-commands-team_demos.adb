@@ -686,7 +686,8 @@ package body Sancta.Commands.Team_Demos is
                & (if Lost = "" then "" else ", " & Lost), Scene, Tasks => False);
       if Result.Plan_Before.Generation > 0 then
          Picture ("plan-before", "First plan (round" & Result.Plan_Before.Generation'Image
-                  & "), longest tour " & F1 (Result.Planned_Makespan) & " m",
+                  & "), longest tour " & F1 (Result.Grid_Makespan) & " m along the paths drawn ("
+                  & F1 (Result.Planned_Makespan) & " m with straight legs)",
                   Planned_Scene (Result.Round_Before, Result.Plan_Before, Result.Robots,
                                  Map'Access), Tasks => True);
       end if;
