@@ -12,7 +12,6 @@ with RCL.Client_Endpoints;
 with RCL.Contexts;
 with RCL.DDS;
 with RCL.Logging;
-with RCL.Names;
 with RCL.QoS;
 
 package body RCL.Actions.Clients is
@@ -263,24 +262,6 @@ package body RCL.Actions.Clients is
       This.Mine.Remove_Ended_Absent (Listed);
    end Deliver;
 
-   function Subscribe
-     (Node      : in out RCL.Nodes.Node'Class;
-      Type_Name : String;
-      Topic     : String;
-      Handle    : not null RCL.Nodes.Handler_Access;
-      QoS       : RCL.QoS.Profile) return RCL.Node_Entities.Subscription_Access
-   is
-      --  Node.Subscribe_Handler (the same expansion and remapping of Topic),
-      --  keeping the subscription (owned by Node) for its matches.
-      FQ    : constant String := Node.Expand (Topic);
-      Added : RCL.Node_Entities.Subscription_Access;
-   begin
-      RCL.Node_Entities.Add_Endpoint
-        (Node, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
-         Handle => RCL.Node_Entities.Handler_Access (Handle), QoS => QoS, Added => Added);
-      return Added;
-   end Subscribe;
-
    procedure Init
      (This        : in out Client;
       Node        : in out RCL.Nodes.Node'Class;
@@ -306,13 +287,13 @@ package body RCL.Actions.Clients is
       This.Cancel.Init (Node, Cancel_Support, FQ & Cancel_Suffix);
       This.Results.Init (Node, Get_Result_Support (Support), FQ & Get_Result_Suffix);
       if Stored /= null then
-         This.Feedback := Subscribe
+         This.Feedback := RCL.Node_Entities.Subscribe
            (Node, ROSIDL.Typesupport.DDS_Type_Name (Feedback_Message_Support (Support)),
             FQ & Feedback_Suffix,
             new Feedback_Handler'(Support => Support, Mine => This.Mine, Callback => Stored),
             RCL.QoS.Default);
       end if;
-      This.Statuses := Subscribe
+      This.Statuses := RCL.Node_Entities.Subscribe
         (Node, ROSIDL.Typesupport.DDS_Type_Name (Status_Support),
          FQ & Status_Suffix,
          new Status_Handler'(Action   => Ada.Strings.Unbounded.To_Unbounded_String (FQ),

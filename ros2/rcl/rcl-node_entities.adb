@@ -1,5 +1,6 @@
 with Ada.Unchecked_Deallocation;
 with RCL.Graph_Announcements;
+with RCL.Names;
 with RCL.Nodes;
 with RCL.Process_Context;
 
@@ -149,6 +150,21 @@ package body RCL.Node_Entities is
          Free (S);
          raise;
    end Add_Endpoint;
+
+   function Subscribe
+     (Node      : in out RCL.Nodes.Node'Class;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile) return Subscription_Access
+   is
+      FQ    : constant String := Node.Expand (Topic);
+      Added : Subscription_Access;
+   begin
+      Add_Endpoint (Node, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
+                    Handle => Handle, QoS => QoS, Added => Added);
+      return Added;
+   end Subscribe;
 
    function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info is
      ((Source_Timestamp   => ROSIDL.Int64 (Info.Source_Timestamp),

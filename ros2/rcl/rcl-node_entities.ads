@@ -120,6 +120,18 @@ private package RCL.Node_Entities is
    --  its samples and is owned by it once added (not when this raises).
    --  In Node's current callback group; announced in the graph.
 
+   function Subscribe
+     (Node      : in out RCL.Nodes.Node'Class;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile) return Subscription_Access;
+   --  Add_Endpoint for a ROS topic: Topic expanded and remapped as by
+   --  Node.Expand, on its DDS topic (rt/ and the name), no user data; Handle
+   --  owned as there. What RCL.Nodes.Subscribe_Handler does; returns the
+   --  subscription (owned by Node) for callers that keep it (an action
+   --  client's matches).
+
    function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info;
    --  What a callback is told of a sample (received now).
 

@@ -170,12 +170,13 @@ package body RCL.Nodes is
       Handle    : not null Handler_Access;
       QoS       : RCL.QoS.Profile := RCL.QoS.Default)
    is
-      FQ    : constant String := This.Expand (Topic);
-      Added : RCL.Node_Entities.Subscription_Access;
+      Added : constant RCL.Node_Entities.Subscription_Access :=
+        RCL.Node_Entities.Subscribe
+          (This, Type_Name, Topic, RCL.Node_Entities.Handler_Access (Handle), QoS);
+      pragma Unreferenced (Added);
+      --  The node owns it.
    begin
-      RCL.Node_Entities.Add_Endpoint
-        (This, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
-         Handle => RCL.Node_Entities.Handler_Access (Handle), QoS => QoS, Added => Added);
+      null;
    end Subscribe_Handler;
 
    -----------------------------

@@ -228,6 +228,22 @@ package body Sancta.Allocation.Test_Support is
       return Best;
    end Brute_Force;
 
+   procedure Solve_Checked
+     (P    : Problem;
+      O    : Annealers.Options;
+      A    : in out Assignment;
+      S    : out Annealers.Progress;
+      What : String := "")
+   is
+      Prefix : constant String := (if What = "" then "" else What & ": ");
+   begin
+      Annealers.Solve (P, O, A, S);
+      Assert (Validate (P, A) = "", Prefix & "invalid: " & Validate (P, A));
+      Assert (abs (Evaluate (P, A, O.Criterion).Value - S.Best) < 1.0E-6,
+              Prefix & "reported best" & Img (S.Best) & " /= recomputed"
+              & Img (Evaluate (P, A, O.Criterion).Value));
+   end Solve_Checked;
+
    procedure Anneal_Checked
      (P : Problem; O : in out Annealers.Options; A : in out Assignment;
       S : out Annealers.Progress) is
@@ -235,11 +251,7 @@ package body Sancta.Allocation.Test_Support is
       O.Start_Temperature := 0.0;
       O.End_Temperature := 0.0;
       O.Polish := True;
-      Annealers.Solve (P, O, A, S);
-      Assert (Validate (P, A) = "", "invalid: " & Validate (P, A));
-      Assert (abs (Evaluate (P, A, O.Criterion).Value - S.Best) < 1.0E-6,
-              "reported best" & Img (S.Best) & " /= recomputed"
-              & Img (Evaluate (P, A, O.Criterion).Value));
+      Solve_Checked (P, O, A, S);
    end Anneal_Checked;
 
    procedure Print_Mismatch (P : Problem; A, E : Assignment) is

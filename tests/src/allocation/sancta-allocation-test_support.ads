@@ -74,6 +74,18 @@ package Sancta.Allocation.Test_Support is
    --  A near random walk (a huge temperature: most moves apply) with the
    --  expensive check after every move.
 
+   procedure Solve_Checked
+     (P    : Problem;
+      O    : Annealers.Options;
+      A    : in out Assignment;
+      S    : out Annealers.Progress;
+      What : String := "");
+   --  Annealers.Solve (P, O, A, S), then what every annealer test checks of
+   --  the result: A is valid and S.Best, the reported best, is A's value
+   --  under O.Criterion recomputed (within 1.0E-6). A failure's message
+   --  starts with What.
+   --  Example: Solve_Checked (P.all, O, B, T, What => "in reheats");
+
    procedure Anneal_Checked
      (P : Problem; O : in out Annealers.Options; A : in out Assignment;
       S : out Annealers.Progress);

@@ -139,13 +139,11 @@ package body Sancta.Allocation.Tests is
             S, T : Progress;
             Off : Options := O;
          begin
-            Solve (P.all, O, A, S);
+            Solve_Checked (P.all, O, A, S);
             Assert (S.Kinds (Route_Search).Tries
                       >= Long_Long_Integer (Moves / (Route_Search_Interval * P.Tasks) - 1),
                     "route searches:" & S.Kinds (Route_Search).Tries'Image);
             Assert (S.Kinds (Route_Search).Improving > 0, "no route search shortened a route");
-            Assert (Validate (P.all, A) = "", Validate (P.all, A));
-            Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
             Solve (P.all, O, B, T);
             Assert (A = B, "two runs with the same seed differ");
             Off.Enabled (Route_Search) := False;
@@ -172,9 +170,7 @@ package body Sancta.Allocation.Tests is
             S, T : Progress;
             Plain : Options := O;
          begin
-            Solve (P.all, O, A, S);
-            Assert (Validate (P.all, A) = "", Validate (P.all, A));
-            Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+            Solve_Checked (P.all, O, A, S);
             Solve (P.all, O, B, T);
             Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
             Plain.Schedule := Geometric;
@@ -573,9 +569,7 @@ package body Sancta.Allocation.Tests is
                   others => <>);
                Tries : Long_Long_Integer;
             begin
-               Solve (P.all, O, A, S);
-               Assert (Validate (P.all, A) = "", Validate (P.all, A));
-               Assert (abs (Evaluate (P.all, A, C).Value - S.Best) < 1.0E-6, "reported best");
+               Solve_Checked (P.all, O, A, S);
                Tries := S.Kinds (Ejection_Chain).Tries;
                if C.Max_Weight = 0.0 then
                   Assert (Tries = 0, "chains for the total alone:" & Tries'Image);
@@ -626,15 +620,11 @@ package body Sancta.Allocation.Tests is
                Schedule => Hybrid, Check => True, Excess_Weight => 1.0, Excess_Band => 0.03,
                others => <>);
          begin
-            Solve (P.all, O, A, S);
-            Assert (Validate (P.all, A) = "", Validate (P.all, A));
-            Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6, "reported best");
+            Solve_Checked (P.all, O, A, S);
             Solve (P.all, O, B, T);
             Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
             O.Excess_In_Reheats := True;
-            Solve (P.all, O, B, T);
-            Assert (Validate (P.all, B) = "", Validate (P.all, B));
-            Assert (abs (Evaluate (P.all, B, Min_Max).Value - T.Best) < 1.0E-6, "in reheats");
+            Solve_Checked (P.all, O, B, T, What => "in reheats");
             if A /= B then
                Reheats_Differ := Reheats_Differ + 1;
             end if;
@@ -705,11 +695,7 @@ package body Sancta.Allocation.Tests is
               (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 20_000,
                Check => True, Subset_Share => 0.5, Subset_Moves => 100.0, others => <>);
          begin
-            Solve (P.all, O, A, S);
-            Assert (Validate (P.all, A) = "", Validate (P.all, A));
-            Assert (abs (Evaluate (P.all, A, Min_Max).Value - S.Best) < 1.0E-6,
-                    "reported best" & S.Best'Image & " is not the makespan"
-                    & Evaluate (P.all, A, Min_Max).Value'Image);
+            Solve_Checked (P.all, O, A, S);
             --  Each sub-anneal may finish its last descent a few moves past
             --  its share (224 in all on the first variant): 5% allowed.
             Assert (S.Moves in 10_000 .. 21_000, "moves" & S.Moves'Image);
@@ -717,9 +703,7 @@ package body Sancta.Allocation.Tests is
             Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
             O.Subset_Robots := 2;
             O.Subset_Fresh := True;
-            Solve (P.all, O, B, T);
-            Assert (Validate (P.all, B) = "", Validate (P.all, B));
-            Assert (abs (Evaluate (P.all, B, Min_Max).Value - T.Best) < 1.0E-6, "fresh");
+            Solve_Checked (P.all, O, B, T, What => "fresh");
             O.Subset_Share := 0.0;
             Solve (P.all, O, B, T);
             if A /= B then

@@ -9,6 +9,7 @@ with RCL.Nodes;
 with RCL.Publishers;
 with RCL.QoS;
 with RCL.Services;
+with Action_Test_Support;
 with Suite_Support; use Suite_Support;
 
 package body RCL.Actions.Clients.Tests is
@@ -16,6 +17,7 @@ package body RCL.Actions.Clients.Tests is
    use type Ada.Real_Time.Time;
    use type ROSIDL.Int32;
    use type ROSIDL.Dynamic.Int32_Array;
+   use all type Action_Test_Support.Stop_Flag;
 
    function Fibonacci return Action_Support is
      (Get_Action_Support ("example_interfaces", "Fibonacci"));
@@ -99,7 +101,7 @@ package body RCL.Actions.Clients.Tests is
       Server_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_server", "/act_tests");
       Client_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_client", "/act_tests");
       Other_Node  : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_test_other", "/act_tests");
-      Stop        : Boolean := False with Atomic;
+      Stop        : aliased Action_Test_Support.Stop_Flag := False;
       Mine, Theirs : Change_Log;
 
       procedure Log_Mine
@@ -115,14 +117,6 @@ package body RCL.Actions.Clients.Tests is
       begin
          Theirs.Add ((Goal, Status));
       end Log_Theirs;
-
-      task type Spinner (Node : not null access RCL.Nodes.Node);
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
 
       Server : Servers.Server;
       Client, Other : Clients.Client;
@@ -148,9 +142,9 @@ package body RCL.Actions.Clients.Tests is
       Client.Init (Client_Node, Fibonacci, "fib", On_Status => Log_Mine'Access);
       Other.Init (Other_Node, Fibonacci, "/act_tests/fib", On_Status => Log_Theirs'Access);
       declare
-         S1 : Spinner (Server_Node'Access);
-         S2 : Spinner (Client_Node'Access);
-         S3 : Spinner (Other_Node'Access);
+         S1 : Action_Test_Support.Spinner (Server_Node'Access, Stop'Access);
+         S2 : Action_Test_Support.Spinner (Client_Node'Access, Stop'Access);
+         S3 : Action_Test_Support.Spinner (Other_Node'Access, Stop'Access);
       begin
          Client.Wait_For_Server (10.0);
          Other.Wait_For_Server (10.0);
@@ -219,23 +213,11 @@ package body RCL.Actions.Clients.Tests is
       function Get return Servers.Goal_Handle is (Last);
    end Parked;
 
-   function On_Any_Goal
-     (Node : in out RCL.Nodes.Node'Class;
-      Id   : Goal_Id;
-      Goal : ROSIDL.Dynamic.Message) return Servers.Goal_Response
-   is
-      pragma Unreferenced (Node, Id, Goal);
-   begin
-      return Servers.Accept_And_Execute;
-   end On_Any_Goal;
-
    procedure On_Executing (Node : in out RCL.Nodes.Node'Class; Goal : Servers.Goal_Handle) is
       pragma Unreferenced (Node);
-      Result : constant ROSIDL.Dynamic.Message := Result_Message (Fibonacci);
    begin
       if Servers.Goal (Goal) ("order").As_Int32 < Quick_Orders then
-         Result ("sequence").Set_Int32_Array ([Servers.Goal (Goal) ("order").As_Int32]);
-         Servers.Succeed (Goal, Result);
+         Action_Test_Support.Succeed_With_Order (Fibonacci, Goal);
       else
          Parked.Put (Goal);
       end if;
@@ -248,15 +230,7 @@ package body RCL.Actions.Clients.Tests is
       --  (0.5 s failed once with a load average of 19 on 2 cores).
       Server_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_server", "/act_tests");
       Client_Node : aliased RCL.Nodes.Node := RCL.Nodes.Init ("act_life_client", "/act_tests");
-      Stop        : Boolean := False with Atomic;
-
-      task type Spinner (Node : not null access RCL.Nodes.Node);
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
+      Stop        : aliased Action_Test_Support.Stop_Flag := False;
 
       Server : Servers.Server;
       Client : Clients.Client;
@@ -297,12 +271,12 @@ package body RCL.Actions.Clients.Tests is
       Status  : Goal_Status;
       Result  : ROSIDL.Dynamic.Message;
    begin
-      Server.Init (Server_Node, Fibonacci, "life", On_Any_Goal'Access, On_Executing'Access,
-                   Result_Timeout => Timeout);
+      Server.Init (Server_Node, Fibonacci, "life", Action_Test_Support.Accept_Every_Goal'Access,
+                   On_Executing'Access, Result_Timeout => Timeout);
       Client.Init (Client_Node, Fibonacci, "life");
       declare
-         S1 : Spinner (Server_Node'Access);
-         S2 : Spinner (Client_Node'Access);
+         S1 : Action_Test_Support.Spinner (Server_Node'Access, Stop'Access);
+         S2 : Action_Test_Support.Spinner (Client_Node'Access, Stop'Access);
 
          function Client_Empty return Boolean is (Client.Followed_Goals = 0);
          function Server_Empty return Boolean is (Server.Kept_Goals = 0);

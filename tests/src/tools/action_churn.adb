@@ -20,11 +20,13 @@ with ROSIDL.Dynamic;
 with RCL.Actions.Clients;
 with RCL.Actions.Servers;
 with RCL.Nodes;
+with Action_Test_Support;
 
 procedure Action_Churn is
    use Ada.Text_IO;
    use RCL.Actions;
    use type Ada.Real_Time.Time;
+   use all type Action_Test_Support.Stop_Flag;
 
    package CL renames Ada.Command_Line;
 
@@ -57,17 +59,10 @@ procedure Action_Churn is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
    procedure Run_Client (Name : String; Count : Positive) is
-      Node   : RCL.Nodes.Node := RCL.Nodes.Init ("action_churn_client");
+      Node   : aliased RCL.Nodes.Node := RCL.Nodes.Init ("action_churn_client");
       Client : Clients.Client;
-      Stop   : Boolean := False with Atomic;
-
-      task Spinner;
-      task body Spinner is
-      begin
-         while not Stop loop
-            Node.Spin (During => 0.05);
-         end loop;
-      end Spinner;
+      Stop   : aliased Action_Test_Support.Stop_Flag := False;
+      Spin   : Action_Test_Support.Spinner (Node'Access, Stop'Access);
    begin
       Client.Init (Node, Support, Name);
       Client.Wait_For_Server (15.0);
@@ -109,22 +104,10 @@ procedure Action_Churn is
          raise;
    end Run_Client;
 
-   function On_Goal
-     (Node : in out RCL.Nodes.Node'Class;
-      Id   : Goal_Id;
-      Goal : ROSIDL.Dynamic.Message) return Servers.Goal_Response
-   is
-      pragma Unreferenced (Node, Id, Goal);
-   begin
-      return Servers.Accept_And_Execute;
-   end On_Goal;
-
    procedure On_Accepted (Node : in out RCL.Nodes.Node'Class; Goal : Servers.Goal_Handle) is
       pragma Unreferenced (Node);
-      Result : constant ROSIDL.Dynamic.Message := Result_Message (Support);
    begin
-      Result ("sequence").Set_Int32_Array ([Servers.Goal (Goal) ("order").As_Int32]);
-      Servers.Succeed (Goal, Result);
+      Action_Test_Support.Succeed_With_Order (Support, Goal);
    end On_Accepted;
 
    procedure Run_Server (Name : String; Timeout : Duration) is
@@ -132,8 +115,8 @@ procedure Action_Churn is
       Server : Servers.Server;
       Next   : Ada.Real_Time.Time := Ada.Real_Time.Clock;
    begin
-      Server.Init (Node, Support, Name, On_Goal'Access, On_Accepted'Access,
-                   Result_Timeout => Timeout);
+      Server.Init (Node, Support, Name, Action_Test_Support.Accept_Every_Goal'Access,
+                   On_Accepted'Access, Result_Timeout => Timeout);
       loop
          Next := Next + Ada.Real_Time.Milliseconds (200);
          Node.Spin (During => Duration'Max
