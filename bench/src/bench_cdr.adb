@@ -4,9 +4,9 @@
 --  decoded to a new message each time (as the Python peer does).
 --     bench_cdr [SECONDS] [CSV-FILE]
 --  prints "case,op,impl,bytes,iterations,seconds,msgs_per_s,mb_per_s" lines.
-with Ada.Command_Line;
 with Ada.Real_Time;
 with Ada.Streams;
+with Bench_Arguments;
 with Bench_Rows;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
@@ -20,9 +20,15 @@ procedure Bench_CDR is
    use ROSIDL.Typesupport;
    use type ROSIDL.Float32;
 
-   Budget : constant Duration :=
-     (if Ada.Command_Line.Argument_Count >= 1
-      then Duration'Value (Ada.Command_Line.Argument (1)) else 1.0);
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_cdr [SECONDS] [CSV-FILE]" & ASCII.LF
+      & "CDR encode/decode throughput of the Ada codec (bench/bench-cdr.sh), LaserScan"
+      & ASCII.LF & "with 720 ranges and OccupancyGrid 1000 x 1000; prints CSV rows" & ASCII.LF
+      & "  SECONDS    time per case and operation (default 1)" & ASCII.LF
+      & "  CSV-FILE   also write the rows there",
+      Min => 0, Max => 2);
+   pragma Unreferenced (Read);
+   Budget : constant Duration := Bench_Arguments.Seconds (1, "SECONDS", Default => 1.0);
 
    Sink : Stream_Element := 0 with Volatile;
    --  Keeps the encoded bytes observable.

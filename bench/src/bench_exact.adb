@@ -15,7 +15,9 @@ with Ada.Command_Line;        use Ada.Command_Line;
 with Ada.Execution_Time;
 with Ada.Real_Time;
 with Ada.Strings.Fixed;
+with Ada.Exceptions;
 with Ada.Text_IO;             use Ada.Text_IO;
+with Bench_Arguments;
 with Sancta.Allocation;       use Sancta.Allocation;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments;
@@ -31,6 +33,22 @@ procedure Bench_Exact is
    use type BC.Cut_Class;
 
    Config : BC.Settings := (Time_Limit => 60.0, CPU_Time_Limit => True, others => <>);
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_exact [OPTION]... FILE..." & ASCII.LF
+      & "exact solver (branch and cut) on TSPLIB .tsp/.atsp files, one row per file: bound,"
+      & ASCII.LF & "gap, CPU time to proof, nodes, cuts by class (bench/allocation runs it)"
+      & ASCII.LF
+      & "  --time S                  CPU-time limit per instance (default 60)" & ASCII.LF
+      & "  --wall                    the limit on wall-clock time" & ASCII.LF
+      & "  --strong K                strong branching on K candidates" & ASCII.LF
+      & "  --no-heuristic-blossoms, --no-exact-blossoms, --no-combs, --no-pricing,"
+      & ASCII.LF
+      & "  --no-node-fixing, --no-purge   turn that technique off" & ASCII.LF
+      & "  --depth-first             depth-first instead of best-bound node selection"
+      & ASCII.LF
+      & "  --csv FILE                also write the rows there",
+      Min => 1, Max => Natural'Last);
+   pragma Unreferenced (Read);
    CSV : File_Type;
    Has_CSV : Boolean := False;
 
@@ -115,14 +133,22 @@ begin
       declare
          A : constant String := Argument (I);
       begin
-         if A = "--time" and then I < Argument_Count then
-            Config.Time_Limit := Duration'Value (Argument (I + 1));
+         if A in "--time" | "--strong" | "--csv" and then I = Argument_Count then
+            Bench_Arguments.Fail ("option " & A & " needs a value");
+         elsif A = "--time" then
+            Config.Time_Limit := Bench_Arguments.Seconds (I + 1, "--time", Default => 0.0);
             I := I + 1;
-         elsif A = "--strong" and then I < Argument_Count then
-            Config.Strong_Branching := Natural'Value (Argument (I + 1));
+         elsif A = "--strong" then
+            Config.Strong_Branching := Bench_Arguments.Count (I + 1, "--strong");
             I := I + 1;
-         elsif A = "--csv" and then I < Argument_Count then
-            Create (CSV, Out_File, Argument (I + 1));
+         elsif A = "--csv" then
+            begin
+               Create (CSV, Out_File, Argument (I + 1));
+            exception
+               when Name_Error | Use_Error =>
+                  Bench_Arguments.Fail
+                    ("--csv: """ & Argument (I + 1) & """ cannot be created");
+            end;
             Has_CSV := True;
             Put_Line (CSV, "instance,n,tour,root_bound,lower_bound,cpu_s,wall_s,nodes,"
                       & "subtour_cuts,blossom_cuts,comb_cuts,purged,fixed,edges,proven");
@@ -144,20 +170,27 @@ begin
          elsif A = "--no-purge" then
             Config.Purge := False;
          else
-            Put_Line (Standard_Error, "bench_exact: unknown option " & A);
-            Set_Exit_Status (2);
-            return;
+            Bench_Arguments.Fail ("unknown option " & A);
          end if;
       end;
       I := I + 1;
    end loop;
+   if I > Argument_Count then
+      Bench_Arguments.Fail ("no FILE given");
+   end if;
    Put_Line ("Branch and cut, CPU-time limit" & Duration'Image (Config.Time_Limit)
              & " s per instance"
              & (if Config.CPU_Time_Limit then "" else " (wall)"));
    Put_Line ("      instance    n    tour      root  root%   lower   gap%  cpu s  wall s"
              & "  nodes   sub  blos  comb purged  fixed  edges heur s");
    for J in I .. Argument_Count loop
-      Run (Argument (J));
+      begin
+         Run (Argument (J));
+      exception
+         when E : Format_Error =>
+            Put_Line (Standard_Error, "bench_exact: " & Ada.Exceptions.Exception_Message (E));
+            Set_Exit_Status (1);
+      end;
    end loop;
    if Has_CSV then
       Close (CSV);

@@ -14,6 +14,7 @@ with Ada.Containers.Generic_Array_Sort;
 with Ada.Real_Time;
 with Ada.Streams;
 with Ada.Text_IO;
+with Bench_Arguments;
 with Interfaces;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
@@ -33,12 +34,23 @@ procedure Bench_Messaging is
 
    package CL renames Ada.Command_Line;
 
-   Raw   : constant Boolean := CL.Argument_Count >= 1 and then CL.Argument (1) = "--raw";
-   Typed : constant Boolean := CL.Argument_Count >= 1 and then CL.Argument (1) = "--typed";
+   Read  : constant Boolean := Bench_Arguments.Checked
+     ("bench_messaging [--raw|--typed] MODE ..." & ASCII.LF
+      & "the Ada side of bench/bench-messaging.sh (std_msgs/UInt8MultiArray on /bench_ping,"
+      & ASCII.LF & "/bench_pong, /bench_thr; default: dynamic messages; --typed: generated"
+      & ASCII.LF & "record and codec; --raw: pre-encoded bytes)" & ASCII.LF
+      & "  ping SIZE COUNT     COUNT round trips of SIZE-byte messages with a pong;" & ASCII.LF
+      & "                      prints ""rtt_us <median> <p99>""" & ASCII.LF
+      & "  pong                answers pings until ping ends" & ASCII.LF
+      & "  pub SIZE [SECONDS]  publishes SIZE-byte messages to a sub for SECONDS (1)"
+      & ASCII.LF
+      & "  sub                 counts until pub ends; prints ""throughput <msg/s> <MB/s>""",
+      Min => 1, Max => 4);
+   pragma Unreferenced (Read);
+   Raw   : constant Boolean := CL.Argument (1) = "--raw";
+   Typed : constant Boolean := CL.Argument (1) = "--typed";
    First : constant Positive := (if Raw or Typed then 2 else 1);
-   Mode  : constant String := CL.Argument (First);
-
-   function Arg (I : Positive) return String is (CL.Argument (First + I));
+   Mode  : constant String := Bench_Arguments.One_Of (First, "MODE", "ping|pong|pub|sub");
 
    Stop_Mark : constant ROSIDL.UInt32 := 16#FFFF_FFFF#;
 
@@ -170,8 +182,8 @@ begin
 
    elsif Mode = "ping" then
       declare
-         Size  : constant Natural := Natural'Value (Arg (1));
-         N     : constant Positive := Positive'Value (Arg (2));
+         Size  : constant Natural := Bench_Arguments.Count (First + 1, "SIZE");
+         N     : constant Positive := Bench_Arguments.Count (First + 2, "COUNT", Minimum => 1);
          Warm  : constant Natural := N / 10 + 10;
          Pub   : RCL.Publishers.Publisher := Node.Publish (Support, "/bench_ping", Ping_QoS);
          Msg   : constant ROSIDL.Dynamic.Message := Make (Size, 0);
@@ -240,8 +252,9 @@ begin
 
    elsif Mode = "pub" then
       declare
-         Size    : constant Natural := Natural'Value (Arg (1));
-         Seconds : constant Duration := Duration'Value (Arg (2));
+         Size    : constant Natural := Bench_Arguments.Count (First + 1, "SIZE");
+         Seconds : constant Duration :=
+           Bench_Arguments.Seconds (First + 2, "SECONDS", Default => 1.0);
          Pub     : RCL.Publishers.Publisher := Node.Publish (Support, "/bench_thr", Thr_QoS);
          Msg     : constant ROSIDL.Dynamic.Message := Make (Size, 0);
          Bytes   : constant Stream_Element_Array := ROSIDL.CDR.Encode (Msg);

@@ -13,6 +13,7 @@ with Ada.Real_Time;           use Ada.Real_Time;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;   use Ada.Strings.Unbounded;
 with Ada.Text_IO;             use Ada.Text_IO;
+with Bench_Arguments;
 with Interfaces;
 with Sancta.Geometry;
 with Sancta.Team.Agents;
@@ -31,8 +32,18 @@ procedure Bench_Missions is
    Robot_Counts : constant Count_List := [4, 10];
    Node_Counts  : constant Count_List := [2, 5, 10];
 
+   Read   : constant Boolean := Bench_Arguments.Checked
+     ("bench_missions [--quick]" & ASCII.LF
+      & "team missions benchmark (bench/bench-missions.sh): plan quality of the annealer,"
+      & ASCII.LF & "auctions and greedy; re-planning after a robot loss over DDS; team database"
+      & ASCII.LF & "convergence; writes out/bench/missions.csv and missions.json" & ASCII.LF
+      & "  --quick   annealer budget 0.3 s instead of 2 s, re-planning with 20 tasks"
+      & " instead of 50",
+      Min => 0, Max => 1);
+   pragma Unreferenced (Read);
    Quick  : constant Boolean :=
-     Ada.Command_Line.Argument_Count > 0 and then Ada.Command_Line.Argument (1) = "--quick";
+     Ada.Command_Line.Argument_Count > 0
+     and then Bench_Arguments.One_Of (1, "option", "--quick") = "--quick";
    Budget : constant Duration := (if Quick then 0.3 else 2.0);
    CSV    : Unbounded_String :=
      To_Unbounded_String ("part,method,tasks,robots,nodes,makespan_m,total_m,time_s" & ASCII.LF);

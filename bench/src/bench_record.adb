@@ -8,6 +8,8 @@
 --     bench_record record CASE TOPIC DIR SECONDS
 --                                           RCL.Bags.Recorders (what "rclada bag
 --                                           record" runs) into the bag DIR
+--     bench_record sink CASE TOPIC SECONDS  subscribes only (the DDS ceiling);
+--                                           prints "count,first_ns,last_ns"
 --  CASE: "64" (std_msgs/String of 64 CDR bytes) or "scan" (sensor_msgs/
 --  LaserScan, 360 ranges). write prints "case,count,bytes,seconds".
 with Ada.Command_Line;
@@ -15,6 +17,7 @@ with Ada.Directories;
 with Ada.Real_Time;
 with Ada.Streams.Stream_IO;
 with Ada.Text_IO;
+with Bench_Arguments;
 with Interfaces;
 with RCL.Bags;
 with RCL.Bags.Recorders;
@@ -35,7 +38,30 @@ procedure Bench_Record is
    use Ada.Streams;
    use type Interfaces.Unsigned_64;
 
-   Kind : constant String := Argument (2);
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_record COMMAND CASE ..." & ASCII.LF
+      & "the Ada side of bench/bench-record.sh (recording throughput)" & ASCII.LF
+      & "  payload CASE FILE              the CDR bytes of CASE into FILE" & ASCII.LF
+      & "  write CASE COUNT               RCL.MCAP.Writers alone: COUNT messages into a zstd"
+      & ASCII.LF
+      & "                                 MCAP file; prints ""case,count,bytes,seconds"""
+      & ASCII.LF
+      & "  pub CASE COUNT TOPIC           publishes COUNT messages on TOPIC (reliable,"
+      & ASCII.LF
+      & "                                 keep all) once a subscription matched" & ASCII.LF
+      & "  record CASE TOPIC DIR SECONDS  RCL.Bags.Recorders (rclada bag record) into DIR"
+      & ASCII.LF
+      & "  sink CASE TOPIC SECONDS        subscribes only; prints ""count,first_ns,last_ns"""
+      & ASCII.LF
+      & "CASE: 64 (std_msgs/String of 64 CDR bytes) or scan (sensor_msgs/LaserScan, 360"
+      & " ranges)",
+      Min => 3, Max => 5);
+   pragma Unreferenced (Read);
+   Command : constant String :=
+     Bench_Arguments.One_Of (1, "COMMAND", "payload|write|pub|record|sink");
+   Kind    : constant String := Bench_Arguments.One_Of (2, "CASE", "64|scan");
+   Needed  : constant Positive :=
+     (if Command in "payload" | "write" then 3 elsif Command in "pub" | "sink" then 4 else 5);
 
    function Type_Name return String is
      (if Kind = "scan" then "sensor_msgs/msg/LaserScan" else "std_msgs/msg/String");
@@ -78,7 +104,11 @@ procedure Bench_Record is
    function Trim (Image : String) return String is
      (if Image (Image'First) = ' ' then Image (Image'First + 1 .. Image'Last) else Image);
 begin
-   if Argument (1) = "payload" then
+   if Argument_Count /= Needed then
+      Bench_Arguments.Fail
+        (Command & " takes" & Needed'Image & " arguments, found" & Argument_Count'Image);
+   end if;
+   if Command = "payload" then
       declare
          use Ada.Streams.Stream_IO;
          F : File_Type;
@@ -86,10 +116,14 @@ begin
          Create (F, Out_File, Argument (3));
          Write (F, Data);
          Close (F);
+      exception
+         when Name_Error | Use_Error =>
+            Bench_Arguments.Fail
+              ("FILE (argument 3): """ & Argument (3) & """ cannot be created");
       end;
-   elsif Argument (1) = "write" then
+   elsif Command = "write" then
       declare
-         Count : constant Natural := Natural'Value (Argument (3));
+         Count : constant Natural := Bench_Arguments.Count (3, "COUNT");
          Path  : constant String := "/tmp/bench_record_" & Kind & ".mcap";
          W     : RCL.MCAP.Writers.Writer;
          Start : Time;
@@ -113,12 +147,13 @@ begin
             & Duration'Image (To_Duration (Clock - Start)));
          Ada.Directories.Delete_File (Path);
       end;
-   elsif Argument (1) = "record" then
+   elsif Command = "record" then
       declare
          Node   : RCL.Nodes.Node := RCL.Nodes.Init ("bench_record_recorder");
          Rec    : RCL.Bags.Recorders.Recorder;
          Topics : RCL.Bags.Recorders.Topic_List;
-         Stop   : constant Time := Clock + To_Time_Span (Duration'Value (Argument (5)));
+         Stop   : constant Time :=
+           Clock + To_Time_Span (Bench_Arguments.Seconds (5, "SECONDS", Default => 0.0));
       begin
          Topics.Append (Argument (3));
          Rec.Start (Argument (4), Topics);
@@ -132,10 +167,11 @@ begin
          Rec.Stop;
          Ada.Text_IO.Put_Line ("Recorded" & Rec.Message_Count'Image & " messages");
       end;
-   elsif Argument (1) = "sink" then
+   elsif Command = "sink" then
       declare
          Node  : RCL.Nodes.Node := RCL.Nodes.Init ("bench_record_sink");
-         Stop  : constant Time := Clock + To_Time_Span (Duration'Value (Argument (4)));
+         Stop  : constant Time :=
+           Clock + To_Time_Span (Bench_Arguments.Seconds (4, "SECONDS", Default => 0.0));
          Count : Natural := 0;
          First, Last : ROSIDL.Int64 := 0;
          procedure Count_It
@@ -163,9 +199,9 @@ begin
          Ada.Text_IO.Put_Line
            (Trim (Count'Image) & "," & Trim (First'Image) & "," & Trim (Last'Image));
       end;
-   elsif Argument (1) = "pub" then
+   elsif Command = "pub" then
       declare
-         Count : constant Natural := Natural'Value (Argument (3));
+         Count : constant Natural := Bench_Arguments.Count (3, "COUNT");
          Node  : RCL.Nodes.Node := RCL.Nodes.Init ("bench_record_pub");
          Pub   : constant RCL.Publishers.Publisher :=
            Node.Publish_Raw (RCL.Graph.Queries.Mangle_Type (Type_Name), Argument (4),

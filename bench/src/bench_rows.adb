@@ -1,5 +1,6 @@
 with Ada.Command_Line;
 with Ada.Text_IO; use Ada.Text_IO;
+with Bench_Arguments;
 
 package body Bench_Rows is
 
@@ -8,7 +9,16 @@ package body Bench_Rows is
    procedure Open (CSV_Argument : Positive) is
    begin
       if Ada.Command_Line.Argument_Count >= CSV_Argument then
-         Create (CSV, Out_File, Ada.Command_Line.Argument (CSV_Argument));
+         declare
+            Name : constant String := Ada.Command_Line.Argument (CSV_Argument);
+         begin
+            Create (CSV, Out_File, Name);
+         exception
+            when Name_Error | Use_Error =>
+               Bench_Arguments.Fail
+                 ("CSV-FILE (argument" & CSV_Argument'Image & "): """ & Name
+                  & """ cannot be created");
+         end;
       end if;
    end Open;
 

@@ -8,7 +8,7 @@ package Bench_Rows is
 
    procedure Open (CSV_Argument : Positive);
    --  Creates the CSV file named by command-line argument CSV_Argument when
-   --  there are that many arguments.
+   --  there are that many arguments (Bench_Arguments.Fail when it cannot).
 
    procedure Put (Row : String);
    --  Writes Row on standard output and in the CSV file if there is one.

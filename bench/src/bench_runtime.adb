@@ -16,6 +16,7 @@ with Sancta.Runtime.Components;
 with Sancta.Runtime.Local_Databases;
 with Sancta.Runtime.Schedulers;
 with Sancta.Runtime.Values;
+with Bench_Arguments;
 with Bench_Runtime_Support;
 
 procedure Bench_Runtime is
@@ -24,6 +25,16 @@ procedure Bench_Runtime is
    use Sancta.Runtime;
    use Bench_Runtime_Support;
 
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_runtime [--seconds S] [--puts N] [--csv FILE]" & ASCII.LF
+      & "component runtime benchmark (bench/bench-runtime.sh): lateness of a 100 Hz"
+      & ASCII.LF & "periodic component, database puts per second with 0, 1, 10 listeners"
+      & ASCII.LF
+      & "  --seconds S   how long the periodic component runs (default 10)" & ASCII.LF
+      & "  --puts N      database puts per listener count (default 200000)" & ASCII.LF
+      & "  --csv FILE    also write ""metric,value"" rows there",
+      Min => 0, Max => Natural'Last);
+   pragma Unreferenced (Read);
    Seconds_Run : Duration := 10.0;
    Puts        : Positive := 200_000;
    CSV_Name    : Ada.Strings.Unbounded.Unbounded_String;
@@ -55,25 +66,30 @@ begin
    while I <= Ada.Command_Line.Argument_Count loop
       declare
          A : constant String := Ada.Command_Line.Argument (I);
-         V : constant String :=
-           (if I < Ada.Command_Line.Argument_Count then Ada.Command_Line.Argument (I + 1) else "");
       begin
-         if A = "--seconds" then
-            Seconds_Run := Duration'Value (V);
+         if A not in "--seconds" | "--puts" | "--csv" then
+            Bench_Arguments.Fail ("unknown option " & A);
+         elsif I = Ada.Command_Line.Argument_Count then
+            Bench_Arguments.Fail ("option " & A & " needs a value");
+         elsif A = "--seconds" then
+            Seconds_Run := Bench_Arguments.Seconds (I + 1, "--seconds", Default => 10.0);
          elsif A = "--puts" then
-            Puts := Positive'Value (V);
-         elsif A = "--csv" then
-            CSV_Name := Ada.Strings.Unbounded.To_Unbounded_String (V);
+            Puts := Bench_Arguments.Count (I + 1, "--puts", Minimum => 1);
          else
-            Put_Line (Standard_Error, "usage: bench_runtime [--seconds S] [--puts N] [--csv FILE]");
-            Ada.Command_Line.Set_Exit_Status (2);
-            return;
+            CSV_Name := Ada.Strings.Unbounded.To_Unbounded_String
+              (Ada.Command_Line.Argument (I + 1));
          end if;
          I := I + 2;
       end;
    end loop;
    if Ada.Strings.Unbounded.Length (CSV_Name) > 0 then
-      Create (CSV, Out_File, Ada.Strings.Unbounded.To_String (CSV_Name));
+      begin
+         Create (CSV, Out_File, Ada.Strings.Unbounded.To_String (CSV_Name));
+      exception
+         when Name_Error | Use_Error =>
+            Bench_Arguments.Fail
+              ("--csv: """ & Ada.Strings.Unbounded.To_String (CSV_Name) & """ cannot be created");
+      end;
       Put_Line (CSV, "metric,value");
    end if;
 

@@ -5,6 +5,7 @@
 with Ada.Command_Line;
 with Ada.Real_Time;
 with Ada.Text_IO;
+with Bench_Arguments;
 with ROSIDL.Dynamic;
 with ROSIDL.Typesupport;
 with RCL.Clients;
@@ -29,7 +30,15 @@ procedure Bench_Services is
       Resp ("sum").As_Int64 := Req ("a").As_Int64 + Req ("b").As_Int64;
    end Adder;
 
-   Mode : constant String := (if CL.Argument_Count >= 1 then CL.Argument (1) else "");
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_services server | client CALLS TASKS" & ASCII.LF
+      & "service round trips (bench/bench-services.sh), AddTwoInts on /bench_add" & ASCII.LF
+      & "  server              answers until killed" & ASCII.LF
+      & "  client CALLS TASKS  CALLS calls spread over TASKS tasks; prints" & ASCII.LF
+      & "                      ""calls=N tasks=T errors=E seconds=S rate=R""",
+      Min => 1, Max => 3);
+   pragma Unreferenced (Read);
+   Mode : constant String := Bench_Arguments.One_Of (1, "MODE", "server|client");
 begin
    if Mode = "server" then
       declare
@@ -40,8 +49,8 @@ begin
       end;
    elsif Mode = "client" and then CL.Argument_Count = 3 then
       declare
-         Calls  : constant Positive := Positive'Value (CL.Argument (2));
-         Tasks  : constant Positive := Positive'Value (CL.Argument (3));
+         Calls  : constant Positive := Bench_Arguments.Count (2, "CALLS", Minimum => 1);
+         Tasks  : constant Positive := Bench_Arguments.Count (3, "TASKS", Minimum => 1);
          Node   : constant RCL.Nodes.Node := RCL.Nodes.Init ("bench_client");
          Client : RCL.Clients.Client;
          Wrong  : Natural := 0 with Atomic;
@@ -105,7 +114,6 @@ begin
          end;
       end;
    else
-      Ada.Text_IO.Put_Line ("usage: bench_services server | client CALLS TASKS");
-      CL.Set_Exit_Status (2);
+      Bench_Arguments.Fail (Mode & ": wrong number of arguments");
    end if;
 end Bench_Services;

@@ -7,9 +7,11 @@
 --     bench_sim [WORLD [SECONDS_SCALE [team|icp|all]]]   (bench/bench-sim.sh)
 --  Prints a table; writes out/bench/sim.csv and out/bench/sim-icp.csv.
 with Ada.Command_Line;
+with Ada.Exceptions;
 with Ada.Execution_Time;
 with Ada.Real_Time;             use Ada.Real_Time;
 with Ada.Text_IO;               use Ada.Text_IO;
+with Bench_Arguments;
 with Sancta.Geometry;           use Sancta.Geometry;
 with Sancta.Robot.Goal_Sequencers;
 with Sancta.Robot.Grids;
@@ -27,18 +29,36 @@ procedure Bench_Sim is
    use Sancta.Simulation;
    use Sancta.Simulation.Simulators;
 
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_sim [WORLD [SECONDS_SCALE [team|icp|all]]]" & ASCII.LF
+      & "simulator benchmark (bench/bench-sim.sh): real-time factor with 1, 10, 50, 100"
+      & ASCII.LF & "robots, then scan matching; writes out/bench/sim.csv, out/bench/sim-icp.csv"
+      & ASCII.LF
+      & "  WORLD           a map-server YAML file or a .walls world"
+      & " (default share/worlds/office.yaml)" & ASCII.LF
+      & "  SECONDS_SCALE   multiplies the simulated durations (default 1; 0.2 for a quick look)"
+      & ASCII.LF
+      & "  team|icp|all    which part to run (default all)",
+      Min => 0, Max => 3);
+   pragma Unreferenced (Read);
    World_Name : constant String :=
      (if Ada.Command_Line.Argument_Count >= 1 then Ada.Command_Line.Argument (1)
       else "share/worlds/office.yaml");
-   Scale : constant Real :=
-     (if Ada.Command_Line.Argument_Count >= 2
-      then Real'Value (Ada.Command_Line.Argument (2)) else 1.0);
+   Scale : constant Real := Real (Bench_Arguments.Number (2, "SECONDS_SCALE", Default => 1.0));
    --  Multiplies the simulated durations (0.2 for a quick look).
    Part : constant String :=
-     (if Ada.Command_Line.Argument_Count >= 3 then Ada.Command_Line.Argument (3) else "all");
-   --  "team", "icp" or "all".
+     (if Ada.Command_Line.Argument_Count >= 3
+      then Bench_Arguments.One_Of (3, "PART", "team|icp|all") else "all");
 
-   World : constant Worlds.World := Map_Files.Load_World (World_Name);
+   function Load (Name : String) return Worlds.World is
+   begin
+      return Map_Files.Load_World (Name);
+   exception
+      when E : Format_Error =>
+         Bench_Arguments.Fail (Ada.Exceptions.Exception_Message (E));
+   end Load;
+
+   World : constant Worlds.World := Load (World_Name);
    Map   : Robot.Path_Costs.Planner;
 
    function Fixed (X : Real; Decimals : Natural := 2) return String is

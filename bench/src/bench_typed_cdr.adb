@@ -13,6 +13,7 @@ with Ada.Real_Time;
 with Ada.Streams;
 with Ada.Streams.Stream_IO;
 with Ada.Strings.Unbounded;
+with Bench_Arguments;
 with Bench_Rows;
 with ROSIDL.CDR;
 with ROSIDL.Dynamic;
@@ -29,9 +30,16 @@ procedure Bench_Typed_CDR is
    use type ROSIDL.Float32;
    use type ROSIDL.Float64;
 
-   Budget : constant Duration :=
-     (if Ada.Command_Line.Argument_Count >= 1
-      then Duration'Value (Ada.Command_Line.Argument (1)) else 1.0);
+   Read : constant Boolean := Bench_Arguments.Checked
+     ("bench_typed_cdr [SECONDS] [CSV-FILE] [DUMP-FOLDER]" & ASCII.LF
+      & "time per message of the generated (typed) CDR codec against the dynamic one"
+      & ASCII.LF & "(bench/bench-typed.sh); prints CSV rows" & ASCII.LF
+      & "  SECONDS       time per case, operation and codec (default 1)" & ASCII.LF
+      & "  CSV-FILE      also write the rows there" & ASCII.LF
+      & "  DUMP-FOLDER   write each case's typed encoding there as <case>.cdr",
+      Min => 0, Max => 3);
+   pragma Unreferenced (Read);
+   Budget : constant Duration := Bench_Arguments.Seconds (1, "SECONDS", Default => 1.0);
    Dumps   : constant String :=
      (if Ada.Command_Line.Argument_Count >= 3 then Ada.Command_Line.Argument (3) else "");
    Sink    : Stream_Element := 0 with Volatile;
