@@ -45,10 +45,12 @@ package body Sancta.Allocation.Annealers.Moves is
    end Make_Weights;
 
    --  The cost (length, sum of completion times, both with the multiplier
-   --  and Infinity per infeasible task) and task count of a planned tour.
+   --  and Infinity per infeasible task) and task count of a planned tour;
+   --  the sum of completion times only With_Completion (else 0: two prefix
+   --  sum loads per span saved where the criterion has no mean).
    procedure Evaluate_Tour
-     (P : Problem; S : State; T : Tour_Plan; Length, Completion : out Cost;
-      Count : out Natural)
+     (P : Problem; S : State; T : Tour_Plan; With_Completion : Boolean;
+      Length, Completion : out Cost; Count : out Natural)
    is
       R    : constant Positive := T.Robot;
       Here : Natural := P.Start (R);
@@ -94,14 +96,18 @@ package body Sancta.Allocation.Annealers.Moves is
                      end loop;
                   elsif not G.Reversed then
                      Time := Time + Arc (P, S, R, Here, S.Location_At (RS, G.First));
-                     Sum := Sum + N * (Time - S.Forward_Cost (RS, G.First))
-                       + S.Forward_Sum (RS, G.Last) - S.Forward_Sum (RS, G.First - 1);
+                     if With_Completion then
+                        Sum := Sum + N * (Time - S.Forward_Cost (RS, G.First))
+                          + S.Forward_Sum (RS, G.Last) - S.Forward_Sum (RS, G.First - 1);
+                     end if;
                      Time := Time + S.Forward_Cost (RS, G.Last) - S.Forward_Cost (RS, G.First);
                      Here := S.Location_At (RS, G.Last);
                   else
                      Time := Time + Arc (P, S, R, Here, S.Location_At (RS, G.Last));
-                     Sum := Sum + N * (Time + S.Backward_Cost (RS, G.Last))
-                       - (S.Backward_Sum (RS, G.Last) - S.Backward_Sum (RS, G.First - 1));
+                     if With_Completion then
+                        Sum := Sum + N * (Time + S.Backward_Cost (RS, G.Last))
+                          - (S.Backward_Sum (RS, G.Last) - S.Backward_Sum (RS, G.First - 1));
+                     end if;
                      Time := Time + S.Backward_Cost (RS, G.Last)
                        - S.Backward_Cost (RS, G.First);
                      Here := S.Location_At (RS, G.First);
@@ -120,7 +126,7 @@ package body Sancta.Allocation.Annealers.Moves is
       end loop;
       Time := Time + Arc (P, S, R, Here, P.Finish (R));
       Length := M * Time + Cost (Bad) * Infinity;
-      Completion := M * Sum + Cost (Bad) * Infinity;
+      Completion := (if With_Completion then M * Sum + Cost (Bad) * Infinity else 0);
    end Evaluate_Tour;
 
    procedure Evaluate_Move
@@ -130,6 +136,8 @@ package body Sancta.Allocation.Annealers.Moves is
       --  Positive but for a switch subtree move (no tour plans).
       B : constant Natural := Mv.B.Robot;
       Max, Sum, Completion : Cost;
+      With_Completion : constant Boolean := W.C.Ave_Weight /= 0.0;
+      --  Value reads the sum of completion times only then.
    begin
       if Mv.Or_Node /= 0 then
          --  Switch subtree: evaluated when proposed (Plan_Trees).
@@ -137,19 +145,26 @@ package body Sancta.Allocation.Annealers.Moves is
          return;
       end if;
       Mv.New_Active := S.Active_Tasks;
-      Evaluate_Tour (P, S, Mv.A, Mv.New_A_Cost, Mv.New_A_Completion, Mv.New_A_Length);
+      Mv.Completion_Known := With_Completion;
+      Evaluate_Tour (P, S, Mv.A, With_Completion, Mv.New_A_Cost, Mv.New_A_Completion,
+                     Mv.New_A_Length);
       Valid := Mv.New_A_Length >= P.Min_Tasks or else Mv.New_A_Length >= S.Length (A);
       Sum := S.Total_Cost - S.Robot_Cost (A) + Mv.New_A_Cost;
-      Completion := S.Total_Completion - S.Robot_Completion (A) + Mv.New_A_Completion;
+      Completion := (if With_Completion
+                     then S.Total_Completion - S.Robot_Completion (A) + Mv.New_A_Completion
+                     else 0);
       Max := (if W.C.Max_Weight = 0.0 then 0
               else Cost'Max (Max_Except (S, A, B), Mv.New_A_Cost));
       --  The makespan only when the criterion uses it (saves O (log R)).
       if B /= 0 then
-         Evaluate_Tour (P, S, Mv.B, Mv.New_B_Cost, Mv.New_B_Completion, Mv.New_B_Length);
+         Evaluate_Tour (P, S, Mv.B, With_Completion, Mv.New_B_Cost, Mv.New_B_Completion,
+                        Mv.New_B_Length);
          Valid := Valid and then
            (Mv.New_B_Length >= P.Min_Tasks or else Mv.New_B_Length >= S.Length (B));
          Sum := Sum - S.Robot_Cost (B) + Mv.New_B_Cost;
-         Completion := Completion - S.Robot_Completion (B) + Mv.New_B_Completion;
+         if With_Completion then
+            Completion := Completion - S.Robot_Completion (B) + Mv.New_B_Completion;
+         end if;
          if W.C.Max_Weight /= 0.0 then
             Max := Cost'Max (Max, Mv.New_B_Cost);
          end if;
@@ -337,14 +352,16 @@ package body Sancta.Allocation.Annealers.Moves is
             end if;
             if Predicted then
                if R = Mv.A.Robot
-                 and then (RC /= Mv.New_A_Cost or else RCm /= Mv.New_A_Completion)
+                 and then (RC /= Mv.New_A_Cost
+                           or else (Mv.Completion_Known and then RCm /= Mv.New_A_Completion))
                then
                   Fail ("move prediction for robot" & R'Image & ":" & Mv.New_A_Cost'Image
                         & " /" & Mv.New_A_Completion'Image & " actual" & RC'Image & " /"
                         & RCm'Image);
                end if;
                if R = Mv.B.Robot
-                 and then (RC /= Mv.New_B_Cost or else RCm /= Mv.New_B_Completion)
+                 and then (RC /= Mv.New_B_Cost
+                           or else (Mv.Completion_Known and then RCm /= Mv.New_B_Completion))
                then
                   Fail ("move prediction for robot" & R'Image & ":" & Mv.New_B_Cost'Image
                         & " actual" & RC'Image);

@@ -599,6 +599,9 @@ package body Sancta.Allocation.Annealers.Searches is
       S : State renames This.Tours.all;
       X : Kind_Stats renames This.Kinds (Route_Search);
       Found : Local_Search.Statistics;
+      function Compact_Distance (R : Positive; From, To : Natural) return Cost is
+        (Arc (P, S, R, From, To));
+      --  Robot_Distance (P, R, From, To) from S's compact copy, if any.
       Time_Left : constant Duration :=
         (if This.Opts.Time_Limit > 0.0
          then Duration'Max (0.001, This.Opts.Time_Limit - To_Duration (Now (This) - This.Started))
@@ -612,7 +615,7 @@ package body Sancta.Allocation.Annealers.Searches is
         (P, This.Backup,
          (Time_Limit => Time_Left, Budget_Clock => This.Opts.Budget_Clock,
           Seed => This.Opts.Seed, Kicks => False, Check => This.Opts.Check, others => <>),
-         Found);
+         Found, Compact_Distance'Access);
       if Found.After >= Found.Before then
          return;
       end if;

@@ -40,9 +40,10 @@ package body Sancta.Allocation.Local_Search is
       Route          : in out Count_Array;
       Route_Location : Count_Array;
       Opts           : Search_Options;
-      Stats          : in out Statistics)
+      Stats          : in out Statistics;
+      Distance       : access function (R : Positive; From, To : Natural) return Cost := null)
    is
-      --  Opts.Target > 0: closed routes only.
+      --  Opts.Target > 0: closed routes only. Distance: see Polish_Routes.
       M : constant Natural := Route'Length;
       Route_In : constant Count_Array (1 .. M) := Route;
       N : constant Positive := M + 1 + (if Has_End then 1 else 0);
@@ -454,13 +455,23 @@ package body Sancta.Allocation.Local_Search is
          return;
       end if;
       if N <= Local_Limit and then Has_Matrix (P) then
+         --  The distances between the route's nodes are symmetric (both
+         --  callers check it: Applies, Symmetric_For): each pair is read
+         --  once, U before V by location (row U of the problem's matrix
+         --  read forwards), and written to both halves; through Distance
+         --  when the caller has a faster copy of the same values.
          Local := new Local_Matrix (0 .. N * N - 1);
          Sort (By_Location);
          Fill :
-         for U of By_Location loop
-            for V of By_Location loop
+         for I in By_Location'Range loop
+            for J in I .. By_Location'Last loop
                declare
-                  X : constant Cost := Robot_Distance (P, Robot, Location (U), Location (V));
+                  U : constant Node := By_Location (I);
+                  V : constant Node := By_Location (J);
+                  X : constant Cost :=
+                    (if Distance = null
+                     then Robot_Distance (P, Robot, Location (U), Location (V))
+                     else Distance (Robot, Location (U), Location (V)));
                begin
                   if X not in Cost (Interfaces.Integer_32'First)
                               .. Cost (Interfaces.Integer_32'Last)
@@ -469,6 +480,7 @@ package body Sancta.Allocation.Local_Search is
                      exit Fill;
                   end if;
                   Local (U * N + V) := Interfaces.Integer_32 (X);
+                  Local (V * N + U) := Interfaces.Integer_32 (X);
                end;
             end loop;
          end loop Fill;
@@ -638,7 +650,8 @@ package body Sancta.Allocation.Local_Search is
    end Symmetric_For;
 
    procedure Polish_Routes
-     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics;
+      Distance : access function (R : Positive; From, To : Natural) return Cost := null)
    is
       use type Interfaces.Unsigned_64;
       Started : constant Time := Budget_Clocks.Clock (Opts.Budget_Clock);
@@ -670,7 +683,7 @@ package body Sancta.Allocation.Local_Search is
                      [for I in 1 .. Free => Location_Of (P, Route (I), A.Choice (Route (I)))],
                      (Opts with delta Time_Limit => Share,
                                       Seed => Opts.Seed + Interfaces.Unsigned_64 (R)),
-                     Stats);
+                     Stats, Distance);
                   for I in 1 .. Free loop
                      A.Tour (R, F + I) := Route (I);
                   end loop;

@@ -76,7 +76,8 @@ package Sancta.Allocation.Local_Search is
    --  (O (n^2) distance reads, no matrix of its own).
 
    procedure Polish_Routes
-     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics)
+     (P : Problem; A : in out Assignment; Opts : Search_Options; Stats : out Statistics;
+      Distance : access function (R : Positive; From, To : Natural) return Cost := null)
      with Pre => A.Robots = P.Robots and then A.Tasks = P.Tasks and then Opts.Target = 0;
    --  Each route of A with at least 5 free tasks and symmetric distances
    --  for its robot (the shared matrix, or its own on the route's
@@ -86,6 +87,11 @@ package Sancta.Allocation.Local_Search is
    --  within its share is left as it is); route R's kicks draw from seed
    --  Opts.Seed + R. Tasks, their robots, choices and frozen prefixes stay;
    --  Stats.Before / After are the sums of the searched routes' base
-   --  lengths.
+   --  lengths. Distance, when not null, must return Robot_Distance (P, R,
+   --  From, To) (the same integers; the annealer's compact copy): a route's
+   --  own matrix is then filled from it, not from P's (at 1000 tasks, the
+   --  8 MB problem matrix read at random): in the anneal (release, MinMax,
+   --  fixed move budget, min of 3 runs, plans identical) CPU -2.6% at 500
+   --  tasks x 10 robots, -4.5% at 1000 x 10, -3.0% at 1000 x 5.
 
 end Sancta.Allocation.Local_Search;

@@ -174,11 +174,23 @@ package body Sancta.Allocation.Local_Search.Tests is
       P : constant Problem_Access := Team_Problem (120, 8);
       A : Assignment := Annealers.Greedy_Start (P.all, Min_Max, 4);
       B : Assignment := A;
+      C : Assignment := A;
       S : Statistics;
+      Reads : Natural := 0;
+      function Counted (R : Positive; From, To : Natural) return Cost is
+      begin
+         Reads := Reads + 1;
+         return Robot_Distance (P.all, R, From, To);
+      end Counted;
    begin
       Polish_Routes (P.all, A, (others => <>), S);
       Polish_Routes (P.all, B, (others => <>), S);
       Assert (A = B, "one polish is not deterministic");
+      --  The same distances through Distance (the annealer passes its
+      --  compact copy): read, and the same routes.
+      Polish_Routes (P.all, C, (others => <>), S, Counted'Access);
+      Assert (Reads > 0, "Distance not read");
+      Assert (A = C, "a polish through Distance differs");
    end Deterministic_Route_Polish;
 
    procedure Annealer_Polishes_Routes (Unused : in out Fixture) is
