@@ -1,4 +1,5 @@
 with Ada.Exceptions;
+with Ada.Long_Float_Text_IO;
 with Ada.Strings.Fixed;
 with Ada.Text_IO;
 with System.Multiprocessors;
@@ -18,6 +19,18 @@ package body Sancta.Team.Agents is
 
    function Trim (N : Integer) return String is
      (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
+
+   function Two_Decimals (X : Long_Float) return String is
+      --  X with two decimals for a log line ("0.25", "42.05"); beyond 1e15,
+      --  as Real_Image writes it.
+      Text : String (1 .. 24);
+   begin
+      if abs X >= 1.0E15 then
+         return Runtime.Values.Real_Image (X);
+      end if;
+      Ada.Long_Float_Text_IO.Put (Text, X, Aft => 2, Exp => 0);
+      return Ada.Strings.Fixed.Trim (Text, Ada.Strings.Left);
+   end Two_Decimals;
 
    function Parse_Method (Text : String) return Method is
    begin
@@ -439,9 +452,9 @@ package body Sancta.Team.Agents is
       then
          Published := Carried.Value;
          This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Carried, S));
-         Log (This, "round" & S.Generation'Image & " starts from the current plan in"
-              & Duration'Image (To_Duration (Clock - T0)) & " s: "
-              & Runtime.Values.Real_Image (Carried.Value));
+         Log (This, "round" & S.Generation'Image & " starts from the current plan in "
+              & Two_Decimals (Long_Float (To_Duration (Clock - T0))) & " s, plan value "
+              & Two_Decimals (Carried.Value));
       end if;
       declare
          T1   : constant Time := Clock;
@@ -451,9 +464,9 @@ package body Sancta.Team.Agents is
             else Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id),
                                Leg => Leg'Access));
       begin
-         Log (This, "annealed round" & S.Generation'Image & " in"
-              & Duration'Image (To_Duration (Clock - T1)) & " s: "
-              & Runtime.Values.Real_Image (Mine.Value));
+         Log (This, "annealed round" & S.Generation'Image & " in "
+              & Two_Decimals (Long_Float (To_Duration (Clock - T1))) & " s, plan value "
+              & Two_Decimals (Mine.Value));
          This.Improved_Rounds := This.Improved_Rounds + 1;
          if (V.Adopted.Generation /= S.Generation or else Mine.Value < V.Adopted.Value - 1.0E-6)
            and then Mine.Value < Published - 1.0E-6
