@@ -38,7 +38,9 @@ package body Sancta.Commands.Check is
       I         : Positive := 2;
    begin
       while I <= Argument_Count loop
-         if Argument (I) = "--set" and then I < Argument_Count then
+         if Argument (I) in "--set" | "--output" and then I = Argument_Count then
+            raise Options.Usage_Error with "option " & Argument (I) & " needs a value";
+         elsif Argument (I) = "--set" and then I < Argument_Count then
             Options.Parse_Set (Argument (I + 1), Overrides);
             I := I + 1;
          elsif Argument (I) = "--output" and then I < Argument_Count then
@@ -46,6 +48,14 @@ package body Sancta.Commands.Check is
             I := I + 1;
          elsif Argument (I) in "-h" | "--help" then
             Put_Line ("usage: sancta check FILE [--set NAME=VALUE]... [--output DIR]");
+            Put_Line ("Checks a configuration (share/config/README.md): every diagnostic as");
+            Put_Line ("FILE:LINE:COLUMN: error|warning: ...; then each agent's wiring table and");
+            Put_Line ("a picture of it. Exit status 1 when there are errors.");
+            Put_Line ("  FILE               the configuration (.xml)");
+            Put_Line ("  --set NAME=VALUE   give constant $NAME of FILE this value (repeatable)");
+            Put_Line ("  --output DIR       where the wiring pictures go (default out/check):");
+            Put_Line ("                     DIR/BASE.dot, and DIR/BASE.svg with Graphviz (BASE:");
+            Put_Line ("                     FILE's name without folder and extension)");
             return;
          elsif Argument (I)'Length > 0 and then Argument (I) (1) /= '-'
            and then Length (File) = 0

@@ -29,8 +29,34 @@ package body Sancta.Commands.Run is
 
    Usage_Text : constant String :=
      "usage: sancta run FILE (--agent ID | --all) [--set NAME=VALUE]... [--for SECONDS]"
-     & " [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]"
-     & " [--sim-time] [--managed] [--ros-args -p use_sim_time:=true]";
+     & ASCII.LF
+     & "          [--debug] [--level SECTION=LEVEL]... [--log FILE] [--stats]" & ASCII.LF
+     & "          [--sim-time] [--managed] [--ros-args -p use_sim_time:=true]";
+
+   Help_Text : constant String :=
+     Usage_Text & ASCII.LF
+     & "Runs agents of a configuration (share/config/README.md) until Ctrl-C, a watchdog"
+     & ASCII.LF & "abort or the time limit; checks it first as sancta check does." & ASCII.LF
+     & "  FILE                   the configuration (.xml)" & ASCII.LF
+     & "  --agent ID             run agent ID (repeatable)" & ASCII.LF
+     & "  --all                  run every agent, each with its own database" & ASCII.LF
+     & "  --set NAME=VALUE       give constant $NAME of FILE this value" & ASCII.LF
+     & "  --for SECONDS          stop after SECONDS (default: until Ctrl-C)" & ASCII.LF
+     & "  --debug                log at level debug (default info)" & ASCII.LF
+     & "  --level SECTION=LEVEL  level of one log section, the name in brackets"
+     & ASCII.LF
+     & "                         (e.g. Ari/logger#4): debug, info, warning, error"
+     & ASCII.LF
+     & "  --log FILE             also append the log to FILE" & ASCII.LF
+     & "  --stats                print each agent's statistics when it stops" & ASCII.LF
+     & "  --sim-time             run on ROS time following /clock (e.g. sancta-sim)"
+     & ASCII.LF
+     & "                         instead of the wall clock" & ASCII.LF
+     & "  --managed              each agent a lifecycle node /sancta_ID, created by"
+     & ASCII.LF
+     & "                         configure and started by activate (rclada lifecycle set)"
+     & ASCII.LF
+     & "  --ros-args ... [--]    ROS 2 arguments (-p use_sim_time:=true is --sim-time)";
 
    Clock : aliased Sancta.Runtime.Clocks.Real_Clock;
 
@@ -80,7 +106,9 @@ package body Sancta.Commands.Run is
             A   : constant String := Argument (I);
             Has : constant Boolean := I < Argument_Count;
          begin
-            if A = "--agent" and then Has then
+            if A in "--agent" | "--set" | "--for" | "--level" | "--log" and then not Has then
+               raise Options.Usage_Error with "option " & A & " needs a value";
+            elsif A = "--agent" and then Has then
                Agents.Append (Argument (I + 1));
                I := I + 1;
             elsif A = "--all" then
@@ -127,7 +155,7 @@ package body Sancta.Commands.Run is
                end;
                I := I + 1;
             elsif A in "-h" | "--help" then
-               Put_Line (Usage_Text);
+               Put_Line (Help_Text);
                return;
             elsif A'Length > 0 and then A (A'First) /= '-' and then Length (File) = 0 then
                File := To_Unbounded_String (A);
