@@ -21,13 +21,29 @@ package body Sancta.Commands.Demo is
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--max SECONDS]");
       Put_Line ("          [--max-wall SECONDS] [--out DIR] [--quiet] [--check] [--view]");
       Put_Line ("          [--secure] [--no-record]");
-      Put_Line ("  sancta-sim + one 'sancta run CONFIG --agent ID' process per agent;");
-      Put_Line ("  default CONFIG: share/config/sim-team.xml; --set method=auctions");
-      Put_Line ("  --view: also open the live view (sancta-view) when a display is set");
-      Put_Line ("  the run is recorded into the bag OUT/mission (rclada bag record -a) unless");
-      Put_Line ("  --no-record is given (under --secure in an enclave that may only read)");
-      Put_Line ("  --secure: DDS-Security, a keystore in OUT/keystore, one enclave per process,");
-      Put_Line ("  only the operator may publish tasks");
+      Put_Line ("The team demo (make run): sancta-sim and one 'sancta run CONFIG --agent ID");
+      Put_Line ("--sim-time' process per agent; a robot's process is killed mid-mission; this");
+      Put_Line ("command observes over DDS, prints progress and a summary, writes the report.");
+      Put_Line ("  CONFIG.xml          the team (default share/config/sim-team.xml)");
+      Put_Line ("  --set NAME=VALUE    give constant $NAME of CONFIG this value in every agent");
+      Put_Line ("                      (e.g. method=auctions, costs=straight)");
+      Put_Line ("  --rate X            simulated seconds per wall second, at most 100 (4)");
+      Put_Line ("  --wall-clock        the agents run on the wall clock, not sancta-sim's /clock");
+      Put_Line ("  --kill ID           the robot whose process is killed (default: the one with");
+      Put_Line ("                      the most tasks left at that moment)");
+      Put_Line ("  --no-kill           kill no robot");
+      Put_Line ("  --kill-at FRACTION  kill when this fraction of the tasks is done (0.25)");
+      Put_Line ("  --max SECONDS       simulated time limit (default 1200)");
+      Put_Line ("  --max-wall SECONDS  wall-clock time limit (default 900)");
+      Put_Line ("  --out DIR           report, logs and bag there (default out/demo)");
+      Put_Line ("  --quiet             no progress lines");
+      Put_Line ("  --check             exit status 1 unless every task was done exactly once");
+      Put_Line ("  --view              also open the live view (sancta-view) if there is a");
+      Put_Line ("                      display");
+      Put_Line ("  --secure            DDS-Security: a keystore in DIR/keystore, one enclave per");
+      Put_Line ("                      process, only the operator may publish tasks");
+      Put_Line ("  --no-record         do not record the bag DIR/mission (rclada bag record -a;");
+      Put_Line ("                      under --secure in an enclave that may only read)");
    end Usage;
 
    function Default_Config return String is (Installation.Share_File ("config/sim-team.xml"));
@@ -101,8 +117,12 @@ package body Sancta.Commands.Demo is
          Set_Exit_Status (Failure);
       end if;
    exception
-      when E : Constraint_Error | Options.Usage_Error | Sancta.Team.Missions.Format_Error =>
+      when E : Sancta.Team.Missions.Format_Error =>
          Put_Line (Standard_Error, "sancta demo: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (2);
+      when E : Constraint_Error | Options.Usage_Error =>
+         Put_Line (Standard_Error, "sancta demo: " & Ada.Exceptions.Exception_Message (E)
+                   & " (sancta demo --help)");
          Set_Exit_Status (2);
    end Run;
 

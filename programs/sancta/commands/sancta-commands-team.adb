@@ -21,8 +21,25 @@ package body Sancta.Commands.Team is
       Put_Line ("          [--kill ID | --no-kill] [--kill-at FRACTION] [--lease SECONDS]");
       Put_Line ("          [--max SECONDS] [--world FILE] [--out DIR] [--quiet] [--check]");
       Put_Line ("          [--cut-for SECONDS [--cut-at FRACTION]]");
-      Put_Line ("  --cut-for S: when FRACTION (default 0.5) of the tasks is done, cut one robot");
-      Put_Line ("  off the team for S wall-clock seconds, then measure the replicas' convergence");
+      Put_Line ("A team mission in one process: the simulator driven in-process, each robot a");
+      Put_Line ("team agent with its own DDS node; legs costed on straight lines; a robot is");
+      Put_Line ("lost mid-mission; progress, a summary and the report as sancta demo.");
+      Put_Line ("  MISSION.xml         the mission (default share/missions/office-team.xml)");
+      Put_Line ("  --method M          annealer (default) or auctions");
+      Put_Line ("  --rate X            simulated seconds per wall second (default 25)");
+      Put_Line ("  --kill ID           the robot lost (default: the one with the most tasks left)");
+      Put_Line ("  --no-kill           lose no robot");
+      Put_Line ("  --kill-at FRACTION  lose it when this fraction of the tasks is done (0.3)");
+      Put_Line ("  --lease SECONDS     presence lease: a silent member is lost after it (0.5,");
+      Put_Line ("                      at least 0.1)");
+      Put_Line ("  --max SECONDS       simulated time limit (default 1200)");
+      Put_Line ("  --world FILE        another world than the mission's");
+      Put_Line ("  --out DIR           the report there (default out/demo)");
+      Put_Line ("  --quiet             no progress lines");
+      Put_Line ("  --check             exit status 1 unless every task was done exactly once");
+      Put_Line ("  --cut-for S         when FRACTION (--cut-at, default 0.5) of the tasks is");
+      Put_Line ("                      done, cut one robot off the team for S wall-clock");
+      Put_Line ("                      seconds, then measure the replicas' convergence");
    end Usage;
 
    function Default_Mission return String is (Installation.Share_File ("missions/office-team.xml"));
@@ -88,8 +105,8 @@ package body Sancta.Commands.Team is
          Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
          Set_Exit_Status (1);
       when E : Constraint_Error | Options.Usage_Error =>
-         Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E));
-         Usage;
+         Put_Line (Standard_Error, "sancta team: " & Ada.Exceptions.Exception_Message (E)
+                   & " (sancta team --help)");
          Set_Exit_Status (2);
    end Run;
 
