@@ -183,6 +183,13 @@ package body Sancta.Simulation.Render_Tool is
          end if;
       end;
    exception
+      when E : Ada.IO_Exceptions.Device_Error =>
+         --  Our output was closed ("sancta-render --help | head"): done; other
+         --  device errors are reported.
+         if Ada.Exceptions.Exception_Message (E) /= "Broken pipe" then
+            Put_Line (Standard_Error, "sancta-render: " & Ada.Exceptions.Exception_Message (E));
+            Set_Exit_Status (Failure);
+         end if;
       when E : Usage_Error =>
          Put_Line (Standard_Error, "sancta-render: " & Ada.Exceptions.Exception_Message (E));
          Set_Exit_Status (Failure);

@@ -1,6 +1,7 @@
 with Ada.Command_Line;
 with Ada.Containers.Vectors;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Numerics.Long_Elementary_Functions;
 with Ada.Real_Time;
 with Ada.Strings.Unbounded;
@@ -727,6 +728,13 @@ package body Sancta.Simulation.Sim_Tool is
          end;
       end;
    exception
+      when E : Ada.IO_Exceptions.Device_Error =>
+         --  Our output was closed ("sancta-sim --help | head"): done; other
+         --  device errors are reported.
+         if Ada.Exceptions.Exception_Message (E) /= "Broken pipe" then
+            Put_Line (Standard_Error, "sancta-sim: " & Ada.Exceptions.Exception_Message (E));
+            Set_Exit_Status (Failure);
+         end if;
       when E : Usage_Error | Robot_Lists.List_Error =>
          Put_Line (Standard_Error, "sancta-sim: " & Ada.Exceptions.Exception_Message (E));
          Set_Exit_Status (Failure);

@@ -12,6 +12,7 @@ pragma Unreserve_All_Interrupts;
 --  Lets "sancta run" catch Ctrl-C (SIGINT) and stop its components cleanly.
 with Ada.Command_Line;
 with Ada.Exceptions;
+with Ada.IO_Exceptions;
 with Ada.Text_IO;
 with Sancta.Commands.Check;
 with Sancta.Commands.Demo;
@@ -73,6 +74,13 @@ begin
       Set_Exit_Status (Failure);
    end if;
 exception
+   when E : Ada.IO_Exceptions.Device_Error =>
+      --  Our output was closed ("sancta plan --help | head"): done; other
+      --  device errors are reported.
+      if Ada.Exceptions.Exception_Message (E) /= "Broken pipe" then
+         Put_Line (Standard_Error, "sancta: " & Ada.Exceptions.Exception_Message (E));
+         Set_Exit_Status (Failure);
+      end if;
    when E : others =>
       --  Last resort: a bug, reported in one line instead of a traceback.
       Put_Line (Standard_Error, "sancta: internal error: " & Ada.Exceptions.Exception_Name (E)

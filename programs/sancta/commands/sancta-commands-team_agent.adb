@@ -23,13 +23,25 @@ package body Sancta.Commands.Team_Agent is
 
    procedure Usage is
    begin
-      Put_Line ("usage: sancta team-agent --id ID --x X --y Y [--speed M/S] [--rate X]"
-                & " [--team NAME] [--method annealer|auctions] [--lease S] [--for S]"
-                & " [--linger S]");
-      Put_Line ("       sancta team-agent --operator MISSION.xml [--team NAME] [--lease S]"
-                & " [--for S] [--linger S]");
-      Put_Line ("  --linger S: when the mission is done, stay on the team S seconds (still"
-                & " receiving), then print 'database: N keys, digest H' (convergence tests)");
+      Put_Line ("usage: sancta team-agent --id ID --x X --y Y [--speed M/S] [--rate X]");
+      Put_Line ("          [--team NAME] [--method annealer|auctions] [--lease S] [--for S]");
+      Put_Line ("          [--linger S]");
+      Put_Line ("       sancta team-agent --operator MISSION.xml [--team NAME] [--lease S]");
+      Put_Line ("          [--for S] [--linger S]");
+      Put_Line ("One team node in this process (one per host or network namespace): a robot");
+      Put_Line ("moving in straight lines to its tasks, or the operator publishing a mission.");
+      Put_Line ("  --id ID             the robot's id");
+      Put_Line ("  --x X, --y Y        its start (m)");
+      Put_Line ("  --speed M/S         its speed (default 1)");
+      Put_Line ("  --rate X            time runs X times faster for its motion (default 10)");
+      Put_Line ("  --operator MISSION  be the operator and publish this mission");
+      Put_Line ("  --team NAME         the team's topics /sancta/NAME/... (default team)");
+      Put_Line ("  --method M          annealer (default) or auctions");
+      Put_Line ("  --lease S           presence lease, at least 0.1 (default 1)");
+      Put_Line ("  --for S             stop after S seconds (default 120)");
+      Put_Line ("  --linger S          when the mission is done, stay on the team S seconds");
+      Put_Line ("                      (still receiving), then print 'database: N keys,");
+      Put_Line ("                      digest H' (convergence tests)");
    end Usage;
 
    function Trim (N : Integer) return String is
@@ -222,8 +234,8 @@ package body Sancta.Commands.Team_Agent is
       end;
    exception
       when E : Constraint_Error | Options.Usage_Error | Missions.Format_Error =>
-         Put_Line (Standard_Error, "sancta team-agent: " & Ada.Exceptions.Exception_Message (E));
-         Usage;
+         Put_Line (Standard_Error, "sancta team-agent: " & Ada.Exceptions.Exception_Message (E)
+                   & " (sancta team-agent --help)");
          Set_Exit_Status (2);
    end Run;
 

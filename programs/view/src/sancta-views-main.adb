@@ -173,6 +173,9 @@ exception
          Ada.Command_Line.Set_Exit_Status (2);
       end if;
    when E : others =>
-      Put_Line (Standard_Error, "sancta-view: " & Ada.Exceptions.Exception_Message (E));
-      Ada.Command_Line.Set_Exit_Status (1);
+      --  "Broken pipe": our output was closed ("sancta-view --help | head").
+      if Ada.Exceptions.Exception_Message (E) /= "Broken pipe" then
+         Put_Line (Standard_Error, "sancta-view: " & Ada.Exceptions.Exception_Message (E));
+         Ada.Command_Line.Set_Exit_Status (1);
+      end if;
 end Sancta.Views.Main;
