@@ -169,7 +169,7 @@ package body Rclada_Commands is
       function Bound (X : Real) return String is
          Text : String (1 .. 40);
       begin
-         if X = Real'Floor (X) and then abs X < 1.0e9 then
+         if X = Real'Floor (X) and then abs X <= 1.0e9 then
             return Ada.Strings.Fixed.Trim (Long_Long_Integer (X)'Image, Ada.Strings.Left);
          end if;
          Real_IO.Put (Text, X, Aft => 3, Exp => (if abs X < 0.001 then 2 else 0));
@@ -912,7 +912,8 @@ package body Rclada_Commands is
       elsif Pos (1) = "call" then
          Check_Options (Args, "--timeout");
          if Natural (Pos.Length) not in 3 .. 4 then
-            raise Usage_Error with "service call takes a service name, a type and a request";
+            raise Usage_Error
+              with "service call takes a service name, a type and optionally a request";
          end if;
          declare
             Support : constant ROSIDL.Typesupport.Service_Support := Service_Support (Pos (3));
