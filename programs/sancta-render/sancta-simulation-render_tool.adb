@@ -1,4 +1,5 @@
 with Ada.Command_Line;
+with Ada.Directories;
 with Ada.Exceptions;
 with Ada.IO_Exceptions;
 with Ada.Strings.Fixed;
@@ -21,6 +22,9 @@ package body Sancta.Simulation.Render_Tool is
    use Ada.Text_IO;
 
    use Tool_Arguments;
+
+   function Trim (N : Integer) return String is
+     (Ada.Strings.Fixed.Trim (N'Image, Ada.Strings.Left));
 
    Max_Picture_Side : constant := 1.0E6;
    Max_PNG_Pixels   : constant := 4.0E8;
@@ -171,8 +175,24 @@ package body Sancta.Simulation.Render_Tool is
                if Length (CSV) > 0 then
                   Rendering.Write_Trajectories (Scene.Trajectories, To_String (CSV));
                end if;
+               Scene.Title := To_Unbounded_String
+                 (Trim (Demo_Robots) & " robots on random tours, " & Trim (Result.Goals_Reached)
+                  & " of " & Trim (Result.Goals_Total) & " goals reached in "
+                  & Trim (Natural (Result.Duration)) & " s");
             end;
+         elsif Length (Trajectories) > 0 then
+            Scene.Title := To_Unbounded_String
+              ("Trajectories of " & Ada.Directories.Simple_Name (To_String (Trajectories)));
          end if;
+         --  Which colour is which robot, and the scale (as the demo report's
+         --  pictures); a world alone is drawn bare.
+         for R in 1 .. Scene.Trajectories.Last_Index loop
+            Scene.Legend.Append
+              (Rendering.Legend_Entry'
+                 (Rendering.Color_Of (R),
+                  To_Unbounded_String ((if Demo_Robots > 0 then "r" else "robot ") & Trim (R))));
+         end loop;
+         Scene.Scale_Bar := not Scene.Trajectories.Is_Empty;
          if Length (SVG) > 0 then
             Rendering.Write_SVG (World, Scene, To_String (SVG), Scale);
             Put_Line ("wrote " & To_String (SVG));
