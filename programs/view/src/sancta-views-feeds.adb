@@ -456,7 +456,7 @@ package body Sancta.Views.Feeds is
          begin
             if File = "" then
                raise Constraint_Error with "--world " & World_Name
-                 & ": no such file and no bundled world of that name";
+                 & ": no such file and no bundled world of that name (arena, office, campus)";
             end if;
             Scene_Store.Set_Map
               (new Sancta.Robot.Grids.Grid'

@@ -22,9 +22,10 @@ procedure Sancta.Views.Main is
      & "(its agents need a gui_relay component) and shows robots, plans, tasks and events."
      & ASCII.LF & ASCII.LF
      & "  --team NAME          the team's topics /sancta/NAME/... (default team)" & ASCII.LF
-     & "  --world NAME|FILE    the map: a bundled world (office, arena) or a map file;"
+     & "  --world NAME|FILE    the map: a bundled world (office, arena, campus) or a"
      & ASCII.LF
-     & "                       without it, the map of --map-topic (or none)" & ASCII.LF
+     & "                       map file; without it, the map of --map-topic (or none)"
+     & ASCII.LF
      & "  --map-topic TOPIC    a nav_msgs/OccupancyGrid topic (default /map; 'none')"
      & ASCII.LF
      & "  --lost-after S       a robot silent for S seconds is shown lost (default 3)"
