@@ -292,6 +292,8 @@ package body Sancta.Commands.Sim_Team_Demos is
       World    : constant Sancta.Simulation.Worlds.World :=
         Sancta.Simulation.Map_Files.Load_World (World_F);
       Children : Child_Maps.Map;
+      Non_Robot_Ids : Unbounded_String;
+      --  " + operator": the agents that are no robot, for the first line.
 
       function Robot_Id (R : Positive) return String is (To_String (View.Robots (R).Id));
 
@@ -439,9 +441,13 @@ package body Sancta.Commands.Sim_Team_Demos is
            & ": no such robot agent in " & To_String (Config.Config_File);
       end if;
       Start_Processes;
+      for R of View.Non_Robots loop
+         Append (Non_Robot_Ids,
+                 (if Length (Non_Robot_Ids) = 0 then " + " else ", ") & To_String (R.Id));
+      end loop;
       Put_Line ("demo: " & To_String (Config.Config_File) & ": mission " & To_String (M.Name)
-                & ":" & Result.Tasks_Total'Image & " tasks," & N'Image & " robot agents + "
-                & Trim (Natural (View.Non_Robots.Length)) & " other, world "
+                & ":" & Result.Tasks_Total'Image & " tasks," & N'Image & " robot agents"
+                & To_String (Non_Robot_Ids) & ", world "
                 & To_String (View.World) & "; sancta-sim at " & F1 (Config.Rate)
                 & "x, one process per agent (logs in " & Log_Dir & "/)");
       declare
