@@ -758,13 +758,14 @@ package body Rclada_Commands is
    end Topic_Pub;
 
    procedure Topic_Hz (Topic : String; Type_Arg : String; Args : Arguments) is
-      Type_Name : constant String :=
-        (if Type_Arg /= "" then Resolve_Message_Type (Type_Arg) else Topic_Type (Topic, Args));
-      Support   : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Name);
       Window    : constant Positive :=
         Positive (Number_Option (Args, "--window", "10000", 1.0, 1.0e7));
       Reports   : constant Natural :=
         Natural (Number_Option (Args, "--count", "0", High => 1.0e9));
+      --  The options first: a bad value is said before the wait for a publisher.
+      Type_Name : constant String :=
+        (if Type_Arg /= "" then Resolve_Message_Type (Type_Arg) else Topic_Type (Topic, Args));
+      Support   : constant ROSIDL.Typesupport.Message_Support := Message_Support (Type_Name);
       Reported  : Natural := 0;
       Node      : RCL.Nodes.Node := Tool_Node;
       Times     : array (1 .. Window) of Ada.Real_Time.Time;
