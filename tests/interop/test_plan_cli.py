@@ -158,3 +158,37 @@ def test_subset_robots_is_a_whole_count():
     p = run(eil51, "--robots", "5", "--objective", "minmax", "--subsets", "0.2",
             "--subset-robots", "3", "--time", "0", "--iterations", "20000", "--quiet")
     assert p.returncode == 0, p.stderr
+
+
+
+def test_subsets_default_rule():
+    """Without --subsets, MinMax with the annealer re-optimises route subsets
+    (as --subsets 0.2) from 200 tasks up; below, and for other objectives,
+    the plan is that of --subsets 0. Fixed move budgets: the plans are
+    deterministic for a seed."""
+    import random
+    rng = random.Random(17)
+    inside = REPO / "obj" / "plan-cli-subsets-201.tsp"     # 200 tasks
+    inside.parent.mkdir(exist_ok=True)
+    inside.write_text("NAME: r201\nTYPE: TSP\nDIMENSION: 201\nEDGE_WEIGHT_TYPE: EUC_2D\n"
+                      "NODE_COORD_SECTION\n"
+                      + "".join("%d %d %d\n" % (i + 1, rng.randrange(10000), rng.randrange(10000))
+                                for i in range(201)) + "EOF\n")
+    tsplib = REPO / "share" / "tsplib"
+
+    def tours(path, *extra):
+        p = run(str(path), "--robots", "5", "--seed", "3", "--time", "0", "--iterations",
+                "200000", "--quiet", "--json", "-", *extra)
+        assert p.returncode == 0, p.stderr
+        d = json.loads(p.stdout)
+        assert d["valid"]
+        return [t["tasks"] for t in d["tours"]]
+
+    on = tours(inside, "--objective", "minmax", "--subsets", "0.2")
+    assert on != tours(inside, "--objective", "minmax", "--subsets", "0")
+    assert tours(inside, "--objective", "minmax") == on
+    assert tours(inside, "--objective", "minsum") == tours(inside, "--objective", "minsum",
+                                                           "--subsets", "0")
+    for outside in ["rat99.tsp", "kroA200.tsp"]:    # 98 and 199 tasks
+        assert (tours(tsplib / outside, "--objective", "minmax")
+                == tours(tsplib / outside, "--objective", "minmax", "--subsets", "0")), outside

@@ -224,7 +224,15 @@ package Sancta.Allocation.Annealers is
       --  re-optimisation: the longest tour and Subset_Robots - 1 tours near
       --  it pooled, re-annealed as a problem of their own (Subset_Moves x
       --  its tasks moves, own seed), put back when their makespan falls (or
-      --  stays and their total falls); 0 = none. Not the default: session 14,
+      --  stays and their total falls); 0 = none. `sancta plan` uses 0.2 from
+      --  200 tasks up when --subsets is not given (session 15, the same
+      --  --time, 9 unseen instances of 150-1000 tasks x 3 / 5 / 10 robots:
+      --  10 s CPU, 2 seeds, 250-1000 tasks -0.59% mean makespan (34 better
+      --  / 12 worse / 2 equal; m = 3 -0.05%, 5 -0.63%, 10 -1.10%; 850-1000
+      --  tasks -0.54%, 12 / 6), 150 tasks +0.26% (1 / 2 / 3); 10 M moves,
+      --  1 seed, 250-1000 -0.12% (14 / 9), 150 +0.26% (0 / 2); the run with
+      --  subsets spends the whole budget, the anneal alone ~92% of it).
+      --  Session 14,
       --  0.2 against none given the same CPU time (the anneal alone stops
       --  at ~92% of a time budget), 6 unseen instances of 60-1000 tasks x
       --  3 / 5 / 10 robots: 10 s CPU -0.16% mean makespan (22 better / 15
