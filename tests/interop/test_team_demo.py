@@ -210,3 +210,27 @@ def test_demo_auctions_robot_lost_secured(tmp_path):
         {"ros_discovery_info", "rt/rosout", "rt/parameter_events", "rr/*"}, recorder
     assert "<deny_rule>" not in recorder and "<topic>*</topic>" in recorder
     check_bag(tmp_path)
+
+
+def test_demo_ends_when_its_output_is_closed(tmp_path):
+    """`sancta demo | head -1` and `sancta team MISSION | head -1`: once the
+    reader is gone, the demo stops its processes and its own agents (their
+    tasks kept `sancta demo` running for ever after the robots had stopped)
+    and exits quietly."""
+    for args in (["demo", str(CONFIG), "--rate", "8", "--max-wall", "60", "--no-record"],
+                 ["team", str(MISSION), "--max", "120"]):
+        out = tmp_path / args[0]
+        proc = subprocess.Popen([str(ps.BIN / "sancta"), *args, "--out", str(out)],
+                                cwd=ps.REPO, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+        try:
+            first = proc.stdout.readline()
+            assert first.startswith("demo: "), first
+            proc.stdout.close()  # as head does after its line
+            _, err = proc.communicate(timeout=45)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+            raise AssertionError(f"sancta {args[0]} still running 45 s after its output closed")
+        assert "internal error" not in err and "Broken pipe" not in err, err
+        assert proc.returncode == 0, (proc.returncode, err)

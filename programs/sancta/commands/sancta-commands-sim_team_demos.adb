@@ -849,6 +849,12 @@ package body Sancta.Commands.Sim_Team_Demos is
          if Dir /= "" then
             Team_Demos.Write_Report (Result, World, Scene, Dir);
          end if;
+      exception
+         when others =>
+            --  Its worker task would keep the program alive ("sancta demo
+            --  | head": our output closed while the robots run).
+            Monitor.Stop;
+            raise;
       end;
    exception
       when others =>

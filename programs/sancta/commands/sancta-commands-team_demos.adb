@@ -1383,6 +1383,10 @@ package body Sancta.Commands.Team_Demos is
          if Config.Run.Out_Dir /= Null_Unbounded_String then
             Write_Report (Result, World, Scene, To_String (Config.Run.Out_Dir));
          end if;
+      exception
+         when others =>
+            Stop_All;  --  Our output closed after the loop ("| head"), say.
+            raise;
       end;
    end Run;
 
