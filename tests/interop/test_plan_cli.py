@@ -192,3 +192,17 @@ def test_subsets_default_rule():
     for outside in ["rat99.tsp", "kroA200.tsp"]:    # 98 and 199 tasks
         assert (tours(tsplib / outside, "--objective", "minmax")
                 == tours(tsplib / outside, "--objective", "minmax", "--subsets", "0")), outside
+
+
+def test_progress_in_a_file_is_one_line_per_second():
+    """Standard error not a terminal (a log, a pipe): each progress report
+    is a line of its own, at most one per second of the run (before, one
+    line rewritten with carriage returns: a single endless line in a log)."""
+    p = run(str(REPO / "share" / "tsplib" / "kroA200.tsp"), "--robots", "5",
+            "--time", "3s", "--clock", "cpu")
+    assert p.returncode == 0, p.stderr
+    assert "\r" not in p.stderr
+    lines = [l for l in p.stderr.splitlines() if l.startswith("plan: ")]
+    assert 2 <= len(lines) <= 4, p.stderr
+    times = [float(l.split()[1]) for l in lines]
+    assert all(b - a >= 0.99 for a, b in zip(times, times[1:])), times

@@ -6,6 +6,7 @@ with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Interfaces;
+with Interfaces.C;
 with Sancta.Allocation;             use Sancta.Allocation;
 with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
@@ -211,19 +212,35 @@ package body Sancta.Commands.Plan is
       end;
    end Parse_Criterion;
 
-   --  Progress line on standard error.
+   --  Progress on standard error: one line rewritten in place on a
+   --  terminal; in a file or a pipe, a line per second of the run.
    Quiet : Boolean := False;
    Has_Progress : Boolean := False;
+   Next_Line_At : Duration := 0.0;
+
+   function Error_Is_Terminal return Boolean is
+      function Is_A_TTY (Fd : Interfaces.C.int) return Interfaces.C.int
+        with Import, Convention => C, External_Name => "isatty";
+      use type Interfaces.C.int;
+   begin
+      return Is_A_TTY (2) /= 0;
+   end Error_Is_Terminal;
 
    procedure Show (Pr : Annealers.Progress) is
+      Line : constant String := "plan: " & Real_Img (Long_Float (Pr.Elapsed), 1)
+        & " s  best " & Real_Img (Pr.Best / Scale_Factor, 2)
+        & "  " & Real_Img (Pr.Moves_Per_Second / 1.0E6, 2) & " M moves/s"
+        & "  T " & Real_Img (Pr.Temperature / Scale_Factor, 4);
    begin
-      if not Quiet then
-         Put (Standard_Error, ASCII.CR & "plan: " & Real_Img (Long_Float (Pr.Elapsed), 1)
-              & " s  best " & Real_Img (Pr.Best / Scale_Factor, 2)
-              & "  " & Real_Img (Pr.Moves_Per_Second / 1.0E6, 2) & " M moves/s"
-              & "  T " & Real_Img (Pr.Temperature / Scale_Factor, 4) & "   ");
+      if Quiet then
+         return;
+      elsif Error_Is_Terminal then
+         Put (Standard_Error, ASCII.CR & Line & "   ");
          Flush (Standard_Error);
          Has_Progress := True;
+      elsif Pr.Elapsed >= Next_Line_At then
+         Put_Line (Standard_Error, Line);
+         Next_Line_At := Pr.Elapsed + 1.0;
       end if;
    end Show;
 
