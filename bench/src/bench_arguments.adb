@@ -2,7 +2,6 @@ with Ada.Command_Line;
 with Ada.Directories;
 with Ada.Strings.Fixed;
 with Ada.Strings.Unbounded;    use Ada.Strings.Unbounded;
-with Ada.Text_IO;
 with GNAT.OS_Lib;
 
 package body Bench_Arguments is
@@ -45,26 +44,36 @@ package body Bench_Arguments is
       GNAT.OS_Lib.OS_Exit (2);
    end Fail;
 
+   generic
+      type Value_Type is private;
+      with function Value (Text : String) return Value_Type;
+      Kind : String;
+   function Parsed (Index : Positive; Name : String) return Value_Type;
+   --  Argument Index (there is one) read by Value; Fail "is not KIND".
+
+   function Parsed (Index : Positive; Name : String) return Value_Type is
+      Text : constant String := CL.Argument (Index);
+   begin
+      return Value (Text);
+   exception
+      when Constraint_Error =>
+         Fail (Where (Index, Name) & ": """ & Text & """ is not " & Kind);
+   end Parsed;
+
+   function Parsed_Seconds is new Parsed (Duration, Duration'Value, "a number of seconds");
+   function Parsed_Count is new Parsed (Natural, Natural'Value, "a whole number");
+   function Parsed_Number is new Parsed (Long_Float, Long_Float'Value, "a number");
+
    function Seconds (Index : Positive; Name : String; Default : Duration) return Duration is
    begin
       if CL.Argument_Count < Index then
          return Default;
       end if;
-      declare
-         Text  : constant String := CL.Argument (Index);
-         Value : Duration;
-      begin
-         begin
-            Value := Duration'Value (Text);
-         exception
-            when Constraint_Error =>
-               Fail (Where (Index, Name) & ": """ & Text & """ is not a number of seconds");
-         end;
+      return Value : constant Duration := Parsed_Seconds (Index, Name) do
          if Value < 0.0 then
-            Fail (Where (Index, Name) & ": """ & Text & """ is negative");
+            Fail (Where (Index, Name) & ": """ & CL.Argument (Index) & """ is negative");
          end if;
-         return Value;
-      end;
+      end return;
    end Seconds;
 
    function Count (Index : Positive; Name : String; Minimum : Natural := 0) return Natural is
@@ -72,21 +81,11 @@ package body Bench_Arguments is
       if CL.Argument_Count < Index then
          Fail (Where (Index, Name) & " is missing");
       end if;
-      declare
-         Text  : constant String := CL.Argument (Index);
-         Value : Natural := 0;
-      begin
-         begin
-            Value := Natural'Value (Text);
-         exception
-            when Constraint_Error =>
-               Fail (Where (Index, Name) & ": """ & Text & """ is not a whole number");
-         end;
+      return Value : constant Natural := Parsed_Count (Index, Name) do
          if Value < Minimum then
-            Fail (Where (Index, Name) & ": " & Text & " is below" & Minimum'Image);
+            Fail (Where (Index, Name) & ": " & CL.Argument (Index) & " is below" & Minimum'Image);
          end if;
-         return Value;
-      end;
+      end return;
    end Count;
 
    function Number (Index : Positive; Name : String; Default : Long_Float) return Long_Float is
@@ -94,22 +93,21 @@ package body Bench_Arguments is
       if CL.Argument_Count < Index then
          return Default;
       end if;
-      declare
-         Text  : constant String := CL.Argument (Index);
-         Value : Long_Float;
-      begin
-         begin
-            Value := Long_Float'Value (Text);
-         exception
-            when Constraint_Error =>
-               Fail (Where (Index, Name) & ": """ & Text & """ is not a number");
-         end;
+      return Value : constant Long_Float := Parsed_Number (Index, Name) do
          if not (Value > 0.0 and then Value <= Long_Float'Last) then
-            Fail (Where (Index, Name) & ": """ & Text & """ is not greater than 0");
+            Fail (Where (Index, Name) & ": """ & CL.Argument (Index)
+                  & """ is not greater than 0");
          end if;
-         return Value;
-      end;
+      end return;
    end Number;
+
+   procedure Create_Output (File : in out Ada.Text_IO.File_Type; Name, What : String) is
+   begin
+      Ada.Text_IO.Create (File, Ada.Text_IO.Out_File, Name);
+   exception
+      when Ada.Text_IO.Name_Error | Ada.Text_IO.Use_Error =>
+         Fail (What & ": """ & Name & """ cannot be created");
+   end Create_Output;
 
    function One_Of (Index : Positive; Name, Choices : String) return String is
    begin

@@ -6,6 +6,8 @@
 --       Bench_Arguments.Checked ("bench_cdr [SECONDS] [CSV-FILE]", Min => 0, Max => 2);
 --     Budget : constant Duration := Bench_Arguments.Seconds (1, "SECONDS", 1.0);
 --     --  "bench_cdr x": bench_cdr: SECONDS (argument 1): "x" is not a number
+with Ada.Text_IO;
+
 package Bench_Arguments is
 
    function Checked (Usage : String; Min, Max : Natural) return Boolean;
@@ -30,6 +32,10 @@ package Bench_Arguments is
    function Number (Index : Positive; Name : String; Default : Long_Float) return Long_Float;
    --  Argument Index, Default when there is none, as a number greater
    --  than 0; Fail naming Name and Index otherwise.
+
+   procedure Create_Output (File : in out Ada.Text_IO.File_Type; Name, What : String);
+   --  Creates the text file Name; Fail "WHAT: "NAME" cannot be created"
+   --  when it cannot (What: the option or argument that named it).
 
    function One_Of (Index : Positive; Name, Choices : String) return String;
    --  Argument Index when it is one of Choices ("ping|pong"); Fail naming

@@ -142,13 +142,7 @@ begin
             Config.Strong_Branching := Bench_Arguments.Count (I + 1, "--strong");
             I := I + 1;
          elsif A = "--csv" then
-            begin
-               Create (CSV, Out_File, Argument (I + 1));
-            exception
-               when Name_Error | Use_Error =>
-                  Bench_Arguments.Fail
-                    ("--csv: """ & Argument (I + 1) & """ cannot be created");
-            end;
+            Bench_Arguments.Create_Output (CSV, Argument (I + 1), "--csv");
             Has_CSV := True;
             Put_Line (CSV, "instance,n,tour,root_bound,lower_bound,cpu_s,wall_s,nodes,"
                       & "subtour_cuts,blossom_cuts,comb_cuts,purged,fixed,edges,proven");

@@ -9,16 +9,9 @@ package body Bench_Rows is
    procedure Open (CSV_Argument : Positive) is
    begin
       if Ada.Command_Line.Argument_Count >= CSV_Argument then
-         declare
-            Name : constant String := Ada.Command_Line.Argument (CSV_Argument);
-         begin
-            Create (CSV, Out_File, Name);
-         exception
-            when Name_Error | Use_Error =>
-               Bench_Arguments.Fail
-                 ("CSV-FILE (argument" & CSV_Argument'Image & "): """ & Name
-                  & """ cannot be created");
-         end;
+         Bench_Arguments.Create_Output
+           (CSV, Ada.Command_Line.Argument (CSV_Argument),
+            "CSV-FILE (argument" & CSV_Argument'Image & ")");
       end if;
    end Open;
 

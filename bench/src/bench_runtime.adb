@@ -83,13 +83,7 @@ begin
       end;
    end loop;
    if Ada.Strings.Unbounded.Length (CSV_Name) > 0 then
-      begin
-         Create (CSV, Out_File, Ada.Strings.Unbounded.To_String (CSV_Name));
-      exception
-         when Name_Error | Use_Error =>
-            Bench_Arguments.Fail
-              ("--csv: """ & Ada.Strings.Unbounded.To_String (CSV_Name) & """ cannot be created");
-      end;
+      Bench_Arguments.Create_Output (CSV, Ada.Strings.Unbounded.To_String (CSV_Name), "--csv");
       Put_Line (CSV, "metric,value");
    end if;
 
