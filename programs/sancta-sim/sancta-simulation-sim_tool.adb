@@ -41,9 +41,9 @@ package body Sancta.Simulation.Sim_Tool is
    procedure Usage is
    begin
       Put_Line ("usage: sancta-sim WORLD [options]");
-      Put_Line ("  WORLD                   a bundled world (arena, office, campus: the names in");
-      Put_Line ("                          share/worlds), a map-server YAML file or a wall");
-      Put_Line ("                          world (.walls)");
+      Put_Line ("  WORLD                   a bundled world (" & Map_Files.Bundled_Worlds
+                & "),");
+      Put_Line ("                          a map-server YAML file or a wall world (.walls)");
       Put_Line ("  --robot ""NAME X Y YAW [KEY=VALUE ...]""   a robot (repeatable; keys: see");
       Put_Line ("                          Sancta.Simulation.Robot_Lists)");
       Put_Line ("  --robots FILE           robots, one per line in that format");
@@ -709,7 +709,8 @@ package body Sancta.Simulation.Sim_Tool is
       begin
          if File = "" then
             raise Usage_Error with To_String (World_Name)
-              & ": no such file and no bundled world of that name (arena, office, campus)";
+              & ": no such file and no bundled world of that name ("
+              & Map_Files.Bundled_Worlds & ")";
          end if;
          declare
             World : constant Worlds.World := Map_Files.Load_World (File);

@@ -1,4 +1,5 @@
 with Ada.Characters.Handling;
+with Ada.Containers.Indefinite_Vectors;
 with Ada.Containers.Vectors;
 with Ada.Directories;
 with Ada.Strings.Fixed;
@@ -435,5 +436,33 @@ package body Sancta.Simulation.Map_Files is
       end if;
       return "";
    end World_File;
+
+   function Bundled_Worlds return String is
+      package Name_Vectors is new Ada.Containers.Indefinite_Vectors (Positive, String);
+      package Sorting is new Name_Vectors.Generic_Sorting;
+      Share : constant String := Installation.Share_File ("worlds/");
+      Files : constant Ada.Directories.Filter_Type :=
+        [Ada.Directories.Ordinary_File => True, others => False];
+      Names : Name_Vectors.Vector;
+      procedure Add (Entry_Found : Ada.Directories.Directory_Entry_Type) is
+         Name : constant String := Ada.Directories.Base_Name
+           (Ada.Directories.Simple_Name (Entry_Found));
+      begin
+         if not Names.Contains (Name) then
+            Names.Append (Name);
+         end if;
+      end Add;
+      Result : Unbounded_String;
+   begin
+      if Ada.Directories.Exists (Share) then
+         Ada.Directories.Search (Share, "*.yaml", Files, Add'Access);
+         Ada.Directories.Search (Share, "*.walls", Files, Add'Access);
+      end if;
+      Sorting.Sort (Names);
+      for Name of Names loop
+         Append (Result, (if Length (Result) = 0 then "" else ", ") & Name);
+      end loop;
+      return (if Length (Result) = 0 then "none" else To_String (Result));
+   end Bundled_Worlds;
 
 end Sancta.Simulation.Map_Files;

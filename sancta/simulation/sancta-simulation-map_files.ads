@@ -60,4 +60,9 @@ package Sancta.Simulation.Map_Files is
    --  (Installation.Share_File ("worlds/NAME.yaml"), then .walls); ""
    --  when none.
 
+   function Bundled_Worlds return String;
+   --  The names World_File takes for bundled worlds, sorted, for help and
+   --  error texts: "arena, campus, office" (the .yaml and .walls files in
+   --  Installation.Share_File ("worlds/")); "none" when there are none.
+
 end Sancta.Simulation.Map_Files;

@@ -456,7 +456,8 @@ package body Sancta.Views.Feeds is
          begin
             if File = "" then
                raise Constraint_Error with "--world " & World_Name
-                 & ": no such file and no bundled world of that name (arena, office, campus)";
+                 & ": no such file and no bundled world of that name ("
+                 & Sancta.Simulation.Map_Files.Bundled_Worlds & ")";
             end if;
             Scene_Store.Set_Map
               (new Sancta.Robot.Grids.Grid'

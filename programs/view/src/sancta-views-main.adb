@@ -5,6 +5,7 @@ with Ada.Strings.Unbounded;
 with Ada.Text_IO;
 with Command_Line_Options; use Command_Line_Options;
 with RCL.Contexts;
+with Sancta.Simulation.Map_Files;
 with Sancta.Views.Drawing;
 with Sancta.Views.Feeds;
 with Sancta.Views.Scenes;
@@ -14,6 +15,7 @@ procedure Sancta.Views.Main is
 
    use Ada.Strings.Unbounded;
    use Ada.Text_IO;
+   package Map_Files renames Sancta.Simulation.Map_Files;
 
    Help : constant String :=
      "usage: sancta-view [options]" & ASCII.LF
@@ -22,9 +24,9 @@ procedure Sancta.Views.Main is
      & "(its agents need a gui_relay component) and shows robots, plans, tasks and events."
      & ASCII.LF & ASCII.LF
      & "  --team NAME          the team's topics /sancta/NAME/... (default team)" & ASCII.LF
-     & "  --world NAME|FILE    the map: a bundled world (office, arena, campus) or a"
-     & ASCII.LF
-     & "                       map file; without it, the map of --map-topic (or none)"
+     & "  --world NAME|FILE    the map: a bundled world (" & Map_Files.Bundled_Worlds
+     & ")" & ASCII.LF
+     & "                       or a map file; without it, the map of --map-topic (or none)"
      & ASCII.LF
      & "  --map-topic TOPIC    a nav_msgs/OccupancyGrid topic (default /map; 'none')"
      & ASCII.LF
