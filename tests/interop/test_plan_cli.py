@@ -18,6 +18,19 @@ def run(*args):
     return subprocess.run([SANCTA, "plan", *args], capture_output=True, text=True, timeout=60)
 
 
+def random_tsp(name, n, seed):
+    """obj/NAME.tsp: n cities uniform in [0, 10000)^2 (EUC_2D), the same for a seed."""
+    import random
+    rng = random.Random(seed)
+    path = REPO / "obj" / (name + ".tsp")
+    path.parent.mkdir(exist_ok=True)
+    path.write_text("NAME: %s\nTYPE: TSP\nDIMENSION: %d\nEDGE_WEIGHT_TYPE: EUC_2D\n"
+                    "NODE_COORD_SECTION\n" % (name, n)
+                    + "".join("%d %d %d\n" % (i + 1, rng.randrange(10000), rng.randrange(10000))
+                              for i in range(n)) + "EOF\n")
+    return path
+
+
 def test_plan_json_has_the_chosen_alternatives():
     for solver in ["anneal", "exact", "auction", "greedy"]:
         p = run(MISSION, "--solver", solver, "--time", "0", "--iterations", "20000",
@@ -63,14 +76,7 @@ def test_short_budgets_are_honoured():
     skips the anneal). On the CPU clock (--clock cpu): the figures do not
     depend on the machine's load (a wall-clock check failed at load 11 on 2
     cores with 0.3 s of CPU used for a 0.5 s budget)."""
-    import random
-    rng = random.Random(5)
-    big = REPO / "obj" / "plan-cli-1200.tsp"
-    big.parent.mkdir(exist_ok=True)
-    big.write_text("NAME: r1200\nTYPE: TSP\nDIMENSION: 1200\nEDGE_WEIGHT_TYPE: EUC_2D\n"
-                   "NODE_COORD_SECTION\n"
-                   + "".join("%d %d %d\n" % (i + 1, rng.randrange(10000), rng.randrange(10000))
-                             for i in range(1200)) + "EOF\n")
+    big = random_tsp("plan-cli-1200", 1200, seed=5)
     tsplib = REPO / "share" / "tsplib"
     for path, extra, budget in [(tsplib / "eil51.tsp", ["--robots", "3", "--objective", "minmax"], 0.05),
                                 (tsplib / "kroA100.tsp", [], 0.05),
@@ -166,14 +172,7 @@ def test_subsets_default_rule():
     (as --subsets 0.2) from 200 tasks up; below, and for other objectives,
     the plan is that of --subsets 0. Fixed move budgets: the plans are
     deterministic for a seed."""
-    import random
-    rng = random.Random(17)
-    inside = REPO / "obj" / "plan-cli-subsets-201.tsp"     # 200 tasks
-    inside.parent.mkdir(exist_ok=True)
-    inside.write_text("NAME: r201\nTYPE: TSP\nDIMENSION: 201\nEDGE_WEIGHT_TYPE: EUC_2D\n"
-                      "NODE_COORD_SECTION\n"
-                      + "".join("%d %d %d\n" % (i + 1, rng.randrange(10000), rng.randrange(10000))
-                                for i in range(201)) + "EOF\n")
+    inside = random_tsp("plan-cli-subsets-201", 201, seed=17)     # 200 tasks
     tsplib = REPO / "share" / "tsplib"
 
     def tours(path, *extra):
