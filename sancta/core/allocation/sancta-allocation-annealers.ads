@@ -225,26 +225,16 @@ package Sancta.Allocation.Annealers is
       --  it pooled, re-annealed as a problem of their own (Subset_Moves x
       --  its tasks moves, own seed), put back when their makespan falls (or
       --  stays and their total falls); 0 = none. `sancta plan` uses 0.2 from
-      --  200 tasks up when --subsets is not given (session 15, the same
-      --  --time, 9 unseen instances of 150-1000 tasks x 3 / 5 / 10 robots:
-      --  10 s CPU, 2 seeds, 250-1000 tasks -0.59% mean makespan (34 better
-      --  / 12 worse / 2 equal; m = 3 -0.05%, 5 -0.63%, 10 -1.10%; 850-1000
-      --  tasks -0.54%, 12 / 6), 150 tasks +0.26% (1 / 2 / 3); 10 M moves,
-      --  1 seed, 250-1000 -0.12% (14 / 9), 150 +0.26% (0 / 2); the run with
-      --  subsets spends the whole budget, the anneal alone ~92% of it).
-      --  Session 14,
-      --  0.2 against none given the same CPU time (the anneal alone stops
-      --  at ~92% of a time budget), 6 unseen instances of 60-1000 tasks x
-      --  3 / 5 / 10 robots: 10 s CPU -0.16% mean makespan (22 better / 15
-      --  worse / 17 equal), 1 s -0.13% (44 / 39), 0.1 s -0.01% (71 / 57);
-      --  10 M moves -0.22% (17 / 6), 2 M +0.04% (19 / 22); but worse at
-      --  1000 tasks under time budgets (u1001: 10 s +0.20%, 3 / 6; 1 s
-      --  +0.36%, 6 / 12) and on bench rows at 10 s, 3 seeds (against none
-      --  at 10 s): pr2392-first1000 x 10 +1.35% -> +2.10% of LKH-3 (over
-      --  the 2% target), x 3 +0.65%; rat99 x 5 median 454 -> 458 (9
-      --  seeds); better on random300 x 10 (+3.22% -> +1.65%) and random500
-      --  x 10 (+1.77% -> +0.98%). Session 13 (10 robots, 300-800 tasks,
-      --  10 s, 8% more CPU than without): -0.30% (13 / 7).
+      --  200 tasks up when --subsets is not given. Measured against none at
+      --  the same --time (the anneal alone stops at ~92% of a budget; with
+      --  subsets the run spends all of it), session 15, 9 unseen instances
+      --  of 150-1000 tasks x 3 / 5 / 10 robots: 10 s CPU, 250-1000 tasks
+      --  -0.59% mean makespan (34 better / 12 worse / 2 equal; m = 3 -0.05%,
+      --  5 -0.63%, 10 -1.10%), 150 tasks +0.26% (1 / 2 / 3); 10 M moves
+      --  -0.12% (14 / 9); 1 s neutral (+0.04%, 50 / 43). Session 14 saw a
+      --  loss at 1000 tasks (one unseen instance +0.20% at 10 s;
+      --  pr2392-first1000 x 10 +1.35% -> +2.10% of LKH-3) that the new
+      --  1000-task instances did not repeat (-0.56%, 8 / 4).
       Subset_Robots : Positive := 3;
       Subset_Moves  : Long_Float := 5000.0;
       Subset_Start_Factor : Long_Float := 0.05;
