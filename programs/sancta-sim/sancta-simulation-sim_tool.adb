@@ -47,7 +47,9 @@ package body Sancta.Simulation.Sim_Tool is
       Put_Line ("  --robot ""NAME X Y YAW [KEY=VALUE ...]""   a robot (repeatable; keys: see");
       Put_Line ("                          Sancta.Simulation.Robot_Lists)");
       Put_Line ("  --robots FILE           robots, one per line in that format");
-      Put_Line ("  --rate R | Rx           simulated seconds per wall second (default 1)");
+      Put_Line ("  --rate R | Rx           simulated seconds per wall second (default 1); when");
+      Put_Line ("                          starved of CPU it runs slower, and does not make up");
+      Put_Line ("                          more than 0.25 simulated s of the lag by racing");
       Put_Line ("  --as-fast-as-possible   no pacing");
       Put_Line ("  --seed N                noise seed (default 0)");
       Put_Line ("  --duration S            stop after S simulated seconds (default: never)");
@@ -559,7 +561,36 @@ package body Sancta.Simulation.Sim_Tool is
       end Report_Events;
 
       Started    : Ada.Real_Time.Time := Ada.Real_Time.Clock;
+      Origin     : Ada.Real_Time.Time := Started;
+      --  Pacing: simulated time T is due at Origin + T / Rate.
       Next_Truth : Real := 0.0;
+
+      Make_Up_Limit : constant Real := 0.25;
+      --  Simulated seconds of lag that pacing makes up by stepping without
+      --  waiting (a late wake-up, a slow step). Beyond that the simulator
+      --  does not race to catch up: simulated time would jump seconds in a
+      --  burst that the robots' controllers, on this /clock, cannot follow
+      --  (their cmd_vel times out, they stand still while time passes: seen
+      --  after the team demo's first plan on a loaded machine). It moves
+      --  Origin instead and goes on at Rate from where it is: slower than
+      --  Rate while starved, never faster. Below sancta demo's --cmd-timeout
+      --  (0.5 s).
+      Not_Made_Up : Real := 0.0;
+      --  Simulated seconds given up so (said at the end).
+
+      procedure Pace is
+         Due  : constant Ada.Real_Time.Time :=
+           Origin + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
+         Now  : constant Ada.Real_Time.Time := Ada.Real_Time.Clock;
+         Late : constant Real := Real (Ada.Real_Time.To_Duration (Now - Due)) * Rate;
+      begin
+         if Late > Make_Up_Limit then
+            Not_Made_Up := Not_Made_Up + Late;
+            Origin := Now - Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
+         else
+            delay until Due;
+         end if;
+      end Pace;
    begin
       Sim.Initialize (World, Seed);
       Publish_Map;
@@ -571,6 +602,7 @@ package body Sancta.Simulation.Sim_Tool is
          Add (To_String (R.Name), R.Config, R.Start);
       end loop;
       Started := Ada.Real_Time.Clock;
+      Origin := Started;
       --  Wall time and pacing count from here (robots made).
       Put_Line ("sancta-sim: " & Natural'Image (Natural (IO.Length)) & " robot(s), domain"
                 & RCL.DDS.Domain_Id'Image (RCL.Contexts.Domain) & ", "
@@ -598,7 +630,7 @@ package body Sancta.Simulation.Sim_Tool is
             Set_Time (Clock_Time, Sim.Clock);
             Clock_Pub.Publish (Clock_Msg);
             if not As_Fast then
-               delay until Started + Ada.Real_Time.To_Time_Span (Duration (Sim.Clock / Rate));
+               Pace;
             end if;
          end loop;
       exception
@@ -614,7 +646,11 @@ package body Sancta.Simulation.Sim_Tool is
       begin
          Put_Line ("sancta-sim: stopped at t=" & Image (Sim.Clock) & " after " & Image (Wall)
                    & " s of wall time (real-time factor "
-                   & Image (Sim.Clock / Real'Max (Wall, 1.0E-3)) & ")");
+                   & Image (Sim.Clock / Real'Max (Wall, 1.0E-3)) & ")"
+                   & (if Not_Made_Up > 0.0
+                      then "; behind its rate by " & Image (Not_Made_Up)
+                           & " simulated s in all, not made up"
+                      else ""));
       end;
    exception
       when RCL.ROS_Exception =>

@@ -27,6 +27,17 @@
 --  (SIGINT, then SIGKILL after 5 s), counts the "did TASK" lines of every
 --  robot's log (a task done twice shows there) and writes the report of
 --  Team_Demos.Write_Report.
+--
+--  Simulated time starts with sancta-sim, before the agents are up, and
+--  runs at Rate through their start and the first planning, the robots
+--  idle: the report's "first plan at N s" is that wait, at the demo's rate.
+--  sancta-sim does not race to make up time it lost while starved of CPU
+--  (the agents' first annealing takes the machine's cores): it runs slower
+--  instead (its last line in sim.log says by how much), so simulated time
+--  advances smoothly from the start and a robot's grey ("stopped") time in
+--  the Gantt chart is time it really stood still at that rate -- a robot
+--  takes its first task when its own agent's first annealing ends, up to
+--  about a wall second (4 simulated at 4x) after the first plan is adopted.
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Components;
 with Sancta.Commands.Team_Demos;
