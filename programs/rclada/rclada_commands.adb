@@ -24,6 +24,7 @@ with RCL.Publishers;
 with RCL.QoS;
 with RCL.Timers;
 with RCL.YAML.Messages;
+with Sancta.Edit_Distances;
 
 package body Rclada_Commands is
 
@@ -274,29 +275,6 @@ package body Rclada_Commands is
                                          others                   => <>));
    end Tool_Node;
 
-   --------------
-   -- Distance --
-   --------------
-
-   function Distance (A, B : String) return Natural is
-      type Row is array (0 .. B'Length) of Natural;
-      Prev, Cur : Row;
-   begin
-      for J in Prev'Range loop
-         Prev (J) := J;
-      end loop;
-      for I in 1 .. A'Length loop
-         Cur (0) := I;
-         for J in 1 .. B'Length loop
-            Cur (J) := Natural'Min
-              (Natural'Min (Prev (J) + 1, Cur (J - 1) + 1),
-               Prev (J - 1) + (if A (A'First + I - 1) = B (B'First + J - 1) then 0 else 1));
-         end loop;
-         Prev := Cur;
-      end loop;
-      return Prev (B'Length);
-   end Distance;
-
    -----------------
    -- Type names --
    -----------------
@@ -342,7 +320,7 @@ package body Rclada_Commands is
          for N of Type_Names (P, Kind) loop
             declare
                Full : constant String := P & "/" & Part_Name (Kind) & "/" & N;
-               D    : constant Natural := Distance (Name, Full);
+               D    : constant Natural := Sancta.Edit_Distances.Distance (Name, Full);
             begin
                for I in Best'Range loop
                   if D < Best (I).Dist then

@@ -28,9 +28,6 @@ package Rclada_Commands is
    function Usage (Verb : String) return String;
    --  The help text of a verb ("" for the command itself).
 
-   function Distance (A, B : String) return Natural;
-   --  Levenshtein distance (for "did you mean" suggestions).
-
    function Resolve_Message_Type (Name : String) return String;
    --  "std_msgs/msg/String" or "std_msgs/String" -> "std_msgs/msg/String";
    --  Command_Error naming up to three close known types when unknown.

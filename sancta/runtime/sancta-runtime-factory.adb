@@ -1,6 +1,6 @@
-with Ada.Characters.Handling;
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Strings.Unbounded;
+with Sancta.Edit_Distances;
 
 package body Sancta.Runtime.Factory is
 
@@ -74,28 +74,6 @@ package body Sancta.Runtime.Factory is
 
    function Names return Local_Databases.Key_Vectors.Vector is (Registry.All_Names);
 
-   function Edit_Distance (A, B : String) return Natural is
-      use Ada.Characters.Handling;
-      type Row is array (0 .. B'Length) of Natural;
-      Previous, Current : Row;
-   begin
-      for J in Previous'Range loop
-         Previous (J) := J;
-      end loop;
-      for I in 1 .. A'Length loop
-         Current (0) := I;
-         for J in 1 .. B'Length loop
-            Current (J) := Natural'Min
-              (Natural'Min (Previous (J) + 1, Current (J - 1) + 1),
-               Previous (J - 1)
-               + (if To_Lower (A (A'First + I - 1)) = To_Lower (B (B'First + J - 1))
-                  then 0 else 1));
-         end loop;
-         Previous := Current;
-      end loop;
-      return Previous (B'Length);
-   end Edit_Distance;
-
    function Closest
      (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String is
       Limit  : constant Natural := Natural'Max (2, Name'Length / 3);
@@ -112,7 +90,7 @@ package body Sancta.Runtime.Factory is
          begin
             Distance (I) :=
               (if abs (C'Length - Name'Length) > Limit then Limit + 1
-               else Edit_Distance (Name, C));
+               else Edit_Distances.Distance (Name, C, Ignore_Case => True));
          end;
       end loop;
       for D in 0 .. Limit loop

@@ -41,11 +41,9 @@ package Sancta.Runtime.Factory is
    function Names return Local_Databases.Key_Vectors.Vector;
    --  Every registered component name, sorted.
 
-   function Edit_Distance (A, B : String) return Natural;
-   --  Levenshtein distance (insertions, deletions, substitutions).
-
    function Closest (Name : String; Candidates : Local_Databases.Key_Vectors.Vector) return String;
-   --  Up to three candidates nearest to Name by edit distance (within
-   --  max (2, length / 3)), as "'a', 'b'"; "" when none is near.
+   --  Up to three candidates nearest to Name by edit distance, case ignored
+   --  (Sancta.Edit_Distances; within max (2, length / 3)), as "'a', 'b'";
+   --  "" when none is near.
 
 end Sancta.Runtime.Factory;

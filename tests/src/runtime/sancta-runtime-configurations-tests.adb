@@ -7,6 +7,7 @@ with AUnit.Assertions;
 with Sancta.Standard_Components.All_Standard;
 with Sancta.Runtime.Clocks;
 with Sancta.Runtime.Factory;
+with Sancta.Edit_Distances;
 with Sancta.Runtime.Component_Hosts;
 with Sancta.Runtime.Values;
 with Sancta.Geometry;
@@ -264,10 +265,17 @@ package body Sancta.Runtime.Configurations.Tests is
 
    procedure Distances (Unused : in out Fixture) is
    begin
-      Assert (Factory.Edit_Distance ("odometri", "odometry") = 1, "one substitution");
-      Assert (Factory.Edit_Distance ("", "abc") = 3, "insertions");
-      Assert (Factory.Edit_Distance ("kitten", "sitting") = 3, "kitten/sitting");
-      Assert (Factory.Edit_Distance ("Logger", "logger") = 0, "case-insensitive");
+      Assert (Edit_Distances.Distance ("odometri", "odometry") = 1, "one substitution");
+      Assert (Edit_Distances.Distance ("", "abc") = 3, "insertions");
+      Assert (Edit_Distances.Distance ("abc", "") = 3, "deletions");
+      Assert (Edit_Distances.Distance ("kitten", "sitting") = 3, "kitten/sitting");
+      Assert (Edit_Distances.Distance ("Logger", "logger") = 1, "case counts by default");
+      Assert (Edit_Distances.Distance ("Logger", "logger", Ignore_Case => True) = 0,
+              "case ignored");
+      Assert (Edit_Distances.Distance (String'("xxabc") (3 .. 5), "abd") = 1,
+              "slices not starting at 1");
+      Assert (Factory.Closest ("odometri", Factory.Names) = "'odometry'",
+              "closest component: " & Factory.Closest ("odometri", Factory.Names));
    end Distances;
 
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
