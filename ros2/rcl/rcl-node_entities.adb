@@ -166,6 +166,21 @@ package body RCL.Node_Entities is
       return Added;
    end Subscribe;
 
+   procedure Subscribe
+     (Node      : in out RCL.Nodes.Node'Class;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile)
+   is
+      FQ         : constant String := Node.Expand (Topic);
+      Node_Owned : Subscription_Access;
+      --  In Node's registry from here on (Add_Endpoint): nothing to keep.
+   begin
+      Add_Endpoint (Node, Type_Name, RCL.Names.DDS_Topic_Name (FQ), Name => FQ, User_Data => "",
+                    Handle => Handle, QoS => QoS, Added => Node_Owned);
+   end Subscribe;
+
    function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info is
      ((Source_Timestamp   => ROSIDL.Int64 (Info.Source_Timestamp),
        Received_Timestamp => ROSIDL.Int64 (RCL.DDS.Now),

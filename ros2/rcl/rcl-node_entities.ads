@@ -120,17 +120,27 @@ private package RCL.Node_Entities is
    --  its samples and is owned by it once added (not when this raises).
    --  In Node's current callback group; announced in the graph.
 
+   procedure Subscribe
+     (Node      : in out RCL.Nodes.Node'Class;
+      Type_Name : String;
+      Topic     : String;
+      Handle    : not null Handler_Access;
+      QoS       : RCL.QoS.Profile);
+   --  Add_Endpoint for a ROS topic: Topic expanded and remapped as by
+   --  Node.Expand, on its DDS topic (rt/ and the name), no user data; Handle
+   --  owned as there. The subscription is Node's: its registry keeps it and
+   --  Node's finalization frees it (a subscription lives as long as its
+   --  node; there is no unsubscribing), so the caller gets nothing to keep.
+   --  What RCL.Nodes.Subscribe_Handler does.
+
    function Subscribe
      (Node      : in out RCL.Nodes.Node'Class;
       Type_Name : String;
       Topic     : String;
       Handle    : not null Handler_Access;
       QoS       : RCL.QoS.Profile) return Subscription_Access;
-   --  Add_Endpoint for a ROS topic: Topic expanded and remapped as by
-   --  Node.Expand, on its DDS topic (rt/ and the name), no user data; Handle
-   --  owned as there. What RCL.Nodes.Subscribe_Handler does; returns the
-   --  subscription (owned by Node) for callers that keep it (an action
-   --  client's matches).
+   --  The same, returning the subscription (still Node's) for callers that
+   --  look at it again (an action client's matched publishers).
 
    function To_Info (Info : RCL.DDS.Sample_Info) return ROSIDL.Message_Info;
    --  What a callback is told of a sample (received now).

@@ -170,13 +170,9 @@ package body RCL.Nodes is
       Handle    : not null Handler_Access;
       QoS       : RCL.QoS.Profile := RCL.QoS.Default)
    is
-      Added : constant RCL.Node_Entities.Subscription_Access :=
-        RCL.Node_Entities.Subscribe
-          (This, Type_Name, Topic, RCL.Node_Entities.Handler_Access (Handle), QoS);
-      pragma Unreferenced (Added);
-      --  The node owns it.
    begin
-      null;
+      RCL.Node_Entities.Subscribe
+        (This, Type_Name, Topic, RCL.Node_Entities.Handler_Access (Handle), QoS);
    end Subscribe_Handler;
 
    -----------------------------
