@@ -398,11 +398,52 @@ package body Sancta.Team.Agents is
       end Release;
    end Anneal_Slots;
 
+   procedure Collect_Proposal (This : in out Agent'Class) is
+      --  The outcome of the agent's annealing, when it has ended: published
+      --  when it is still for the current round and better than the plan
+      --  adopted and than the agent's carried-over proposal.
+      Ready   : Boolean;
+      Outcome : Anneal_Outcome;
+   begin
+      This.Jobs.Collect (Ready, Outcome);
+      if not Ready then
+         return;
+      end if;
+      This.Annealing := False;
+      if Outcome.Failure /= Null_Unbounded_String then
+         --  As when the annealing ran in this task: logged, tried again.
+         Log (This, "agent task: " & To_String (Outcome.Failure));
+         return;
+      end if;
+      declare
+         V    : constant View := This.Views.Get;
+         Mine : Plans.Plan renames Outcome.Result;
+      begin
+         Log (This, "annealed round" & Mine.Generation'Image & " in "
+              & Two_Decimals (Long_Float (Outcome.Took)) & " s, plan value "
+              & Two_Decimals (Mine.Value));
+         if Mine.Generation /= V.Round.Generation then
+            return;  --  a new round opened meanwhile: this one is over
+         end if;
+         This.Improved_Rounds := This.Improved_Rounds + 1;
+         if (V.Adopted.Generation /= Mine.Generation
+             or else Mine.Value < V.Adopted.Value - 1.0E-6)
+           and then Mine.Value < This.Job_Published - 1.0E-6
+         then
+            This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Mine, V.Round));
+         end if;
+      end;
+   end Collect_Proposal;
+
    procedure Propose (This : in out Agent'Class) is
       V   : constant View := This.Views.Get;
       S   : Plans.Snapshot renames V.Round;
-      Got : Boolean;
+      Got : Boolean := False;
    begin
+      if This.Annealing then
+         Collect_Proposal (This);
+         return;
+      end if;
       if This.Config.How /= Annealing or else S.Generation = 0
         or else not Round_Robots (S).Contains (To_String (This.Config.Id))
         or else This.Improved_Rounds > This.Config.Rounds
@@ -414,16 +455,19 @@ package body Sancta.Team.Agents is
          return;  --  another agent of this process anneals: next tick
       end if;
       Propose_In_Slot (This, V);
-      Anneal_Slots.Release;
+      --  The Annealer releases the slot when the job ends.
    exception
       when others =>
-         if Got then
+         if Got and then not This.Annealing then
             Anneal_Slots.Release;
          end if;
          raise;
    end Propose;
 
    procedure Propose_In_Slot (This : in out Agent'Class; V : View) is
+      --  Publishes the carried-over start of a re-plan at once, then hands
+      --  the annealing to the agent's Annealer task (Collect_Proposal takes
+      --  its outcome in a later tick).
       S     : Plans.Snapshot renames V.Round;
       Seed  : constant Interfaces.Unsigned_64 :=
         This.Config.Seed * 1_000_003 + Interfaces.Unsigned_64 (S.Generation) * 7919
@@ -443,37 +487,26 @@ package body Sancta.Team.Agents is
                                   To_String (This.Config.Id), Leg'Access));
       Start : constant Plans.Plan :=
         (if This.Improved_Rounds = 0 then Carried else V.Adopted);
-      Published : Long_Float := Long_Float'Last;
-      --  The value of this agent's proposal for round S so far.
    begin
+      This.Job_Published := Long_Float'Last;
       if not Carried.Tours.Is_Empty
         and then (V.Adopted.Generation /= S.Generation
                   or else Carried.Value < V.Adopted.Value - 1.0E-6)
       then
-         Published := Carried.Value;
+         This.Job_Published := Carried.Value;
          This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Carried, S));
          Log (This, "round" & S.Generation'Image & " starts from the current plan in "
               & Two_Decimals (Long_Float (To_Duration (Clock - T0))) & " s, plan value "
               & Two_Decimals (Carried.Value));
       end if;
-      declare
-         T1   : constant Time := Clock;
-         Mine : constant Plans.Plan :=
-           (if This.Config.Costs = null
-            then Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id))
-            else Plans.Anneal (S, Seed, This.Config.Budget, Start, To_String (This.Config.Id),
-                               Leg => Leg'Access));
-      begin
-         Log (This, "annealed round" & S.Generation'Image & " in "
-              & Two_Decimals (Long_Float (To_Duration (Clock - T1))) & " s, plan value "
-              & Two_Decimals (Mine.Value));
-         This.Improved_Rounds := This.Improved_Rounds + 1;
-         if (V.Adopted.Generation /= S.Generation or else Mine.Value < V.Adopted.Value - 1.0E-6)
-           and then Mine.Value < Published - 1.0E-6
-         then
-            This.Db.Put ("proposal/" & To_String (This.Config.Id), Plans.Encode (Mine, S));
-         end if;
-      end;
+      This.Jobs.Submit
+        ((Round    => S,
+          Seed     => Seed,
+          Budget   => This.Config.Budget,
+          Start    => Start,
+          Proposer => This.Config.Id,
+          Costs    => This.Config.Costs));
+      This.Annealing := True;
    end Propose_In_Slot;
 
    --  Auctions (coordinator side) -------------------------------------------------------
@@ -756,6 +789,9 @@ package body Sancta.Team.Agents is
       if Config.Is_Robot then
          A.Db.Put ("robot/" & To_String (Config.Id), "robot");
       end if;
+      if Config.Is_Robot then
+         A.Anneals := new Annealer (A.Jobs'Access);
+      end if;
       A.Runner := new Worker (A);
       A.Runner.Go;
       Registry.Add (A);
@@ -916,6 +952,77 @@ package body Sancta.Team.Agents is
    function All_Done (This : Agent) return Boolean is
      (This.Mission_Tasks > 0 and then This.Done_Tasks = This.Mission_Tasks);
 
+   protected body Anneal_Box is
+      procedure Submit (Job : Anneal_Job) is
+      begin
+         Next := Job;
+         Pending := True;
+         Finished := False;
+      end Submit;
+
+      entry Take (Job : out Anneal_Job; Quit : out Boolean) when Pending or else Closing is
+      begin
+         Quit := Closing;
+         if not Quit then
+            Job := Next;
+            Pending := False;
+         end if;
+      end Take;
+
+      procedure Finish (Outcome : Anneal_Outcome) is
+      begin
+         Last := Outcome;
+         Finished := True;
+      end Finish;
+
+      procedure Collect (Ready : out Boolean; Outcome : out Anneal_Outcome) is
+      begin
+         Ready := Finished;
+         if Ready then
+            Outcome := Last;
+            Finished := False;
+         end if;
+      end Collect;
+
+      procedure Shut is
+      begin
+         Closing := True;
+      end Shut;
+   end Anneal_Box;
+
+   task body Annealer is
+      --  Runs the jobs its agent submits, each in the Anneal_Slots slot the
+      --  agent task seized for it (released here when the job ends).
+      Job  : Anneal_Job;
+      Quit : Boolean;
+   begin
+      loop
+         Jobs.Take (Job, Quit);
+         exit when Quit;
+         declare
+            function Leg (From, To : Point) return Long_Float is (Job.Costs.Leg (From, To));
+            T1      : constant Time := Clock;
+            Outcome : Anneal_Outcome;
+         begin
+            begin
+               Outcome.Result :=
+                 (if Job.Costs = null
+                  then Plans.Anneal (Job.Round, Job.Seed, Job.Budget, Job.Start,
+                                     To_String (Job.Proposer))
+                  else Plans.Anneal (Job.Round, Job.Seed, Job.Budget, Job.Start,
+                                     To_String (Job.Proposer), Leg => Leg'Access));
+               Outcome.Took := To_Duration (Clock - T1);
+            exception
+               when E : others =>
+                  Outcome.Failure :=
+                    To_Unbounded_String (Ada.Exceptions.Exception_Information (E));
+            end;
+            Anneal_Slots.Release;
+            Jobs.Finish (Outcome);
+         end;
+      end loop;
+   end Annealer;
+
    task body Worker is
    begin
       accept Go;
@@ -934,6 +1041,7 @@ package body Sancta.Team.Agents is
          end;
          delay Tick;
       end loop;
+      Owner.Jobs.Shut;
    end Worker;
 
 end Sancta.Team.Agents;

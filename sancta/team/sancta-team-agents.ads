@@ -35,6 +35,10 @@
 --  Execution (robots): Current_Goal gives the next point of the first task
 --  of the robot's tour in the adopted plan that is not done; Arrived marks
 --  progress (an explore segment has two points) and finally done/<task>.
+--  A robot's annealing runs in a task of its own, so the agent's task
+--  keeps following the team's plan meanwhile: a robot takes its first task
+--  as soon as another robot's proposal is adopted, not when its own first
+--  annealing ends (the A* legs of the first one take seconds).
 with Ada.Containers.Indefinite_Ordered_Maps;
 with Ada.Containers.Indefinite_Ordered_Sets;
 with Ada.Real_Time;
@@ -213,6 +217,48 @@ private
    end Worker;
    type Worker_Access is access Worker;
 
+   type Anneal_Job is record
+      Round    : Plans.Snapshot;
+      Seed     : Interfaces.Unsigned_64 := 1;
+      Budget   : Duration := 0.25;
+      Start    : Plans.Plan;
+      Proposer : Unbounded_String;
+      Costs    : Grid_Costs.Cost_Access := null;
+   end record;
+   --  One annealing of a round (Plans.Anneal's arguments), by value.
+
+   type Anneal_Outcome is record
+      Result  : Plans.Plan;
+      Took    : Duration := 0.0;
+      Failure : Unbounded_String;
+      --  The exception's information when the annealing failed.
+   end record;
+
+   protected type Anneal_Box is
+      --  The hand-over between the agent's task (Worker), which submits an
+      --  annealing and collects its outcome, and its Annealer task, which
+      --  runs it: the agent task goes on reading the team's plan (and the
+      --  robot on taking its tasks) while its own proposal is annealed.
+      --  At most one job at a time: Submit only after Collect gave the
+      --  previous one's outcome.
+      procedure Submit (Job : Anneal_Job);
+      entry Take (Job : out Anneal_Job; Quit : out Boolean);
+      --  The Annealer's next job; Quit once Shut was called.
+      procedure Finish (Outcome : Anneal_Outcome);
+      procedure Collect (Ready : out Boolean; Outcome : out Anneal_Outcome);
+      --  The finished job's outcome (Ready), once.
+      procedure Shut;
+   private
+      Pending  : Boolean := False;
+      Finished : Boolean := False;
+      Closing  : Boolean := False;
+      Next     : Anneal_Job;
+      Last     : Anneal_Outcome;
+   end Anneal_Box;
+
+   task type Annealer (Jobs : not null access Anneal_Box);
+   type Annealer_Access is access Annealer;
+
    type Auction_Consumer (Owner : not null access Agent) is
      limited new Networks.Consumer with null record;
    overriding procedure On_Message
@@ -243,6 +289,14 @@ private
       Bundle_Gen : Natural := 0;
       Bid_Round  : Plans.Snapshot;
       Runner   : Worker_Access;
+      Jobs     : aliased Anneal_Box;
+      Anneals  : Annealer_Access;
+      --  Robots: the agent's proposals are annealed there.
+      Annealing : Boolean := False;
+      --  A job of this agent is in Jobs (the agent task's own).
+      Job_Published : Long_Float := Long_Float'Last;
+      --  The value of this agent's proposal for the job's round when the
+      --  job was submitted (the agent task's own).
       Stopping : Boolean := False
         with Atomic;
       Mismatch_Since : Ada.Real_Time.Time := Ada.Real_Time.Time_Last;

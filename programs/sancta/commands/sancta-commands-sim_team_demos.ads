@@ -35,9 +35,9 @@
 --  (the agents' first annealing takes the machine's cores): it runs slower
 --  instead (its last line in sim.log says by how much), so simulated time
 --  advances smoothly from the start and a robot's grey ("stopped") time in
---  the Gantt chart is time it really stood still at that rate -- a robot
---  takes its first task when its own agent's first annealing ends, up to
---  about a wall second (4 simulated at 4x) after the first plan is adopted.
+--  the Gantt chart is time it really stood still at that rate. A robot
+--  takes its first task as soon as the first plan is adopted (its agent
+--  anneals in a task of its own), not when its own first annealing ends.
 with Ada.Strings.Unbounded;
 with Sancta.Runtime.Components;
 with Sancta.Commands.Team_Demos;

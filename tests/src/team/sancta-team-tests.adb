@@ -647,6 +647,74 @@ package body Sancta.Team.Tests is
       Op.Stop;
    end Test_Join;
 
+   procedure Test_Task_While_Annealing (T : in out Fixture) is
+      --  A robot takes its task as soon as the team's plan names it, while
+      --  its own annealing still runs: both robots anneal for 3 s; a third
+      --  node (this test) proposes a greedy plan as soon as the round is
+      --  out; r2 must find its goal in that plan before its own proposal
+      --  exists (an order of events, not a time: the agent task used to
+      --  anneal in its loop and saw no plan until its annealing ended).
+      pragma Unreferenced (T);
+      use Agents;
+      Team : constant Unbounded_String := To_Unbounded_String ("t_first_go");
+      function Robot (Id : String; X : Real) return Agent_Access is
+         A : constant Agent_Access :=
+           Create ((Id => To_Unbounded_String (Id), Team => Team, Lease => Lease,
+                    Budget => 3.0, Rounds => 0, Verbose => False, others => <>));
+      begin
+         A.Set_Pose ((X, 0.0));
+         return A;
+      end Robot;
+      M       : Missions.Mission;
+      R1      : constant Agent_Access := Robot ("r1", 0.0);
+      R2      : constant Agent_Access := Robot ("r2", 10.0);
+      Op      : constant Agent_Access :=
+        Create ((Id => To_Unbounded_String ("operator"), Team => Team, Is_Robot => False,
+                 Lease => Lease, Verbose => False, others => <>));
+      Planner : constant Node := Make ("t_first_go", "planner", Groups => "operators");
+      Found   : Boolean := False;
+      Goal    : Missions.Point;
+      Task_Id : Unbounded_String;
+      function Round_Out return Boolean is (R1.Round.Generation > 0);
+      function R2_Has_Goal return Boolean is
+      begin
+         R2.Current_Goal (Found, Goal, Task_Id);
+         return Found;
+      end R2_Has_Goal;
+   begin
+      for K in 1 .. 6 loop
+         declare
+            Task_Def : Missions.Mission_Task;
+            X        : constant Real := (if K <= 3 then Real (K) else Real (7 + K));
+            --  Three tasks near each robot.
+         begin
+            Task_Def.Id := To_Unbounded_String ("f" & Ada.Strings.Fixed.Trim (K'Image,
+                                                Ada.Strings.Left));
+            Task_Def.Points.Append (Missions.Point'(X, 3.0));
+            M.Tasks.Append (Task_Def);
+         end;
+      end loop;
+      Op.Publish_Mission (M);
+      Assert (Wait_Until (Round_Out'Access), "no round");
+      declare
+         S : constant Plans.Snapshot := R1.Round;
+         P : constant Plans.Plan := Plans.Greedy (S, "planner");
+      begin
+         Assert (Natural (S.Robots.Length) = 2, "round of" & S.Robots.Length'Image & " robots");
+         Assert ((for all Tour of P.Tours => not Tour.Is_Empty), "greedy left a robot idle");
+         Planner.Db.Put ("proposal/planner", Plans.Encode (P, S));
+      end;
+      Assert (Wait_Until (R2_Has_Goal'Access), "r2 never took a task");
+      Assert (not R2.Database.Contains ("proposal/r2"),
+              "r2 took its task " & To_String (Task_Id) & " only after its own annealing");
+      Assert (R2.Adopted.Proposer = "planner",
+              "r2 follows the plan of " & To_String (R2.Adopted.Proposer));
+      R1.Stop;
+      R2.Stop;
+      Op.Stop;
+      Planner.Net.Stop;
+   end Test_Task_While_Annealing;
+
    --  The team_member's goal rule (the stall of the configuration demo) ---------------
 
    procedure Test_Goal_Tracker (T : in out Fixture) is
@@ -875,6 +943,9 @@ package body Sancta.Team.Tests is
            Test_Arrivals'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
       Add ("demo with a robot lost (auctions)", Test_Demo_Auctions'Access);
+      --  Last: its agents' annealings go on for up to 3 s after it.
+      Add ("a robot takes its task from the team's plan while it anneals",
+           Test_Task_While_Annealing'Access);
       Result.Add_Test (Goal_Trackers.Contract_Tests.Suite);
       return Result;
    end Suite;
