@@ -34,6 +34,8 @@ package body Sancta.Team.Grid_Costs is
          Result := (if C = Path_Costs.Unreachable then Long_Float (Distance (From, To))
                     else Long_Float (C));
       end Cost;
+
+      function Cached return Natural is (Path_Costs.Cached_Costs (Map));
    end Guarded;
 
    function Create
@@ -65,5 +67,7 @@ package body Sancta.Team.Grid_Costs is
       This.Guard.Cost (From, To, Result);
       return Result;
    end Leg;
+
+   function Cached_Legs (This : Grid_Cost_Model) return Natural is (This.Guard.Cached);
 
 end Sancta.Team.Grid_Costs;

@@ -42,6 +42,9 @@ package Sancta.Team.Grid_Costs is
    --  The A* length from From to To on the coarse grid (metres), or the
    --  straight line when there is no path.
 
+   function Cached_Legs (This : Grid_Cost_Model) return Natural;
+   --  Pairs of coarse cells whose leg Leg answers from its cache.
+
    function Coarsen (G : Sancta.Robot.Grids.Grid; Factor : Positive)
      return Sancta.Robot.Grids.Grid;
    --  Cells of Factor x Factor cells of G (the same origin), occupied when
@@ -52,6 +55,7 @@ private
    protected type Guarded is
       procedure Initialize (Occupancy : Sancta.Robot.Grids.Grid; Robot_Radius : Real);
       procedure Cost (From, To : Point; Result : out Long_Float);
+      function Cached return Natural;
    private
       Map : Sancta.Robot.Path_Costs.Planner;
    end Guarded;

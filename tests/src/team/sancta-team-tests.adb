@@ -715,6 +715,52 @@ package body Sancta.Team.Tests is
       Planner.Net.Stop;
    end Test_Task_While_Annealing;
 
+   procedure Test_Legs_Before_Round (T : in out Fixture) is
+      --  With A* leg costs, a robot agent costs the legs between the
+      --  mission's tasks as soon as the mission is known, before any round
+      --  (here none ever opens: the robot has no pose, so it is not alive).
+      pragma Unreferenced (T);
+      use Agents;
+      use Sancta.Robot.Grids;
+      Team  : constant Unbounded_String := To_Unbounded_String ("t_warm_legs");
+      G     : Grid (99, 99);
+      Costs : Grid_Costs.Cost_Access;
+      M     : Missions.Mission;
+      Pairs : constant Natural := 4 * 3;
+      --  Four goto tasks in distinct cells: every ordered pair.
+   begin
+      G.Origin := (0.0, 0.0);
+      G.Resolution := 0.05;
+      Costs := Grid_Costs.Create (G, Robot_Radius => 0.2, Cell => 0.2);
+      for K in 1 .. 4 loop
+         declare
+            Task_Def : Missions.Mission_Task;
+         begin
+            Task_Def.Id := To_Unbounded_String ("w" & Ada.Strings.Fixed.Trim (K'Image,
+                                                Ada.Strings.Left));
+            Task_Def.Points.Append (Missions.Point'(Real (K), 2.0));
+            M.Tasks.Append (Task_Def);
+         end;
+      end loop;
+      declare
+         R1 : constant Agent_Access :=
+           Create ((Id => To_Unbounded_String ("r1"), Team => Team, Lease => Lease,
+                    Costs => Costs, Verbose => False, others => <>));
+         Op : constant Agent_Access :=
+           Create ((Id => To_Unbounded_String ("operator"), Team => Team, Is_Robot => False,
+                    Lease => Lease, Verbose => False, others => <>));
+         function Costed return Boolean is (Costs.Cached_Legs >= Pairs);
+      begin
+         Assert (Costs.Cached_Legs = 0, "legs cached before the mission");
+         Op.Publish_Mission (M);
+         Assert (Wait_Until (Costed'Access),
+                 "legs cached:" & Costs.Cached_Legs'Image & ", expected" & Pairs'Image);
+         Assert (R1.Round.Generation = 0, "a round opened");
+         R1.Stop;
+         Op.Stop;
+      end;
+   end Test_Legs_Before_Round;
+
    --  The team_member's goal rule (the stall of the configuration demo) ---------------
 
    procedure Test_Goal_Tracker (T : in out Fixture) is
@@ -939,6 +985,8 @@ package body Sancta.Team.Tests is
       Add ("a robot joining gets tasks, tasks done stay done", Test_Join'Access);
       Add ("team_member sends a goal again after an idle spell", Test_Goal_Tracker'Access);
       Add ("allocation legs along A* on a coarsened grid", Test_Grid_Costs'Access);
+      Add ("a robot agent costs the legs between tasks before the first round",
+           Test_Legs_Before_Round'Access);
       Add ("time per task: going, at the task, stopped (Note_Arrivals)",
            Test_Arrivals'Access);
       Add ("demo with a robot lost (annealer)", Test_Demo_Annealer'Access);
