@@ -193,6 +193,37 @@ def test_subsets_default_rule():
                 == tours(tsplib / outside, "--objective", "minmax", "--subsets", "0")), outside
 
 
+def test_population_default_rule():
+    """Without --population, MinMax with the annealer runs the population
+    search (as --population 4) from 60 to 199 tasks; below, from 200 up and
+    for other objectives, the plan is that of --population 0. Fixed move
+    budgets: deterministic plans. A bad count is a usage error."""
+    inside = random_tsp("plan-cli-population-100", 100, seed=23)     # 99 tasks
+    below = random_tsp("plan-cli-population-59", 59, seed=23)        # 58 tasks
+    above = random_tsp("plan-cli-population-201", 201, seed=23)      # 200 tasks
+
+    def tours(path, *extra):
+        p = run(str(path), "--robots", "3", "--seed", "5", "--time", "0", "--iterations",
+                "200000", "--quiet", "--json", "-", *extra)
+        assert p.returncode == 0, p.stderr
+        d = json.loads(p.stdout)
+        assert d["valid"]
+        return [t["tasks"] for t in d["tours"]]
+
+    on = tours(inside, "--objective", "minmax", "--population", "4")
+    assert on != tours(inside, "--objective", "minmax", "--population", "0")
+    assert tours(inside, "--objective", "minmax") == on
+    assert tours(inside, "--objective", "minsum") == tours(inside, "--objective", "minsum",
+                                                           "--population", "4")
+    for outside in [below, above]:
+        assert (tours(outside, "--objective", "minmax")
+                == tours(outside, "--objective", "minmax", "--population", "0")), outside
+    for value in ["2.5", "101", "four"]:
+        p = run(str(inside), "--objective", "minmax", "--population", value)
+        assert p.returncode != 0, value
+        assert "--population: '%s' is not a count in 0 .. 100" % value in p.stderr, p.stderr
+
+
 def test_progress_in_a_file_is_one_line_per_second():
     """Standard error not a terminal (a log, a pipe): each progress report
     is a line of its own, at most one per second of the run (before, one

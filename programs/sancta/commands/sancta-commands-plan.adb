@@ -35,6 +35,17 @@ package body Sancta.Commands.Plan is
    --  makespan with 3+ robots only (Annealers.Options' Subset_Share, whose
    --  comment has the figures measured).
 
+   Auto_Population           : constant := 4;
+   Auto_Population_Min_Tasks : constant := 60;
+   --  --population when not given, with the annealer: Auto_Population from
+   --  Auto_Population_Min_Tasks tasks up to Auto_Subset_Min_Tasks - 1 (where
+   --  the subsets start), else 0 (none); it applies to a pure makespan with
+   --  2+ robots only (Annealers.Options' Population, whose comment has the
+   --  figures measured on unseen instances). The bench's MinMax rows in
+   --  that range (eil76, rat99, kroA100, eil101, kroA200 x 3 / 5 / 10; 10 s
+   --  CPU, 3 seeds) against --population 0: -0.22% mean makespan, 20 better
+   --  / 2 worse; kroA200/10 6224 (best-known) on 3 of 3 seeds, was 6281.
+
    --  CPU seconds used so far by the main task (set-up and search; runs of
    --  --restarts work in tasks of their own).
    function CPU_Seconds return Long_Float is
@@ -103,6 +114,15 @@ package body Sancta.Commands.Plan is
       Put_Line ("  --subset-total W     subsets minimise makespan + W x total, kept when the");
       Put_Line ("                       plan's makespan, else its total, falls (0 = none)");
       Put_Line ("  --subset-t0 F        a subset's anneal: start temperature factor (0.05;");
+      Put_Line ("                       0 = --t0)");
+      Put_Line ("  --population N       minmax, 2+ robots: a population search of N plans");
+      Put_Line ("                       (independent anneals, then children: order crossover");
+      Put_Line ("                       of two plans' tours end to end, optimal split into");
+      Put_Line ("                       tours, a short anneal; default 4 from 60 to 199");
+      Put_Line ("                       tasks, else 0 = none)");
+      Put_Line ("  --population-share F share of the budget for the first N anneals (0.5)");
+      Put_Line ("  --child-moves M      moves per task of a child's anneal (default 2000)");
+      Put_Line ("  --child-t0 F         a child's anneal: start temperature factor (0.05;");
       Put_Line ("                       0 = --t0)");
       Put_Line ("  --runs N             anneals in sequence sharing the budget, each from a");
       Put_Line ("                       fresh start (geometric schedule; 0 = automatic)");
@@ -482,6 +502,7 @@ package body Sancta.Commands.Plan is
       I          : Natural := First_Argument;
       Time_Set   : Boolean := False;
       Subsets_Set : Boolean := False;
+      Population_Set : Boolean := False;
       Proven     : Boolean := False;
       Lower_Bound : Cost := 0;
       Exact_Note : Unbounded_String;
@@ -674,6 +695,25 @@ package body Sancta.Commands.Plan is
                Opts.Subset_Start_Factor := Number_In (A, 0.0, 10.0);
             elsif A = "--subset-total" then
                Opts.Subset_Total_Weight := Number_In (A, 0.0, 10.0);
+            elsif A = "--population" then
+               declare
+                  S : constant String := Value_Of (A);
+               begin
+                  Opts.Population := Natural'Value (S);
+                  Population_Set := True;
+                  if Opts.Population > 100 then
+                     raise Constraint_Error;
+                  end if;
+               exception
+                  when Constraint_Error =>
+                     raise Usage_Error with "--population: '" & S & "' is not a count in 0 .. 100";
+               end;
+            elsif A = "--population-share" then
+               Opts.Population_Share := Number_In (A, 0.05, 0.95);
+            elsif A = "--child-moves" then
+               Opts.Child_Moves := Number_In (A, 1.0, 1.0E6);
+            elsif A = "--child-t0" then
+               Opts.Child_Start_Factor := Number_In (A, 0.0, 10.0);
             elsif A = "--subset-fresh" then
                Opts.Subset_Fresh := True;
             elsif A = "--excess-reheats" then
@@ -758,6 +798,13 @@ package body Sancta.Commands.Plan is
          then
             Opts.Subset_Share := Auto_Subset_Share;
             --  Only where Subsets.Applies: a pure makespan with 3+ robots
+            --  (minsum, minave and TSP plans are unchanged).
+         end if;
+         if not Population_Set and then To_String (Solver) = "anneal"
+           and then P.Tasks in Auto_Population_Min_Tasks .. Auto_Subset_Min_Tasks - 1
+         then
+            Opts.Population := Auto_Population;
+            --  Only where Memetic.Applies: a pure makespan with 2+ robots
             --  (minsum, minave and TSP plans are unchanged).
          end if;
          declare

@@ -1,6 +1,7 @@
 with Ada.Real_Time;
 with Sancta.Allocation.Random;
 with Sancta.Allocation.Annealers.Construction;
+with Sancta.Allocation.Annealers.Memetic;
 with Sancta.Allocation.Annealers.Searches;
 with Sancta.Allocation.Annealers.Subsets;
 with Sancta.Allocation.Annealers.Tours;
@@ -132,6 +133,10 @@ package body Sancta.Allocation.Annealers is
       Anneal_Opts : Options := Opts;
       Run : Searches.Search (P.Robots, P.Tasks);
    begin
+      if Memetic.Applies (P, Opts) then
+         Memetic.Search (P, Opts, Best, Stats);
+         return;
+      end if;
       if Share > 0.0 and then Single_Tour and then P.Tasks > Local_Search.Direct_Size then
          --  A large single tour: the search alone, from a nearest-neighbour tour.
          declare

@@ -9,6 +9,7 @@ with Sancta.Allocation.Annealers;
 with Sancta.Allocation.Assignments; use Sancta.Allocation.Assignments;
 with Sancta.Allocation.Baselines;
 with Sancta.Allocation.Exact;
+with Sancta.Allocation.Giant_Tours;
 with Sancta.Allocation.Problem_Files;
 with Sancta.Allocation.Problems;    use Sancta.Allocation.Problems;
 with Sancta.Allocation.Random;
@@ -946,6 +947,197 @@ package body Sancta.Allocation.Tests is
       end loop;
    end Compact_Distances_Checked;
 
+   --  What the population search's reports saw (Population_Search_Checked).
+   Reported_Plans : Natural := 0;
+   Least_Reported : Long_Float := Long_Float'Last;
+   Parents_Best   : Long_Float := Long_Float'Last;
+   Parents        : Positive := 1;
+
+   procedure Note_Report (S : Annealers.Progress) is
+   begin
+      Reported_Plans := Reported_Plans + 1;
+      Least_Reported := Long_Float'Min (Least_Reported, S.Current);
+      if Reported_Plans <= Parents then
+         Parents_Best := Long_Float'Min (Parents_Best, S.Current);
+      end if;
+   end Note_Report;
+
+   --  The giant tours' split is optimal against enumerating every cut of the
+   --  sequence (random tiny problems: distinct depots, open tours,
+   --  multipliers, asymmetric costs, a minimum task count); with alike
+   --  robots, the split of a plan's giant tour is no longer than the plan.
+   --  The population search (Options.Population) under the expensive check
+   --  (every anneal's moves): valid, the reported best is the recomputed
+   --  makespan, the same for a seed, within the move budget, never worse
+   --  than a member or child it reported (the first members: the parents),
+   --  another plan than without it on most; where it does not apply (the
+   --  total, plan trees, alternatives, frozen prefixes, own costs, one
+   --  robot) the plan is the one without it.
+   procedure Population_Search_Checked (Unused : in out Fixture) is
+      use Annealers;
+      Splitting : constant array (1 .. 5) of Variant :=
+        [Variant'(others => <>),
+         (Asymmetric => True, Closed => False, others => <>),
+         (End_Depot => True, Heterogeneous => True, others => <>),
+         (Min_Tasks => 1, others => <>),
+         (Heterogeneous => True, Min_Tasks => 2, others => <>)];
+      Other : constant array (1 .. 5) of Variant :=
+        [Variant'(Frozen => Robot_1, others => <>),
+         (Plan_Trees => True, others => <>),
+         (Alternatives => True, others => <>),
+         (Own_Factor => True, others => <>),
+         (Infeasible => True, others => <>)];
+      Seed : Interfaces.Unsigned_64 := 5_300;
+      Differs : Natural := 0;
+   begin
+      for V of Splitting loop
+         for Robots in 2 .. 3 loop
+            Seed := Seed + 1;
+            declare
+               P : constant Problem_Access := Random_Problem (7, Robots, V, Seed);
+               G : Random.Generator := Random.Seeded (Seed);
+               Order : Count_Array (1 .. P.Tasks) := [for T in 1 .. P.Tasks => T];
+               A, B : Assignment (P.Robots, P.Tasks);
+               Max, Sum : Cost;
+               Best_Max, Best_Sum : Cost := Cost'Last;
+               Cuts : array (0 .. Robots) of Natural := [0 => 0, others => P.Tasks];
+               --  Robot K takes Order (Cuts (K - 1) + 1 .. Cuts (K)).
+               procedure Enumerate (K : Positive) is
+               begin
+                  if K = Robots then
+                     if P.Tasks - Cuts (K - 1) < P.Min_Tasks then
+                        return;
+                     end if;
+                     B := Empty (P.all);
+                     for R in 1 .. Robots loop
+                        for X in Cuts (R - 1) + 1 .. Cuts (R) loop
+                           Append (B, R, Order (X));
+                        end loop;
+                     end loop;
+                     declare
+                        E : constant Evaluation := Evaluate (P.all, B, Min_Max);
+                     begin
+                        if E.Max < Best_Max or else (E.Max = Best_Max and then E.Sum < Best_Sum)
+                        then
+                           Best_Max := E.Max;
+                           Best_Sum := E.Sum;
+                        end if;
+                     end;
+                     return;
+                  end if;
+                  for C in Cuts (K - 1) + P.Min_Tasks .. P.Tasks loop
+                     Cuts (K) := C;
+                     Enumerate (K + 1);
+                  end loop;
+                  Cuts (K) := P.Tasks;
+               end Enumerate;
+            begin
+               Assert (Giant_Tours.Applies (P.all), "split does not apply");
+               for I in reverse 2 .. P.Tasks loop
+                  declare
+                     J : constant Positive := 1 + Random.Below (G, I);
+                     X : constant Natural := Order (I);
+                  begin
+                     Order (I) := Order (J);
+                     Order (J) := X;
+                  end;
+               end loop;
+               Giant_Tours.Split (P.all, Order, A, Max, Sum);
+               Enumerate (1);
+               Assert (Validate (P.all, A) = "", "split invalid: " & Validate (P.all, A));
+               Assert (Max = Best_Max and then Sum = Best_Sum,
+                       "split" & Max'Image & Sum'Image & ", enumeration" & Best_Max'Image
+                       & Best_Sum'Image & ", seed" & Seed'Image);
+               Assert (Evaluate (P.all, A, Min_Max).Max = Max
+                         and then Evaluate (P.all, A, Min_Max).Sum = Sum,
+                       "split's reported costs differ from the recomputed ones");
+               Assert (Giant_Tours.Giant_Tour (A) = Order, "split changed the sequence");
+            end;
+         end loop;
+      end loop;
+      for Robots in 2 .. 5 loop
+         declare
+            P : constant Problem_Access := Scattered (40, 5_350 + Interfaces.Unsigned_64 (Robots),
+                                                      Robots);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S : Progress;
+            Max, Sum : Cost;
+         begin
+            Solve (P.all, (Criterion => Min_Max, Seed => 3, Time_Limit => 0.0,
+                           Iterations => 5_000, others => <>), A, S);
+            Giant_Tours.Split (P.all, Giant_Tours.Giant_Tour (A), B, Max, Sum);
+            Assert (Max <= Evaluate (P.all, A, Min_Max).Max,
+                    "split of a plan's giant tour is longer than the plan:" & Max'Image);
+         end;
+      end loop;
+      for V of Splitting loop
+         Seed := Seed + 1;
+         declare
+            P : constant Problem_Access := Random_Problem (24, 4, V, Seed);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 30_000,
+               Check => True, Population => 3, Child_Moves => 200.0,
+               Report => Note_Report'Access, Report_Every => 0.0, others => <>);
+         begin
+            Reported_Plans := 0;
+            Least_Reported := Long_Float'Last;
+            Parents_Best := Long_Float'Last;
+            Parents := 3;
+            Solve_Checked (P.all, O, A, S);
+            --  Each anneal may end its last descent a few moves past its
+            --  budget (80 in all on the first variant): 5% allowed.
+            Assert (S.Moves in 15_000 .. 31_500, "moves" & S.Moves'Image);
+            Assert (Reported_Plans > 3, "no child:" & Reported_Plans'Image & " plans");
+            Assert (S.Best <= Parents_Best and then S.Best = Least_Reported,
+                    "best" & S.Best'Image & ", best parent" & Parents_Best'Image
+                    & ", least reported" & Least_Reported'Image);
+            O.Report := null;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "two runs with the same seed differ");
+            O.Population := 0;
+            Solve (P.all, O, B, T);
+            if A /= B then
+               Differs := Differs + 1;
+            end if;
+         end;
+      end loop;
+      Assert (Differs >= 3, "the population changed the plan on" & Differs'Image & " of 5");
+      for V of Other loop
+         Seed := Seed + 1;
+         declare
+            P : constant Problem_Access := Random_Problem (20, 3, V, Seed);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => Min_Max, Seed => Seed, Time_Limit => 0.0, Iterations => 10_000,
+               Population => 3, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            O.Population := 0;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "the population acted where it does not apply");
+         end;
+      end loop;
+      for C of Criterion_Array'[Min_Sum, Min_Ave, Min_Max] loop
+         declare
+            P : constant Problem_Access :=
+              Random_Problem (20, (if C = Min_Max then 1 else 3), (others => <>), 5_390);
+            A, B : Assignment (P.Robots, P.Tasks);
+            S, T : Progress;
+            O : Options :=
+              (Criterion => C, Seed => 3, Time_Limit => 0.0, Iterations => 10_000,
+               Population => 3, others => <>);
+         begin
+            Solve (P.all, O, A, S);
+            O.Population := 0;
+            Solve (P.all, O, B, T);
+            Assert (A = B and then S.Best = T.Best, "the population acted on minsum / 1 robot");
+         end;
+      end loop;
+   end Population_Search_Checked;
+
    function Suite return AUnit.Test_Suites.Access_Test_Suite is
       Result : constant AUnit.Test_Suites.Access_Test_Suite := new AUnit.Test_Suites.Test_Suite;
       procedure Add (Name : String; Proc : Caller.Test_Method) is
@@ -978,6 +1170,8 @@ package body Sancta.Allocation.Tests is
       Add ("route-subset re-optimisation, checked", Subset_Reoptimisation_Checked'Access);
       Add ("compact distance matrices (16, 32, 64 bits, own costs), checked",
            Compact_Distances_Checked'Access);
+      Add ("population search and giant tour split, checked",
+           Population_Search_Checked'Access);
       return Result;
    end Suite;
 
