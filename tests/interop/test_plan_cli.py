@@ -167,6 +167,17 @@ def test_subset_robots_is_a_whole_count():
 
 
 
+def plan_tours(path, robots, seed, *extra):
+    """The tours (task lists) of a valid `sancta plan` of `path` with a
+    fixed move budget (deterministic for the seed)."""
+    p = run(str(path), "--robots", str(robots), "--seed", str(seed), "--time", "0",
+            "--iterations", "200000", "--quiet", "--json", "-", *extra)
+    assert p.returncode == 0, p.stderr
+    d = json.loads(p.stdout)
+    assert d["valid"]
+    return [t["tasks"] for t in d["tours"]]
+
+
 def test_subsets_default_rule():
     """Without --subsets, MinMax with the annealer re-optimises route subsets
     (as --subsets 0.2) from 200 tasks up; below, and for other objectives,
@@ -176,12 +187,7 @@ def test_subsets_default_rule():
     tsplib = REPO / "share" / "tsplib"
 
     def tours(path, *extra):
-        p = run(str(path), "--robots", "5", "--seed", "3", "--time", "0", "--iterations",
-                "200000", "--quiet", "--json", "-", *extra)
-        assert p.returncode == 0, p.stderr
-        d = json.loads(p.stdout)
-        assert d["valid"]
-        return [t["tasks"] for t in d["tours"]]
+        return plan_tours(path, 5, 3, *extra)
 
     on = tours(inside, "--objective", "minmax", "--subsets", "0.2")
     assert on != tours(inside, "--objective", "minmax", "--subsets", "0")
@@ -203,12 +209,7 @@ def test_population_default_rule():
     above = random_tsp("plan-cli-population-201", 201, seed=23)      # 200 tasks
 
     def tours(path, *extra):
-        p = run(str(path), "--robots", "3", "--seed", "5", "--time", "0", "--iterations",
-                "200000", "--quiet", "--json", "-", *extra)
-        assert p.returncode == 0, p.stderr
-        d = json.loads(p.stdout)
-        assert d["valid"]
-        return [t["tasks"] for t in d["tours"]]
+        return plan_tours(path, 3, 5, *extra)
 
     on = tours(inside, "--objective", "minmax", "--population", "4")
     assert on != tours(inside, "--objective", "minmax", "--population", "0")
